@@ -1,0 +1,161 @@
+"""Result datasets (xarray) and their netCDF files: the output contract of case-format.md.
+
+The only place that knows the result variable names, units and attributes. Solvers
+return typed results; these functions turn them into ``xarray.Dataset`` objects and
+back to disk (h5netcdf).
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+import kanat
+
+UNITS = {
+    "s": ("m", "unstretched arclength within its cable"),
+    "cable": ("1", "cable name of each node"),
+    "position": ("m", "node positions"),
+    "velocity": ("m/s", "node velocities"),
+    "tension": ("N", "effective tension at nodes"),
+    "angle": ("rad", "angle of the cable tangent above the horizontal"),
+    "segment_tension": ("N", "element tension"),
+    "body_position": ("m", "body positions"),
+    "vessel_position": ("m", "tow point position"),
+    "vessel_heading": ("rad", "vessel heading"),
+    "vessel_pitch": ("rad", "vessel pitch"),
+    "alpha": ("rad", "local cable angle of seed 001 (dX/ds = cos alpha)"),
+    "tau": ("1", "dimensionless tension T / (k1 L)"),
+    "x": ("1", "dimensionless abscissa X / L"),
+    "y": ("1", "dimensionless height Y / L"),
+}
+
+
+def case_sha256(case) -> str:
+    """SHA-256 of the case's canonical JSON form (insensitive to YAML layout and comments)."""
+    return hashlib.sha256(case.model_dump_json(by_alias=True).encode()).hexdigest()
+
+
+def provenance(case, *, model: str, scheme: str, wall_time_s: float, status: str = "ok", **extra) -> dict:
+    """Global attributes every result file carries (case-format.md)."""
+    attrs = {
+        "kanat_version": kanat.__version__,
+        "case_name": case.name or "",
+        "case_sha256": case_sha256(case),
+        "model": model,
+        "scheme": scheme,
+        "wall_time_s": float(wall_time_s),
+        "status": status,
+        "Conventions": "CF-1.10",
+    }
+    attrs.update(extra)
+    return attrs
+
+
+def annotate(ds: xr.Dataset) -> xr.Dataset:
+    """Attach units and long names to every known variable, and the xyz coordinate."""
+    for name, var in ds.variables.items():
+        if name in UNITS:
+            var.attrs.setdefault("units", UNITS[name][0])
+            var.attrs.setdefault("long_name", UNITS[name][1])
+    if "xyz" in ds.dims and "xyz" not in ds.coords:
+        ds = ds.assign_coords(xyz=["x", "y", "z"])
+    return ds
+
+
+def _netcdf_attr(value):
+    """netCDF attributes hold numbers and strings only."""
+    if isinstance(value, bool):
+        return int(value)
+    if value is None:
+        return ""
+    if isinstance(value, (np.floating, np.integer)):
+        return value.item()
+    return value
+
+
+def write_result(ds: xr.Dataset, path) -> Path:
+    """Write a result dataset to netCDF (h5netcdf engine), atomically.
+
+    The file is written next to its destination and renamed, so a crash never leaves
+    a half-written result where a complete one is expected.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    ds = ds.copy()
+    ds.attrs = {k: _netcdf_attr(v) for k, v in ds.attrs.items()}
+    tmp = path.with_name(path.name + ".part")
+    ds.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=False)
+    os.replace(tmp, path)
+    return path
+
+
+def read_result(path) -> xr.Dataset:
+    """Read a result file written by :func:`write_result` (fully loaded, file closed)."""
+    with xr.open_dataset(path, engine="h5netcdf") as ds:
+        return ds.load()
+
+
+def statics_dataset(result, wall_time_s: float = 0.0) -> xr.Dataset:
+    """The result file of a statics run (case-format.md: the dynamic names, no ``time``).
+
+    Parameters
+    ----------
+    result : kanat.statics.StaticsResult
+    wall_time_s : float
+        Solve time recorded in the provenance [s].
+    """
+    attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s)
+    if result.sphere is not None:
+        return annotate(_sphere_dataset(result.sphere, attrs))
+    names, s, position, tension, angle = [], [], [], [], []
+    for name, sol in result.cables.items():
+        names += [name] * len(sol.s)
+        s.append(sol.s)
+        position.append(sol.position)
+        tension.append(sol.tension)
+        angle.append(sol.angle)
+        attrs[f"method_{name}"] = sol.method
+        attrs[f"grounded_length_{name}_m"] = sol.grounded_length
+    position = np.concatenate(position)
+    bodies = list(result.bodies)
+    ds = xr.Dataset(
+        {
+            "s": ("node", np.concatenate(s)),
+            "cable": ("node", np.array(names, dtype=object)),
+            "position": (("node", "xyz"), position),
+            "velocity": (("node", "xyz"), np.tile(result.vessel_velocity, (len(position), 1))),
+            "tension": ("node", np.concatenate(tension)),
+            "angle": ("node", np.concatenate(angle)),
+            "body_position": (("body", "xyz"), np.array([result.bodies[b] for b in bodies]).reshape(-1, 3)),
+            "vessel_position": ("xyz", np.asarray(result.case.vessel.tow_point, dtype=float)),
+            "vessel_heading": ((), 0.0),
+        },
+        coords={"body": np.array(bodies, dtype=object)},
+        attrs=attrs,
+    )
+    return annotate(ds)
+
+
+def _sphere_dataset(sol, attrs: dict) -> xr.Dataset:
+    attrs.update(alpha0_deg=float(np.degrees(sol.alpha0)), tau0=float(sol.tau0),
+                 eps1_percent=float(sol.eps1_percent), eps2_percent=float(sol.eps2_percent),
+                 convention=sol.convention, method=sol.method, line_tension_tau=float(sol.tau_line),
+                 **{f"group_{k}": float(v) for k, v in vars(sol.groups).items()})
+    data = {"alpha": ("node", sol.alpha), "tau": ("node", sol.tau), "x": ("node", sol.x), "y": ("node", sol.y),
+            "sigma": ("node", sol.sigma, {"units": "1", "long_name": "dimensionless arclength S / L from A"})}
+    if sol.scales is not None:
+        xyz = np.column_stack([sol.X, np.zeros_like(sol.X), sol.Y])
+        data.update(s=("node", sol.s), tension=("node", sol.T), position=(("node", "xyz"), xyz),
+                    cable=("node", np.array(["AOB"] * len(sol.s), dtype=object)))
+        attrs.update(k1_N_per_m=sol.scales.k1, cable_length_m=sol.scales.L, line_tension_N=float(sol.T_line))
+    return xr.Dataset(data, attrs=attrs)
+
+
+def failed_dataset(case, message: str, model: str = "statics", scheme: str = "", wall_time_s: float = 0.0):
+    """A result holding no solution, only the provenance and ``status`` saying why."""
+    return xr.Dataset(attrs=provenance(case, model=model, scheme=scheme, wall_time_s=wall_time_s,
+                                       status=f"failed: {message}"))

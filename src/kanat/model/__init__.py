@@ -1,0 +1,22 @@
+"""The problem as validated data: line types, cables, bodies, environment, vessel.
+
+Every class is a frozen pydantic model whose field names are the keys of the YAML
+case format (``docs/case-format.md``); read case files with
+:func:`kanat.io.case_file.load_case`.
+"""
+from .cable import Cable, CableEnd
+from .case import Case
+from .components import Body, LineType, Point
+from .environment import Current, Environment, JonswapWaves, RegularWaves, Waves
+from .problems import (PitchModel, SphereDimensional, SphereDimensionless, SphereTwoCables,
+                       Stabilizer)
+from .simulation import Simulation
+from .vessel import (KNOT, SEGMENT_TYPES, Accelerate, Heading, SpeedStep, Straight,
+                     TrackSegment, Turn, Vessel)
+
+__all__ = [
+    "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "Environment", "Heading",
+    "JonswapWaves", "KNOT", "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES",
+    "Simulation", "SpeedStep", "SphereDimensional", "SphereDimensionless", "SphereTwoCables",
+    "Stabilizer", "Straight", "TrackSegment", "Turn", "Vessel", "Waves",
+]

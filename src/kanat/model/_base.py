@@ -1,0 +1,82 @@
+"""Shared building blocks of the case models: base class, quantities, vectors.
+
+Every model forbids unknown keys and is frozen. A field's physical unit is declared
+where the field is, with :func:`quantity`, so that error messages and sanity checks
+can quote values with their units (:func:`unit_of`).
+"""
+from __future__ import annotations
+
+import difflib
+from typing import Annotated, Any
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+from pydantic_core import PydanticUndefined
+
+UNIT_KEY = "unit"
+
+
+class KanatModel(BaseModel):
+    """Base of every case model: unknown keys are errors, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True)
+
+
+def quantity(default: Any = PydanticUndefined, *, unit: str, **constraints: Any) -> Any:
+    """A pydantic field that carries its physical unit.
+
+    Parameters
+    ----------
+    default : object, optional
+        Default value; omit for a required field.
+    unit : str
+        SI unit as written in messages, e.g. ``"m"``, ``"kg/m"``, ``"N"``.
+    **constraints
+        Passed to :func:`pydantic.Field` (``gt``, ``ge``, ``description``, ...).
+    """
+    return Field(default, json_schema_extra={UNIT_KEY: unit}, **constraints)
+
+
+def unit_of(model: type[BaseModel], name: str) -> str | None:
+    """Unit declared for field ``name`` (attribute name or alias) of ``model``, if any."""
+    for field_name, info in model.model_fields.items():
+        if name in (field_name, info.alias):
+            extra = info.json_schema_extra
+            return extra.get(UNIT_KEY) if isinstance(extra, dict) else None
+    return None
+
+
+def field_keys(model: type[BaseModel]) -> list[str]:
+    """Keys a case file may use for ``model`` (aliases where defined), in order."""
+    return [info.alias or name for name, info in model.model_fields.items()]
+
+
+def suggest(word: object, options: list[str] | tuple[str, ...]) -> str:
+    """`` (did you mean 'x'?)`` for the closest option to ``word``, or ``""``."""
+    if not isinstance(word, str):
+        return ""
+    close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.6)
+    return f" (did you mean '{close[0]}'?)" if close else ""
+
+
+def fmt(value: object) -> str:
+    """Compact number formatting for messages (``-5.0 -> '-5'``, 6 significant digits)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, float) and value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    return f"{value:.6g}" if isinstance(value, float) else str(value)
+
+
+def _as_vector3(value: Any) -> Any:
+    """Accept any 3-sequence of numbers; reject other lengths with a plain message."""
+    if isinstance(value, (list, tuple)) and len(value) != 3:
+        raise ValueError(f"must be a list of 3 numbers [x, y, z] (got {len(value)} values)")
+    if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__len__"):
+        raise ValueError(f"must be a list of 3 numbers [x, y, z] (got {value!r})")
+    return tuple(value)
+
+
+Vector3 = Annotated[tuple[float, float, float], BeforeValidator(_as_vector3)]
+"""Three components ``(x, y, z)`` in the global or vessel frame."""
+
+ZERO3: tuple[float, float, float] = (0.0, 0.0, 0.0)

@@ -1,0 +1,157 @@
+"""The whole case: what to model and with which data.
+
+Cross-references (a cable's line type, the bodies and points it is attached to) are
+checked field by field when the case is validated with a context dict
+(``Case.model_validate(data, context={})``, as :mod:`kanat.io.case_file` does), so that
+every mistake is reported at its own key; without a context they are checked once the
+case is built.
+"""
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import Field, ValidationInfo, field_validator, model_validator
+
+from ._base import KanatModel, suggest
+from .cable import Cable
+from .components import Body, LineType, Point
+from .environment import Environment
+from .problems import PitchModel, SphereTwoCables
+from .simulation import Simulation
+from .vessel import Vessel
+
+ModelName = Literal["continuum", "lumped", "statics", "pitch"]
+DYNAMIC_MODELS = ("continuum", "lumped")
+
+
+def _names(section: Any) -> list[str] | None:
+    return [k for k in section if isinstance(k, str)] if isinstance(section, dict) else None
+
+
+def _resolve_named_ends(data: dict[str, Any], bodies: list[str], points: list[str]) -> None:
+    """Rewrite bare body/point names of cable ends as ``{body: x}`` / ``{point: x}``."""
+    cables = data.get("cables")
+    if not isinstance(cables, list):
+        return
+    resolved = []
+    for cable in cables:
+        if isinstance(cable, dict):
+            cable = dict(cable)
+            for key in ("from", "to"):
+                end = cable.get(key)
+                if isinstance(end, str) and end in bodies:
+                    cable[key] = {"body": end}
+                elif isinstance(end, str) and end in points:
+                    cable[key] = {"point": end}
+        resolved.append(cable)
+    data["cables"] = resolved
+
+
+class Case(KanatModel):
+    """A validated case (see ``docs/case-format.md``).
+
+    Attributes
+    ----------
+    name : str
+    model : {"continuum", "lumped", "statics", "pitch"}
+    environment : Environment
+    line_types : dict of str to LineType
+    bodies : dict of str to Body
+    points : dict of str to Point
+    vessel : Vessel
+    cables : list of Cable
+    simulation : Simulation or None
+        Required by the dynamic models (continuum, lumped).
+    sphere_two_cables : SphereTwoCables or None
+    pitch : PitchModel or None
+        Required by ``model: pitch``.
+    """
+
+    name: str = ""
+    model: ModelName
+    environment: Environment = Field(default_factory=Environment)
+    line_types: dict[str, LineType] = Field(default_factory=dict)
+    bodies: dict[str, Body] = Field(default_factory=dict)
+    points: dict[str, Point] = Field(default_factory=dict)
+    vessel: Vessel = Field(default_factory=Vessel)
+    cables: list[Cable] = Field(default_factory=list, validate_default=True)
+    simulation: Simulation | None = Field(None, validate_default=True)
+    sphere_two_cables: SphereTwoCables | None = Field(None, validate_default=True)
+    pitch: PitchModel | None = Field(None, validate_default=True)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _collect_names(cls, data: Any, info: ValidationInfo) -> Any:
+        if not isinstance(data, dict):
+            return data
+        data = dict(data)
+        bodies = _names(data.get("bodies")) or []
+        points = _names(data.get("points")) or []
+        _resolve_named_ends(data, bodies, points)
+        if isinstance(info.context, dict):
+            info.context["names"] = {"line_types": _names(data.get("line_types", {})),
+                                     "bodies": bodies, "points": points}
+        return data
+
+    @field_validator("cables")
+    @classmethod
+    def _cables_needed(cls, cables: list[Cable], info: ValidationInfo) -> list[Cable]:
+        model = info.data.get("model")
+        if model in DYNAMIC_MODELS and not cables:
+            raise ValueError(f"model '{model}' needs at least one cable")
+        seen: dict[str, int] = {}
+        for i, cable in enumerate(cables):
+            if cable.name in seen:
+                raise ValueError(f"cable name '{cable.name}' is used by cables[{seen[cable.name]}]"
+                                 f" and cables[{i}]; names must be unique")
+            seen[cable.name] = i
+        return cables
+
+    @field_validator("simulation")
+    @classmethod
+    def _simulation_needed(cls, value: Simulation | None, info: ValidationInfo) -> Any:
+        model = info.data.get("model")
+        if value is None and model in DYNAMIC_MODELS:
+            raise ValueError(f"model '{model}' needs a 'simulation' block "
+                             "{duration, dt, ...}")
+        return value
+
+    @field_validator("sphere_two_cables")
+    @classmethod
+    def _statics_needs_system(cls, value: SphereTwoCables | None, info: ValidationInfo) -> Any:
+        if (value is None and info.data.get("model") == "statics"
+                and "cables" in info.data and not info.data["cables"]):
+            raise ValueError("model 'statics' needs a 'sphere_two_cables' block or at least "
+                             "one cable")
+        return value
+
+    @field_validator("pitch")
+    @classmethod
+    def _pitch_needed(cls, value: PitchModel | None, info: ValidationInfo) -> Any:
+        if value is None and info.data.get("model") == "pitch":
+            raise ValueError("model 'pitch' needs a 'pitch' block {inertia, natural_frequency, "
+                             "wave_moment_amplitude, wave_period, ...}")
+        return value
+
+    @model_validator(mode="after")
+    def _cross_references(self) -> "Case":
+        messages = reference_errors(self)
+        if messages:
+            raise ValueError("; ".join(messages))
+        return self
+
+
+def reference_errors(case: Case) -> list[str]:
+    """Messages for cables naming line types, bodies or points the case lacks."""
+    messages = []
+    for i, cable in enumerate(case.cables):
+        if cable.line_type not in case.line_types:
+            known = ", ".join(case.line_types) or "none"
+            messages.append(f"cables[{i}].line_type: '{cable.line_type}' is not a line type; "
+                            f"known: {known}{suggest(cable.line_type, list(case.line_types))}")
+        for key, end in (("from", cable.from_), ("to", cable.to)):
+            group = {"body": case.bodies, "point": case.points}.get(end.kind)
+            if group is not None and end.name not in group:
+                messages.append(f"cables[{i}].{key}: '{end.name}' is not a {end.kind}; known: "
+                                f"{', '.join(group) or 'none'}{suggest(end.name, list(group))}")
+    return messages

@@ -1,0 +1,402 @@
+"""Physical sanity checks of a validated case, with numbers and units.
+
+Each check looks at one kind of mistake that a schema cannot see (a line heavier in
+water than in air, an anchor under the seabed, a cable too short for its ends, a
+time step that does not divide the output interval, ...) and reports it as an error
+(the case cannot be run as written) or a warning (it can, but probably not as meant).
+
+:func:`physical_checks` runs them all; :data:`CHECKS` lists them in order.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+
+import numpy as np
+
+from ..errors import Problem
+from ._base import fmt
+from .cable import Cable, CableEnd
+from .case import Case
+from .environment import JonswapWaves, RegularWaves
+from .paths import Path, key_path, line_of
+from .vessel import Heading, Turn
+
+MAX_STRETCH = 0.20          # strain beyond which fixed ends are an error, not a warning
+MAX_STATIC_STRAIN = 0.10    # static strain of a hanging system considered unphysical
+BREAKING_STEEPNESS = 1 / 7  # Miche's limit of H / wavelength for regular waves
+BREAKING_DEPTH_RATIO = 0.78 # depth-limited breaking, H / depth (McCowan)
+RESONANCE_GAIN = 10.0       # dynamic amplification of a pitch harmonic worth a warning
+TIME_TOL = 1e-6             # relative tolerance on "multiple of dt"
+
+
+class Findings:
+    """Collects problems with their key paths and lines."""
+
+    def __init__(self, file: str | None, lines: Mapping[Path, int] | None):
+        self.file = file
+        self.lines = lines
+        self.problems: list[Problem] = []
+
+    def add(self, path: Path, message: str, severity: str) -> None:
+        """Record one problem at ``path``."""
+        self.problems.append(Problem(key_path(path), message, self.file,
+                                     line_of(self.lines, path), severity))
+
+    def error(self, path: Path, message: str) -> None:
+        """Record an error at ``path``."""
+        self.add(path, message, "error")
+
+    def warning(self, path: Path, message: str) -> None:
+        """Record a warning at ``path``."""
+        self.add(path, message, "warning")
+
+
+def _kn(force: float) -> str:
+    return f"{force / 1e3:.4g} kN"
+
+
+def _end_position(case: Case, end: CableEnd) -> np.ndarray | None:
+    """Initial global position of a fixed end (anchor, or the tow point at t = 0)."""
+    if end.kind == "anchor":
+        return np.asarray(end.position, dtype=float)
+    if end.kind == "vessel":  # vessel at the origin, heading 0: vessel axes = global axes
+        return np.asarray(case.vessel.tow_point, dtype=float)
+    return None
+
+
+def _line_weight(case: Case, cable: Cable) -> float:
+    """Weight in water of the whole cable [N]."""
+    env = case.environment
+    line = case.line_types[cable.line_type]
+    return line.weight_in_water_value(env.water_density, env.gravity) * cable.length
+
+
+def check_line_types(case: Case, out: Findings) -> None:
+    """A line cannot weigh more in water than in air."""
+    g = case.environment.gravity
+    for name, line in case.line_types.items():
+        in_air = line.mass * g
+        if line.weight_in_water is not None and line.weight_in_water > in_air:
+            out.error(("line_types", name, "weight_in_water"),
+                      f"weight in water {fmt(line.weight_in_water)} N/m exceeds the weight in "
+                      f"air {in_air:.4g} N/m (mass {fmt(line.mass)} kg/m × g {fmt(g)} m/s^2); "
+                      "buoyancy cannot be negative")
+
+
+def check_bodies(case: Case, out: Findings) -> None:
+    """Net buoyancy cannot be below minus the weight in air (negative displacement)."""
+    g = case.environment.gravity
+    for name, body in case.bodies.items():
+        weight = body.mass * g
+        if body.net_buoyancy < -weight:
+            out.error(("bodies", name, "net_buoyancy"),
+                      f"net buoyancy {fmt(body.net_buoyancy)} N is below -(mass × g) = "
+                      f"{-weight:.6g} N (mass {fmt(body.mass)} kg): that needs a negative "
+                      "buoyancy; net_buoyancy is buoyancy minus weight")
+
+
+def check_anchors(case: Case, out: Findings) -> None:
+    """Anchors lie between the seabed and the free surface."""
+    depth = case.environment.depth
+    for i, cable in enumerate(case.cables):
+        for key, end in (("from", cable.from_), ("to", cable.to)):
+            if end.kind != "anchor":
+                continue
+            z = end.position[2]
+            if depth is not None and z < -depth * (1 + 1e-9):
+                out.error(("cables", i, key),
+                          f"anchor at z = {fmt(z)} m is below the seabed at z = {fmt(-depth)} m "
+                          f"(depth {fmt(depth)} m)")
+            elif z > 0:
+                out.warning(("cables", i, key),
+                            f"anchor at z = {fmt(z)} m is above the free surface z = 0")
+
+
+def check_fixed_span(case: Case, out: Findings) -> None:
+    """A cable between two fixed ends must be long enough to reach both."""
+    for i, cable in enumerate(case.cables):
+        a, b = (_end_position(case, end) for end in cable.ends)
+        if a is None or b is None:
+            continue
+        span = float(np.linalg.norm(b - a))
+        if span <= cable.length:
+            continue
+        line = case.line_types[cable.line_type]
+        strain = span / cable.length - 1.0
+        tension = line.axial_stiffness * strain
+        message = (f"its fixed ends ({cable.from_}, {cable.to}) are {span:.6g} m apart but it is "
+                   f"{fmt(cable.length)} m long: it must stretch {100 * strain:.3g} %, a tension "
+                   f"of {_kn(tension)} (EA {_kn(line.axial_stiffness)} × strain {strain:.4g})")
+        too_far = strain > MAX_STRETCH
+        broken = line.breaking_load is not None and tension > line.breaking_load
+        if broken:
+            message += f", above the breaking load {_kn(line.breaking_load)}"
+        if too_far:
+            message += f"; more than {MAX_STRETCH:.0%} stretch is not a cable"
+        (out.error if too_far or broken else out.warning)(("cables", i, "length"), message)
+
+
+def _hanging_load(case: Case, cable: Cable, body_name: str) -> tuple[float, float, float]:
+    """Body pull, cable weight and largest static tension of a body hanging on a cable [N]."""
+    pull = case.bodies[body_name].submerged_weight()
+    weight = _line_weight(case, cable)
+    return pull, weight, max(abs(pull), abs(pull + weight))
+
+
+def check_hanging_loads(case: Case, out: Findings) -> None:
+    """A body on a cable from the vessel or an anchor must not break or overstretch it."""
+    for i, cable in enumerate(case.cables):
+        for body_end, other in ((cable.to, cable.from_), (cable.from_, cable.to)):
+            if body_end.kind != "body" or not other.is_fixed:
+                continue
+            line = case.line_types[cable.line_type]
+            pull, weight, tension = _hanging_load(case, cable, body_end.name)
+            what = "submerged weight" if pull >= 0 else "net buoyancy"
+            load = (f"body '{body_end.name}' ({what} {_kn(abs(pull))}) and the cable's weight in "
+                    f"water {_kn(weight)} ({weight / cable.length:.4g} N/m × {fmt(cable.length)} m) "
+                    f"give a static tension of up to {_kn(tension)}")
+            if line.breaking_load is not None and tension > line.breaking_load:
+                out.error(("cables", i), f"{load}, above the breaking load "
+                          f"{_kn(line.breaking_load)} of line type '{cable.line_type}'")
+            strain = tension / line.axial_stiffness
+            if strain > MAX_STATIC_STRAIN:
+                out.error(("cables", i), f"{load}: a static strain of {100 * strain:.3g} % "
+                          f"(EA {_kn(line.axial_stiffness)}), more than "
+                          f"{MAX_STATIC_STRAIN:.0%}; check axial_stiffness (N) and the loads")
+
+
+def check_mooring_buoys(case: Case, out: Findings) -> None:
+    """A buoy held only by anchored lines must lift their weight in water."""
+    for name, body in case.bodies.items():
+        attached = [c for c in case.cables if any(e.kind == "body" and e.name == name
+                                                  for e in c.ends)]
+        if not attached or not all(any(e.kind == "anchor" for e in c.ends) for c in attached):
+            continue
+        weight = sum(_line_weight(case, c) for c in attached)
+        if weight > 0 and body.net_buoyancy < weight:
+            names = ", ".join(f"'{c.name}'" for c in attached)
+            out.warning(("bodies", name, "net_buoyancy"),
+                        f"buoy '{name}' has net buoyancy {fmt(body.net_buoyancy)} N, less than "
+                        f"the weight in water {weight:.6g} N of its mooring line(s) {names}: "
+                        "it will sink")
+
+
+def check_time_steps(case: Case, out: Findings) -> None:
+    """dt fits in the duration and divides the output interval."""
+    sim = case.simulation
+    if sim is None:
+        return
+    if sim.dt > sim.duration:
+        out.error(("simulation", "dt"), f"dt {fmt(sim.dt)} s is longer than the duration "
+                  f"{fmt(sim.duration)} s")
+    if sim.output_dt is None:
+        return
+    ratio = sim.output_dt / sim.dt
+    steps = round(ratio)
+    if steps < 1 or abs(ratio - steps) > TIME_TOL * max(1.0, ratio):
+        low = max(1, math.floor(ratio))
+        out.error(("simulation", "output_dt"),
+                  f"output_dt {fmt(sim.output_dt)} s is not a multiple of dt {fmt(sim.dt)} s "
+                  f"({ratio:.4g} steps); use e.g. {fmt(low * sim.dt)} s or "
+                  f"{fmt((low + 1) * sim.dt)} s")
+
+
+def check_element_length(case: Case, out: Findings) -> None:
+    """Elements shorter than the cable diameter are pointless and stiff."""
+    for i, cable in enumerate(case.cables):
+        diameter = case.line_types[cable.line_type].diameter
+        element = cable.length / cable.segments
+        if element < diameter:
+            out.warning(("cables", i, "segments"),
+                        f"elements are {element:.3g} m long ({fmt(cable.length)} m / "
+                        f"{cable.segments} segments), shorter than the diameter {fmt(diameter)} m "
+                        f"of line type '{cable.line_type}'; use at most "
+                        f"{max(1, math.floor(cable.length / diameter))} segments")
+
+
+def wavelength(period: float, gravity: float, depth: float | None) -> float:
+    """Linear-wave length [m] from ``omega^2 = g k tanh(k h)`` (deep water if no depth)."""
+    omega = 2 * math.pi / period
+    k = omega**2 / gravity
+    if depth is not None:
+        k = k / math.sqrt(math.tanh(k * depth))  # good start in all depths
+        for _ in range(50):
+            f = gravity * k * math.tanh(k * depth) - omega**2
+            df = gravity * (math.tanh(k * depth) + k * depth / math.cosh(k * depth) ** 2)
+            step = f / df
+            k -= step
+            if abs(step) < 1e-12 * k:
+                break
+    return 2 * math.pi / k
+
+
+def check_waves(case: Case, out: Findings) -> None:
+    """Waves steeper than the breaking limit, or higher than the depth allows."""
+    env = case.environment
+    waves = env.waves
+    if isinstance(waves, RegularWaves):
+        height, period, keys = waves.height, waves.period, ("height", "period")
+    elif isinstance(waves, JonswapWaves):
+        height, period, keys = waves.hs, waves.tp, ("hs", "tp")
+    else:
+        return
+    length = wavelength(period, env.gravity, env.depth)
+    where = "deep water" if env.depth is None else f"depth {fmt(env.depth)} m"
+    steepness = height / length
+    if steepness > BREAKING_STEEPNESS:
+        out.warning(("environment", "waves", keys[0]),
+                    f"{keys[0]} {fmt(height)} m over the wavelength {length:.4g} m ({where}, "
+                    f"{keys[1]} {fmt(period)} s) is a steepness of {steepness:.3g}, above the "
+                    f"breaking limit 1/7 = {BREAKING_STEEPNESS:.3g}")
+    if env.depth is not None and height > BREAKING_DEPTH_RATIO * env.depth:
+        out.warning(("environment", "waves", keys[0]),
+                    f"{keys[0]} {fmt(height)} m exceeds {BREAKING_DEPTH_RATIO} × depth = "
+                    f"{BREAKING_DEPTH_RATIO * env.depth:.4g} m: such waves break in this depth")
+
+
+def check_towing(case: Case, out: Findings) -> None:
+    """A towed cable needs a vessel track (and a tow speed, for the statics)."""
+    towed = [c.name for c in case.cables if any(e.kind == "vessel" for e in c.ends)]
+    if not towed:
+        return
+    if not case.vessel.track:
+        out.warning(("vessel", "track"), f"cable '{towed[0]}' hangs from the vessel but the "
+                    "vessel has no track: the tow point stays at rest (speed 0 m/s)")
+    elif case.model == "statics" and case.vessel.initial_speed == 0:
+        out.warning(("vessel", "track", 0), "the initial tow speed is 0 m/s: the statics will "
+                    "hang the cable in still water; give the first segment a speed")
+
+
+def _out_of_plane(case: Case) -> list[str]:
+    """Features that leave the x-z plane."""
+    found = [f"vessel.track[{i}] is a {s.kind}" for i, s in enumerate(case.vessel.track)
+             if isinstance(s, (Turn, Heading))]
+    found += [f"cables[{i}].{k} has y = {fmt(e.position[1])} m" for i, c in enumerate(case.cables)
+              for k, e in (("from", c.from_), ("to", c.to))
+              if e.kind == "anchor" and e.position[1] != 0]
+    if case.vessel.tow_point[1] != 0:
+        found.append(f"vessel.tow_point has y = {fmt(case.vessel.tow_point[1])} m")
+    found += [f"bodies.{n}.force has y = {fmt(b.force[1])} N" for n, b in case.bodies.items()
+              if b.force[1] != 0]
+    current = case.environment.current
+    rows = current.profile or ((0.0, *(current.velocity or (0.0, 0.0, 0.0))),)
+    if any(r[2] != 0 for r in rows):
+        found.append("the current has a y component")
+    waves = case.environment.waves
+    if waves is not None and abs(math.sin(math.radians(waves.heading_deg))) > 1e-9:
+        found.append(f"the waves travel at heading {fmt(waves.heading_deg)} deg")
+    return found
+
+
+def check_dimensions(case: Case, out: Findings) -> None:
+    """``dimensions: 2`` only when everything stays in the x-z plane."""
+    if case.simulation is None or case.simulation.dimensions != 2:
+        return
+    found = _out_of_plane(case)
+    if found:
+        out.error(("simulation", "dimensions"), "dimensions: 2 models the x-z plane only, but "
+                  + "; ".join(found) + "; use dimensions: 3 or auto")
+
+
+def check_sphere(case: Case, out: Findings) -> None:
+    """The line and the cable of the sphere problem must reach between the anchors."""
+    sphere = case.sphere_two_cables
+    if sphere is None:
+        return
+    if sphere.dimensionless is not None:
+        groups = sphere.dimensionless
+        if abs(groups.x_C) > groups.LoL + 1:
+            out.error(("sphere_two_cables", "dimensionless", "x_C"),
+                      f"the anchors are |x_C| = {fmt(abs(groups.x_C))} cable lengths apart but the "
+                      f"line (LoL = {fmt(groups.LoL)}) and the cable (1) reach only "
+                      f"{fmt(groups.LoL + 1)}: no equilibrium")
+    else:
+        dims = sphere.dimensional
+        reach = dims.line_length + dims.cable_length
+        if abs(dims.anchor_x) > reach:
+            out.error(("sphere_two_cables", "dimensional", "anchor_x"),
+                      f"the anchors are {fmt(abs(dims.anchor_x))} m apart but the line "
+                      f"({fmt(dims.line_length)} m) and the cable ({fmt(dims.cable_length)} m) "
+                      f"reach only {fmt(reach)} m: no equilibrium")
+
+
+def check_pitch(case: Case, out: Findings) -> None:
+    """No harmonic of the wave frequency should sit on the pitch natural frequency."""
+    pitch = case.pitch
+    if pitch is None:
+        return
+    key = "natural_frequency" if pitch.natural_frequency is not None else "restoring"
+    omega, omega0, zeta = pitch.wave_frequency, pitch.omega0, pitch.damping_ratio
+    n = np.arange(1, pitch.harmonics + 1)
+    r = n * omega / omega0
+    denominator = np.hypot(1 - r**2, 2 * zeta * r)
+    worst = int(np.argmin(denominator))
+    text = (f"harmonic n = {n[worst]} of the wave frequency ({n[worst]} × {omega:.4g} = "
+            f"{n[worst] * omega:.4g} rad/s) ")
+    if denominator[worst] < 1e-9:
+        out.error(("pitch", key), text + f"equals the natural frequency {omega0:.4g} rad/s and "
+                  "there is no damping: the steady state is unbounded; change "
+                  f"{key} or give damping_ratio > 0")
+    elif 1 / denominator[worst] > RESONANCE_GAIN:
+        out.warning(("pitch", key), text + f"is close to the natural frequency {omega0:.4g} "
+                    f"rad/s: its response is amplified {1 / denominator[worst]:.3g} times")
+    stabilizer = pitch.stabilizer
+    if stabilizer.mode != "off" and stabilizer.max_moment == 0:
+        out.warning(("pitch", "stabilizer", "max_moment"), f"stabilizer mode "
+                    f"'{stabilizer.mode}' with max_moment 0 N m has no effect")
+
+
+def check_attachments(case: Case, out: Findings) -> None:
+    """Bodies and points that no cable uses are ignored."""
+    if not case.cables:
+        return
+    used = {(e.kind, e.name) for c in case.cables for e in c.ends}
+    for group, kind, items in (("bodies", "body", case.bodies), ("points", "point", case.points)):
+        for name in items:
+            if (kind, name) not in used:
+                out.warning((group, name), f"{kind} '{name}' is not attached to any cable and "
+                            "is ignored")
+
+
+def check_ignored_sections(case: Case, out: Findings) -> None:
+    """Sections that the chosen model does not use."""
+    if case.sphere_two_cables is not None and case.model != "statics":
+        out.warning(("sphere_two_cables",), f"ignored by model '{case.model}' (it is solved "
+                    "by model: statics)")
+    if case.pitch is not None and case.model != "pitch":
+        out.warning(("pitch",), f"ignored by model '{case.model}' (it is solved by model: "
+                    "pitch; a vessel's own pitch goes in vessel.pitch)")
+    if case.cables and case.model == "pitch":
+        out.warning(("cables",), "ignored by model 'pitch'")
+
+
+CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
+    check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
+    check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
+    check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
+)
+
+
+def physical_checks(case: Case, file: str | None = None,
+                    lines: Mapping[Path, int] | None = None) -> list[Problem]:
+    """Run every sanity check on a validated case.
+
+    Parameters
+    ----------
+    case : Case
+        A case that passed validation.
+    file : str or None
+        Case file name for the problems.
+    lines : mapping of key path to int, optional
+        Lines of the case file's keys (:func:`kanat.io.yaml_loader.load_yaml`).
+
+    Returns
+    -------
+    list of Problem
+        Errors and warnings, in the order of :data:`CHECKS`.
+    """
+    out = Findings(file, lines)
+    for check in CHECKS:
+        check(case, out)
+    return out.problems

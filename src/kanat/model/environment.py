@@ -1,0 +1,115 @@
+"""Water, current and waves (case section ``environment``)."""
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal, Union
+
+import numpy as np
+from pydantic import BeforeValidator, Field, field_validator, model_validator
+
+from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+
+
+
+def _as_row(value: Any) -> Any:
+    if not isinstance(value, (list, tuple)) or len(value) != 4:
+        got = f"{len(value)} values" if isinstance(value, (list, tuple)) else repr(value)
+        raise ValueError(f"each profile row must be 4 numbers [z, ux, uy, uz] (got {got})")
+    return tuple(value)
+
+
+ProfileRow = Annotated[tuple[float, float, float, float], BeforeValidator(_as_row)]
+
+
+class Current(KanatModel):
+    """Steady current: uniform ``velocity`` or a depth ``profile`` (not both).
+
+    Attributes
+    ----------
+    velocity : tuple of 3 float or None
+        Uniform current [m/s] in the global frame.
+    profile : tuple of rows (z, ux, uy, uz) or None
+        Piecewise-linear profile [m, m/s]; stored sorted by ``z`` from the surface down.
+        Beyond the first and last rows the velocity is held constant.
+    """
+
+    velocity: Vector3 | None = quantity(None, unit="m/s")
+    profile: tuple[ProfileRow, ...] | None = quantity(None, unit="m, m/s")
+
+    @field_validator("profile")
+    @classmethod
+    def _sort_profile(cls, rows: tuple[ProfileRow, ...] | None) -> tuple[ProfileRow, ...] | None:
+        if rows is None:
+            return None
+        if not rows:
+            raise ValueError("needs at least one row [z, ux, uy, uz]")
+        ordered = tuple(sorted(rows, key=lambda r: -r[0]))
+        z = [r[0] for r in ordered]
+        repeated = sorted({v for v in z if z.count(v) > 1})
+        if repeated:
+            raise ValueError(f"depth z = {fmt(repeated[0])} m appears in two rows; "
+                             "each z may appear once")
+        return ordered
+
+    @model_validator(mode="after")
+    def _one_form(self) -> "Current":
+        if self.velocity is not None and self.profile is not None:
+            raise ValueError("give either 'velocity' (uniform) or 'profile' (rows z, ux, uy, uz), "
+                             "not both")
+        return self
+
+    def at(self, z: float | np.ndarray) -> np.ndarray:
+        """Current velocity at height ``z``.
+
+        Parameters
+        ----------
+        z : float or array_like, shape (n,)
+            Height [m], ``z = 0`` at the free surface, negative below.
+
+        Returns
+        -------
+        numpy.ndarray, shape (3,) or (n, 3)
+            Velocity [m/s]; linear between profile rows, constant beyond the ends.
+        """
+        z_arr = np.asarray(z, dtype=float)
+        if self.profile is None:
+            u = np.asarray(self.velocity if self.velocity is not None else ZERO3, dtype=float)
+            return np.broadcast_to(u, z_arr.shape + (3,)).copy()
+        table = np.asarray(self.profile, dtype=float)[::-1]  # ascending z for np.interp
+        out = np.stack([np.interp(z_arr, table[:, 0], table[:, k]) for k in (1, 2, 3)], axis=-1)
+        return out
+
+
+class RegularWaves(KanatModel):
+    """Linear (Airy) regular waves."""
+
+    type: Literal["regular"] = "regular"
+    height: float = quantity(unit="m", gt=0, description="crest-to-trough height H")
+    period: float = quantity(unit="s", gt=0)
+    heading_deg: float = quantity(0.0, unit="deg",
+                                  description="direction the waves travel to, from +x, "
+                                              "counter-clockwise seen from above")
+
+
+class JonswapWaves(KanatModel):
+    """Irregular waves from a JONSWAP spectrum with seeded random phases."""
+
+    type: Literal["jonswap"] = "jonswap"
+    hs: float = quantity(unit="m", gt=0, description="significant wave height")
+    tp: float = quantity(unit="s", gt=0, description="peak period")
+    gamma: float = quantity(3.3, unit="-", ge=1, description="peak enhancement factor")
+    heading_deg: float = quantity(0.0, unit="deg")
+    seed: int = Field(0, description="random seed of the phases")
+
+
+Waves = Annotated[Union[RegularWaves, JonswapWaves], Field(discriminator="type")]
+
+
+class Environment(KanatModel):
+    """Water properties, seabed, current and waves."""
+
+    water_density: float = quantity(1025.0, unit="kg/m^3", gt=0)
+    gravity: float = quantity(9.81, unit="m/s^2", gt=0)
+    depth: float | None = quantity(None, unit="m", gt=0,
+                                   description="seabed at z = -depth; None: no seabed")
+    current: Current = Field(default_factory=Current)
+    waves: Waves | None = None

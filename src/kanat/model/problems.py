@@ -1,0 +1,103 @@
+"""Self-contained problem blocks: the sphere on two cables (seed 001, SPEC §3.2) and
+ship pitch with a reactive stabilizer (seed 003, SPEC §6.2)."""
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from ._base import KanatModel, quantity
+
+
+class SphereDimensionless(KanatModel):
+    """The seed 001 groups (SPEC §3.2): ``Psi = q/k1``, ``LoL = L0/L``, ``x_C = X_C/L``,
+    ``QkL = Q/(k1 L)``, ``RkL = R0/(k1 L)``, ``chi = C_0/C_90``."""
+
+    Psi: float = quantity(unit="-", ge=0)
+    LoL: float = quantity(unit="-", gt=0)
+    x_C: float = quantity(unit="-")
+    QkL: float = quantity(unit="-")
+    RkL: float = quantity(unit="-", ge=0)
+    chi: float = quantity(0.0333, unit="-", ge=0, le=1)
+
+
+class SphereDimensional(KanatModel):
+    """Dimensional input of the seed 001 problem, mapped to the groups by the solver."""
+
+    flow_speed: float = quantity(unit="m/s", gt=0)
+    sphere_diameter: float = quantity(unit="m", gt=0)
+    net_buoyancy: float = quantity(unit="N")
+    cable_diameter: float = quantity(unit="m", gt=0)
+    cable_length: float = quantity(unit="m", gt=0)
+    cable_weight: float = quantity(unit="N/m", ge=0, description="weight in water per length")
+    line_length: float = quantity(unit="m", gt=0)
+    anchor_x: float = quantity(unit="m", description="X_C of the line's anchor")
+    water_density: float | None = quantity(None, unit="kg/m^3", gt=0)
+
+
+class SphereTwoCables(KanatModel):
+    """Sphere held by a weightless line and a heavy cable in a uniform flow.
+
+    Exactly one of ``dimensionless`` and ``dimensional``.
+    """
+
+    convention: Literal["published", "physical"] = "published"
+    dimensionless: SphereDimensionless | None = None
+    dimensional: SphereDimensional | None = None
+    n_nodes: int = Field(101, ge=3)
+
+    @model_validator(mode="after")
+    def _one_input(self) -> "SphereTwoCables":
+        if (self.dimensionless is None) == (self.dimensional is None):
+            raise ValueError("give exactly one of 'dimensionless' {Psi, LoL, x_C, QkL, RkL} "
+                             "or 'dimensional' {flow_speed, sphere_diameter, ...}")
+        return self
+
+
+class Stabilizer(KanatModel):
+    """Reactive stabilizer: control ``mode`` (off, sinusoidal, rectangular, ...) and
+    the largest moment ``max_moment`` M0 [N m]."""
+
+    mode: str = "off"
+    max_moment: float = quantity(0.0, unit="N m", ge=0)
+
+
+class PitchModel(KanatModel):
+    """Linear pitch oscillator ``I phi'' + c phi' + k phi = M_m sin(omega t + pi) + f(t)``.
+
+    Exactly one of ``natural_frequency`` (omega_0) and ``restoring`` (k).
+    """
+
+    inertia: float = quantity(unit="kg m^2", gt=0)
+    natural_frequency: float | None = quantity(None, unit="rad/s", gt=0)
+    restoring: float | None = quantity(None, unit="N m/rad", gt=0)
+    wave_moment_amplitude: float = quantity(unit="N m", ge=0)
+    wave_period: float = quantity(unit="s", gt=0)
+    damping_ratio: float = quantity(0.0, unit="-", ge=0)
+    stabilizer: Stabilizer = Field(default_factory=Stabilizer)
+    harmonics: int = Field(50, ge=1)
+
+    @model_validator(mode="after")
+    def _one_stiffness(self) -> "PitchModel":
+        if (self.natural_frequency is None) == (self.restoring is None):
+            raise ValueError("give exactly one of 'natural_frequency' (rad/s) or "
+                             "'restoring' (N m/rad)")
+        return self
+
+    @property
+    def omega0(self) -> float:
+        """Undamped natural frequency [rad/s]."""
+        if self.natural_frequency is not None:
+            return self.natural_frequency
+        return math.sqrt(self.restoring / self.inertia)
+
+    @property
+    def restoring_value(self) -> float:
+        """Restoring stiffness k = I omega_0^2 [N m/rad]."""
+        return self.restoring if self.restoring is not None else self.inertia * self.omega0**2
+
+    @property
+    def wave_frequency(self) -> float:
+        """omega = 2 pi / wave_period [rad/s]."""
+        return 2.0 * math.pi / self.wave_period

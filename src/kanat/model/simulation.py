@@ -1,0 +1,46 @@
+"""Time integration settings (case section ``simulation``)."""
+from __future__ import annotations
+
+from typing import Literal
+
+from ._base import KanatModel, quantity
+
+
+class Simulation(KanatModel):
+    """How long and how finely to integrate, and with which scheme.
+
+    Attributes
+    ----------
+    scheme : str or None
+        Scheme name from the scheme registry (SPEC §2.4–2.6, §5); None: the model's
+        default.
+    lambda_inf : float
+        Spectral radius at infinite frequency of the generalized-alpha family, in [-1, 0].
+    gamma : float or None
+        Weight of the generalized trapezoidal scheme, in [1/2, 1].
+    duration : float
+        Simulated time [s].
+    dt : float
+        Time step [s].
+    output_dt : float or None
+        Interval between stored results [s]; None: every step.
+    dimensions : {2, 3, "auto"}
+        Planar (x-z) or spatial model; ``auto`` picks 2 when everything stays in the
+        x-z plane.
+    frame_pole : str
+        Where the 3-D continuum model puts the pole of its angle frame (``auto``).
+    """
+
+    scheme: str | None = None
+    lambda_inf: float = quantity(-0.5, unit="-", ge=-1, le=0)
+    gamma: float | None = quantity(None, unit="-", ge=0.5, le=1)
+    duration: float = quantity(unit="s", gt=0)
+    dt: float = quantity(unit="s", gt=0)
+    output_dt: float | None = quantity(None, unit="s", gt=0)
+    dimensions: Literal[2, 3, "auto"] = "auto"
+    frame_pole: str = "auto"
+
+    @property
+    def output_interval(self) -> float:
+        """``output_dt`` if given, else ``dt`` [s]."""
+        return self.output_dt if self.output_dt is not None else self.dt

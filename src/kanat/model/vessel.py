@@ -1,0 +1,211 @@
+"""The towing vessel: tow point and track (case section ``vessel``).
+
+A track is a list of segments executed in order, each written as a one-key mapping
+(``{straight: {speed: 3.0, duration: 100}}``). Speeds may be given in m/s (``speed``,
+``to_speed``) or in knots (``speed_kn``, ``to_speed_kn``), never both. Angles are in
+degrees, positive to port (counter-clockwise seen from above).
+"""
+from __future__ import annotations
+
+from typing import Annotated, Any, ClassVar, Union
+
+from pydantic import Discriminator, Field, Tag, computed_field, model_validator
+
+from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+
+KNOT = 0.514444
+"""One knot in m/s."""
+
+
+def _one_speed(speed: float | None, speed_kn: float | None, key: str) -> float | None:
+    """Speed in m/s from the m/s or the knots key; error when both are given."""
+    if speed is not None and speed_kn is not None:
+        raise ValueError(f"give either '{key}' (m/s) or '{key}_kn' (knots), not both")
+    return speed if speed_kn is None else speed_kn * KNOT
+
+
+class TrackSegment(KanatModel):
+    """Base of the track segments; ``KEY`` is the segment's name in the case file."""
+
+    KEY: ClassVar[str] = ""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _unwrap(cls, value: Any) -> Any:
+        if isinstance(value, dict) and len(value) == 1 and cls.KEY in value:
+            inner = value[cls.KEY]
+            return {} if inner is None else inner
+        if isinstance(value, dict) and "kind" in value:
+            return {k: v for k, v in value.items() if k != "kind"}
+        return value
+
+    @computed_field
+    @property
+    def kind(self) -> str:
+        """Segment name as written in the case file (``straight``, ``turn``, ...)."""
+        return self.KEY
+
+
+class Straight(TrackSegment):
+    """Straight run at constant speed; without a speed, the previous speed is kept."""
+
+    KEY: ClassVar[str] = "straight"
+    speed: float | None = quantity(None, unit="m/s", ge=0)
+    speed_kn: float | None = quantity(None, unit="kn", ge=0)
+    duration: float = quantity(unit="s", gt=0)
+
+    @model_validator(mode="after")
+    def _check(self) -> "Straight":
+        _one_speed(self.speed, self.speed_kn, "speed")
+        return self
+
+    @property
+    def speed_ms(self) -> float | None:
+        """Speed [m/s], or None to keep the previous one."""
+        return _one_speed(self.speed, self.speed_kn, "speed")
+
+
+class _ToSpeed(TrackSegment):
+    """A segment that ends at a target speed given in m/s or knots."""
+
+    to_speed: float | None = quantity(None, unit="m/s", ge=0)
+    to_speed_kn: float | None = quantity(None, unit="kn", ge=0)
+
+    @model_validator(mode="after")
+    def _check_target(self) -> "_ToSpeed":
+        if _one_speed(self.to_speed, self.to_speed_kn, "to_speed") is None:
+            raise ValueError("needs a target speed: 'to_speed' (m/s) or 'to_speed_kn' (knots)")
+        return self
+
+    @property
+    def to_speed_ms(self) -> float:
+        """Target speed [m/s]."""
+        return _one_speed(self.to_speed, self.to_speed_kn, "to_speed")
+
+
+class Accelerate(_ToSpeed):
+    """Speed ramp at a constant rate toward ``to_speed``.
+
+    ``acceleration`` is a magnitude; the speed rises or falls toward the target.
+    With ``duration``, the segment lasts that long (holding the target speed once
+    reached); without it, the segment ends when the target is reached.
+    """
+
+    KEY: ClassVar[str] = "accelerate"
+    acceleration: float = quantity(unit="m/s^2", gt=0)
+    duration: float | None = quantity(None, unit="s", gt=0)
+
+
+class SpeedStep(_ToSpeed):
+    """Instant change of speed to ``to_speed`` (zero duration)."""
+
+    KEY: ClassVar[str] = "speed_step"
+
+
+class Turn(TrackSegment):
+    """Turn on a circle.
+
+    Curvature from ``radius`` [m] or ``rate_deg_s`` (signed turn rate); extent from
+    ``angle_deg`` (signed, positive to port) or ``duration``. With ``radius`` the
+    direction comes from the sign of ``angle_deg``, so ``radius`` needs ``angle_deg``.
+    ``speed``/``speed_kn`` optional (default: keep the previous speed).
+    """
+
+    KEY: ClassVar[str] = "turn"
+    radius: float | None = quantity(None, unit="m", gt=0)
+    rate_deg_s: float | None = quantity(None, unit="deg/s")
+    angle_deg: float | None = quantity(None, unit="deg")
+    duration: float | None = quantity(None, unit="s", gt=0)
+    speed: float | None = quantity(None, unit="m/s", ge=0)
+    speed_kn: float | None = quantity(None, unit="kn", ge=0)
+
+    @model_validator(mode="after")
+    def _check(self) -> "Turn":
+        _one_speed(self.speed, self.speed_kn, "speed")
+        if (self.radius is None) == (self.rate_deg_s is None):
+            raise ValueError("give exactly one of 'radius' (m) or 'rate_deg_s' (deg/s)")
+        if (self.angle_deg is None) == (self.duration is None):
+            raise ValueError("give exactly one of 'angle_deg' (signed, + to port) or "
+                             "'duration' (s)")
+        if self.radius is not None and self.angle_deg is None:
+            raise ValueError("with 'radius', give 'angle_deg' (its sign sets the direction, "
+                             "+ to port); or give 'rate_deg_s' with 'duration'")
+        if self.angle_deg == 0 or self.rate_deg_s == 0:
+            raise ValueError("a turn needs a non-zero angle_deg and rate_deg_s")
+        if (self.rate_deg_s is not None and self.angle_deg is not None
+                and self.rate_deg_s * self.angle_deg < 0):
+            raise ValueError(f"rate_deg_s {fmt(self.rate_deg_s)} deg/s and angle_deg "
+                             f"{fmt(self.angle_deg)} deg turn opposite ways; use the same sign")
+        return self
+
+    @property
+    def speed_ms(self) -> float | None:
+        """Speed [m/s], or None to keep the previous one."""
+        return _one_speed(self.speed, self.speed_kn, "speed")
+
+
+class Heading(TrackSegment):
+    """Change of heading at a turn rate, to ``to_deg`` or by ``change_deg`` (signed)."""
+
+    KEY: ClassVar[str] = "heading"
+    to_deg: float | None = quantity(None, unit="deg")
+    change_deg: float | None = quantity(None, unit="deg")
+    rate_deg_s: float = quantity(unit="deg/s", gt=0)
+
+    @model_validator(mode="after")
+    def _check(self) -> "Heading":
+        if (self.to_deg is None) == (self.change_deg is None):
+            raise ValueError("give exactly one of 'to_deg' (absolute heading) or "
+                             "'change_deg' (signed, + to port)")
+        return self
+
+
+SEGMENT_TYPES: dict[str, type[TrackSegment]] = {
+    cls.KEY: cls for cls in (Straight, Accelerate, SpeedStep, Turn, Heading)}
+
+
+def _segment_key(value: Any) -> str | None:
+    """Discriminator: the segment's name (the single key of its mapping)."""
+    if isinstance(value, TrackSegment):
+        return value.KEY
+    if isinstance(value, dict):
+        if "kind" in value:
+            return value["kind"]
+        if len(value) == 1:
+            key = next(iter(value))
+            return key if isinstance(key, str) else None
+    return None
+
+
+AnySegment = Annotated[
+    Union[tuple(Annotated[cls, Tag(key)] for key, cls in SEGMENT_TYPES.items())],
+    Discriminator(_segment_key)]
+
+
+class Vessel(KanatModel):
+    """The towing vessel.
+
+    Attributes
+    ----------
+    tow_point : tuple of 3 float
+        Tow point in vessel axes (x forward, y port, z up) [m]. At t = 0 the vessel
+        is at the origin with heading 0, so this is also the tow point's global
+        initial position.
+    track : tuple of TrackSegment
+        Segments in execution order.
+    pitch : dict or None
+        Pitch model of the vessel (SPEC §6.2); kept as given for now.
+    """
+
+    tow_point: Vector3 = quantity(ZERO3, unit="m")
+    track: tuple[AnySegment, ...] = ()
+    pitch: dict[str, Any] | None = None
+
+    @property
+    def initial_speed(self) -> float:
+        """Speed at t = 0 [m/s]: the first segment's own speed, else 0 (from rest)."""
+        if not self.track:
+            return 0.0
+        first = self.track[0]
+        speed = getattr(first, "speed_ms", None)
+        return float(speed) if speed is not None else 0.0

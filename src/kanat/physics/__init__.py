@@ -1,0 +1,1 @@
+"""Loads and laws: drag, weight, constitutive laws, flow fields."""

@@ -1,0 +1,55 @@
+"""Hydrodynamic drag of cables and bodies (quadratic, Morison form).
+
+Both functions take the velocity of the water *relative to* the cable or body
+(water velocity minus structure velocity), so the force points with the flow.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+def cable_drag(tangent, water_velocity, strain, diameter, drag_normal, drag_tangential, density):
+    """Drag force per unit unstretched length on a cable element (SPEC §2.1).
+
+    ``f = 0.5 rho d C_n sqrt(1+e) |U_n| U_n + 0.5 rho pi d C_t sqrt(1+e) |U_t| U_t``
+    with ``U_t = (U.t) t`` and ``U_n = U - U_t``. The factor ``sqrt(1+e)`` is the
+    stretched length ``(1+e)`` times the diameter reduced by ``1/sqrt(1+e)``
+    (constant volume); the tangential coefficient is referred to ``pi d``.
+
+    Parameters
+    ----------
+    tangent : ndarray, shape (..., k)
+        Unit tangent(s), ``k`` = 2 (x, z) or 3.
+    water_velocity : ndarray, shape (..., k)
+        Water velocity relative to the cable [m/s].
+    strain : ndarray, shape (...)
+        Axial strain ``e`` [-].
+    diameter, drag_normal, drag_tangential, density : float
+        ``d`` [m], ``C_n``, ``C_t`` [-], ``rho`` [kg/m^3].
+
+    Returns
+    -------
+    ndarray, shape (..., k)
+        Force per unit unstretched length [N/m].
+    """
+    u_t = np.sum(water_velocity * tangent, axis=-1, keepdims=True)
+    normal = water_velocity - u_t * tangent
+    speed_n = np.sqrt(np.sum(normal * normal, axis=-1, keepdims=True))
+    area = np.sqrt(1.0 + np.asarray(strain))[..., None] * 0.5 * density * diameter
+    return area * (drag_normal * speed_n * normal + np.pi * drag_tangential * np.abs(u_t) * u_t * tangent)
+
+
+def body_drag(water_velocity, drag_area, density):
+    """Quadratic drag of a body, ``0.5 rho (C_D S) |U| U`` [N] (SPEC §2.3, seed 000 eq. 26).
+
+    Parameters
+    ----------
+    water_velocity : ndarray, shape (k,)
+        Water velocity relative to the body [m/s].
+    drag_area : float
+        ``C_D * S`` [m^2].
+    density : float
+        Water density [kg/m^3].
+    """
+    water_velocity = np.asarray(water_velocity, dtype=float)
+    return 0.5 * density * drag_area * np.linalg.norm(water_velocity) * water_velocity

@@ -1,0 +1,8 @@
+"""Statics (SPEC §3): steady cables by shooting, collocation and the closed-form catenary;
+the seed 001 sphere on two cables."""
+from kanat.statics.driver import METHODS, StaticsResult, solve_cable, solve_statics
+from kanat.statics.problem import BodyEnd, CableBVP, FixedEnd, FlowProfile, LineProperties
+from kanat.statics.solution import CableSolution
+
+__all__ = ["METHODS", "BodyEnd", "CableBVP", "CableSolution", "FixedEnd", "FlowProfile", "LineProperties",
+           "StaticsResult", "solve_cable", "solve_statics"]

@@ -1,0 +1,130 @@
+"""Statics of a case: one registry of methods, one entry point (SPEC §3)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from kanat.errors import SolverError
+from kanat.statics.collocation import solve_collocation
+from kanat.statics.guess import solve_catenary
+from kanat.statics.problem import BodyEnd, CableBVP, FixedEnd
+from kanat.statics.setup import cable_problems, vessel_velocity
+from kanat.statics.shooting import solve_shooting
+from kanat.statics.solution import CableSolution
+from kanat.statics.sphere import SphereGroups, SphereSolution, groups_from_dimensional, solve_sphere
+
+METHODS = {
+    "shooting": solve_shooting,
+    "collocation": solve_collocation,
+    "catenary": solve_catenary,
+}
+"""Steady-cable solvers by name; each is ``f(problem, s_out) -> CableSolution``."""
+
+
+def solve_cable(problem: CableBVP, method: str = "auto", s_out=None) -> CableSolution:
+    """Solve one steady cable with a named method.
+
+    ``"auto"`` takes the closed-form catenary when it applies (two fixed ends, no
+    flow, a line heavier than water), else shooting, and collocation if shooting fails.
+    """
+    if method == "auto":
+        fixed = all(isinstance(e, FixedEnd) for e in (problem.start, problem.end))
+        if fixed and not np.any(problem.flow.velocity) and problem.line.weight > 0:
+            return solve_catenary(problem, s_out)
+        try:
+            return solve_shooting(problem, s_out)
+        except SolverError:
+            return solve_collocation(problem, s_out)
+    try:
+        solver = METHODS[method]
+    except KeyError:
+        raise SolverError(f"unknown statics method '{method}'; valid: auto, {', '.join(METHODS)}") from None
+    return solver(problem, s_out)
+
+
+@dataclass(frozen=True)
+class StaticsResult:
+    """The steady state of a case.
+
+    Attributes
+    ----------
+    case : kanat.model.Case
+    method : str
+        Method requested (``auto``, a name of :data:`METHODS`).
+    cables : dict of str to CableSolution
+        One solution per cable, at the cable's nodes.
+    bodies : dict of str to ndarray, shape (3,)
+        Body positions [m].
+    vessel_velocity : ndarray, shape (3,)
+        Velocity of the steadily moving frame (the vessel) [m/s]; every node moves with it.
+    sphere : SphereSolution or None
+        The seed 001 problem's solution, for a ``sphere_two_cables`` case.
+    """
+
+    case: object
+    method: str
+    cables: dict[str, CableSolution] = field(default_factory=dict)
+    bodies: dict[str, np.ndarray] = field(default_factory=dict)
+    vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    sphere: SphereSolution | None = None
+
+    def summary(self) -> str:
+        """A few lines an engineer reads first: depths, layback, end tensions."""
+        lines = []
+        if self.sphere is not None:
+            sol = self.sphere
+            lines.append(f"sphere on two cables ({sol.convention} convention, {sol.method}): "
+                         f"alpha(0) = {np.degrees(sol.alpha0):.4f} deg, tau(0) = {sol.tau0:.6f}, "
+                         f"eps1 = {sol.eps1_percent:.2e} %, eps2 = {sol.eps2_percent:.2e} %, "
+                         f"sphere at x = {sol.x_A:.4f}, y = {sol.y_A:.4f} (units of L)")
+        for name, sol in self.cables.items():
+            tension = sol.tension
+            lines.append(f"cable {name} ({sol.method}): tension {tension[0] / 1e3:.3f} kN at s = 0, "
+                         f"{tension[-1] / 1e3:.3f} kN at s = {sol.s[-1]:g} m; angle at s = 0 "
+                         f"{np.degrees(sol.angle[0]):.2f} deg"
+                         + (f"; {sol.grounded_length:.2f} m on the seabed" if sol.grounded_length > 0 else ""))
+        for name, position in self.bodies.items():
+            lines.append(f"body {name}: x = {position[0]:.3f} m, z = {position[2]:.3f} m (depth "
+                         f"{-position[2]:.3f} m)")
+        return "\n".join(lines)
+
+
+def solve_statics(case, method: str = "auto") -> StaticsResult:
+    """Steady state of a case: its cables (SPEC §3.1) or its seed 001 problem (SPEC §3.2).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    method : str
+        ``auto`` or a name of :data:`METHODS` (the seed 001 problem takes
+        ``shooting`` or ``collocation``; ``auto`` means shooting).
+
+    Returns
+    -------
+    StaticsResult
+    """
+    if case.sphere_two_cables is not None:
+        return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
+    problems = cable_problems(case)
+    solutions, bodies = {}, {}
+    for cable in case.cables:
+        problem = problems[cable.name]
+        s_out = np.linspace(0.0, cable.length, cable.segments + 1)
+        solution = solve_cable(problem, method, s_out)
+        solutions[cable.name] = solution
+        for end, index in ((cable.from_, 0), (cable.to, -1)):
+            if end.kind == "body":
+                bodies[end.name] = solution.position[index]
+    return StaticsResult(case, method, solutions, bodies, vessel_velocity(case))
+
+
+def _solve_sphere_block(block, case, method: str) -> SphereSolution:
+    method = "shooting" if method == "auto" else method
+    if block.dimensionless is not None:
+        groups, scales = SphereGroups(**block.dimensionless.model_dump()), None
+    else:
+        inputs = block.dimensional.model_dump()
+        inputs["water_density"] = inputs["water_density"] or case.environment.water_density
+        groups, scales = groups_from_dimensional(**inputs)
+    return solve_sphere(groups, block.convention, method, block.n_nodes, scales=scales)

@@ -1,0 +1,255 @@
+"""The 2-D steady cable problem as typed data, and its equations (SPEC §3.1).
+
+A single cable in the x–z plane, unstretched arclength ``s`` from its first end
+(``s = 0``) to its second (``s = L``). The state along the cable is
+
+    y(s) = (x, z, F_x, F_z),     F = T t   (tension vector, t the unit tangent)
+
+and the steady equations ``d(T t)/ds + f = 0``, ``dr/ds = (1 + e) t`` read
+
+    dx/ds = (1 + e) F_x / T,      dz/ds = (1 + e) F_z / T
+    dF/ds = -f = (0, w) - f_drag(t, U(z), e)
+
+with ``T = |F|``, ``e = T / EA`` and ``U(z)`` the water velocity relative to the
+cable (for a steady tow: current minus vessel velocity). Writing the tension as a
+vector instead of ``(T, phi)`` keeps the equations free of the angle, so vertical
+and horizontal stretches of cable are equally well conditioned.
+
+Ends: each supplies two conditions. A :class:`FixedEnd` fixes the position (anchor,
+fixed point, or the tow point in the steady frame); a :class:`BodyEnd` balances the
+tension against a body's net buoyancy, its drag in the local flow and a constant
+force (buoy, towed body, depressor). Force balance of a body at ``s = L`` is
+``T t(L) = F_body``; at ``s = 0`` it is ``T t(0) = -F_body`` (SPEC §2.3).
+
+A frictionless horizontal seabed at ``z = seabed_z`` may carry part of a line whose
+fixed end lies on it; the grounded part is straight, carries the touchdown tension
+and feels no drag (assumed sheltered in the seabed boundary layer).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from kanat.physics.drag import body_drag, cable_drag
+
+
+@dataclass(frozen=True)
+class LineProperties:
+    """Properties of a line type needed by statics (SI units).
+
+    Attributes
+    ----------
+    weight : float
+        Weight in water per unstretched length ``w`` [N/m] (negative for a line
+        lighter than water).
+    axial_stiffness : float
+        ``EA`` [N]; ``np.inf`` for an inextensible line.
+    diameter : float
+        Hydrodynamic diameter ``d`` [m].
+    drag_normal, drag_tangential : float
+        ``C_n``, ``C_t`` (tangential referred to ``pi d``) [-].
+    water_density : float
+        ``rho`` [kg/m^3].
+    """
+
+    weight: float
+    axial_stiffness: float
+    diameter: float = 0.0
+    drag_normal: float = 0.0
+    drag_tangential: float = 0.0
+    water_density: float = 1025.0
+
+
+@dataclass(frozen=True)
+class FlowProfile:
+    """Water velocity relative to the cable, piecewise linear in ``z``.
+
+    Attributes
+    ----------
+    z : ndarray, shape (k,)
+        Increasing depths of the rows [m]; one row means a uniform flow.
+    velocity : ndarray, shape (k, 2)
+        ``(u_x, u_z)`` at each row [m/s]; constant beyond the first and last row.
+    """
+
+    z: np.ndarray = field(default_factory=lambda: np.zeros(1))
+    velocity: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))
+
+    @classmethod
+    def uniform(cls, ux: float = 0.0, uz: float = 0.0) -> FlowProfile:
+        return cls(np.zeros(1), np.array([[ux, uz]], dtype=float))
+
+    @property
+    def is_uniform(self) -> bool:
+        return bool(np.all(self.velocity == self.velocity[0]))
+
+    def at(self, z):
+        """Velocity at heights ``z`` (any shape) -> shape ``z.shape + (2,)``."""
+        z = np.asarray(z, dtype=float)
+        if self.is_uniform:
+            return np.broadcast_to(self.velocity[0], z.shape + (2,)).copy()
+        return np.stack([np.interp(z, self.z, self.velocity[:, k]) for k in range(2)], axis=-1)
+
+    def scaled(self, factor: float) -> FlowProfile:
+        return FlowProfile(self.z, self.velocity * factor)
+
+
+@dataclass(frozen=True)
+class FixedEnd:
+    """An end held at ``position = (x, z)`` [m]: anchor, fixed point or tow point."""
+
+    position: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class BodyEnd:
+    """A body at a free end: buoy, towed body or depressor.
+
+    Attributes
+    ----------
+    net_buoyancy : float
+        Buoyancy minus weight [N] (negative sinks).
+    drag_area : float
+        ``C_D S`` [m^2].
+    force : tuple[float, float]
+        Constant external force ``(F_x, F_z)`` [N] (depressor, spreading force).
+    """
+
+    net_buoyancy: float = 0.0
+    drag_area: float = 0.0
+    force: tuple[float, float] = (0.0, 0.0)
+
+    def load(self, flow: FlowProfile, z: float, density: float) -> np.ndarray:
+        """Total external force on the body at height ``z`` [N], shape (2,)."""
+        drag = body_drag(flow.at(z), self.drag_area, density)
+        return np.array(self.force, dtype=float) + drag + np.array([0.0, self.net_buoyancy])
+
+
+@dataclass(frozen=True)
+class CableBVP:
+    """A steady 2-D cable between two ends (SPEC §3.1).
+
+    Attributes
+    ----------
+    line : LineProperties
+    length : float
+        Unstretched length ``L`` [m].
+    start, end : FixedEnd or BodyEnd
+        Conditions at ``s = 0`` and ``s = L``.
+    flow : FlowProfile
+        Water velocity relative to the cable.
+    seabed_z : float or None
+        Height of a frictionless seabed [m], or None.
+    """
+
+    line: LineProperties
+    length: float
+    start: FixedEnd | BodyEnd
+    end: FixedEnd | BodyEnd
+    flow: FlowProfile = field(default_factory=FlowProfile)
+    seabed_z: float | None = None
+
+    def with_flow(self, factor: float) -> CableBVP:
+        """The same problem with the flow scaled by ``factor`` (for continuation)."""
+        return CableBVP(self.line, self.length, self.start, self.end, self.flow.scaled(factor), self.seabed_z)
+
+    def grounding(self) -> Grounding | None:
+        """The seabed geometry when a fixed end lies on the seabed, else None."""
+        if self.seabed_z is None:
+            return None
+        ends = (self.start, self.end)
+        for anchor, end in enumerate(ends):
+            other = ends[1 - anchor]
+            if (isinstance(end, FixedEnd) and isinstance(other, FixedEnd)
+                    and abs(end.position[1] - self.seabed_z) <= 1e-9 * max(1.0, self.length)):
+                direction = 1.0 if other.position[0] >= end.position[0] else -1.0
+                return Grounding(anchor, end.position[0], end.position[1], direction)
+        return None
+
+
+@dataclass(frozen=True)
+class Grounding:
+    """A line lying straight on a frictionless seabed from a fixed end (the anchor).
+
+    Attributes
+    ----------
+    anchor : int
+        Which end lies on the seabed (0: ``s = 0``, 1: ``s = L``).
+    x_anchor, z_anchor : float
+        The anchor's position [m].
+    direction : float
+        +1 when the other end lies at larger ``x``, else -1.
+    """
+
+    anchor: int
+    x_anchor: float
+    z_anchor: float
+    direction: float
+
+    @property
+    def tangent_x(self) -> float:
+        """x component of the unit tangent ``t = dr/ds`` (normalised) on the grounded part."""
+        return self.direction if self.anchor == 0 else -self.direction
+
+    def touchdown_s(self, grounded_length: float, length: float) -> float:
+        """Unstretched arclength of the touchdown point [m]."""
+        return grounded_length if self.anchor == 0 else length - grounded_length
+
+    def touchdown_state(self, tension: float, grounded_length: float, stiffness: float) -> np.ndarray:
+        """State ``(x, z, F_x, F_z)`` at touchdown for a horizontal tension ``tension`` [N]."""
+        x = self.x_anchor + self.direction * grounded_length * (1.0 + tension / stiffness)
+        return np.array([x, self.z_anchor, self.tangent_x * tension, 0.0])
+
+    def fill(self, s, y, tension: float, grounded_length: float, length: float, stiffness: float) -> None:
+        """Overwrite the states ``y`` (4, n) at stations ``s`` that lie on the seabed."""
+        from_anchor = s if self.anchor == 0 else length - s
+        on_bed = from_anchor <= grounded_length
+        y[0, on_bed] = self.x_anchor + self.direction * from_anchor[on_bed] * (1.0 + tension / stiffness)
+        y[1, on_bed] = self.z_anchor
+        y[2, on_bed] = self.tangent_x * tension
+        y[3, on_bed] = 0.0
+
+
+def steady_rhs(problem: CableBVP, y):
+    """Right-hand side ``dy/ds`` of the steady equations, vectorized.
+
+    Parameters
+    ----------
+    problem : CableBVP
+    y : ndarray, shape (4, n)
+        States ``(x, z, F_x, F_z)`` at ``n`` stations.
+
+    Returns
+    -------
+    ndarray, shape (4, n)
+    """
+    line = problem.line
+    force = y[2:4]
+    tension = np.hypot(force[0], force[1])
+    tangent = force / tension
+    strain = tension / line.axial_stiffness
+    drag = cable_drag(tangent.T, problem.flow.at(y[1]), strain, line.diameter,
+                      line.drag_normal, line.drag_tangential, line.water_density).T
+    out = np.empty_like(y)
+    out[0:2] = (1.0 + strain) * tangent
+    out[2] = -drag[0]
+    out[3] = line.weight - drag[1]
+    return out
+
+
+def end_residual(problem: CableBVP, which: int, y_end) -> np.ndarray:
+    """The two conditions of one end, zero when satisfied (unscaled).
+
+    Parameters
+    ----------
+    which : int
+        0 for ``s = 0``, 1 for ``s = L``.
+    y_end : ndarray, shape (4,)
+    """
+    end = (problem.start, problem.end)[which]
+    if isinstance(end, FixedEnd):
+        return y_end[0:2] - np.asarray(end.position, dtype=float)
+    load = end.load(problem.flow, y_end[1], problem.line.water_density)
+    sign = 1.0 if which == 1 else -1.0
+    return y_end[2:4] - sign * load
