@@ -47,7 +47,7 @@ def _end_by_quadrature(solution, length, weight, axial_stiffness):
 
     turning = -V_L / weight
     points = [turning] if 0.0 < turning < suspended else None
-    options = dict(points=points, epsabs=0.0, epsrel=1e-13, limit=500)
+    options = dict(points=points, epsabs=1e-13 * length, epsrel=1e-13, limit=500)
     x = quad(lambda s: (1.0 + T(s) / axial_stiffness) * H / T(s), 0.0, suspended, **options)[0]
     z = quad(lambda s: (1.0 + T(s) / axial_stiffness) * (V_L + weight * s) / T(s), 0.0, suspended, **options)[0]
     return x + L_B * (1.0 + H / axial_stiffness), z
@@ -97,7 +97,7 @@ def test_regimes_are_the_expected_ones():
     assert solve["near_vertical_folded"].vertical_tension_lower < 0.0
     assert solve["near_vertical_folded"].horizontal_tension < 1.0
     assert solve["near_vertical_taut"].vertical_tension_lower > 0.0
-    assert solve["nearly_horizontal"].horizontal_tension > 50 * 1000.0 * 1000.0
+    assert solve["nearly_horizontal"].horizontal_tension > 5.0 * 1000.0 * 1000.0        # > 5 x line weight
     assert solve["lowest_point_between_ends"].vertical_tension_lower < 0.0
     assert solve["inextensible_on_seabed"].grounded_length > 0.0
 
@@ -128,19 +128,19 @@ def test_stiff_line_departs_from_inextensible_like_one_over_stiffness():
     assert dsag[0] / dsag[1] == pytest.approx(2.0, rel=1e-3)
 
 
-@pytest.mark.parametrize("stiffness", [np.inf, 2e9])
+@pytest.mark.parametrize("stiffness", [np.inf, 2e10])
 def test_parabolic_limit_of_a_taut_shallow_line(stiffness):
     # sag = w S^2 / (8 H (1 + H/EA)) (curvature w/(H (1 + H/EA)) of the shallow elastic line);
     # the catenary exceeds it by (w S / H)^2 / 48 relative, to leading order.
     span, w = 1000.0, 100.0
-    length = 1001.0
+    length = 1000.2
     sol = elastic_catenary(span, 0.0, length, w, stiffness, n_points=201)
     H = sol.horizontal_tension
     parabola = w * span**2 / (8.0 * H * (1.0 + H / stiffness))
     epsilon = w * span / H
     assert epsilon < 0.1
     relative = -sol.z[100] / parabola - 1.0
-    assert relative == pytest.approx(epsilon**2 / 48.0, rel=0.05)
+    assert relative == pytest.approx(epsilon**2 / 48.0, rel=1e-2)   # next term is O(epsilon^2) smaller
 
 
 def test_vertical_hang():
@@ -289,7 +289,7 @@ def _bvp_suspended(span, rise, length, w, ea):
 
     s = np.linspace(0.0, length, 200)
     guess = np.vstack([span * s / length, rise * s / length, w * (s - length / 2)])
-    res = solve_bvp(ode, bc, s, guess, p=[w * length], tol=1e-11, max_nodes=200000)
+    res = solve_bvp(ode, bc, s, guess, p=[w * length], tol=1e-9, max_nodes=100000)
     assert res.success, res.message
     return res.p[0], res.sol(0.0)[2], res.sol(length)[2]
 
@@ -309,7 +309,7 @@ def _bvp_on_seabed(span, rise, length, w, ea):
     sigma = np.linspace(0.0, 1.0, 200)
     L_B = 0.3 * length
     guess = np.vstack([L_B + (span - L_B) * sigma, rise * sigma**2, w * (length - L_B) * sigma])
-    res = solve_bvp(ode, bc, sigma, guess, p=[0.2 * w * length, L_B], tol=1e-11, max_nodes=200000)
+    res = solve_bvp(ode, bc, sigma, guess, p=[0.2 * w * length, L_B], tol=1e-9, max_nodes=100000)
     assert res.success, res.message
     return res.p[0], res.p[1], res.sol(1.0)[2]
 
@@ -319,18 +319,18 @@ def test_matches_solve_bvp_on_the_cable_ode(name):
     span, rise, length, weight, stiffness, _ = CONFIGURATIONS[name]
     H, V_L, V_U = _bvp_suspended(span, rise, length, weight, stiffness)
     sol = elastic_catenary(span, rise, length, weight, stiffness)
-    assert sol.horizontal_tension == pytest.approx(H, rel=1e-7)
-    assert sol.vertical_tension_lower == pytest.approx(V_L, rel=1e-7)
-    assert sol.vertical_tension_upper == pytest.approx(V_U, rel=1e-7)
+    assert sol.horizontal_tension == pytest.approx(H, rel=1e-8)
+    assert sol.vertical_tension_lower == pytest.approx(V_L, rel=1e-8)
+    assert sol.vertical_tension_upper == pytest.approx(V_U, rel=1e-8)
 
 
 def test_matches_solve_bvp_with_seabed_contact():
     span, rise, length, weight, stiffness, _ = CONFIGURATIONS["mooring_on_seabed"]
     H, L_B, V_U = _bvp_on_seabed(span, rise, length, weight, stiffness)
     sol = elastic_catenary(span, rise, length, weight, stiffness, seabed=True)
-    assert sol.horizontal_tension == pytest.approx(H, rel=1e-7)
-    assert sol.grounded_length == pytest.approx(L_B, rel=1e-7)
-    assert sol.vertical_tension_upper == pytest.approx(V_U, rel=1e-7)
+    assert sol.horizontal_tension == pytest.approx(H, rel=1e-8)
+    assert sol.grounded_length == pytest.approx(L_B, rel=1e-8)
+    assert sol.vertical_tension_upper == pytest.approx(V_U, rel=1e-8)
 
 
 # MoorPy's tests/test_catenary.py (NREL/MoorPy, cases 2, 4 and 5; catenary(XF, ZF, L, EA, W, CB)),
@@ -403,3 +403,17 @@ def test_solution_is_frozen_and_shaped():
     assert sol.s.shape == sol.x.shape == sol.z.shape == sol.tension.shape == (33,)
     with pytest.raises(AttributeError):
         sol.horizontal_tension = 1.0
+
+
+@pytest.mark.parametrize("h, v, seabed", [(0.3, 0.7, True), (0.3, 0.7, False), (2.0, 1.4, False),
+                                          (1e-3, 0.2, False), (50.0, 0.5, False), (0.05, 0.9, True)])
+def test_newton_jacobian_matches_finite_differences(h, v, seabed):
+    from kanat.statics.catenary import _end_position
+
+    stretch, step = 0.01, 1e-5
+    _, _, jac = _end_position(h, v, stretch, seabed)
+    dh = [(a - b) / (2 * step * h) for a, b in zip(_end_position(h * (1 + step), v, stretch, seabed)[:2],
+                                                   _end_position(h * (1 - step), v, stretch, seabed)[:2])]
+    dv = [(a - b) / (2 * step) for a, b in zip(_end_position(h, v + step, stretch, seabed)[:2],
+                                               _end_position(h, v - step, stretch, seabed)[:2])]
+    assert np.allclose(jac, [dh[0], dv[0], dh[1], dv[1]], rtol=1e-6, atol=1e-8)

@@ -9,6 +9,7 @@ import typer
 from rich.console import Console
 from rich.panel import Panel
 from rich.table import Table
+from rich.text import Text
 
 import kanat
 from kanat.errors import CaseError, KanatError
@@ -39,10 +40,10 @@ def _fail(error: Exception, debug: bool, title: str) -> None:
         _print_problems(error.problems)
         raise typer.Exit(1)
     if isinstance(error, KanatError):
-        console.print(Panel(str(error), title=title, border_style="red", expand=False))
+        console.print(Panel(Text(str(error), overflow="fold"), title=title, border_style="red", expand=False))
         raise typer.Exit(1)
-    console.print(Panel(f"{type(error).__name__}: {error}\n\nThis is a bug in kanat; rerun with --debug "
-                        "for the traceback and report it with the case file.",
+    console.print(Panel(Text(f"{type(error).__name__}: {error}\n\nThis is a bug in kanat; rerun with --debug "
+                             "for the traceback and report it with the case file.", overflow="fold"),
                         title="internal error", border_style="red", expand=False))
     raise typer.Exit(2)
 
@@ -54,7 +55,7 @@ def _print_problems(problems) -> None:
     for p in problems:
         where = f"{p.file or '<case>'}:{p.line}" if p.line else (p.file or "<case>")
         style = "red" if p.severity == "error" else "yellow"
-        table.add_row(where, p.key, f"[{style}]{p.severity}[/{style}]", p.message)
+        table.add_row(Text(where), Text(p.key), Text(p.severity, style=style), Text(p.message))
     console.print(table)
 
 
@@ -82,7 +83,7 @@ def statics(case: Path = typer.Argument(..., help="YAML case file."),
                                        help="auto | shooting | collocation | catenary"),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Solve the steady state of a case and write it to OUTPUT."""
-    _statics(case, output, plot, method, debug)
+    _statics(_load(case, debug), case, output, plot, method, debug)
 
 
 @app.command()
@@ -91,44 +92,50 @@ def run(case: Path = typer.Argument(..., help="YAML case file."),
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
         debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run any case (the model named in the case file) and write it to OUTPUT."""
+    loaded = _load(case, debug)
+    if loaded.model != "statics":
+        _fail(KanatError(f"{case}: model '{loaded.model}' is not available in kanat {kanat.__version__}; "
+                         "this version solves 'statics' cases. To get the steady (initial) state of this "
+                         f"case, run: kanat statics {case} -o OUT.nc"), debug, "model not available")
+    _statics(loaded, case, output, plot, "auto", debug)
+
+
+def _load(case: Path, debug: bool):
+    """Load a case, printing its warnings in yellow; explain and exit if it cannot be read."""
+    import warnings
+
     from kanat.io import load_case
 
     try:
-        model = load_case(case).model
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            loaded = load_case(case)
     except Exception as error:  # noqa: BLE001 - reported by _fail
         _fail(error, debug, "cannot read the case")
-    if model != "statics":
-        _fail(KanatError(f"{case}: model '{model}' is not available in kanat {kanat.__version__}; this "
-                         "version solves 'statics' cases. To get the steady (initial) state of this case, "
-                         f"run: kanat statics {case} -o OUT.nc"), debug, "model not available")
-    _statics(case, output, plot, "auto", debug)
+    for warning in caught:
+        console.print(Text(str(warning.message), style="yellow", overflow="fold"))
+    return loaded
 
 
-def _statics(case: Path, output: Path, plot: Optional[Path], method: str, debug: bool) -> None:
-    from kanat.io import load_case
+def _statics(loaded, case: Path, output: Path, plot: Optional[Path], method: str, debug: bool) -> None:
     from kanat.io.results import failed_dataset, statics_dataset, write_result
     from kanat.statics import solve_statics
 
     try:
-        loaded = load_case(case)
         start = time.perf_counter()
         with console.status(f"solving statics of {case.name} ..."):
             result = solve_statics(loaded, method=method)
         write_result(statics_dataset(result, wall_time_s=time.perf_counter() - start), output)
+        if plot is not None:
+            from kanat.report.statics_plot import plot_statics
+
+            plot_statics(result, plot)
     except KanatError as error:
-        if not isinstance(error, CaseError) and "loaded" in locals():
+        if not isinstance(error, CaseError):
             write_result(failed_dataset(loaded, str(error), scheme=method), output)
             console.print(f"[yellow]wrote {output}: no solution, its status says why[/yellow]")
         _fail(error, debug, "statics failed")
     except Exception as error:  # noqa: BLE001 - reported by _fail
         _fail(error, debug, "statics failed")
     out.print(result.summary())
-    out.print(f"wrote {output}")
-    if plot is not None:
-        from kanat.report.statics_plot import plot_statics
-
-        try:
-            plot_statics(result, plot)
-        except Exception as error:  # noqa: BLE001 - reported by _fail
-            _fail(error, debug, "plot failed")
-        out.print(f"wrote {plot}")
+    out.print(f"wrote {output}" + (f" and {plot}" if plot is not None else ""))

@@ -235,6 +235,10 @@ def _problem_for(err: dict[str, Any], data: Any, lines: dict[Path, int],
                  file: str | None) -> Problem:
     """One pydantic error as a :class:`Problem` at its key path and line."""
     loc = tuple(err["loc"])
+    if loc and loc[-1] == "[key]":  # a mapping key of the wrong type (a name written as 1)
+        path = data_path(loc[:-1], data)
+        return Problem(key_path(path), f"a name must be text ({_got(err.get('input'))}); "
+                       "quote it", file, line_of(lines, path))
     owner, key, annotation, reached = field_at(loc)
     path = data_path(loc, data)
     if err["type"].startswith("union_tag"):
@@ -275,7 +279,27 @@ def validate_data(data: Any, file: str | None = None,
     try:
         return Case.model_validate(data, context={}), []
     except ValidationError as exc:
-        return None, [_problem_for(err, data, lines or {}, file) for err in exc.errors()]
+        errors = exc.errors()
+    misspelt = _misspelt(errors)
+    return None, [_problem_for(err, data, lines or {}, file) for err in errors
+                  if not (err["type"] == "missing" and tuple(err["loc"]) in misspelt)]
+
+
+def _misspelt(errors: list[dict[str, Any]]) -> set[tuple[Any, ...]]:
+    """Locations of missing keys that an unknown key next to them probably misspells.
+
+    Reporting ``unknown key 'diamter'; did you mean 'diameter'?`` is enough; the
+    consequent ``missing required key 'diameter'`` would be the same mistake twice.
+    """
+    found = set()
+    for err in errors:
+        if err["type"] == "extra_forbidden":
+            loc = tuple(err["loc"])
+            owner, key, _, _ = field_at(loc)
+            close = suggest(key, field_keys(owner)) if owner is not None else ""
+            if close:
+                found.add(loc[:-1] + (close.split("'")[1],))
+    return found
 
 
 # --- public entry points ----------------------------------------------------------

@@ -8,11 +8,25 @@ from .cable import Cable, CableEnd
 from .case import Case
 from .components import Body, LineType, Point
 from .environment import Current, Environment, JonswapWaves, RegularWaves, Waves
-from .problems import (PitchModel, SphereDimensional, SphereDimensionless, SphereTwoCables,
-                       Stabilizer)
+from .problems import (
+                       PitchModel,
+                       SphereDimensional,
+                       SphereDimensionless,
+                       SphereTwoCables,
+                       Stabilizer,
+)
 from .simulation import Simulation
-from .vessel import (KNOT, SEGMENT_TYPES, Accelerate, Heading, SpeedStep, Straight,
-                     TrackSegment, Turn, Vessel)
+from .vessel import (
+                       KNOT,
+                       SEGMENT_TYPES,
+                       Accelerate,
+                       Heading,
+                       SpeedStep,
+                       Straight,
+                       TrackSegment,
+                       Turn,
+                       Vessel,
+)
 
 __all__ = [
     "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "Environment", "Heading",

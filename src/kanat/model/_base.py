@@ -18,7 +18,8 @@ UNIT_KEY = "unit"
 class KanatModel(BaseModel):
     """Base of every case model: unknown keys are errors, instances are immutable."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True,
+                              allow_inf_nan=False)
 
 
 def quantity(default: Any = PydanticUndefined, *, unit: str, **constraints: Any) -> Any:

@@ -42,7 +42,7 @@ class CableEnd(KanatModel):
         return parse_end(value, (info.context or {}).get("names"))
 
     @model_validator(mode="after")
-    def _consistent(self) -> "CableEnd":
+    def _consistent(self) -> CableEnd:
         if self.kind == "anchor" and self.position is None:
             raise ValueError("an anchor needs a position: anchor:[x, y, z]")
         if self.kind in _NAMED_KINDS and not self.name:
@@ -167,7 +167,7 @@ class Cable(KanatModel):
         return value
 
     @model_validator(mode="after")
-    def _distinct_ends(self) -> "Cable":
+    def _distinct_ends(self) -> Cable:
         if self.from_.kind == "free" and self.to.kind == "free":
             raise ValueError("both ends are 'free': attach at least one end to the vessel, "
                              "an anchor, a body or a point")

@@ -22,6 +22,7 @@ from .vessel import Vessel
 
 ModelName = Literal["continuum", "lumped", "statics", "pitch"]
 DYNAMIC_MODELS = ("continuum", "lumped")
+_SECTIONS = ("environment", "line_types", "bodies", "points", "vessel", "cables")
 
 
 def _names(section: Any) -> list[str] | None:
@@ -84,7 +85,8 @@ class Case(KanatModel):
     def _collect_names(cls, data: Any, info: ValidationInfo) -> Any:
         if not isinstance(data, dict):
             return data
-        data = dict(data)
+        # an empty section (``points:`` with nothing under it) reads as null: use the default
+        data = {k: v for k, v in data.items() if not (v is None and k in _SECTIONS)}
         bodies = _names(data.get("bodies")) or []
         points = _names(data.get("points")) or []
         _resolve_named_ends(data, bodies, points)
@@ -92,6 +94,14 @@ class Case(KanatModel):
             info.context["names"] = {"line_types": _names(data.get("line_types", {})),
                                      "bodies": bodies, "points": points}
         return data
+
+    @field_validator("points")
+    @classmethod
+    def _distinct_names(cls, points: dict[str, Point], info: ValidationInfo) -> Any:
+        both = sorted(set(points) & set(info.data.get("bodies") or {}))
+        if both:
+            raise ValueError(f"'{both[0]}' names both a body and a point; rename one")
+        return points
 
     @field_validator("cables")
     @classmethod
@@ -134,7 +144,7 @@ class Case(KanatModel):
         return value
 
     @model_validator(mode="after")
-    def _cross_references(self) -> "Case":
+    def _cross_references(self) -> Case:
         messages = reference_errors(self)
         if messages:
             raise ValueError("; ".join(messages))

@@ -27,6 +27,7 @@ MAX_STATIC_STRAIN = 0.10    # static strain of a hanging system considered unphy
 BREAKING_STEEPNESS = 1 / 7  # Miche's limit of H / wavelength for regular waves
 BREAKING_DEPTH_RATIO = 0.78 # depth-limited breaking, H / depth (McCowan)
 RESONANCE_GAIN = 10.0       # dynamic amplification of a pitch harmonic worth a warning
+DEEP_WATER_KH = 20.0        # k h beyond which tanh(k h) = 1 to 1e-17: deep water
 TIME_TOL = 1e-6             # relative tolerance on "multiple of dt"
 
 
@@ -153,9 +154,9 @@ def check_hanging_loads(case: Case, out: Findings) -> None:
             line = case.line_types[cable.line_type]
             pull, weight, tension = _hanging_load(case, cable, body_end.name)
             what = "submerged weight" if pull >= 0 else "net buoyancy"
-            load = (f"body '{body_end.name}' ({what} {_kn(abs(pull))}) and the cable's weight in "
-                    f"water {_kn(weight)} ({weight / cable.length:.4g} N/m × {fmt(cable.length)} m) "
-                    f"give a static tension of up to {_kn(tension)}")
+            load = (f"body '{body_end.name}' ({what} {_kn(abs(pull))}) and the cable's weight "
+                    f"in water {_kn(weight)} ({weight / cable.length:.4g} N/m × "
+                    f"{fmt(cable.length)} m) give a static tension of up to {_kn(tension)}")
             if line.breaking_load is not None and tension > line.breaking_load:
                 out.error(("cables", i), f"{load}, above the breaking load "
                           f"{_kn(line.breaking_load)} of line type '{cable.line_type}'")
@@ -219,7 +220,7 @@ def wavelength(period: float, gravity: float, depth: float | None) -> float:
     """Linear-wave length [m] from ``omega^2 = g k tanh(k h)`` (deep water if no depth)."""
     omega = 2 * math.pi / period
     k = omega**2 / gravity
-    if depth is not None:
+    if depth is not None and k * depth < DEEP_WATER_KH:
         k = k / math.sqrt(math.tanh(k * depth))  # good start in all depths
         for _ in range(50):
             f = gravity * k * math.tanh(k * depth) - omega**2

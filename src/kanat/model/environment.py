@@ -9,7 +9,6 @@ from pydantic import BeforeValidator, Field, field_validator, model_validator
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
 
 
-
 def _as_row(value: Any) -> Any:
     if not isinstance(value, (list, tuple)) or len(value) != 4:
         got = f"{len(value)} values" if isinstance(value, (list, tuple)) else repr(value)
@@ -51,7 +50,7 @@ class Current(KanatModel):
         return ordered
 
     @model_validator(mode="after")
-    def _one_form(self) -> "Current":
+    def _one_form(self) -> Current:
         if self.velocity is not None and self.profile is not None:
             raise ValueError("give either 'velocity' (uniform) or 'profile' (rows z, ux, uy, uz), "
                              "not both")

@@ -48,7 +48,7 @@ class SphereTwoCables(KanatModel):
     n_nodes: int = Field(101, ge=3)
 
     @model_validator(mode="after")
-    def _one_input(self) -> "SphereTwoCables":
+    def _one_input(self) -> SphereTwoCables:
         if (self.dimensionless is None) == (self.dimensional is None):
             raise ValueError("give exactly one of 'dimensionless' {Psi, LoL, x_C, QkL, RkL} "
                              "or 'dimensional' {flow_speed, sphere_diameter, ...}")
@@ -79,7 +79,7 @@ class PitchModel(KanatModel):
     harmonics: int = Field(50, ge=1)
 
     @model_validator(mode="after")
-    def _one_stiffness(self) -> "PitchModel":
+    def _one_stiffness(self) -> PitchModel:
         if (self.natural_frequency is None) == (self.restoring is None):
             raise ValueError("give exactly one of 'natural_frequency' (rad/s) or "
                              "'restoring' (N m/rad)")

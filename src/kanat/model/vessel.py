@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, ClassVar, Union
 
-from pydantic import Discriminator, Field, Tag, computed_field, model_validator
+from pydantic import Discriminator, Tag, computed_field, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
 
@@ -55,7 +55,7 @@ class Straight(TrackSegment):
     duration: float = quantity(unit="s", gt=0)
 
     @model_validator(mode="after")
-    def _check(self) -> "Straight":
+    def _check(self) -> Straight:
         _one_speed(self.speed, self.speed_kn, "speed")
         return self
 
@@ -72,7 +72,7 @@ class _ToSpeed(TrackSegment):
     to_speed_kn: float | None = quantity(None, unit="kn", ge=0)
 
     @model_validator(mode="after")
-    def _check_target(self) -> "_ToSpeed":
+    def _check_target(self) -> _ToSpeed:
         if _one_speed(self.to_speed, self.to_speed_kn, "to_speed") is None:
             raise ValueError("needs a target speed: 'to_speed' (m/s) or 'to_speed_kn' (knots)")
         return self
@@ -120,7 +120,7 @@ class Turn(TrackSegment):
     speed_kn: float | None = quantity(None, unit="kn", ge=0)
 
     @model_validator(mode="after")
-    def _check(self) -> "Turn":
+    def _check(self) -> Turn:
         _one_speed(self.speed, self.speed_kn, "speed")
         if (self.radius is None) == (self.rate_deg_s is None):
             raise ValueError("give exactly one of 'radius' (m) or 'rate_deg_s' (deg/s)")
@@ -153,7 +153,7 @@ class Heading(TrackSegment):
     rate_deg_s: float = quantity(unit="deg/s", gt=0)
 
     @model_validator(mode="after")
-    def _check(self) -> "Heading":
+    def _check(self) -> Heading:
         if (self.to_deg is None) == (self.change_deg is None):
             raise ValueError("give exactly one of 'to_deg' (absolute heading) or "
                              "'change_deg' (signed, + to port)")

@@ -4,30 +4,37 @@ A uniform line of weight in water ``w`` per unstretched length and axial
 stiffness ``EA`` hangs between a lower end at the origin and an upper end at
 ``(span, rise)``, with no current. The horizontal tension ``H`` is constant and the
 vertical tension grows linearly along the unstretched arclength ``s``, measured
-here from the **lower** end: ``V(s) = V_L + w s``, ``T = sqrt(H^2 + V^2)``. Integrating
-``dx/ds = (1 + T/EA) H/T``, ``dz/ds = (1 + T/EA) V/T`` gives (Irvine 1981, *Cable
-Structures*, eqs. 2.25-2.26; the quasi-static mooring line of Jonkman 2007, NREL/TP-500-41958,
-eqs. 2-1 and 2-2, used by MoorPy and MAP++)
+here from the **lower** end: ``V(s) = V_L + w s``, ``T = sqrt(H^2 + V^2)``.
+Integrating ``dx/ds = (1 + T/EA) H/T``, ``dz/ds = (1 + T/EA) V/T`` gives the elastic
+catenary (Irvine 1981, *Cable Structures*; the quasi-static mooring line of
+Jonkman 2007, NREL/TP-500-41958, used by FAST, MoorDyn, MoorPy and MAP++):
 
 fully suspended, ``V_L = V_U - w L``::
 
-    x_U = H/w [asinh(V_U/H) - asinh(V_L/H)] + H L/EA
-    z_U = H/w [sqrt(1 + (V_U/H)^2) - sqrt(1 + (V_L/H)^2)] + (V_U L - w L^2/2)/EA
+    (1)  x_U = H/w [asinh(V_U/H) - asinh(V_L/H)] + H L/EA
+    (2)  z_U = H/w [sqrt(1 + (V_U/H)^2) - sqrt(1 + (V_L/H)^2)] + (V_U L - w L^2/2)/EA
 
-partly on a frictionless seabed, grounded length ``L_B = L - V_U/w``::
+partly on a frictionless seabed, grounded length ``L_B = L - V_U/w``, ``V_L = 0``::
 
-    x_U = L_B + H/w asinh(V_U/H) + H L/EA
-    z_U = H/w [sqrt(1 + (V_U/H)^2) - 1] + V_U^2/(2 EA w)
+    (3)  x_U = L_B + H/w asinh(V_U/H) + H L/EA
+    (4)  z_U = H/w [sqrt(1 + (V_U/H)^2) - 1] + V_U^2/(2 EA w)
+    (5)  x(s) = s (1 + H/EA),  z(s) = 0,  T(s) = H      on the seabed, s <= L_B
 
-Both are evaluated in forms that stay accurate when ``H -> 0`` (near-vertical
-lines) and when the line is nearly straight (see :func:`_suspended_offsets`):
-``(T - T_L)/w = s (V + V_L)/(T + T_L)`` and
-``asinh(a) - asinh(b) = asinh(a sqrt(1 + b^2) - b sqrt(1 + a^2))``.
+(3)-(4) are (1)-(2) applied to the suspended part, started at ``x = L_B (1 + H/EA)``.
+They are evaluated in forms that stay accurate when ``H -> 0`` (near-vertical
+lines) and when the line is nearly straight, with ``V_0 = V(0)``, ``T_0 = T(0)``::
 
-The end tensions ``(H, V_U)`` solve the two end conditions by Newton's method with
-the analytic Jacobian, in the dimensionless unknowns ``(log(H/(w L)), V_U/(w L))``.
-The seabed regime is chosen by the iterate (grounded while ``V_U < w L``); the two
+    (6)  H/w [sqrt(1 + (V/H)^2) - sqrt(1 + (V_0/H)^2)] = (T - T_0)/w = s (V + V_0)/(T + T_0)
+    (7)  asinh(V/H) - asinh(V_0/H) = asinh(w s (V + V_0)/(V T_0 + V_0 T))   (V, V_0 of one sign)
+
+The end tensions ``(H, V_U)`` solve (1)-(2) or (3)-(4) by Newton's method with the
+analytic Jacobian, in the dimensionless unknowns ``(log(H/(w L)), V_U/(w L))``. The
+seabed regime is chosen by the iterate (grounded while ``V_U < w L``); the two
 regimes join with a continuous Jacobian at touchdown, so Newton crosses it freely.
+Where Newton struggles (nearly taut, nearly vertical lines), a bracketed solve of
+the same equations as two nested monotone 1-D problems takes over. Edge cases with
+``H = 0`` (vertical lines, a line slack on the seabed) are solved in closed form,
+as in MoorPy (Hall et al. 2024, Energies 17, 3155).
 """
 from __future__ import annotations
 
@@ -52,6 +59,7 @@ POSITION_FLOOR = 1e-6          # so coordinates below 1e-6 L are held to 1e-15 L
 MIN_LOG_H = -690.0             # log(H/(w L)) floor: e^-690 ~ 1e-300, keeps asinh(V/H) finite
 MAX_LOG_H = 690.0              # and ceiling, keeps exp() finite
 TAUT_GUESS_LAMBDA = 0.2        # Peyrot & Goulois (1979) catenary parameter for a taut line
+SLACK_LIMIT_TOLERANCE = 1e-12  # a span within this (relative) of the H = 0 seabed limit is at it
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,9 +87,10 @@ class CatenarySolution:
 
     Notes
     -----
-    When the line is slacker than hanging vertically onto the seabed (``H = 0``
-    and the grounded part shorter on the seabed than its length), the grounded
-    part is drawn bunched at the touchdown point ``x = span`` with zero tension.
+    On a seabed, a line with ``span <= L - l`` (``l`` the length that hangs vertically
+    over the rise) has ``H = 0``: it hangs vertically and lies slack on the seabed.
+    At ``span = L - l`` the grounded part is straight; below, it is drawn bunched
+    at the touchdown point ``x = span`` with zero tension.
     """
 
     horizontal_tension: float
@@ -114,8 +123,8 @@ class CatenarySolution:
 def _suspended_offsets(length, horizontal_tension, vertical_tension_start, weight, axial_stiffness):
     """Offsets ``(dx, dz)`` and vertical tension along a suspended catenary segment.
 
-    Irvine (1981) eqs. 2.25-2.26 from a point with vertical tension ``V_0``, in
-    cancellation-free form, with ``V = V_0 + w l``, ``T = sqrt(H^2 + V^2)``::
+    Module eqs. (1)-(2) from a point with vertical tension ``V_0``, in the
+    cancellation-free forms (6)-(7), with ``V = V_0 + w l``, ``T = sqrt(H^2 + V^2)``::
 
         dx = H/w asinh((V^2 - V_0^2) / (V T_0 + V_0 T)) + H l/EA   (V, V_0 of one sign)
         dx = H/w [asinh(V/H) - asinh(V_0/H)]           + H l/EA   (otherwise)
@@ -152,9 +161,8 @@ def catenary_profile(s, horizontal_tension, vertical_tension_lower, weight, axia
                      grounded_length=0.0):
     """Position and tension of an elastic catenary at unstretched arclengths ``s``.
 
-    Closed form of Irvine (1981) eqs. 2.25-2.26 (suspended) with a taut frictionless
-    grounded part ``0 <= s <= L_B`` on which ``x = s (1 + H/EA)``, ``z = 0``, ``T = H``
-    (Jonkman 2007, eq. 2-3 with no friction).
+    Module eqs. (1)-(2) along the suspended part and (5) along a taut frictionless
+    grounded part ``0 <= s <= L_B``.
 
     Parameters
     ----------
@@ -195,8 +203,8 @@ def _end_position(h, v, stretch, seabed):
     """Dimensionless upper-end position and its Jacobian.
 
     All quantities scaled by the line: ``h = H/(w L)``, ``v = V_U/(w L)``,
-    ``stretch = w L/EA``, positions divided by ``L``. Module equations for ``x_U, z_U``;
-    grounded when ``seabed`` and ``v < 1``.
+    ``stretch = w L/EA``, positions divided by ``L``. Module eqs. (1)-(2) with (6)-(7),
+    or (3)-(4) when ``seabed`` and ``v < 1``.
 
     Returns
     -------
@@ -365,8 +373,8 @@ def _nested_solve(span, rise, stretch, seabed):
 def _hanging_length(rise, stretch):
     """Dimensionless unstretched length hanging vertically to reach ``rise``.
 
-    Root of ``l + stretch l^2/2 = rise`` (vertical elastic hang, Jonkman 2007 eq. 2-1
-    with H = 0), written without cancellation.
+    Root of ``l + stretch l^2/2 = rise`` (module eq. (4) with ``H = 0``), written
+    without cancellation.
     """
     return 2.0 * rise / (1.0 + math.sqrt(1.0 + 2.0 * stretch * rise))
 
@@ -381,13 +389,11 @@ def _vertical_tension_when_vertical(rise, stretch):
     """
     if rise <= 1.0 + 0.5 * stretch:
         return 0.5 * (1.0 + rise / (1.0 + 0.5 * stretch))
-    if stretch == 0.0:
-        raise SolverError(f"no vertical solution: inextensible line of length 1 cannot reach "
-                          f"a rise of {rise:.12g} line lengths")
-    return 0.5 + (rise - 1.0) / stretch
+    return 0.5 + (rise - 1.0) / stretch                    # stretch > 0: the caller checked
 
 
 def _solution(H, V_upper, V_lower, grounded, length, weight, axial_stiffness, n_points):
+    """Package end tensions with the profile sampled at ``n_points`` even steps of ``s``."""
     s = np.linspace(0.0, length, n_points)
     x, z, tension = catenary_profile(s, H, V_lower, weight, axial_stiffness, grounded)
     return CatenarySolution(H, V_upper, V_lower, grounded, s, x, z, tension)
@@ -420,9 +426,9 @@ def _check_inputs(span, rise, length, weight, axial_stiffness, n_points):
 def elastic_catenary(span, rise, length, weight, axial_stiffness, seabed=False, n_points=101):
     """Elastic catenary through two points, optionally resting on a frictionless seabed.
 
-    Solves the end conditions of the module equations (Irvine 1981, eqs. 2.25-2.26;
-    Jonkman 2007, eqs. 2-1 to 2-3 without friction) for ``(H, V_U)`` by Newton's
-    method to ~1e-13 relative, then samples the closed-form profile.
+    Solves the end conditions, module eqs. (1)-(2) or, on the seabed, (3)-(4), for
+    ``(H, V_U)`` to round-off (~1e-13 relative), then samples the closed-form
+    profile (:func:`catenary_profile`).
 
     Parameters
     ----------
@@ -462,17 +468,18 @@ def elastic_catenary(span, rise, length, weight, axial_stiffness, seabed=False, 
     args = (length, weight, axial_stiffness, n_points)
     if seabed:
         hanging = _hanging_length(Z, stretch)
-        if hanging < 1.0 and X <= 1.0 - hanging:
+        if hanging < 1.0 and X <= (1.0 - hanging) * (1.0 + SLACK_LIMIT_TOLERANCE):
             return _slack_on_seabed(span, length, weight, axial_stiffness, hanging * length, n_points)
         if Z == 0.0:                                            # straight, stretched along the seabed
             if stretch == 0.0:
                 raise _no_solution(span, rise, length, "an inextensible line on the seabed cannot span more than its length")
             return _solution((X - 1.0) / stretch * wL, 0.0, 0.0, length, *args)
+    chord = math.hypot(X, Z)
+    if stretch == 0.0 and (chord > 1.0 or (chord == 1.0 and X > 0.0)):
+        raise _no_solution(span, rise, length, "an inextensible line must be longer than the chord")
     if X == 0.0:
         v = _vertical_tension_when_vertical(Z, stretch)
         return _solution(0.0, v * wL, (v - 1.0) * wL, 0.0, *args)
-    if stretch == 0.0 and math.hypot(X, Z) >= 1.0:
-        raise _no_solution(span, rise, length, "an inextensible line must be longer than the chord")
     root = _newton(X, Z, stretch, seabed) or _nested_solve(X, Z, stretch, seabed)
     if root is None:
         raise SolverError(

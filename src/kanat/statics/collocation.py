@@ -16,7 +16,7 @@ from scipy.integrate import solve_bvp
 
 from kanat.errors import SolverError
 from kanat.statics.guess import catenary_states, straight_guess
-from kanat.statics.problem import BodyEnd, CableBVP, FixedEnd, Grounding, end_residual, steady_rhs
+from kanat.statics.problem import CableBVP, FixedEnd, Grounding, check_solvable, end_residual, steady_rhs
 from kanat.statics.solution import CableSolution
 
 TOL = 1e-8             # solve_bvp relative residual on the scaled equations (error ~1e-12 vs closed form)
@@ -39,9 +39,7 @@ def solve_collocation(problem: CableBVP, s_out=None) -> CableSolution:
     CableSolution
     """
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
-    if all(isinstance(e, BodyEnd) for e in (problem.start, problem.end)):
-        raise SolverError("both ends of the cable are bodies, so nothing holds it in place; "
-                          "fix one end (anchor, vessel) to solve its statics")
+    check_solvable(problem)
     grounding = problem.grounding()
     if grounding is not None:
         guess = catenary_states(problem, seabed=True)

@@ -81,8 +81,9 @@ class StaticsResult:
         for name, sol in self.cables.items():
             tension = sol.tension
             lines.append(f"cable {name} ({sol.method}): tension {tension[0] / 1e3:.3f} kN at s = 0, "
-                         f"{tension[-1] / 1e3:.3f} kN at s = {sol.s[-1]:g} m; angle at s = 0 "
-                         f"{np.degrees(sol.angle[0]):.2f} deg"
+                         f"{tension[-1] / 1e3:.3f} kN at s = {sol.s[-1]:g} m; leaves s = 0 at "
+                         f"{np.degrees(np.arctan2(-sol.force[0, 1], abs(sol.force[0, 0]))):.2f} deg "
+                         "below the horizontal"
                          + (f"; {sol.grounded_length:.2f} m on the seabed" if sol.grounded_length > 0 else ""))
         for name, position in self.bodies.items():
             lines.append(f"body {name}: x = {position[0]:.3f} m, z = {position[2]:.3f} m (depth "

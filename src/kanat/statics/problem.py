@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from kanat.errors import SolverError
 from kanat.physics.drag import body_drag, cable_drag
 
 
@@ -253,3 +254,24 @@ def end_residual(problem: CableBVP, which: int, y_end) -> np.ndarray:
     load = end.load(problem.flow, y_end[1], problem.line.water_density)
     sign = 1.0 if which == 1 else -1.0
     return y_end[2:4] - sign * load
+
+
+def check_solvable(problem: CableBVP) -> None:
+    """Refuse problems with no steady solution before any solver tries them.
+
+    Raises
+    ------
+    SolverError
+        Both ends are bodies (nothing holds the cable), or a body exerts no force on
+        the cable whatever its depth (the end is slack and its direction undefined).
+    """
+    ends = (problem.start, problem.end)
+    if all(isinstance(e, BodyEnd) for e in ends):
+        raise SolverError("both ends of the cable are bodies, so nothing holds it in place; "
+                          "fix one end (anchor, vessel) to solve its statics")
+    for end in ends:
+        if (isinstance(end, BodyEnd) and end.net_buoyancy == 0 and not any(end.force)
+                and (end.drag_area == 0 or not np.any(problem.flow.velocity))):
+            raise SolverError("the body exerts no force on the cable (net buoyancy, drag and force are "
+                              "all zero), so the cable end is slack and its steady direction undefined; "
+                              "give the body weight, buoyancy or drag")

@@ -24,7 +24,7 @@ from scipy.optimize import root, root_scalar
 
 from kanat.errors import SolverError
 from kanat.statics.guess import catenary_states, straight_guess
-from kanat.statics.problem import BodyEnd, CableBVP, Grounding, steady_rhs
+from kanat.statics.problem import BodyEnd, CableBVP, Grounding, check_solvable, steady_rhs
 from kanat.statics.solution import CableSolution
 
 RTOL = 1e-11          # ODE tolerance, far below the 1e-6 the solvers must agree to
@@ -54,10 +54,8 @@ def solve_shooting(problem: CableBVP, s_out=None) -> CableSolution:
         When no solution is found, with the reason and what to try.
     """
     s_out = _stations(problem, s_out)
+    check_solvable(problem)
     body_ends = [isinstance(e, BodyEnd) for e in (problem.start, problem.end)]
-    if all(body_ends):
-        raise SolverError("both ends of the cable are bodies, so nothing holds it in place; "
-                          "fix one end (anchor, vessel) to solve its statics")
     if any(body_ends):
         return _shoot_from_body(problem, s_out, body_ends.index(True))
     return _shoot_between_points(problem, s_out)
@@ -102,9 +100,6 @@ def _shoot_from_body(problem: CableBVP, s_out, body_index: int) -> CableSolution
 
     def shoot(z_body):
         force = sign * body.load(problem.flow, z_body, rho)
-        if not np.any(force):
-            raise SolverError("the body exerts no force on the cable (net buoyancy, drag and force are all "
-                              "zero), so the cable is slack; give the body weight, buoyancy or drag")
         return _integrate(problem, s_body, [0.0, z_body, *force], s_fixed)
 
     sol = shoot(0.0)

@@ -373,6 +373,20 @@ class SphereSolution:
         """Tension of the line AC in units of ``k1 L``, from the force balance at A."""
         return self.forces.line_tension
 
+    @property
+    def physical_warnings(self) -> tuple[str, ...]:
+        """Where the equilibrium leaves the model's assumptions, with numbers."""
+        out = []
+        if self.tau_line <= 0:
+            out.append(f"line AC is in compression (tau_AC = {self.tau_line:.4g}): a rope "
+                       "cannot hold this equilibrium")
+        if self.alpha.min() < 0 or self.alpha.max() > np.pi:
+            out.append(f"alpha leaves [0, 180] deg ({np.degrees(self.alpha.min()):.1f} to "
+                       f"{np.degrees(self.alpha.max()):.1f}): outside the drag law (eq. 14)")
+        if self.y.min() < -1e-9:
+            out.append(f"the cable goes below the bottom (min y = {self.y.min():.4g})")
+        return tuple(out)
+
     def _scales(self) -> SphereScales:
         if self.scales is None:
             raise ValueError("no dimensional scales: build the groups with "
@@ -474,7 +488,8 @@ def _solve_shooting(groups, convention, guess, n_nodes):
     profile = _profile_from_shot(groups, convention, *sol.x, n_nodes, "shooting")
     worst = max(abs(profile.eps1_percent), abs(profile.eps2_percent))
     if not worst < RESIDUAL_TOL_PERCENT:
-        raise _NotConverged(f"root finding stopped with |eps| = {worst:.2e} % ({sol.message})")
+        message = " ".join(sol.message.split())
+        raise _NotConverged(f"root finding stopped with |eps| = {worst:.2e} % ({message})")
     return replace(profile, info=f"{sol.nfev} shots")
 
 
@@ -569,6 +584,15 @@ def _continuation(groups, convention, solve, n_nodes):
                                  + current.info)
 
 
+def _quiet(solve):
+    """``solve`` with floating-point warnings off: failed iterates may overflow, and
+    every result is checked by its residuals instead."""
+    def wrapped(*args):
+        with np.errstate(all="ignore"):
+            return solve(*args)
+    return wrapped
+
+
 def _candidate_guesses(groups, convention, initial_guess):
     """Named ``(alpha0, tau0)`` guesses to try in turn before continuation."""
     out = [] if initial_guess is None else [("the given initial guess", tuple(initial_guess))]
@@ -610,7 +634,7 @@ def solve_sphere(groups, convention="published", method="shooting", n_nodes=101,
     _convention_sign(convention)
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; valid: {sorted(METHODS)}")
-    solve, tried = METHODS[method], []
+    solve, tried = _quiet(METHODS[method]), []
     for label, guess in _candidate_guesses(groups, convention, initial_guess):
         try:
             sol = solve(groups, convention, guess, n_nodes)
@@ -625,8 +649,9 @@ def solve_sphere(groups, convention="published", method="shooting", n_nodes=101,
     raise SolverError(
         f"{method} found no equilibrium for {groups} ({convention} convention). Tried:\n  "
         + "\n  ".join(tried) + "\nPass initial_guess=(alpha0_rad, tau0) from a converged "
-        "neighbour (e.g. sweep_flow_speed from a speed that converges), try the other "
-        "method, or check that the sphere can float (QkL > 0) with both lines taut.")
+        "neighbour (e.g. sweep_flow_speed from a speed that converges) or try the other "
+        f"method. Check that the sphere can hold the cable up: buoyancy QkL = {groups.QkL:.4g} "
+        f"against cable weight Psi = {groups.Psi:.4g} (this model has no seabed contact).")
 
 
 def sweep_flow_speed(speeds, *, sphere_diameter, net_buoyancy, cable_diameter, cable_length,

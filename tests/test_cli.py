@@ -1,0 +1,71 @@
+"""The command line: exit codes, one-paragraph failures, --version, --debug."""
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import kanat
+from kanat.cli import app
+from kanat.io.results import read_result
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+runner = CliRunner()
+
+
+def plain(output: str) -> str:
+    """Output as one line of words: panel borders removed, wrapped lines joined."""
+    return " ".join(re.sub("[│╭╮╰╯─]", " ", output).split())
+
+
+def test_version():
+    result = runner.invoke(app, ["--version"])
+    assert result.exit_code == 0 and kanat.__version__ in result.output
+
+
+def test_validate_reports_errors_with_line_and_exits_non_zero(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text((EXAMPLES / "towed_body.yaml").read_text().replace("line_type: towcable", "line_type: towcabel"))
+    result = runner.invoke(app, ["validate", str(bad)])
+    assert result.exit_code == 1
+    assert "towcabel" in result.output and "towcable" in result.output
+    assert "Traceback" not in result.output
+
+
+def test_statics_failure_is_explained_writes_status_and_exits_non_zero(tmp_path):
+    case = tmp_path / "slack.yaml"
+    text = (EXAMPLES / "towed_body.yaml").read_text()
+    text = text.replace("net_buoyancy: -6686", "net_buoyancy: 0").replace("drag_area: 0.3276", "drag_area: 0")
+    text = text.replace("speed_kn: 6", "speed_kn: 0")
+    case.write_text(text)
+    out = tmp_path / "out.nc"
+    result = runner.invoke(app, ["statics", str(case), "-o", str(out)])
+    assert result.exit_code == 1
+    assert "slack" in plain(result.output) and "Traceback" not in result.output
+    assert read_result(out).attrs["status"].startswith("failed:")
+
+
+def test_debug_shows_the_exception(tmp_path):
+    case = tmp_path / "slack.yaml"
+    text = (EXAMPLES / "towed_body.yaml").read_text()
+    case.write_text(text.replace("net_buoyancy: -6686", "net_buoyancy: 0").replace("drag_area: 0.3276", "drag_area: 0")
+                    .replace("speed_kn: 6", "speed_kn: 0"))
+    result = runner.invoke(app, ["statics", str(case), "-o", str(tmp_path / "o.nc"), "--debug"])
+    assert result.exit_code != 0 and result.exception is not None
+
+
+def test_run_refuses_models_this_release_lacks_and_says_what_to_do(tmp_path):
+    case = tmp_path / "dyn.yaml"
+    text = (EXAMPLES / "towed_body.yaml").read_text().replace("model: statics", "model: continuum")
+    case.write_text(text + "simulation: {duration: 10, dt: 1, output_dt: 1}\n")
+    result = runner.invoke(app, ["run", str(case), "-o", str(tmp_path / "o.nc")])
+    assert result.exit_code == 1
+    assert "run: kanat statics" in plain(result.output)
+
+
+@pytest.mark.parametrize("method", ["shooting", "collocation"])
+def test_statics_method_option(method, tmp_path):
+    out = tmp_path / "o.nc"
+    result = runner.invoke(app, ["statics", str(EXAMPLES / "towed_body.yaml"), "-o", str(out), "--method", method])
+    assert result.exit_code == 0, result.output
+    assert read_result(out).attrs["method_tow"] == method
