@@ -5,9 +5,8 @@ under any backend, ``Agg`` included.
 """
 from __future__ import annotations
 
-from matplotlib.figure import Figure
-
 import numpy as np
+from matplotlib.figure import Figure
 
 #: Size of the figure [inch] and resolution of the saved PNG [dpi].
 FIGSIZE, DPI = (11.0, 5.0), 150
@@ -41,7 +40,7 @@ def _decorate_shape(ax, solutions) -> None:
     ax.axhline(0.0, color="0.4", lw=1)
     top = max(s.y_A for s in solutions)
     ax.annotate("", xy=(lo + 0.45, top + 0.12), xytext=(lo + 0.05, top + 0.12),
-                arrowprops=dict(arrowstyle="->", color="0.3"))
+                arrowprops={"arrowstyle": "->", "color": "0.3"})
     ax.text(lo + 0.5, top + 0.12, "flow on the cable", va="center", fontsize=9, color="0.3")
     ax.set_xlim(lo, hi)
     ax.set_ylim(-0.08, top + 0.25)

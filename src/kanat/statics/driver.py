@@ -8,7 +8,7 @@ import numpy as np
 from kanat.errors import SolverError
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
-from kanat.statics.problem import BodyEnd, CableBVP, FixedEnd
+from kanat.statics.problem import CableBVP, FixedEnd
 from kanat.statics.setup import cable_problems, vessel_velocity
 from kanat.statics.shooting import solve_shooting
 from kanat.statics.solution import CableSolution
@@ -25,22 +25,26 @@ METHODS = {
 def solve_cable(problem: CableBVP, method: str = "auto", s_out=None) -> CableSolution:
     """Solve one steady cable with a named method.
 
-    ``"auto"`` takes the closed-form catenary when it applies (two fixed ends, no
-    flow, a line heavier than water), else shooting, and collocation if shooting fails.
+    ``"auto"`` picks the fastest method that applies (benchmarks/RESULTS.md): the
+    closed-form catenary for two fixed ends, no flow and a line heavier than water;
+    shooting for a cable ending at a body (a single integration in a uniform flow);
+    collocation between fixed points in a flow. If that method fails, it tries the other
+    numerical one.
     """
-    if method == "auto":
-        fixed = all(isinstance(e, FixedEnd) for e in (problem.start, problem.end))
-        if fixed and not np.any(problem.flow.velocity) and problem.line.weight > 0:
-            return solve_catenary(problem, s_out)
+    if method != "auto":
         try:
-            return solve_shooting(problem, s_out)
-        except SolverError:
-            return solve_collocation(problem, s_out)
+            solver = METHODS[method]
+        except KeyError:
+            raise SolverError(f"unknown statics method '{method}'; valid: auto, {', '.join(METHODS)}") from None
+        return solver(problem, s_out)
+    fixed = all(isinstance(e, FixedEnd) for e in (problem.start, problem.end))
+    if fixed and not np.any(problem.flow.velocity) and problem.line.weight > 0:
+        return solve_catenary(problem, s_out)
+    first, second = (solve_collocation, solve_shooting) if fixed else (solve_shooting, solve_collocation)
     try:
-        solver = METHODS[method]
-    except KeyError:
-        raise SolverError(f"unknown statics method '{method}'; valid: auto, {', '.join(METHODS)}") from None
-    return solver(problem, s_out)
+        return first(problem, s_out)
+    except SolverError:
+        return second(problem, s_out)
 
 
 @dataclass(frozen=True)

@@ -86,7 +86,7 @@ RESIDUAL_TOL_PERCENT = 1e-7
 TAU_MIN = 1e-6
 #: Relative / absolute tolerance of the shooting integration (DOP853).
 SHOOT_RTOL, SHOOT_ATOL = 1e-11, 1e-13
-#: Collocation tolerance of solve_bvp; 1e-9 keeps it within 1e-8 of shooting.
+#: Collocation tolerance of solve_bvp; 1e-9 keeps it within ~1e-10 of shooting.
 BVP_TOL, BVP_MAX_NODES = 1e-9, 20_000
 #: Continuation in lambda from the paper's case 1: first step, smallest step.
 CONTINUATION_STEP, CONTINUATION_MIN_STEP = 0.25, 1.0 / 512
@@ -201,9 +201,9 @@ def groups_from_dimensional(flow_speed, sphere_diameter, net_buoyancy, cable_dia
     groups : SphereGroups
     scales : SphereScales
     """
-    positive = dict(flow_speed=flow_speed, sphere_diameter=sphere_diameter,
-                    cable_diameter=cable_diameter, cable_length=cable_length,
-                    line_length=line_length, water_density=water_density, c_90=c_90)
+    positive = {"flow_speed": flow_speed, "sphere_diameter": sphere_diameter,
+                "cable_diameter": cable_diameter, "cable_length": cable_length,
+                "line_length": line_length, "water_density": water_density, "c_90": c_90}
     bad = [Problem(k, f"must be > 0, got {v}") for k, v in positive.items() if not v > 0]
     if bad:
         raise CaseError(bad)
@@ -211,10 +211,10 @@ def groups_from_dimensional(flow_speed, sphere_diameter, net_buoyancy, cable_dia
     k1 = c_90 * cable_diameter * dynamic_pressure                           # eq. 6
     sphere_drag = c_u * (np.pi * sphere_diameter**2 / 4) * dynamic_pressure  # eq. 5
     force = k1 * cable_length
-    groups = SphereGroups(Psi=cable_weight / k1, LoL=line_length / cable_length,
-                          x_C=anchor_x / cable_length, QkL=net_buoyancy / force,
-                          RkL=sphere_drag / force, chi=c_0 / c_90)
-    return groups, SphereScales(k1=k1, L=cable_length)
+    groups = SphereGroups(Psi=float(cable_weight / k1), LoL=float(line_length / cable_length),
+                          x_C=float(anchor_x / cable_length), QkL=float(net_buoyancy / force),
+                          RkL=float(sphere_drag / force), chi=float(c_0 / c_90))
+    return groups, SphereScales(k1=float(k1), L=float(cable_length))
 
 
 def cable_drag(alpha, chi):
@@ -431,7 +431,10 @@ def _shoot(groups, alpha0, tau0, sigma_eval=None, rtol=SHOOT_RTOL):
     """
     if not tau0 > TAU_MIN:
         raise _NotConverged(f"tau0 = {tau0:.4g} is not positive")
-    slack = lambda sigma, z, g: z[1] - TAU_MIN  # noqa: E731
+
+    def slack(sigma, z, g):
+        return z[1] - TAU_MIN
+
     slack.terminal, slack.direction = True, -1
     sol = solve_ivp(cable_rhs, (0.0, 1.0), [alpha0, tau0, 0.0, 0.0], method="DOP853",
                     t_eval=sigma_eval, rtol=rtol, atol=SHOOT_ATOL * rtol / SHOOT_RTOL,
@@ -632,6 +635,8 @@ def solve_sphere(groups, convention="published", method="shooting", n_nodes=101,
         When every guess and the continuation fail; the message lists each attempt.
     """
     _convention_sign(convention)
+    if n_nodes < 2:
+        raise ValueError(f"n_nodes must be >= 2, got {n_nodes}")
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; valid: {sorted(METHODS)}")
     solve, tried = _quiet(METHODS[method]), []
