@@ -15,7 +15,8 @@ from kanat.io import load_case
 from kanat.statics import solve_statics
 from kanat.statics.setup import cable_problems
 from kanat.statics.driver import solve_cable
-from kanat.statics.sphere import SphereGroups, solve_sphere
+from kanat.statics.sphere import SphereGroups
+from kanat.statics.sphere_solvers import solve_sphere
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 REPEATS, NUMBER = 7, 5

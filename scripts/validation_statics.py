@@ -11,7 +11,8 @@ from kanat.statics import BodyEnd, CableBVP, FixedEnd, FlowProfile, LineProperti
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
 from kanat.statics.shooting import solve_shooting
-from kanat.statics.sphere import SphereGroups, solve_sphere
+from kanat.statics.sphere import SphereGroups
+from kanat.statics.sphere_solvers import solve_sphere
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 SOLVERS = {"shooting": solve_shooting, "collocation": solve_collocation}

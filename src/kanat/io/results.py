@@ -144,6 +144,7 @@ def _sphere_dataset(sol, attrs: dict) -> xr.Dataset:
     attrs.update(alpha0_deg=float(np.degrees(sol.alpha0)), tau0=float(sol.tau0),
                  eps1_percent=float(sol.eps1_percent), eps2_percent=float(sol.eps2_percent),
                  convention=sol.convention, method=sol.method, line_tension_tau=float(sol.tau_line),
+                 physical_warnings="; ".join(sol.physical_warnings),
                  **{f"group_{k}": float(v) for k, v in vars(sol.groups).items()})
     data = {"alpha": ("node", sol.alpha), "tau": ("node", sol.tau), "x": ("node", sol.x), "y": ("node", sol.y),
             "sigma": ("node", sol.sigma, {"units": "1", "long_name": "dimensionless arclength S / L from A"})}

@@ -67,7 +67,7 @@ def plot_sphere(solutions, path=None, labels=None) -> Figure:
     Parameters
     ----------
     solutions : SphereSolution or sequence of SphereSolution
-        From :func:`kanat.statics.sphere.solve_sphere`; overlaid in one figure.
+        From :func:`kanat.statics.sphere_solvers.solve_sphere`; overlaid in one figure.
     path : str or path-like, optional
         Where to save the figure as PNG.
     labels : sequence of str, optional

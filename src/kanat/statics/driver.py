@@ -12,7 +12,8 @@ from kanat.statics.problem import CableBVP, FixedEnd
 from kanat.statics.setup import cable_problems, vessel_velocity
 from kanat.statics.shooting import solve_shooting
 from kanat.statics.solution import CableSolution
-from kanat.statics.sphere import SphereGroups, SphereSolution, groups_from_dimensional, solve_sphere
+from kanat.statics.sphere import SphereGroups, SphereSolution, groups_from_dimensional
+from kanat.statics.sphere_solvers import solve_sphere
 
 METHODS = {
     "shooting": solve_shooting,
@@ -82,6 +83,7 @@ class StaticsResult:
                          f"alpha(0) = {np.degrees(sol.alpha0):.4f} deg, tau(0) = {sol.tau0:.6f}, "
                          f"eps1 = {sol.eps1_percent:.2e} %, eps2 = {sol.eps2_percent:.2e} %, "
                          f"sphere at x = {sol.x_A:.4f}, y = {sol.y_A:.4f} (units of L)")
+            lines += [f"warning: {w}" for w in sol.physical_warnings]
         for name, sol in self.cables.items():
             tension = sol.tension
             lines.append(f"cable {name} ({sol.method}): tension {tension[0] / 1e3:.3f} kN at s = 0, "
