@@ -1,0 +1,140 @@
+"""Results written as a run goes, and checkpoints to resume a killed run.
+
+A dynamic run opens a :class:`ResultStream`: the time-independent variables are written
+at once, then every output step appends one slice along the unlimited ``time``
+dimension and flushes it, so a killed run leaves a readable file with everything up to
+its last output. ``status`` says ``running`` until the run closes the stream with ``ok``
+or its failure message.
+
+A :class:`Checkpoint` is the solver's full state at an output time, written atomically
+beside the result (``OUT.nc.ckpt.npz``). Resuming truncates the result to the
+checkpoint's output count and continues from its state, so a resumed run gives the same
+answer as an uninterrupted one. The checkpoint records the case's SHA-256 and refuses a
+changed case.
+"""
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import h5netcdf
+import numpy as np
+import xarray as xr
+
+from kanat.errors import KanatError
+from kanat.io.results import _netcdf_attr, annotate
+
+
+class ResultStream:
+    """Append-as-you-go netCDF result (h5netcdf, unlimited ``time``).
+
+    Parameters
+    ----------
+    path : path-like
+        Result file; created (or, with ``resume_at``, reopened and truncated).
+    static : xarray.Dataset
+        Time-independent variables and the global attributes.
+    time_vars : dict of str to (tuple of str, str)
+        Time-dependent variables: dimensions after ``time`` and units.
+    resume_at : int, optional
+        Number of output slices to keep when resuming a run.
+    """
+
+    def __init__(self, path, static: xr.Dataset, time_vars: dict, resume_at: int | None = None):
+        self.path = Path(path)
+        self.time_vars = dict(time_vars)
+        if resume_at is None:
+            self._create(static)
+        self._file = h5netcdf.File(self.path, "a")
+        if resume_at is not None:
+            self._file.resize_dimension("time", resume_at)
+        self._file.attrs["status"] = "running"
+        self._file.flush()
+
+    def _create(self, static: xr.Dataset) -> None:
+        ds = static.copy()
+        ds["time"] = ("time", np.zeros(0), {"units": "s", "long_name": "simulated time"})
+        for name, (dims, units) in self.time_vars.items():
+            shape = (0,) + tuple(ds.sizes[d] for d in dims)
+            ds[name] = (("time",) + tuple(dims), np.zeros(shape), {"units": units})
+        ds = annotate(ds)
+        ds.attrs = {k: _netcdf_attr(v) for k, v in ds.attrs.items()}
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        ds.to_netcdf(self.path, engine="h5netcdf", unlimited_dims=["time"])
+
+    @property
+    def count(self) -> int:
+        """Slices written so far."""
+        return self._file.dimensions["time"].size
+
+    def append(self, t: float, **values) -> None:
+        """Write one output slice at time ``t`` [s]; every time variable must be given."""
+        missing = set(self.time_vars) - set(values)
+        if missing:
+            raise ValueError(f"missing time variables: {sorted(missing)}")
+        n = self.count
+        self._file.resize_dimension("time", n + 1)
+        self._file.variables["time"][n] = t
+        for name, value in values.items():
+            self._file.variables[name][n, ...] = value
+        self._file.flush()
+
+    def close(self, status: str = "ok", **attrs) -> None:
+        """Record the final status and attributes, and close the file."""
+        for key, value in {"status": status, **attrs}.items():
+            self._file.attrs[key] = _netcdf_attr(value)
+        self._file.close()
+
+
+@dataclass(frozen=True)
+class Checkpoint:
+    """A solver's state at an output time, enough to continue the run exactly.
+
+    Attributes
+    ----------
+    time : float
+        Simulated time [s].
+    outputs : int
+        Output slices written up to and including this time.
+    case_sha256 : str
+    state : dict of str to ndarray
+        The solver's arrays (positions, velocities, multistep history, ...).
+    info : dict
+        Small JSON-able extras (step counters, statistics).
+    """
+
+    time: float
+    outputs: int
+    case_sha256: str
+    state: dict
+    info: dict
+
+    @staticmethod
+    def path_for(result_path) -> Path:
+        return Path(str(result_path) + ".ckpt.npz")
+
+    def save(self, result_path) -> Path:
+        """Write atomically beside the result file."""
+        path = self.path_for(result_path)
+        tmp = path.with_name(path.name + ".part.npz")
+        meta = json.dumps({"time": self.time, "outputs": self.outputs, "case_sha256": self.case_sha256,
+                           "info": self.info})
+        np.savez(tmp, __meta__=np.array(meta), **self.state)
+        os.replace(tmp, path)
+        return path
+
+    @classmethod
+    def load(cls, result_path, case_sha256: str) -> Checkpoint:
+        """Read the checkpoint of ``result_path``; refuse one written for another case."""
+        path = cls.path_for(result_path)
+        if not path.exists():
+            raise KanatError(f"no checkpoint {path} to resume from; run without --resume to start afresh")
+        with np.load(path) as data:
+            meta = json.loads(str(data["__meta__"]))
+            state = {k: data[k] for k in data.files if k != "__meta__"}
+        if meta["case_sha256"] != case_sha256:
+            raise KanatError(f"{path} was written for a different case (the case file changed since); "
+                             "run without --resume to start afresh")
+        return cls(meta["time"], meta["outputs"], meta["case_sha256"], state, meta["info"])
