@@ -54,7 +54,8 @@ def test_debug_shows_the_exception(tmp_path):
     assert result.exit_code != 0 and result.exception is not None
 
 
-def test_run_refuses_models_this_release_lacks_and_says_what_to_do(tmp_path):
+def test_run_refuses_models_this_build_lacks_and_says_what_to_do(tmp_path, monkeypatch):
+    monkeypatch.setattr("kanat.cli.RUNNERS", {})
     case = tmp_path / "dyn.yaml"
     text = (EXAMPLES / "towed_body.yaml").read_text().replace("model: statics", "model: continuum")
     case.write_text(text + "simulation: {duration: 10, dt: 1, output_dt: 1}\n")

@@ -21,6 +21,7 @@ def test_stream_appends_and_unclosed_file_is_readable(tmp_path):
     stream = ResultStream(path, static(), TIME_VARS)
     for k in range(3):
         stream.append(0.5 * k, tension=np.full(4, k), position=np.full((4, 3), k))
+    stream.flush()
     ds = read_result(path)                                  # readable while the run is alive
     assert ds.sizes["time"] == 3 and ds.attrs["status"] == "running"
     stream.close("ok", wall_time_s=1.5)
@@ -37,7 +38,9 @@ def test_resume_truncates_to_the_checkpoint_and_continues(tmp_path):
     for k in range(5):
         stream.append(k, tension=np.full(4, k), position=np.zeros((4, 3)))
         if k == 2:
+            stream.flush()
             Checkpoint(float(k), 3, "abc", {"y": np.arange(3.0)}, {"steps": 20}).save(path)
+    stream.flush()
     stream._file.close()                                    # killed: never closed properly
     ckpt = Checkpoint.load(path, "abc")
     assert ckpt.time == 2.0 and ckpt.outputs == 3 and ckpt.info == {"steps": 20}

@@ -14,6 +14,9 @@ from rich.text import Text
 import kanat
 from kanat.errors import CaseError, KanatError
 
+RUNNERS = {"continuum": "kanat.continuum.run"}
+"""Dynamic models by name: the module whose ``run(case, output, ...)`` runs them."""
+
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="Statics and dynamics of marine cable systems.")
 console = Console(stderr=True)
@@ -90,14 +93,58 @@ def statics(case: Path = typer.Argument(..., help="YAML case file."),
 def run(case: Path = typer.Argument(..., help="YAML case file."),
         output: Path = typer.Option(..., "-o", "--output", help="Result file (netCDF)."),
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
+        scheme: Optional[str] = typer.Option(None, "--scheme", help="Override simulation.scheme."),
+        resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
+        checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every",
+                                                       help="Checkpoint every N output steps."),
         debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Run any case (the model named in the case file) and write it to OUTPUT."""
+    """Run any case (the model named in the case file) and write it to OUTPUT as it goes."""
     loaded = _load(case, debug)
-    if loaded.model != "statics":
-        _fail(KanatError(f"{case}: model '{loaded.model}' is not available in kanat {kanat.__version__}; "
-                         "this version solves 'statics' cases. To get the steady (initial) state of this "
-                         f"case, run: kanat statics {case} -o OUT.nc"), debug, "model not available")
-    _statics(loaded, case, output, plot, "auto", debug)
+    if loaded.model == "statics":
+        _statics(loaded, case, output, plot, "auto", debug)
+        return
+    runners = RUNNERS
+    if loaded.model not in runners:
+        _fail(KanatError(f"{case}: model '{loaded.model}' is not available in kanat {kanat.__version__} "
+                         f"(available: statics, {', '.join(runners)}). To get the steady (initial) state of "
+                         f"this case, run: kanat statics {case} -o OUT.nc"), debug, "model not available")
+    import importlib
+
+    runner = importlib.import_module(runners[loaded.model])
+    try:
+        summary = _with_progress(loaded.simulation.duration, lambda progress: runner.run(
+            loaded, output, scheme=scheme, resume=resume, progress=progress, checkpoint_every=checkpoint_every))
+    except KeyboardInterrupt:
+        console.print(f"[yellow]interrupted; {output} keeps what was computed; continue with --resume[/yellow]")
+        raise typer.Exit(130)
+    except Exception as error:  # noqa: BLE001 - reported by _fail
+        _fail(error, debug, "run failed")
+    if not summary.ok:
+        _fail(KanatError(f"{summary.status}\n\nThe results up to the failure are in {output}."), debug,
+              "run stopped")
+    out.print(summary.summary())
+    out.print(f"wrote {output}")
+    if plot is not None:
+        from kanat.io.results import read_result
+        from kanat.report.run_plot import plot_run
+
+        plot_run(read_result(output), plot)
+        out.print(f"wrote {plot}")
+
+
+def _with_progress(duration: float, start):
+    """Run ``start(progress)`` under a progress bar of simulated time, wall time and Newton iterations."""
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    columns = (TextColumn("t = {task.completed:.1f} / {task.total:g} s"), BarColumn(), TimeElapsedColumn(),
+               TextColumn("{task.fields[info]}"))
+    with Progress(*columns, console=console, transient=True) as bar:
+        task = bar.add_task("run", total=duration, info="")
+
+        def progress(t, info):
+            text = f"Newton {info['newton_iterations']:.2f}/step" if "newton_iterations" in info else ""
+            bar.update(task, completed=t, info=text)
+        return start(progress)
 
 
 def _load(case: Path, debug: bool):
@@ -139,3 +186,7 @@ def _statics(loaded, case: Path, output: Path, plot: Optional[Path], method: str
         _fail(error, debug, "statics failed")
     out.print(result.summary())
     out.print(f"wrote {output}" + (f" and {plot}" if plot is not None else ""))
+
+
+if __name__ == "__main__":  # python -m kanat.cli
+    app()

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import os
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -30,19 +31,25 @@ from kanat.io.results import _netcdf_attr, annotate
 class ResultStream:
     """Append-as-you-go netCDF result (h5netcdf, unlimited ``time``).
 
+    Slices are buffered in memory and written in blocks, at the latest ``FLUSH_WALL_S``
+    seconds of wall time after the first unwritten one, and always by :meth:`flush`
+    (called before every checkpoint) and :meth:`close`.
+
     Parameters
     ----------
     path : path-like
         Result file; created (or, with ``resume_at``, reopened and truncated).
-    static : xarray.Dataset
-        Time-independent variables and the global attributes.
+    static : xarray.Dataset or None
+        Time-independent variables and the global attributes (None when resuming).
     time_vars : dict of str to (tuple of str, str)
         Time-dependent variables: dimensions after ``time`` and units.
     resume_at : int, optional
         Number of output slices to keep when resuming a run.
     """
 
-    def __init__(self, path, static: xr.Dataset, time_vars: dict, resume_at: int | None = None):
+    FLUSH_WALL_S = 1.0
+
+    def __init__(self, path, static: xr.Dataset | None, time_vars: dict, resume_at: int | None = None):
         self.path = Path(path)
         self.time_vars = dict(time_vars)
         if resume_at is None:
@@ -51,7 +58,9 @@ class ResultStream:
         if resume_at is not None:
             self._file.resize_dimension("time", resume_at)
         self._file.attrs["status"] = "running"
-        self._file.flush()
+        self._sync()
+        self._buffer: list[tuple[float, dict]] = []
+        self._oldest = 0.0
 
     def _create(self, static: xr.Dataset) -> None:
         ds = static.copy()
@@ -66,23 +75,44 @@ class ResultStream:
 
     @property
     def count(self) -> int:
-        """Slices written so far."""
-        return self._file.dimensions["time"].size
+        """Slices appended so far (written or buffered)."""
+        return self._file.dimensions["time"].size + len(self._buffer)
 
     def append(self, t: float, **values) -> None:
-        """Write one output slice at time ``t`` [s]; every time variable must be given."""
+        """Add one output slice at time ``t`` [s]; every time variable must be given."""
         missing = set(self.time_vars) - set(values)
         if missing:
             raise ValueError(f"missing time variables: {sorted(missing)}")
-        n = self.count
-        self._file.resize_dimension("time", n + 1)
-        self._file.variables["time"][n] = t
-        for name, value in values.items():
-            self._file.variables[name][n, ...] = value
+        if not self._buffer:
+            self._oldest = time.perf_counter()
+        self._buffer.append((t, {k: np.array(v, dtype=float) for k, v in values.items()}))
+        if time.perf_counter() - self._oldest > self.FLUSH_WALL_S:
+            self.flush()
+
+    def flush(self) -> None:
+        """Write the buffered slices to the file as one block and flush it to disk."""
+        if not self._buffer:
+            return
+        n, m = self._file.dimensions["time"].size, len(self._buffer)
+        self._file.resize_dimension("time", n + m)
+        self._file.variables["time"][n:n + m] = [t for t, _ in self._buffer]
+        for name in self.time_vars:
+            self._file.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
+        self._sync()
+        self._buffer.clear()
+
+    def _sync(self) -> None:
+        """Push everything written so far to disk, HDF5 metadata included.
+
+        ``h5netcdf.File.flush`` writes only the netCDF attributes; the HDF5 file beneath
+        must be flushed too, or a killed run leaves datasets of length 0 on disk.
+        """
         self._file.flush()
+        self._file._h5file.flush()
 
     def close(self, status: str = "ok", **attrs) -> None:
-        """Record the final status and attributes, and close the file."""
+        """Write what is buffered, record the final status and attributes, and close the file."""
+        self.flush()
         for key, value in {"status": status, **attrs}.items():
             self._file.attrs[key] = _netcdf_attr(value)
         self._file.close()

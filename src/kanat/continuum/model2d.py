@@ -1,0 +1,149 @@
+"""The planar continuum cable as typed data: parameters, end conditions, state (SPEC §2.1, §2.3).
+
+Kernels take flat arrays; this module builds them from a case, once. A continuum case
+here is one cable whose first end is the vessel's tow point or an anchor and whose
+second end is a body, an anchor or free.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from kanat.continuum import kernels2d as k
+from kanat.errors import CaseError, Problem
+
+
+@dataclass(frozen=True)
+class EndCondition:
+    """One end: ``kind`` in {velocity, body, free} (kernels2d constants) and its data.
+
+    Attributes
+    ----------
+    kind : int
+    mass : float
+        Body mass plus added mass [kg] (kind body).
+    net_buoyancy : float
+        [N] (kind body).
+    drag_area : float
+        ``C_D S`` [m^2] (kind body).
+    force : tuple of float
+        Constant external force ``(F_x, F_z)`` [N] (kind body).
+    moving : bool
+        True for the vessel's tow point (velocity from the track); False for an anchor.
+    position : tuple of float
+        ``(x, z)`` of an anchor [m].
+    """
+
+    kind: int
+    mass: float = 0.0
+    net_buoyancy: float = 0.0
+    drag_area: float = 0.0
+    force: tuple = (0.0, 0.0)
+    moving: bool = False
+    position: tuple = (0.0, 0.0)
+
+    def array(self, velocity=(0.0, 0.0), density: float = 1025.0) -> np.ndarray:
+        """The kernel's end-parameter vector (kernels2d.NBPAR) for a prescribed ``velocity``."""
+        return np.array([self.kind, velocity[0], velocity[1], self.mass, self.net_buoyancy,
+                         0.5 * density * self.drag_area, self.force[0], self.force[1]])
+
+
+@dataclass(frozen=True)
+class PlanarCable:
+    """A planar cable ready for the kernels.
+
+    Attributes
+    ----------
+    name : str
+    length : float
+        Unstretched length [m].
+    segments : int
+    params : ndarray, shape (kernels2d.NPAR,)
+        Physical parameters; scheme entries are filled per step.
+    start, end : EndCondition
+    current_z, current_xz : ndarray
+        Current profile: heights (ascending) [m] and (u_x, u_z) rows [m/s].
+    """
+
+    name: str
+    length: float
+    segments: int
+    params: np.ndarray
+    start: EndCondition
+    end: EndCondition
+    current_z: np.ndarray = field(default_factory=lambda: np.zeros(1))
+    current_xz: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))
+
+    @property
+    def ds(self) -> float:
+        return self.length / self.segments
+
+    @property
+    def s(self) -> np.ndarray:
+        return np.linspace(0.0, self.length, self.segments + 1)
+
+    def current_at(self, z) -> np.ndarray:
+        """Current ``(u_x, u_z)`` at heights ``z`` (n,) -> (n, 2)."""
+        return np.column_stack([np.interp(z, self.current_z, self.current_xz[:, i]) for i in range(2)])
+
+    def with_segments(self, segments: int) -> PlanarCable:
+        params = self.params.copy()
+        params[k.DS] = self.length / segments
+        return replace(self, segments=segments, params=params)
+
+
+def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds):
+    """The kernel parameter vector (scheme entries zero)."""
+    p = np.zeros(k.NPAR)
+    p[[k.M, k.MA, k.W0, k.EA, k.DIAM, k.CN, k.CT, k.RHO, k.DS]] = (
+        mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds)
+    p[k.INERTIA] = 1.0
+    return p
+
+
+def planar_cable(case) -> PlanarCable:
+    """The planar model of a case's single cable (raises CaseError when it does not fit)."""
+    if len(case.cables) != 1:
+        raise CaseError([Problem("cables", f"the continuum model takes one cable; this case has "
+                                 f"{len(case.cables)} (networks run with model: lumped)")])
+    cable = case.cables[0]
+    env = case.environment
+    lt = case.line_types[cable.line_type]
+    p = parameters(lt.mass, lt.added_mass, lt.weight_in_water_value(env.water_density, env.gravity),
+                   lt.axial_stiffness, lt.diameter, lt.drag_normal, lt.drag_tangential, env.water_density,
+                   cable.length / cable.segments)
+    start = _end(case, cable.from_, "cables[0].from", first=True)
+    end = _end(case, cable.to, "cables[0].to", first=False)
+    current = env.current
+    if current.profile is None:
+        z, rows = np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
+    else:
+        table = np.asarray(current.profile, dtype=float)[::-1]
+        z, rows = table[:, 0], table[:, 1:4]
+    return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])
+
+
+def _end(case, end, key: str, first: bool) -> EndCondition:
+    if end.kind == "vessel":
+        return EndCondition(k.VELOCITY, moving=True, position=(case.vessel.tow_point[0], case.vessel.tow_point[2]))
+    if end.kind == "anchor":
+        return EndCondition(k.VELOCITY, position=(end.position[0], end.position[2]))
+    if first:
+        raise CaseError([Problem(key, "the continuum model's first end must be the vessel or an anchor "
+                                 "(its positions are built from there); swap 'from' and 'to'")])
+    if end.kind == "free":
+        return EndCondition(k.FREE)
+    if end.kind == "body":
+        body = case.bodies[end.name]
+        return EndCondition(k.BODY, body.mass + body.added_mass, body.net_buoyancy, body.drag_area,
+                            (body.force[0], body.force[2]))
+    raise CaseError([Problem(key, f"point '{end.name}' joins a network; networks run with model: lumped")])
+
+
+def positions(cable: PlanarCable, y: np.ndarray, origin) -> np.ndarray:
+    """Node positions (N+1, 2) from the first end, trapezoidal in ``(1 + e) t`` (2nd order)."""
+    stretch = 1.0 + y[:, 0] / cable.params[k.EA]
+    step = np.column_stack([stretch * np.cos(y[:, 3]), stretch * np.sin(y[:, 3])])
+    increments = 0.5 * cable.ds * (step[1:] + step[:-1])
+    return np.vstack([np.zeros((1, 2)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)

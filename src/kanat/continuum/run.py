@@ -1,0 +1,189 @@
+"""Running a planar continuum case: initial state, time loop, streamed results, checkpoints.
+
+The run starts from the discrete steady state of the box equations for the initial
+vessel velocity (found by Newton from the statics solution), so a run at constant speed
+stays steady to round-off. Each output step appends to the result file; a checkpoint of
+the full state is written beside it at most every ``CHECKPOINT_WALL_S`` seconds of wall
+time, and ``resume=True`` continues a killed run from its last checkpoint to the same
+answer. A step whose Newton iteration fails is cut in halves (up to
+:data:`kanat.continuum.stepper.MAX_CUTS` levels); a run that still fails stops once, writes
+its status and keeps everything computed so far.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from kanat.continuum.drive import Drive
+from kanat.continuum.model2d import PlanarCable, planar_cable, positions
+from kanat.continuum.schemes import FamilyScheme
+from kanat.continuum.stepper import MAX_CUTS, NewtonFailure, State, steady, step
+from kanat.errors import CaseError, Problem
+from kanat.io.results import case_sha256, provenance
+from kanat.io.stream import Checkpoint, ResultStream
+from kanat.schemes import get_scheme
+from kanat.statics import solve_cable
+from kanat.statics.setup import cable_problems
+
+CHECKPOINT_WALL_S = 2.0
+TIME_VARS = {"position": (("node", "xyz"), "m"), "velocity": (("node", "xyz"), "m/s"),
+             "tension": (("node",), "N"), "body_position": (("body", "xyz"), "m"),
+             "vessel_position": (("xyz",), "m"), "vessel_heading": ((), "rad"),
+             "newton_iterations": ((), "1")}
+
+
+@dataclass(frozen=True)
+class RunSummary:
+    """What a run did: status, cost and Newton statistics."""
+
+    status: str
+    output: Path
+    wall_time_s: float
+    steps: int
+    newton_iterations_mean: float
+    step_cuts: int
+    final: State | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "ok"
+
+    def summary(self) -> str:
+        return (f"{self.steps} steps in {self.wall_time_s:.2f} s wall time, {self.newton_iterations_mean:.2f} "
+                f"Newton iterations per step, {self.step_cuts} step cuts; status: {self.status}")
+
+
+def initial_state(case, cable: PlanarCable, drive: Drive) -> State:
+    """The discrete steady state for the vessel's initial velocity (statics as the guess)."""
+    static = solve_cable(cable_problems(case)[cable.name], "auto", cable.s)
+    v0 = drive.velocities(0.0)[0]
+    phi = static.angle
+    guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
+                             -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
+    y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))
+    return State(0.0, y, np.zeros_like(y), positions(cable, y, drive.origin(0.0)))
+
+
+def run(case, output, *, scheme=None, resume: bool = False, progress=None,
+        checkpoint_every: int | None = None) -> RunSummary:
+    """Run a ``model: continuum`` case, writing its result file as it goes (case-format.md).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    output : path-like
+        Result file (netCDF); its checkpoint is ``OUTPUT.ckpt.npz``.
+    scheme : str or FamilyScheme, optional
+        Overrides ``simulation.scheme`` (default ``generalized-alpha``).
+    resume : bool
+        Continue a killed run from its checkpoint.
+    progress : callable, optional
+        ``progress(t, info)`` after every output step.
+    checkpoint_every : int, optional
+        Checkpoint every this many output steps (default: every ``CHECKPOINT_WALL_S`` of wall time).
+    """
+    sim = case.simulation
+    scheme = _scheme(case, scheme)
+    cable = planar_cable(case)
+    drive = Drive.planar(cable, case.vessel)
+    dt, every = sim.dt, max(1, int(round(sim.output_interval / sim.dt)))
+    total = int(round(sim.duration / dt))
+    sha = case_sha256(case)
+    start = time.perf_counter()
+    if resume:
+        ckpt = Checkpoint.load(output, sha)
+        state = State(ckpt.time, ckpt.state["y"], ckpt.state["rate"], ckpt.state["xz"])
+        done, iterations, cuts = ckpt.info["steps"], ckpt.info["iterations"], ckpt.info["cuts"]
+        stream = ResultStream(output, None, TIME_VARS, resume_at=ckpt.outputs)
+    else:
+        state = initial_state(case, cable, drive)
+        done, iterations, cuts = 0, 0, 0
+        stream = ResultStream(output, _static(case, cable, scheme), TIME_VARS)
+        _write(stream, case, cable, drive, state, 0.0)
+    status, last_checkpoint = "ok", time.perf_counter()
+    coefficients = scheme.coefficients()
+    try:
+        while done < total:
+            try:
+                state, spent, cut = _advance(cable, state, dt, coefficients, drive, 0)
+            except NewtonFailure as failure:
+                status = _failure_message(failure, state, cable, dt)
+                break
+            done, iterations, cuts = done + 1, iterations + spent, cuts + cut
+            if done % every:
+                continue
+            _write(stream, case, cable, drive, state, spent)
+            if progress is not None:
+                progress(state.t, {"newton_iterations": iterations / done, "step_cuts": cuts})
+            due = (done // every) % checkpoint_every == 0 if checkpoint_every else \
+                time.perf_counter() - last_checkpoint > CHECKPOINT_WALL_S
+            if due or done == total:
+                stream.flush()
+                Checkpoint(state.t, stream.count, sha, {"y": state.y, "rate": state.rate, "xz": state.xz},
+                           {"steps": done, "iterations": iterations, "cuts": cuts}).save(output)
+                last_checkpoint = time.perf_counter()
+    except KeyboardInterrupt:
+        stream.close(f"interrupted at t = {state.t:.6g} s; continue with --resume", steps=done)
+        raise
+    wall = time.perf_counter() - start
+    mean = iterations / max(done, 1)
+    stream.close(status, wall_time_s=wall, newton_iterations_mean=mean, step_cuts=cuts, steps=done)
+    return RunSummary(status, Path(output), wall, done, mean, cuts, state)
+
+
+def _advance(cable, state, dt, coefficients, drive, level):
+    """One step of ``dt``, cut into halves recursively when Newton fails (returns iterations, cuts)."""
+    try:
+        new, spent = step(cable, state, dt, coefficients, drive)
+        return new, spent, 0
+    except NewtonFailure:
+        if level >= MAX_CUTS:
+            raise
+    half, spent_a, cuts_a = _advance(cable, state, dt / 2, coefficients, drive, level + 1)
+    new, spent_b, cuts_b = _advance(cable, half, dt / 2, coefficients, drive, level + 1)
+    return new, spent_a + spent_b, 1 + cuts_a + cuts_b
+
+
+def _failure_message(failure: NewtonFailure, state: State, cable: PlanarCable, dt: float) -> str:
+    message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {failure.node} "
+               f"(s = {failure.node * cable.ds:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
+    lowest = int(np.argmin(state.y[:, 0]))
+    if state.y[lowest, 0] < 0.0:
+        return message + (f"the cable went into compression (T = {state.y[lowest, 0]:.4g} N at node {lowest}), "
+                          "which a cable cannot carry: the continuum model needs it taut. Slack and snapping "
+                          "cables run with model: lumped; or soften the manoeuvre")
+    return message + (f"try a smaller dt (now {dt:g} s), a more dissipative scheme (lambda_inf closer to 0) "
+                      "or more segments")
+
+
+def _scheme(case, scheme) -> FamilyScheme:
+    sim = case.simulation
+    chosen = get_scheme(scheme or sim.scheme or "generalized-alpha", "continuum",
+                        lambda_inf=sim.lambda_inf, gamma=sim.gamma)
+    return chosen
+
+
+def _static(case, cable: PlanarCable, scheme) -> xr.Dataset:
+    bodies = [case.cables[0].to.name] if case.cables[0].to.kind == "body" else []
+    attrs = provenance(case, model="continuum", scheme=scheme.name, wall_time_s=0.0, status="running",
+                       dt=case.simulation.dt, dimensions=2,
+                       **{f"scheme_{k}": v for k, v in scheme.parameters().items()})
+    return xr.Dataset({"s": ("node", cable.s), "cable": ("node", np.array([cable.name] * len(cable.s), dtype=object))},
+                      coords={"xyz": ["x", "y", "z"], "body": np.array(bodies, dtype=object)}, attrs=attrs)
+
+
+def _write(stream: ResultStream, case, cable: PlanarCable, drive: Drive, state: State, iterations: int) -> None:
+    y, xz = state.y, state.xz
+    c, s = np.cos(y[:, 3]), np.sin(y[:, 3])
+    zeros = np.zeros(len(y))
+    velocity = np.column_stack([y[:, 1] * c - y[:, 2] * s, zeros, y[:, 1] * s + y[:, 2] * c])
+    position = np.column_stack([xz[:, 0], zeros, xz[:, 1]])
+    vessel = drive.track.state(state.t)
+    stream.append(state.t, position=position, velocity=velocity, tension=y[:, 0],
+                  body_position=position[-1:] if case.cables[0].to.kind == "body" else np.zeros((0, 3)),
+                  vessel_position=vessel.position, vessel_heading=vessel.heading,
+                  newton_iterations=iterations)

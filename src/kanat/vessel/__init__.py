@@ -1,0 +1,1 @@
+"""The vessel: manoeuvres (track kinematics) and pitch."""

@@ -1,0 +1,107 @@
+"""Planar continuum model against analytic wave oracles (SPEC §7 case 3).
+
+Straight weightless cables without drag: a longitudinal step in end velocity travels at
+``sqrt(EA/m)`` with ``dT = sqrt(EA m) dV``; a transverse kink at ``sqrt(T/(m+m_a))``; a taut
+string rings at ``c_t / 2L``; an axial cable with an end mass at ``beta c_l / L`` with
+``beta tan(beta) = m L / M``.
+"""
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from kanat.continuum import kernels2d as k
+from kanat.continuum.model2d import EndCondition, PlanarCable, parameters
+from kanat.continuum.schemes import Box, GeneralizedAlpha
+from kanat.continuum.stepper import State, step
+
+
+class StepDrive:
+    """First end moving with velocity ``velocity`` for t > 0 (at rest before), far end held."""
+
+    def __init__(self, velocity):
+        self.velocity = velocity
+
+    def velocities(self, t):
+        return (self.velocity if t > 0 else (0.0, 0.0)), (0.0, 0.0)
+
+    def origin(self, t):
+        return np.array([self.velocity[0] * t, self.velocity[1] * t])
+
+
+def straight_cable(length, segments, tension, stiffness=1e6, mass=1.0, added_mass=0.0, end=None):
+    p = parameters(mass, added_mass, 0.0, stiffness, 0.01, 0.0, 0.0, 1025.0, length / segments)
+    cable = PlanarCable("c", length, segments, p, EndCondition(k.VELOCITY), end or EndCondition(k.VELOCITY))
+    y = np.zeros((segments + 1, 4))
+    y[:, 0] = tension
+    xz = np.column_stack([cable.s * (1 + tension / stiffness), np.zeros(segments + 1)])
+    return cable, State(0.0, y, np.zeros_like(y), xz)
+
+
+def march(cable, state, drive, dt, steps, scheme):
+    coefficients = scheme.coefficients()
+    for _ in range(steps):
+        state, _ = step(cable, state, dt, coefficients, drive)
+    return state
+
+
+def front(s, values, level):
+    """Arclength where ``values`` first falls through ``level`` walking from s = 0."""
+    i = np.argmax(values < level)
+    return s[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (s[i] - s[i - 1])
+
+
+def test_longitudinal_step_speed_and_jump():
+    ea, m, t0, dv = 1e6, 1.0, 1000.0, 0.1
+    cable, state = straight_cable(1000.0, 200, t0, ea, m)
+    state = march(cable, state, StepDrive((-dv, 0.0)), 0.0025, 200, GeneralizedAlpha(-0.3))
+    jump = np.sqrt(ea * m) * dv
+    tension = state.y[:, 0]
+    assert front(cable.s, tension, t0 + 0.5 * jump) / state.t == pytest.approx(np.sqrt(ea / m), rel=0.02)
+    plateau = np.median(tension[cable.s < 300.0])
+    assert plateau - t0 == pytest.approx(jump, rel=0.02)
+
+
+def test_transverse_kink_speed():
+    t0, m, ma, dv = 1000.0, 1.0, 0.6, 0.05
+    cable, state = straight_cable(1000.0, 250, t0, 1e7, m, ma)
+    state = march(cable, state, StepDrive((0.0, dv)), 0.05, 200, GeneralizedAlpha(-0.3))
+    speed = front(cable.s, state.y[:, 2], 0.5 * dv) / state.t
+    assert speed == pytest.approx(np.sqrt(t0 / (m + ma)), rel=0.02)
+
+
+def zero_crossing_period(t, signal):
+    sign = np.signbit(signal)
+    idx = np.nonzero(sign[1:] != sign[:-1])[0]
+    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
+    return 2.0 * np.mean(np.diff(times))
+
+
+def test_taut_string_fundamental_frequency():
+    length, t0, m = 100.0, 1000.0, 1.0
+    cable, state = straight_cable(length, 50, t0, 1e7, m)
+    state.y[:, 2] = 0.01 * np.sin(np.pi * cable.s / length)            # first mode, initial velocity
+    coefficients, hold = Box().coefficients(), StepDrive((0.0, 0.0))
+    times, mid = [], []
+    for _ in range(600):
+        state, _ = step(cable, state, 0.02, coefficients, hold)
+        times.append(state.t)
+        mid.append(state.y[25, 2])
+    period = zero_crossing_period(np.array(times), np.array(mid))
+    c_t = np.sqrt(t0 / (m * (1 + t0 / 1e7)))
+    assert 1.0 / period == pytest.approx(c_t / (2 * length), rel=0.01)
+
+
+def test_axial_frequency_with_end_mass():
+    length, ea, m, body, force = 100.0, 1e6, 1.0, 100.0, 1000.0
+    beta = brentq(lambda b: b * np.tan(b) - m * length / body, 1e-6, np.pi / 2 - 1e-9)
+    end = EndCondition(k.BODY, mass=body, force=(force, 0.0))
+    cable, state = straight_cable(length, 50, force, ea, m, end=end)
+    state.y[:, 0] = force + 0.01 * ea * beta / length * np.cos(beta * cable.s / length)   # mode shape
+    coefficients, hold = Box().coefficients(), StepDrive((0.0, 0.0))
+    times, speed = [], []
+    for _ in range(500):
+        state, _ = step(cable, state, 0.004, coefficients, hold)
+        times.append(state.t)
+        speed.append(state.y[-1, 1])
+    omega = 2 * np.pi / zero_crossing_period(np.array(times), np.array(speed))
+    assert omega == pytest.approx(beta * np.sqrt(ea / m) / length, rel=0.01)
