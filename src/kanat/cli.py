@@ -103,6 +103,9 @@ def run(case: Path = typer.Argument(..., help="YAML case file."),
     if loaded.model == "statics":
         _statics(loaded, case, output, plot, "auto", debug)
         return
+    if loaded.model == "pitch":
+        _pitch(loaded, output, plot, debug)
+        return
     runners = RUNNERS
     if loaded.model not in runners:
         _fail(KanatError(f"{case}: model '{loaded.model}' is not available in kanat {kanat.__version__} "
@@ -145,6 +148,28 @@ def _with_progress(duration: float, start):
             text = f"Newton {info['newton_iterations']:.2f}/step" if "newton_iterations" in info else ""
             bar.update(task, completed=t, info=text)
         return start(progress)
+
+
+@app.command()
+def pitch(case: Path = typer.Argument(..., help="YAML case file with a pitch block."),
+          output: Path = typer.Option(..., "-o", "--output", help="Result file (netCDF)."),
+          plot: Optional[Path] = typer.Option(None, "--plot",
+                                              help="Directory for the figures (or a PNG for fig. 2)."),
+          debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Ship pitch with the reactive stabilizer (seed 003): steady pitch per control mode."""
+    _pitch(_load(case, debug), output, plot, debug)
+
+
+def _pitch(loaded, output: Path, plot: Optional[Path], debug: bool) -> None:
+    from kanat.vessel.pitch import run_pitch_case
+
+    try:
+        with console.status("solving the pitch steady state ..."):
+            _, table = run_pitch_case(loaded, output, plot)
+    except Exception as error:  # noqa: BLE001 - reported by _fail
+        _fail(error, debug, "pitch failed")
+    typer.echo(table)
+    out.print(f"wrote {output}" + (f" and figures at {plot}" if plot is not None else ""))
 
 
 def _load(case: Path, debug: bool):

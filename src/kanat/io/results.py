@@ -31,6 +31,15 @@ UNITS = {
     "tau": ("1", "dimensionless tension T / (k1 L)"),
     "x": ("1", "dimensionless abscissa X / L"),
     "y": ("1", "dimensionless height Y / L"),
+    "pitch": ("rad", "steady pitch angle over one period, bow up positive"),
+    "stabilizer_moment": ("N m", "stabilizer moment, 0 <= f <= M0"),
+    "wave_moment": ("N m", "wave moment M_m sin(omega t + pi)"),
+    "amplitude": ("rad", "pitch amplitude, half the peak-to-peak"),
+    "max_abs": ("rad", "largest absolute pitch"),
+    "mean_pitch": ("rad", "period mean of the pitch (trim)"),
+    "amplitude_reduction": ("1", "amplitude without stabilizer / amplitude of the mode"),
+    "max_abs_reduction": ("1", "largest |pitch| without stabilizer / that of the mode"),
+    "fourier_vs_shooting": ("1", "max |pitch_fourier - pitch_shooting| / amplitude"),
 }
 
 
@@ -160,3 +169,54 @@ def failed_dataset(case, message: str, model: str = "statics", scheme: str = "",
     """A result holding no solution, only the provenance and ``status`` saying why."""
     return xr.Dataset(attrs=provenance(case, model=model, scheme=scheme, wall_time_s=wall_time_s,
                                        status=f"failed: {message}"))
+
+
+def pitch_dataset(result, case, wall_time_s: float = 0.0) -> xr.Dataset:
+    """The result file of a pitch run (case-format.md; SPEC §6.2, seed 003).
+
+    Variables ``pitch(mode, time)``, ``stabilizer_moment(mode, time)``, ``amplitude(mode)``,
+    ``max_abs(mode)`` of the case format, and ``wave_moment(time)``, ``mean_pitch(mode)``,
+    the reductions against ``off`` and the Fourier-vs-shooting difference (NaN where a
+    mode has one path only).
+
+    Parameters
+    ----------
+    result : kanat.vessel.PitchResult
+    case : kanat.model.Case
+    wall_time_s : float
+        Solve time recorded in the provenance [s].
+    """
+    from kanat.vessel.pitch_system import RESONANCE_RTOL
+
+    modes = list(result.responses)
+    rows = [result.responses[m] for m in modes]
+    system = result.system
+    time = rows[0].time
+    has_off = "off" in result.responses
+
+    def reduction(metric):
+        return [result.reduction(m, metric) if has_off else np.nan for m in modes]
+    attrs = provenance(case, model="pitch", scheme="fourier+shooting", wall_time_s=wall_time_s,
+                       inertia_kg_m2=system.inertia, natural_frequency_rad_s=system.natural_frequency,
+                       wave_frequency_rad_s=system.wave_frequency, wave_period_s=system.period,
+                       wave_moment_amplitude_N_m=system.wave_moment_amplitude,
+                       damping_ratio=system.damping_ratio, max_moment_N_m=result.max_moment,
+                       harmonics=result.harmonics, resonance_rtol=RESONANCE_RTOL,
+                       **{f"method_{m}": r.method for m, r in zip(modes, rows)})
+    ds = xr.Dataset(
+        {
+            "pitch": (("mode", "time"), np.array([r.pitch for r in rows])),
+            "stabilizer_moment": (("mode", "time"), np.array([r.moment for r in rows])),
+            "wave_moment": ("time", system.wave_moment(time)),
+            "amplitude": ("mode", [r.amplitude for r in rows]),
+            "max_abs": ("mode", [r.max_abs for r in rows]),
+            "mean_pitch": ("mode", [r.mean for r in rows]),
+            "amplitude_reduction": ("mode", reduction("amplitude")),
+            "max_abs_reduction": ("mode", reduction("max_abs")),
+            "fourier_vs_shooting": ("mode", [result.agreement.get(m, np.nan) for m in modes]),
+        },
+        coords={"mode": ("mode", np.array(modes, dtype=object), {"long_name": "stabilizer control mode"}),
+                "time": ("time", time, {"units": "s", "long_name": "time within one steady wave period"})},
+        attrs=attrs,
+    )
+    return annotate(ds)

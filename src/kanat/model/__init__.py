@@ -6,7 +6,7 @@ case format (``docs/case-format.md``); read case files with
 """
 from .cable import Cable, CableEnd
 from .case import Case
-from .components import Body, LineType, Point
+from .components import Body, ElasticLaw, LineType, Point, SurfaceBuoy
 from .environment import Current, Environment, JonswapWaves, RegularWaves, Waves
 from .problems import (
                        PitchModel,
@@ -29,8 +29,8 @@ from .vessel import (
 )
 
 __all__ = [
-    "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "Environment", "Heading",
+    "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "ElasticLaw", "Environment", "Heading",
     "JonswapWaves", "KNOT", "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES",
-    "Simulation", "SpeedStep", "SphereDimensional", "SphereDimensionless", "SphereTwoCables",
+    "Simulation", "SpeedStep", "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy",
     "Stabilizer", "Straight", "TrackSegment", "Turn", "Vessel", "Waves",
 ]

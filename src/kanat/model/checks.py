@@ -335,9 +335,11 @@ def check_pitch(case: Case, out: Findings) -> None:
     worst = int(np.argmin(denominator))
     text = (f"harmonic n = {n[worst]} of the wave frequency ({n[worst]} × {omega:.4g} = "
             f"{n[worst] * omega:.4g} rad/s) ")
-    if denominator[worst] < 1e-9:
-        out.error(("pitch", key), text + f"equals the natural frequency {omega0:.4g} rad/s and "
-                  "there is no damping: the steady state is unbounded; change "
+    from kanat.vessel.pitch_system import RESONANCE_RTOL      # the solver's own guard
+
+    if zeta == 0 and abs(n[worst] * omega - omega0) <= RESONANCE_RTOL * omega0:
+        out.error(("pitch", key), text + f"is within {100 * RESONANCE_RTOL:g} % of the natural frequency "
+                  f"{omega0:.4g} rad/s and there is no damping: the steady state is unbounded; change "
                   f"{key} or give damping_ratio > 0")
     elif 1 / denominator[worst] > RESONANCE_GAIN:
         out.warning(("pitch", key), text + f"is close to the natural frequency {omega0:.4g} "

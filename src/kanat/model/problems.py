@@ -3,9 +3,9 @@ ship pitch with a reactive stabilizer (seed 003, SPEC §6.2)."""
 from __future__ import annotations
 
 import math
-from typing import Literal
+from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import BeforeValidator, Field, model_validator
 
 from ._base import KanatModel, quantity
 
@@ -55,18 +55,42 @@ class SphereTwoCables(KanatModel):
         return self
 
 
-class Stabilizer(KanatModel):
-    """Reactive stabilizer: control ``mode`` (off, sinusoidal, rectangular, ...) and
-    the largest moment ``max_moment`` M0 [N m]."""
+STABILIZER_MODES = ("off", "sinusoidal", "rectangular", "feedback", "optimal")
+"""Control modes of the reactive stabilizer (SPEC §6.2, :mod:`kanat.vessel.pitch_laws`)."""
 
-    mode: str = "off"
+
+def _off_not_false(value):
+    """YAML 1.1 reads a bare ``off`` as False: take it as the mode ``off``."""
+    return "off" if value is False else value
+
+
+StabilizerMode = Annotated[Literal["off", "sinusoidal", "rectangular", "feedback", "optimal"],
+                           BeforeValidator(_off_not_false)]
+
+
+class Stabilizer(KanatModel):
+    """Reactive stabilizer: control ``mode`` and the largest moment ``max_moment`` M0 [N m].
+
+    Modes: ``off``; ``sinusoidal`` and ``rectangular`` (paper eq. 5: M0 sin(omega t) or M0
+    over the first half period, 0 in the second); ``feedback`` (``clip(-feedback_gain
+    phi', 0, M0)``; ``feedback_gain`` defaults to ``2 I_y omega_0``); ``optimal`` (the
+    piecewise-linear half-period shape of ``shape_nodes`` pieces in [0, M0] minimising
+    ``objective``: the amplitude or the largest |pitch|).
+    """
+
+    mode: StabilizerMode = "off"
     max_moment: float = quantity(0.0, unit="N m", ge=0)
+    feedback_gain: float | None = quantity(None, unit="N m s/rad", gt=0)
+    shape_nodes: int = Field(16, ge=1, le=200)
+    objective: Literal["amplitude", "max_abs"] = "amplitude"
 
 
 class PitchModel(KanatModel):
     """Linear pitch oscillator ``I phi'' + c phi' + k phi = M_m sin(omega t + pi) + f(t)``.
 
-    Exactly one of ``natural_frequency`` (omega_0) and ``restoring`` (k).
+    Exactly one of ``natural_frequency`` (omega_0) and ``restoring`` (k); the damping is
+    ``c = 2 damping_ratio I omega_0``. ``modes`` lists the stabilizer modes to compare
+    (all with ``stabilizer.max_moment``), ``time_points`` the samples of the steady period.
     """
 
     inertia: float = quantity(unit="kg m^2", gt=0)
@@ -77,6 +101,10 @@ class PitchModel(KanatModel):
     damping_ratio: float = quantity(0.0, unit="-", ge=0)
     stabilizer: Stabilizer = Field(default_factory=Stabilizer)
     harmonics: int = Field(50, ge=1)
+    modes: tuple[StabilizerMode, ...] | None = Field(
+        None, description="modes to compute and compare; default off, sinusoidal, rectangular "
+                          "and the stabilizer's own mode")
+    time_points: int = Field(401, ge=3, description="samples over one period, both ends included")
 
     @model_validator(mode="after")
     def _one_stiffness(self) -> PitchModel:

@@ -29,6 +29,11 @@ class Simulation(KanatModel):
         x-z plane.
     frame_pole : str
         Where the 3-D continuum model puts the pole of its angle frame (``auto``).
+    mass_matrix : {"lumped", "consistent"}
+        Lumped model: element mass ``mL/2`` at each node or consistent ``mL/6 [[2,1],[1,2]]``.
+    initial_state : {"equilibrium", "as_given"}
+        Lumped model: start from the network's equilibrium at the initial tow speed
+        (SPEC §4), or from straight cables between the given end positions at rest.
     """
 
     scheme: str | None = None
@@ -39,6 +44,8 @@ class Simulation(KanatModel):
     output_dt: float | None = quantity(None, unit="s", gt=0)
     dimensions: Literal[2, 3, "auto"] = "auto"
     frame_pole: str = "auto"
+    mass_matrix: Literal["lumped", "consistent"] = "lumped"
+    initial_state: Literal["equilibrium", "as_given"] = "equilibrium"
 
     @property
     def output_interval(self) -> float:

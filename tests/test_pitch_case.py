@@ -1,0 +1,92 @@
+"""The pitch case end to end: case file -> run_pitch_case -> result file and figures
+(case-format.md: ``pitch(mode, time)``, ``stabilizer_moment(mode, time)``,
+``amplitude(mode)``, ``max_abs(mode)``)."""
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import yaml
+
+from kanat.errors import CaseError, KanatError
+from kanat.model import Case
+from kanat.io import check_case, load_case, parse_case
+from kanat.io.results import read_result
+from kanat.report.pitch_plot import FILES
+from kanat.vessel import ResonanceError, run_pitch_case
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_seed003.yaml"
+
+
+@pytest.fixture(scope="module")
+def ran(tmp_path_factory):
+    out = tmp_path_factory.mktemp("pitch")
+    ds, table = run_pitch_case(load_case(EXAMPLE), out / "pitch.nc", out / "figs")
+    return out, ds, table
+
+
+def test_example_is_valid_without_warnings():
+    assert check_case(EXAMPLE) == []
+
+
+def test_result_file_has_the_case_format_names(ran):
+    out, _, _ = ran
+    back = read_result(out / "pitch.nc")
+    modes = ["off", "sinusoidal", "rectangular", "feedback", "optimal"]
+    assert list(back["mode"].values) == modes
+    assert back["pitch"].dims == ("mode", "time") and back["stabilizer_moment"].dims == ("mode", "time")
+    assert back["amplitude"].dims == ("mode",) and back["max_abs"].dims == ("mode",)
+    assert back["pitch"].attrs["units"] == "rad" and back["stabilizer_moment"].attrs["units"] == "N m"
+    assert back["time"].attrs["units"] == "s"
+    assert back["time"].values[0] == 0.0 and back["time"].values[-1] == pytest.approx(10.0)
+    assert back.attrs["status"] == "ok" and back.attrs["model"] == "pitch"
+    assert back.attrs["case_name"] == "pitch-seed003" and back.attrs["harmonics"] == 50
+    pitch = back["pitch"].values
+    np.testing.assert_allclose(back["amplitude"].values, 0.5 * np.ptp(pitch, axis=1))
+    np.testing.assert_allclose(back["max_abs"].values, np.abs(pitch).max(axis=1))
+    np.testing.assert_allclose(pitch[:, 0], pitch[:, -1], atol=1e-9)        # one steady period
+    agreement = back["fourier_vs_shooting"].sel(mode=["off", "sinusoidal", "rectangular", "optimal"])
+    assert (agreement.values < 1e-3).all() and np.isnan(back["fourier_vs_shooting"].sel(mode="feedback"))
+    assert back.attrs["method_feedback"] == "shooting"
+
+
+def test_figures_and_table(ran):
+    out, _, table = ran
+    for name in FILES.values():
+        assert (out / "figs" / name).stat().st_size > 30_000
+    for mode in ("off", "sinusoidal", "rectangular", "feedback", "optimal"):
+        assert f"\n{mode} " in table
+    assert "3.17" in table and "11.2" in table
+
+
+def test_resonance_is_refused_by_the_loader_and_the_solver_alike(tmp_path):
+    near = 2 * math.pi / 10 * (1 + 5e-4)       # within the solver's 0.1 % guard, no damping
+    text = EXAMPLE.read_text().replace("natural_frequency: 0.876", f"natural_frequency: {near!r}")
+    with pytest.raises(CaseError, match="within 0.1 % of the natural frequency"):
+        parse_case(text)
+    case = Case.model_validate(yaml.safe_load(text), context={})    # skips the loader's checks
+    with pytest.raises(ResonanceError, match="harmonic n = 1"):
+        run_pitch_case(case, tmp_path / "bad.nc")
+    assert read_result(tmp_path / "bad.nc").attrs["status"].startswith("failed: harmonic n = 1")
+
+
+def test_a_case_without_pitch_block_is_refused(tmp_path):
+    case = load_case(EXAMPLE.parent / "seed001_sphere.yaml")
+    with pytest.raises(KanatError, match="has no 'pitch' block; kanat pitch solves model: pitch"):
+        run_pitch_case(case, tmp_path / "none.nc")
+
+
+def test_yaml_off_is_the_mode_off():
+    text = EXAMPLE.read_text().replace("mode: rectangular", "mode: off")
+    assert parse_case(text).pitch.stabilizer.mode == "off"
+    assert parse_case(text).pitch.modes[0] == "off"
+
+
+def test_plot_to_a_png_file_puts_fig2_there_and_the_rest_beside(tmp_path):
+    from kanat.report.pitch_plot import figure_paths
+
+    paths = figure_paths(tmp_path / "out.png")
+    assert paths["period"] == tmp_path / "out.png"
+    assert paths["sinusoidal"] == tmp_path / "out_fig3_sinusoidal.png"
+    assert figure_paths(tmp_path)["band"] == tmp_path / "pitch_omega0_band.png"
