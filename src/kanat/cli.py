@@ -14,7 +14,7 @@ from rich.text import Text
 import kanat
 from kanat.errors import CaseError, KanatError
 
-RUNNERS = {"continuum": "kanat.continuum.run"}
+RUNNERS = {"continuum": "kanat.continuum.run", "lumped": "kanat.lumped"}
 """Dynamic models by name: the module whose ``run(case, output, ...)`` runs them."""
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,

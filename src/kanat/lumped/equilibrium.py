@@ -1,0 +1,152 @@
+"""Initial equilibrium of the network (SPEC §4): the static state for the initial tow
+speed, current and the mean (wave-free) surface.
+
+In the frame moving with the vessel's initial velocity ``U`` every node moves at ``U``;
+the free node positions ``q`` solve ``F(q) = 0`` (:class:`~kanat.lumped.system.LumpedSystem`
+with ``steady_velocity = U``). Slack cables make the tangent singular, so Newton's method
+is regularized as a pseudo-transient continuation (implicit dynamic relaxation; Kelley &
+Keyes 1998, SIAM J. Numer. Anal. 35, 508)::
+
+    (1)  (M / dtau^2 - dF/dq) dq = F(q),    dtau_k+1 = dtau_k ||F_k-1|| / ||F_k||   (SER)
+
+and it becomes Newton's method as ``dtau`` grows. ``dF/dq`` is the exact finite-difference
+Jacobian, built with a distance-2 colouring of the node graph (a node's force depends
+only on its neighbours), so it costs ``3 x colours`` force evaluations.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from kanat.errors import SolverError
+from kanat.lumped.system import LumpedSystem
+
+MAX_ITERATIONS = 400
+RESIDUAL_TOLERANCE = 1e-9      # of the largest nodal load scale
+FD_STEP = 1e-7                 # relative finite-difference step (of element length)
+INITIAL_PSEUDO_PERIOD = 0.05   # dtau0 as a fraction of the slowest pendulum period sqrt(L/g)
+MAX_STEP_FRACTION = 0.25       # largest node move per iteration, in element lengths
+
+
+def distance2_colouring(net) -> np.ndarray:
+    """Colour of each free node so that nodes of one colour are > 2 edges apart."""
+    n = net.n_nodes
+    neighbours = [set() for _ in range(n)]
+    for i, j in zip(net.el_i, net.el_j):
+        neighbours[i].add(j)
+        neighbours[j].add(i)
+    colour = -np.ones(n, dtype=np.int64)
+    for node in np.flatnonzero(net.free):
+        near = set(neighbours[node])
+        for other in neighbours[node]:
+            near |= neighbours[other]
+        taken = {colour[k] for k in near if colour[k] >= 0}
+        colour[node] = next(c for c in range(n + 1) if c not in taken)
+    return colour
+
+
+def _jacobian(system, t, xf, colour, step, neighbours_of):
+    """Sparse ``dF/dq`` (3 n_free square) by coloured central differences."""
+    free = system.free_index
+    position = {node: k for k, node in enumerate(free)}
+    rows, cols, vals = [], [], []
+    zero = np.zeros_like(xf)
+    for c in range(colour[free].max() + 1):
+        group = np.flatnonzero(colour[free] == c)
+        for r in range(3):
+            dx = zero.copy()
+            dx[group, r] = step
+            dF = (system.acceleration_free_force(t, xf + dx) - system.acceleration_free_force(t, xf - dx)) / (2 * step)
+            for k in group:
+                for node in neighbours_of[free[k]]:
+                    if node in position:
+                        m = position[node]
+                        rows.extend(3 * m + np.arange(3))
+                        cols.extend([3 * k + r] * 3)
+                        vals.extend(dF[m])
+    size = 3 * len(free)
+    return sp.csc_matrix((vals, (rows, cols)), shape=(size, size))
+
+
+class _SteadyForces:
+    """Free nodes' static forces ``F(q)`` in the steady frame, and their mass blocks."""
+
+    def __init__(self, system: LumpedSystem):
+        self.system = system
+
+    def __call__(self, t, xf):
+        s = self.system
+        x, v, _, heading = s.full(t, xf, np.zeros_like(xf))
+        F, M = s.loads(t, x, v, heading)
+        return F[s.free_index].copy(), M[s.free_index].copy()
+
+
+def equilibrium(net, case, x0=None, velocity=None):
+    """Static equilibrium of the network, eq. (1).
+
+    Parameters
+    ----------
+    net : kanat.lumped.network.Network
+    case : kanat.model.Case
+    x0 : ndarray, shape (n, 3), optional
+        Starting positions (default: the network's guess).
+    velocity : ndarray, shape (3,), optional
+        Steady velocity of every node (default: the vessel's at t = 0, or zero).
+
+    Returns
+    -------
+    x : ndarray, shape (n, 3)
+        Equilibrium positions (prescribed nodes at their t = 0 places).
+    info : dict
+        ``iterations``, ``residual`` [N].
+
+    Raises
+    ------
+    SolverError
+        If the iteration does not converge, naming the node with the largest residual.
+    """
+    if velocity is None:
+        velocity = LumpedSystem(net, case, waves=False).vessel(0.0)[1]
+    system = LumpedSystem(net, case, waves=False, steady_velocity=velocity)
+    forces = _SteadyForces(system)
+    system.acceleration_free_force = lambda t, xf: forces(t, xf)[0]
+    colour = distance2_colouring(net)
+    neighbours = [{k} for k in range(net.n_nodes)]
+    for i, j in zip(net.el_i, net.el_j):
+        neighbours[i].add(j)
+        neighbours[j].add(i)
+    xf = np.array((net.x_guess if x0 is None else x0)[system.free_index], dtype=float)
+    scale = max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+    length = np.min(net.el_length)
+    step = FD_STEP * length
+    dtau = INITIAL_PSEUDO_PERIOD * np.sqrt(np.max(net.el_length) * len(net.el_length) / case.environment.gravity)
+    F, M = forces(0.0, xf)
+    norm = np.max(np.abs(F))
+    for iteration in range(1, MAX_ITERATIONS + 1):
+        if norm <= RESIDUAL_TOLERANCE * scale:
+            break
+        J = _jacobian(system, 0.0, xf, colour, step, neighbours)
+        A = sp.block_diag(list(M / dtau**2), format="csc") - J
+        dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
+        biggest = np.max(np.linalg.norm(dx, axis=1))
+        if biggest > MAX_STEP_FRACTION * length:
+            dx *= MAX_STEP_FRACTION * length / biggest
+        F_new, M_new = forces(0.0, xf + dx)
+        norm_new = np.max(np.abs(F_new))
+        if not np.isfinite(norm_new) or norm_new > 10.0 * norm:
+            dtau *= 0.25
+            continue
+        xf, F, M = xf + dx, F_new, M_new
+        dtau *= min(max(norm / max(norm_new, 1e-300), 0.5), 10.0)
+        norm = norm_new
+    else:
+        worst = system.free_index[int(np.argmax(np.abs(F).sum(axis=1)))]
+        raise SolverError(f"the initial equilibrium did not converge in {MAX_ITERATIONS} iterations "
+                          f"(largest force residual {norm:.3g} N near {net.where(worst)}); give bodies "
+                          "and points a 'position' near their expected place, or use "
+                          "simulation.initial_state: as_given")
+    x = net.x_guess.copy()
+    x[system.free_index] = xf
+    system.prescribed(0.0, x, np.zeros_like(x))
+    return x, {"iterations": iteration, "residual": float(norm)}

@@ -1,0 +1,164 @@
+"""One step of the generalized-α scheme for the lumped model (Chung & Hulbert 1993).
+
+With ``(x, v, a)`` at ``t_n`` and the unknown ``a_1`` at ``t_n+1 = t_n + h``::
+
+    (1)  x_1 = x + h v + h^2 ((1/2 - beta) a + beta a_1),   v_1 = v + h ((1 - gamma) a + gamma a_1)
+    (2)  R(a_1) = M(x_m) [(1 - alpha_m) a_1 + alpha_m a] - F(t_m, x_m, v_m) = 0
+         x_m = (1 - alpha_f) x_1 + alpha_f x,  v_m likewise,  t_m = t_n + (1 - alpha_f) h
+    (3)  J = (1 - alpha_m) M + (1 - alpha_f) (gamma h C + beta h^2 K)
+
+``K = -dF/dx`` and ``C = -dF/dv`` from the element tangent blocks
+(:func:`kanat.lumped.kernels.tangent_blocks`: axial, geometric, Kelvin–Voigt, drag) and
+the body drag; the added-mass, buoy and wave terms are left out of ``J`` (Newton then
+converges linearly rather than quadratically, to the same answer). ``J`` is sparse with
+the network's node graph; it is factorized by SuperLU at every iteration. A step whose
+Newton iteration fails is halved, up to ``MAX_HALVINGS`` times, then the run stops with
+a :class:`~kanat.errors.SolverError` naming time, cable and node.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from kanat.errors import SolverError
+from kanat.lumped import kernels
+
+MAX_HALVINGS = 4          # a step is cut to at most 1/16 before the run is stopped
+ACCELERATION_SCALE = 1.0  # m/s^2 floor of the convergence scale (1/10 g)
+
+
+class TangentPattern:
+    """Row/column indices of the sparse Jacobian over the free degrees of freedom."""
+
+    def __init__(self, net):
+        dof = -np.ones(net.n_nodes, dtype=np.int64)
+        dof[net.free] = np.arange(np.count_nonzero(net.free))
+        self.size = 3 * np.count_nonzero(net.free)
+        r3, c3 = np.meshgrid(np.arange(3), np.arange(3), indexing="ij")
+        rows, cols, keep = [], [], []
+        pairs = ((net.el_i, net.el_i), (net.el_i, net.el_j), (net.el_j, net.el_i), (net.el_j, net.el_j))
+        for a, b in pairs:
+            ra, cb = dof[a], dof[b]
+            rows.append(3 * ra[:, None, None] + r3)
+            cols.append(3 * cb[:, None, None] + c3)
+            keep.append(np.broadcast_to(((ra >= 0) & (cb >= 0))[:, None, None], (len(a), 3, 3)))
+        free_nodes = np.flatnonzero(net.free)
+        rows.append(3 * dof[free_nodes][:, None, None] + r3)
+        cols.append(3 * dof[free_nodes][:, None, None] + c3)
+        keep.append(np.ones((len(free_nodes), 3, 3), dtype=bool))
+        self.keep = np.concatenate([k.ravel() for k in keep])
+        self.rows = np.concatenate([r.ravel() for r in rows])[self.keep]
+        self.cols = np.concatenate([c.ravel() for c in cols])[self.keep]
+        self.free_nodes = free_nodes
+
+    def matrix(self, element_blocks, node_blocks):
+        """Sparse CSC matrix from ``element_blocks`` (4, m, 3, 3) for (ii, ij, ji, jj) and
+        ``node_blocks`` (n_free, 3, 3) on the diagonal."""
+        data = np.concatenate([element_blocks.ravel(), node_blocks.ravel()])[self.keep]
+        return sp.csc_matrix((data, (self.rows, self.cols)), shape=(self.size, self.size))
+
+
+def _pattern(system) -> TangentPattern:
+    if getattr(system, "_pattern", None) is None:
+        system._pattern = TangentPattern(system.net)
+    return system._pattern
+
+
+def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
+    """``c_mass M + c_damp C + c_stiff K`` over the free DOFs (eq. 3), sparse."""
+    net = system.net
+    m = net.n_elements
+    K, C, D = np.empty((m, 3, 3)), np.empty((m, 3, 3)), np.empty((m, 3, 3))
+    uw = system.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))[0]
+    kernels.tangent_blocks(x, v, uw, net.el_i, net.el_j, net.el_length, net.el_cn, net.el_ct,
+                           net.el_stretch_drag, net.el_damping, net.el_law, net.law_kind, net.law_n,
+                           net.law_x, net.law_y, K, C, D)
+    diag = c_stiff * K + c_damp * (C + D)
+    off = -c_stiff * K + c_damp * (D - C)
+    pattern = _pattern(system)
+    if system.consistent:
+        B = np.empty((m, 3, 3))
+        kernels.consistent_blocks(x, net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, B)
+        diag, off = diag + 2.0 * c_mass * B, off + c_mass * B
+        node = c_mass * system.node_mass[pattern.free_nodes, None, None] * np.eye(3)
+    else:
+        node = c_mass * M_blocks[pattern.free_nodes]
+    node = node + c_damp * _body_damping(system, t, x, v)[pattern.free_nodes]
+    return pattern.matrix(np.stack([diag, off, off, diag]), node)
+
+
+def _body_damping(system, t, x, v):
+    """``-dF/dv`` of the body drag, per node (n, 3, 3)."""
+    net = system.net
+    out = np.zeros((net.n_nodes, 3, 3))
+    if len(net.body_node):
+        nodes = net.body_node
+        ur = system.water(t, x[nodes])[0] - v[nodes]
+        speed = np.linalg.norm(ur, axis=1)
+        outer = np.einsum("kr,kq->krq", ur, ur) / np.maximum(speed, 1e-12)[:, None, None]
+        k = 0.5 * system.rho * net.body_drag_area
+        out[nodes] += k[:, None, None] * (speed[:, None, None] * np.eye(3) + outer)
+    return out
+
+
+def _residual(system, t, x, v, am_free, a_full):
+    """``R = M a_m - F`` over the free nodes (eq. 2) and the lumped blocks."""
+    heading = system.prescribed(t, x, v, a_full)
+    F, M = system.loads(t, x, v, heading)
+    net = system.net
+    a_full[system.free_index] = am_free
+    if system.consistent:
+        B = np.empty((net.n_elements, 3, 3))
+        kernels.consistent_blocks(x, net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, B)
+        y = np.empty_like(a_full)
+        kernels.consistent_matvec(B, net.el_i, net.el_j, system.node_mass, a_full, y)
+    else:
+        y = np.einsum("nrq,nq->nr", M, a_full)
+    return (y - F)[system.free_index], M
+
+
+def _attempt(scheme, system, state, h):
+    """One step of size ``h``; None when Newton fails. Returns (state, iterations)."""
+    am, af, gamma, beta = scheme.coefficients
+    t, x0, v0, a0 = state["t"], state["x"], state["v"], state["a"]
+    tm = t + (1.0 - af) * h
+    n = system.net.n_nodes
+    x, v, a_full = np.empty((n, 3)), np.empty((n, 3)), np.zeros((n, 3))
+    a1 = a0.copy()
+    for iteration in range(1, scheme.max_iterations + 1):
+        x1 = x0 + h * v0 + h * h * ((0.5 - beta) * a0 + beta * a1)
+        v1 = v0 + h * ((1.0 - gamma) * a0 + gamma * a1)
+        x[system.free_index] = (1.0 - af) * x1 + af * x0
+        v[system.free_index] = (1.0 - af) * v1 + af * v0
+        R, M = _residual(system, tm, x, v, (1.0 - am) * a1 + am * a0, a_full)
+        if not np.all(np.isfinite(R)):
+            return None, iteration
+        J = jacobian(system, tm, x, v, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h, M)
+        try:
+            delta = spla.splu(J).solve(-R.ravel()).reshape(-1, 3)
+        except RuntimeError:                                   # singular tangent
+            return None, iteration
+        a1 = a1 + delta
+        scale = max(np.max(np.abs(a1)), ACCELERATION_SCALE)
+        if np.max(np.abs(delta)) <= scheme.tolerance * scale:
+            x1 = x0 + h * v0 + h * h * ((0.5 - beta) * a0 + beta * a1)
+            v1 = v0 + h * ((1.0 - gamma) * a0 + gamma * a1)
+            new = {"t": t + h, "x": x1, "v": v1, "a": a1, "iterations": state["iterations"] + iteration}
+            return new, iteration
+    return None, scheme.max_iterations
+
+
+def generalized_alpha_step(scheme, system, state, h, level: int = 0):
+    """Advance ``state`` by ``h`` (eqs. 1-3), halving the step where Newton fails."""
+    new, _ = _attempt(scheme, system, state, h)
+    if new is not None:
+        return new
+    if level >= MAX_HALVINGS:
+        worst = system.free_index[int(np.argmax(np.abs(state["a"]).sum(axis=1)))]
+        raise SolverError(
+            f"Newton did not converge in {scheme.max_iterations} iterations at t = {state['t']:.6g} s "
+            f"even with the step cut to {h:.3g} s, near {system.net.where(worst)}; "
+            "reduce dt, raise axial_damping, or try scheme rk4")
+    half = generalized_alpha_step(scheme, system, state, 0.5 * h, level + 1)
+    return generalized_alpha_step(scheme, system, half, 0.5 * h, level + 1)

@@ -1,0 +1,153 @@
+"""Time schemes of the lumped model, registered in :mod:`kanat.schemes` (SPEC §5).
+
+Every scheme is a frozen dataclass (its fields are its parameters) with the contract:
+
+1. ``start(system, t, xf, vf, h) -> state``: a state dict of arrays and numbers at ``t``
+   (free nodes' positions ``x`` and velocities ``v``, flattened ``(n_free, 3)``, plus the
+   scheme's own history) — everything a checkpoint needs to continue exactly;
+2. ``step(system, state, h) -> state``: a new state ``h`` later; the old one is not touched;
+3. class attributes ``name``, ``model = "lumped"``, ``order``, ``explicit`` and, for
+   explicit schemes, ``stability_limit``: the largest ``omega h`` on the imaginary axis
+   (undamped oscillation) for which the scheme is stable.
+
+Schemes:
+
+* ``rk4`` — classical Runge–Kutta, 4 evaluations per step;
+* ``abm4`` — Adams–Bashforth–Moulton 4 in PECE mode, started by three RK4 steps (the
+  seed's multistep predictor–corrector, seed 004 refs. [1, 4]), 2 evaluations per step;
+* ``generalized-alpha-lumped`` — Chung & Hulbert (1993, J. Appl. Mech. 60, 371)
+  generalized-α for ``M a = F(x, v)``, unconditionally stable, second order, its
+  amplification at infinite frequency ``lambda_inf = -rho_inf`` (as the continuum's
+  ``lambda_inf``); each step a Newton solve with the sparse tangent (:mod:`.implicit`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from kanat.lumped.implicit import generalized_alpha_step
+from kanat.schemes import Scheme
+
+
+def _pack(xf, vf):
+    return np.concatenate([np.ravel(xf), np.ravel(vf)])
+
+
+def _unpack(y):
+    half = y.size // 2
+    return y[:half].reshape(-1, 3), y[half:].reshape(-1, 3)
+
+
+def _rk4(system, t, y, h):
+    f = system.rhs
+    k1 = f(t, y)
+    k2 = f(t + 0.5 * h, y + 0.5 * h * k1)
+    k3 = f(t + 0.5 * h, y + 0.5 * h * k2)
+    k4 = f(t + h, y + h * k3)
+    return y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+
+
+@dataclass(frozen=True)
+class RK4(Scheme):
+    """Classical 4th-order Runge–Kutta on ``y = (q, q_dot)``."""
+
+    name: ClassVar[str] = "rk4"
+    model: ClassVar[str] = "lumped"
+    order: ClassVar[int] = 4
+    explicit: ClassVar[bool] = True
+    stability_limit: ClassVar[float] = 2.8    # imaginary-axis bound 2 sqrt(2) = 2.83, real 2.79
+    evaluations_per_step: ClassVar[int] = 4
+
+    def start(self, system, t, xf, vf, h):
+        return {"t": float(t), "y": _pack(xf, vf)}
+
+    def step(self, system, state, h):
+        return {"t": state["t"] + h, "y": _rk4(system, state["t"], state["y"], h)}
+
+
+AB4 = np.array([55.0, -59.0, 37.0, -9.0]) / 24.0     # on f_n, f_n-1, f_n-2, f_n-3
+AM4 = np.array([9.0, 19.0, -5.0, 1.0]) / 24.0        # on f_n+1, f_n, f_n-1, f_n-2
+
+
+@dataclass(frozen=True)
+class ABM4(Scheme):
+    """Adams–Bashforth–Moulton 4 (PECE), started by RK4; ``history`` holds ``f_n .. f_n-3``."""
+
+    name: ClassVar[str] = "abm4"
+    model: ClassVar[str] = "lumped"
+    order: ClassVar[int] = 4
+    explicit: ClassVar[bool] = True
+    stability_limit: ClassVar[float] = 0.3    # PECE is weakly unstable on the imaginary axis (growth
+                                              # 1e-4 per step at 0.3, 1.5e-3 at 0.5; real-axis bound 1.28):
+                                              # it relies on some physical damping (tests measure it)
+    evaluations_per_step: ClassVar[int] = 2
+
+    def start(self, system, t, xf, vf, h):
+        y = _pack(xf, vf)
+        return {"t": float(t), "y": y, "history": system.rhs(t, y)[None, :]}
+
+    def step(self, system, state, h):
+        t, y, hist = state["t"], state["y"], state["history"]
+        if len(hist) < 4:                                   # RK4 start-up
+            y1 = _rk4(system, t, y, h)
+            return {"t": t + h, "y": y1, "history": np.vstack([system.rhs(t + h, y1)[None, :], hist])}
+        yp = y + h * (AB4 @ hist)
+        fp = system.rhs(t + h, yp)
+        yc = y + h * (AM4[0] * fp + AM4[1:] @ hist[:3])
+        fc = system.rhs(t + h, yc)
+        return {"t": t + h, "y": yc, "history": np.vstack([fc[None, :], hist[:3]])}
+
+
+@dataclass(frozen=True)
+class GeneralizedAlphaLumped(Scheme):
+    """Chung–Hulbert generalized-α with Newton on the sparse tangent (:mod:`.implicit`).
+
+    Attributes
+    ----------
+    lambda_inf : float
+        Amplification at infinite frequency, ``-rho_inf``, in [-1, 0]; -1 is the
+        trapezoidal rule (no dissipation), 0 annihilates the highest modes in one step.
+    max_iterations : int
+        Newton iterations per step before the step is halved.
+    tolerance : float
+        Convergence on the scaled acceleration increment.
+    """
+
+    name: ClassVar[str] = "generalized-alpha-lumped"
+    model: ClassVar[str] = "lumped"
+    order: ClassVar[int] = 2
+    explicit: ClassVar[bool] = False
+    lambda_inf: float = -0.5
+    max_iterations: int = 12
+    tolerance: float = 1e-8
+
+    def __post_init__(self):
+        if not -1.0 <= self.lambda_inf <= 0.0:
+            raise ValueError(f"lambda_inf must be in [-1, 0] (got {self.lambda_inf})")
+
+    @property
+    def coefficients(self) -> tuple[float, float, float, float]:
+        """``(alpha_m, alpha_f, gamma, beta)`` of Chung & Hulbert (1993) eqs. 25-27."""
+        r = -self.lambda_inf
+        am, af = (2.0 * r - 1.0) / (r + 1.0), r / (r + 1.0)
+        gamma = 0.5 - am + af
+        return am, af, gamma, 0.25 * (1.0 - am + af) ** 2
+
+    def start(self, system, t, xf, vf, h):
+        xf, vf = np.array(xf, float), np.array(vf, float)
+        return {"t": float(t), "x": xf, "v": vf, "a": system.acceleration(t, xf, vf), "iterations": 0}
+
+    def step(self, system, state, h):
+        return generalized_alpha_step(self, system, state, h)
+
+
+SCHEMES = (RK4, ABM4, GeneralizedAlphaLumped)
+
+
+def state_positions(state) -> tuple[np.ndarray, np.ndarray]:
+    """Free nodes' ``(x, v)``, shape (n_free, 3) each, of any scheme's state."""
+    if "y" in state:
+        return _unpack(state["y"])
+    return state["x"], state["v"]

@@ -1,0 +1,82 @@
+"""Snap loads: every slack -> taut event of every element (SPEC §5, seed 004 "ривки").
+
+An element is slack while its tension is zero (the tension-only law, kernels eq. 2).
+An event starts at the first step at which a slack element carries tension, and ends
+when it goes slack again (or at the end of the run). For each event the tracker keeps
+its start time, the element, the peak tension and the largest rate of rise ``dT/dt``
+(finite differences over the steps). Updates are vectorized over elements.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+EVENT_FIELDS = ("time", "element", "peak_tension", "rise_rate")
+
+
+class SnapTracker:
+    """Slack -> taut events, updated every step.
+
+    Parameters
+    ----------
+    t0 : float
+        Start time [s].
+    tension : ndarray, shape (m,)
+        Element tensions at ``t0`` [N]; elements taut there start no event.
+    state : dict, optional
+        A saved :meth:`state` to continue from (resume).
+    """
+
+    def __init__(self, t0: float, tension: np.ndarray, state: dict | None = None):
+        if state is not None:
+            self._arrays = {k: np.array(v) for k, v in state.items()}
+            return
+        m = len(tension)
+        self._arrays = {
+            "taut": tension > 0.0, "active": np.zeros(m, bool), "start": np.zeros(m),
+            "peak": np.zeros(m), "rate": np.zeros(m), "prev_tension": np.array(tension, float),
+            "prev_time": np.array(float(t0)),
+            **{f"done_{k}": np.zeros(0) for k in EVENT_FIELDS}}
+
+    def update(self, t: float, tension: np.ndarray) -> None:
+        """Account for the tensions ``tension`` (m,) at time ``t``."""
+        a = self._arrays
+        rate = (tension - a["prev_tension"]) / max(t - float(a["prev_time"]), 1e-300)
+        taut = tension > 0.0
+        ended = a["active"] & ~taut
+        if np.any(ended):
+            self._close(np.flatnonzero(ended))
+        began = taut & ~a["taut"]
+        a["start"][began], a["peak"][began], a["rate"][began] = t, 0.0, 0.0
+        a["active"] |= began
+        act = a["active"]
+        a["peak"][act] = np.maximum(a["peak"][act], tension[act])
+        a["rate"][act] = np.maximum(a["rate"][act], rate[act])
+        a["taut"], a["prev_tension"], a["prev_time"] = taut, np.array(tension, float), np.array(float(t))
+
+    def _close(self, elements: np.ndarray) -> None:
+        a = self._arrays
+        new = {"time": a["start"][elements], "element": elements.astype(float),
+               "peak_tension": a["peak"][elements], "rise_rate": a["rate"][elements]}
+        for k in EVENT_FIELDS:
+            a[f"done_{k}"] = np.concatenate([a[f"done_{k}"], new[k]])
+        a["active"][elements] = False
+
+    def events(self) -> dict[str, np.ndarray]:
+        """All events so far, the open ones included, sorted by time."""
+        a = self._arrays
+        open_ = np.flatnonzero(a["active"])
+        out = {"time": np.concatenate([a["done_time"], a["start"][open_]]),
+               "element": np.concatenate([a["done_element"], open_.astype(float)]).astype(np.int64),
+               "peak_tension": np.concatenate([a["done_peak_tension"], a["peak"][open_]]),
+               "rise_rate": np.concatenate([a["done_rise_rate"], a["rate"][open_]])}
+        order = np.argsort(out["time"], kind="stable")
+        return {k: v[order] for k, v in out.items()}
+
+    @property
+    def count(self) -> int:
+        """Number of events so far."""
+        return len(self._arrays["done_time"]) + int(np.count_nonzero(self._arrays["active"]))
+
+    def state(self) -> dict[str, np.ndarray]:
+        """Arrays to save in a checkpoint."""
+        return {k: np.array(v) for k, v in self._arrays.items()}

@@ -1,0 +1,92 @@
+"""Step sizes: the explicit schemes' safe step from the shortest axial nodal period, and the
+automatic choice of scheme (SPEC §5).
+
+For element ``k`` between nodes of masses ``m_i, m_j`` (lumped: half of each adjacent
+element's mass plus bodies; a prescribed node counts as infinitely heavy), with tangent
+axial stiffness ``k = f'(e)/L0`` and Kelvin–Voigt rate ``c/L0``::
+
+    (1)  omega_k = sqrt(2 k (1/m_i + 1/m_j))      highest axial frequency of the element pair
+                                                  (the chain's 2 sqrt(k/m) for equal masses)
+    (2)  sigma_k = 2 (c/L0) (1/m_i + 1/m_j)       its viscous decay rate
+    (3)  T_axial = 2 pi / max omega_k             shortest axial nodal period
+    (4)  h_safe  = SAFETY * limit / max(omega_k + sigma_k)
+
+``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
+imaginary axis). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from kanat.lumped.kernels import elastic
+
+SAFETY = 0.8                 # margin below the stability limit
+CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
+STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
+IMPLICIT_COST = 12.0         # force evaluations one Newton iteration with a sparse LU is worth
+IMPLICIT_ITERATIONS = 3.0    # typical Newton iterations per implicit step
+
+
+@dataclass(frozen=True)
+class StepInfo:
+    """The explicit stability bound of a network state.
+
+    Attributes
+    ----------
+    axial_period : float
+        Shortest axial nodal period, eq. (3) [s].
+    omega_max : float
+        ``max(omega_k + sigma_k)`` [1/s].
+    element : int
+        The element that sets it.
+    """
+
+    axial_period: float
+    omega_max: float
+    element: int
+
+    def safe_step(self, scheme) -> float:
+        """Eq. (4) for an explicit ``scheme`` [s]."""
+        return SAFETY * scheme.stability_limit / self.omega_max
+
+
+def step_info(net, x, consistent: bool = False) -> StepInfo:
+    """Stability bound of the network at positions ``x`` (n, 3), eqs. (1)-(3)."""
+    inv = np.zeros(net.n_nodes)
+    mass = net.node_mass.copy()
+    np.add.at(mass, net.el_i, 0.5 * net.el_mass * net.el_length)
+    np.add.at(mass, net.el_j, 0.5 * net.el_mass * net.el_length)
+    inv[net.free] = 1.0 / mass[net.free]
+    strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
+    slope = np.zeros(net.n_elements)
+    for row in range(len(net.law_kind)):
+        sel = net.el_law == row
+        if not np.any(sel):
+            continue
+        top = max(STRAIN_REFERENCE, 2.0 * float(np.max(strain[sel])))
+        slope[sel] = max(elastic(net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row], e)[1]
+                         for e in np.linspace(0.0, top, 17))
+    pair = inv[net.el_i] + inv[net.el_j]
+    omega = np.sqrt(2.0 * slope / net.el_length * pair)
+    if consistent:
+        omega = omega * CONSISTENT_FACTOR
+    rate = omega + 2.0 * net.el_damping / net.el_length * pair
+    k = int(np.argmax(rate))
+    return StepInfo(2.0 * math.pi / max(float(np.max(omega)), 1e-300), float(rate[k]), k)
+
+
+def fit_step(h_max: float, output_dt: float) -> float:
+    """The largest step ``<= h_max`` that divides ``output_dt`` exactly."""
+    return output_dt / math.ceil(output_dt / h_max - 1e-9)
+
+
+def choose_scheme(info: StepInfo, dt: float, schemes: dict):
+    """The cheapest safe scheme for a case that names none: RK4 at its safe step, or the
+    implicit scheme at ``dt``, by force evaluations per simulated second."""
+    rk4, implicit = schemes["rk4"](), schemes["generalized-alpha-lumped"]()
+    explicit_cost = rk4.evaluations_per_step / min(info.safe_step(rk4), dt)
+    implicit_cost = IMPLICIT_ITERATIONS * (1.0 + IMPLICIT_COST) / dt
+    return rk4 if explicit_cost <= implicit_cost else implicit

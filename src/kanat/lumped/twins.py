@@ -1,0 +1,98 @@
+"""Plain NumPy twins of the compiled kernels (:mod:`kanat.lumped.kernels`), written
+independently (vectorized over elements, ``np.add.at`` for the scatter) so that the
+tests can check each kernel against them. Same equations and numbering as there.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+
+def elastic_numpy(kind, n, xs, ys, e):
+    """Elastic tension and slope of one law for an array of strains ``e``."""
+    e = np.asarray(e, dtype=float)
+    if kind == 0:
+        c = ys[:n]
+        powers = np.arange(1, n + 1)
+        f = np.sum(c * e[..., None] ** powers, axis=-1)
+        df = np.sum(c * powers * e[..., None] ** (powers - 1), axis=-1)
+        return f, df
+    x, y = xs[:n], ys[:n]
+    k = np.clip(np.searchsorted(x, e, side="left"), 1, n - 1)
+    slope = (y[k] - y[k - 1]) / (x[k] - x[k - 1])
+    return y[k - 1] + slope * (e - x[k - 1]), slope
+
+
+def forces_numpy(net, x, v, uw, aw, node_mass):
+    """Twin of :func:`kernels.forces`: returns ``F (n,3), M (n,3,3), T (m,), strain (m,)``."""
+    i, j, L0 = net.el_i, net.el_j, net.el_length
+    d = x[j] - x[i]
+    length = np.linalg.norm(d, axis=1)
+    t = d / length[:, None]
+    e = length / L0 - 1.0
+    edot = np.einsum("kr,kr->k", t, v[j] - v[i]) / L0
+    f = np.zeros_like(e)
+    for row in range(len(net.law_kind)):
+        sel = net.el_law == row
+        f[sel] = elastic_numpy(net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row],
+                               np.maximum(e[sel], 0.0))[0]
+    T = np.where(e > 0.0, np.maximum(0.0, f + net.el_damping * edot), 0.0)
+    vr = uw - 0.5 * (v[i] + v[j])
+    vts = np.einsum("kr,kr->k", vr, t)
+    vn = vr - vts[:, None] * t
+    s = np.where(net.el_stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
+    fd = s[:, None] * (net.el_cn[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
+                       + (net.el_ct * np.abs(vts) * vts)[:, None] * t)
+    an = aw - np.einsum("kr,kr->k", aw, t)[:, None] * t
+    fi = (net.el_displaced + net.el_added_mass)[:, None] * an
+    load = (fd + fi) * (0.5 * L0)[:, None]
+    load[:, 2] -= net.el_weight * 0.5 * L0
+    F = np.array(net.node_force, dtype=float)
+    np.add.at(F, i, T[:, None] * t + load)
+    np.add.at(F, j, -T[:, None] * t + load)
+    eye = np.eye(3)
+    blocks = (0.5 * L0)[:, None, None] * ((net.el_mass + net.el_added_mass)[:, None, None] * eye
+                                           - net.el_added_mass[:, None, None] * np.einsum("kr,kq->krq", t, t))
+    M = node_mass[:, None, None] * eye
+    np.add.at(M, i, blocks)
+    np.add.at(M, j, blocks)
+    return F, M, T, e
+
+
+def lumped_solve_numpy(M, F, free, a):
+    """Twin of :func:`kernels.lumped_solve`."""
+    out = np.array(a, dtype=float)
+    out[free] = np.linalg.solve(M[free], F[free][..., None])[..., 0]
+    return out
+
+
+def consistent_matrix(net, x, node_mass):
+    """The consistent mass matrix (kernels eq. 9) as a sparse (3n, 3n) matrix."""
+    n = len(x)
+    d = x[net.el_j] - x[net.el_i]
+    t = d / np.linalg.norm(d, axis=1)[:, None]
+    B = (net.el_length / 6.0)[:, None, None] * (
+        (net.el_mass + net.el_added_mass)[:, None, None] * np.eye(3)
+        - net.el_added_mass[:, None, None] * np.einsum("kr,kq->krq", t, t))
+    rows, cols, vals = [], [], []
+    r3, c3 = np.meshgrid(np.arange(3), np.arange(3), indexing="ij")
+    for (a, b, w) in ((net.el_i, net.el_i, 2.0), (net.el_i, net.el_j, 1.0),
+                      (net.el_j, net.el_i, 1.0), (net.el_j, net.el_j, 2.0)):
+        rows.append((3 * a[:, None, None] + r3).ravel())
+        cols.append((3 * b[:, None, None] + c3).ravel())
+        vals.append((w * B).ravel())
+    rows.append(np.arange(3 * n))
+    cols.append(np.arange(3 * n))
+    vals.append(np.repeat(node_mass, 3))
+    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(3 * n, 3 * n))
+
+
+def consistent_solve_numpy(net, x, node_mass, F, free, a):
+    """Twin of :func:`kernels.consistent_solve` by a sparse direct solve."""
+    M = consistent_matrix(net, x, node_mass)
+    dof = np.repeat(free, 3)
+    a = np.array(a, dtype=float).ravel()
+    rhs = F.ravel()[dof] - M[dof][:, ~dof] @ a[~dof]
+    a[dof] = spla.spsolve(M[dof][:, dof].tocsc(), rhs)
+    return a.reshape(-1, 3)
