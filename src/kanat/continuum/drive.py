@@ -28,7 +28,7 @@ class Drive:
         """A drive for a planar run; refuses a track that leaves the x–z plane."""
         track = VesselTrack.from_model(vessel)
         for phase in track.phases:
-            if phase.yaw_rate or math.sin(phase.heading) or vessel.tow_point[1]:
+            if phase.yaw_rate or math.sin(phase.heading):
                 raise CaseError([Problem("vessel.track", "this track turns or runs off the x axis, which "
                                          "leaves the x–z plane; set simulation.dimensions: 3")])
         return cls(cable, track)

@@ -102,8 +102,12 @@ def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_
     return p
 
 
-def planar_cable(case) -> PlanarCable:
-    """The planar model of a case's single cable (raises CaseError when it does not fit)."""
+def planar_cable(case, check_plane: bool = True) -> PlanarCable:
+    """The planar model of a case's single cable (raises CaseError when it does not fit).
+
+    ``check_plane=False`` skips the refusal of out-of-plane data, for the spatial model,
+    which builds its parameters here too.
+    """
     if len(case.cables) != 1:
         raise CaseError([Problem("cables", f"the continuum model takes one cable; this case has "
                                  f"{len(case.cables)} (networks run with model: lumped)")])
@@ -121,7 +125,27 @@ def planar_cable(case) -> PlanarCable:
     else:
         table = np.asarray(current.profile, dtype=float)[::-1]
         z, rows = table[:, 0], table[:, 1:4]
+    if check_plane:
+        _planar_or_refuse(case, rows)
     return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])
+
+
+def _planar_or_refuse(case, current_rows) -> None:
+    """Refuse, naming each key, anything that leaves the x–z plane (the planar model would drop it)."""
+    problems = []
+    if np.any(np.abs(current_rows[:, 1]) > 0):
+        problems.append(Problem("environment.current", "the current has a y component, which leaves the x–z plane"))
+    for name, body in case.bodies.items():
+        if body.force[1]:
+            problems.append(Problem(f"bodies.{name}.force", "the force has a y component, which leaves the x–z plane"))
+    for index, cable in enumerate(case.cables):
+        for key, end in (("from", cable.from_), ("to", cable.to)):
+            if end.kind == "anchor" and end.position[1]:
+                problems.append(Problem(f"cables[{index}].{key}", "the anchor is off y = 0, outside the x–z plane"))
+    if case.vessel.tow_point[1]:
+        problems.append(Problem("vessel.tow_point", "the tow point is off y = 0, outside the x–z plane"))
+    if problems:
+        raise CaseError([Problem(p.key, p.message + "; set simulation.dimensions: 3") for p in problems])
 
 
 def _end(case, end, key: str, first: bool) -> EndCondition:

@@ -18,16 +18,12 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from kanat.continuum.drive import Drive
-from kanat.continuum.model2d import PlanarCable, planar_cable, positions
+from kanat.continuum.models import model_for
 from kanat.continuum.schemes import FamilyScheme
-from kanat.continuum.stepper import MAX_CUTS, NewtonFailure, State, steady, step
-from kanat.errors import CaseError, Problem
+from kanat.continuum.stepper import MAX_CUTS, NewtonFailure, State
 from kanat.io.results import case_sha256, provenance
 from kanat.io.stream import Checkpoint, ResultStream
 from kanat.schemes import get_scheme
-from kanat.statics import solve_cable
-from kanat.statics.setup import cable_problems
 
 CHECKPOINT_WALL_S = 2.0
 TIME_VARS = {"position": (("node", "xyz"), "m"), "velocity": (("node", "xyz"), "m/s"),
@@ -57,17 +53,6 @@ class RunSummary:
                 f"Newton iterations per step, {self.step_cuts} step cuts; status: {self.status}")
 
 
-def initial_state(case, cable: PlanarCable, drive: Drive) -> State:
-    """The discrete steady state for the vessel's initial velocity (statics as the guess)."""
-    static = solve_cable(cable_problems(case)[cable.name], "auto", cable.s)
-    v0 = drive.velocities(0.0)[0]
-    phi = static.angle
-    guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
-                             -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
-    y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))
-    return State(0.0, y, np.zeros_like(y), positions(cable, y, drive.origin(0.0)))
-
-
 def run(case, output, *, scheme=None, resume: bool = False, progress=None,
         checkpoint_every: int | None = None) -> RunSummary:
     """Run a ``model: continuum`` case, writing its result file as it goes (case-format.md).
@@ -88,42 +73,41 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
     """
     sim = case.simulation
     scheme = _scheme(case, scheme)
-    cable = planar_cable(case)
-    drive = Drive.planar(cable, case.vessel)
+    model = model_for(case)
     dt, every = sim.dt, max(1, int(round(sim.output_interval / sim.dt)))
     total = int(round(sim.duration / dt))
     sha = case_sha256(case)
     start = time.perf_counter()
     if resume:
         ckpt = Checkpoint.load(output, sha)
-        state = State(ckpt.time, ckpt.state["y"], ckpt.state["rate"], ckpt.state["xz"])
+        state = model.restore(ckpt.time, ckpt.state)
         done, iterations, cuts = ckpt.info["steps"], ckpt.info["iterations"], ckpt.info["cuts"]
         stream = ResultStream(output, None, TIME_VARS, resume_at=ckpt.outputs)
     else:
-        state = initial_state(case, cable, drive)
+        state = model.initial()
         done, iterations, cuts = 0, 0, 0
-        stream = ResultStream(output, _static(case, cable, scheme), TIME_VARS)
-        _write(stream, case, cable, drive, state, 0.0)
+        stream = ResultStream(output, _static(case, model, scheme), TIME_VARS)
+        _write(stream, case, model, state, 0.0)
     status, last_checkpoint = "ok", time.perf_counter()
     coefficients = scheme.coefficients()
     try:
         while done < total:
             try:
-                state, spent, cut = _advance(cable, state, dt, coefficients, drive, 0)
+                state, spent, cut = _advance(model, state, dt, coefficients, 0)
             except NewtonFailure as failure:
-                status = _failure_message(failure, state, cable, dt)
+                status = _failure_message(failure, state, model.cable, dt)
                 break
             done, iterations, cuts = done + 1, iterations + spent, cuts + cut
             if done % every:
                 continue
-            _write(stream, case, cable, drive, state, spent)
+            _write(stream, case, model, state, spent)
             if progress is not None:
                 progress(state.t, {"newton_iterations": iterations / done, "step_cuts": cuts})
             due = (done // every) % checkpoint_every == 0 if checkpoint_every else \
                 time.perf_counter() - last_checkpoint > CHECKPOINT_WALL_S
             if due or done == total:
                 stream.flush()
-                Checkpoint(state.t, stream.count, sha, {"y": state.y, "rate": state.rate, "xz": state.xz},
+                Checkpoint(state.t, stream.count, sha, model.save(state),
                            {"steps": done, "iterations": iterations, "cuts": cuts}).save(output)
                 last_checkpoint = time.perf_counter()
     except KeyboardInterrupt:
@@ -135,20 +119,20 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
     return RunSummary(status, Path(output), wall, done, mean, cuts, state)
 
 
-def _advance(cable, state, dt, coefficients, drive, level):
+def _advance(model, state, dt, coefficients, level):
     """One step of ``dt``, cut into halves recursively when Newton fails (returns iterations, cuts)."""
     try:
-        new, spent = step(cable, state, dt, coefficients, drive)
+        new, spent = model.step(state, dt, coefficients)
         return new, spent, 0
     except NewtonFailure:
         if level >= MAX_CUTS:
             raise
-    half, spent_a, cuts_a = _advance(cable, state, dt / 2, coefficients, drive, level + 1)
-    new, spent_b, cuts_b = _advance(cable, half, dt / 2, coefficients, drive, level + 1)
+    half, spent_a, cuts_a = _advance(model, state, dt / 2, coefficients, level + 1)
+    new, spent_b, cuts_b = _advance(model, half, dt / 2, coefficients, level + 1)
     return new, spent_a + spent_b, 1 + cuts_a + cuts_b
 
 
-def _failure_message(failure: NewtonFailure, state: State, cable: PlanarCable, dt: float) -> str:
+def _failure_message(failure: NewtonFailure, state, cable, dt: float) -> str:
     message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {failure.node} "
                f"(s = {failure.node * cable.ds:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
     lowest = int(np.argmin(state.y[:, 0]))
@@ -167,23 +151,19 @@ def _scheme(case, scheme) -> FamilyScheme:
     return chosen
 
 
-def _static(case, cable: PlanarCable, scheme) -> xr.Dataset:
+def _static(case, model, scheme) -> xr.Dataset:
+    cable = model.cable
     bodies = [case.cables[0].to.name] if case.cables[0].to.kind == "body" else []
     attrs = provenance(case, model="continuum", scheme=scheme.name, wall_time_s=0.0, status="running",
-                       dt=case.simulation.dt, dimensions=2,
+                       dt=case.simulation.dt, dimensions=model.dimensions,
                        **{f"scheme_{k}": v for k, v in scheme.parameters().items()})
     return xr.Dataset({"s": ("node", cable.s), "cable": ("node", np.array([cable.name] * len(cable.s), dtype=object))},
                       coords={"xyz": ["x", "y", "z"], "body": np.array(bodies, dtype=object)}, attrs=attrs)
 
 
-def _write(stream: ResultStream, case, cable: PlanarCable, drive: Drive, state: State, iterations: int) -> None:
-    y, xz = state.y, state.xz
-    c, s = np.cos(y[:, 3]), np.sin(y[:, 3])
-    zeros = np.zeros(len(y))
-    velocity = np.column_stack([y[:, 1] * c - y[:, 2] * s, zeros, y[:, 1] * s + y[:, 2] * c])
-    position = np.column_stack([xz[:, 0], zeros, xz[:, 1]])
-    vessel = drive.track.state(state.t)
-    stream.append(state.t, position=position, velocity=velocity, tension=y[:, 0],
-                  body_position=position[-1:] if case.cables[0].to.kind == "body" else np.zeros((0, 3)),
-                  vessel_position=vessel.position, vessel_heading=vessel.heading,
-                  newton_iterations=iterations)
+def _write(stream: ResultStream, case, model, state, iterations: int) -> None:
+    values = model.outputs(state)
+    vessel = model.track.state(state.t)
+    body = values["position"][-1:] if case.cables[0].to.kind == "body" else np.zeros((0, 3))
+    stream.append(state.t, **values, body_position=body, vessel_position=vessel.position,
+                  vessel_heading=vessel.heading, newton_iterations=iterations)

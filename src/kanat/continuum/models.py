@@ -1,0 +1,156 @@
+"""The planar and spatial continuum models behind one small interface, for the run loop.
+
+Each adapter knows how to build its cable and drive from a case, find the initial state,
+take a step, report the output variables of case-format.md, and save and restore its
+state in a checkpoint. ``dimensions: auto`` picks the planar model when the case stays in
+the x–z plane (no turns, nothing out of the plane) and the spatial one otherwise.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kanat.continuum.chart import angles, choose_chart, frames
+from kanat.continuum.drive import Drive
+from kanat.continuum.model2d import _end as planar_end
+from kanat.continuum.model2d import planar_cable, positions
+from kanat.continuum.spatial import SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
+from kanat.continuum.stepper import State, steady, step
+from kanat.errors import CaseError
+from kanat.statics import solve_cable
+from kanat.statics.setup import cable_problems
+from kanat.vessel.track import VesselTrack
+
+
+def _static_shape(case, name, s):
+    """The statics solution of the case's cable at stations ``s`` (the initial guess)."""
+    return solve_cable(cable_problems(case)[name], "auto", s)
+
+
+class PlanarModel:
+    """Adapter of the planar model (:mod:`model2d`, :mod:`stepper`)."""
+
+    dimensions = 2
+
+    def __init__(self, case):
+        self.case = case
+        self.cable = planar_cable(case)
+        self.drive = Drive.planar(self.cable, case.vessel)
+        self.track = self.drive.track
+
+    def initial(self) -> State:
+        cable, drive = self.cable, self.drive
+        static = _static_shape(self.case, cable.name, cable.s)
+        v0, phi = drive.velocities(0.0)[0], static.angle
+        guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
+                                 -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
+        y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))
+        return State(0.0, y, np.zeros_like(y), positions(cable, y, drive.origin(0.0)))
+
+    def step(self, state, dt, coefficients):
+        return step(self.cable, state, dt, coefficients, self.drive)
+
+    def outputs(self, state) -> dict:
+        y, xz = state.y, state.xz
+        c, s, zeros = np.cos(y[:, 3]), np.sin(y[:, 3]), np.zeros(len(y))
+        return {"position": np.column_stack([xz[:, 0], zeros, xz[:, 1]]),
+                "velocity": np.column_stack([y[:, 1] * c - y[:, 2] * s, zeros, y[:, 1] * s + y[:, 2] * c]),
+                "tension": y[:, 0]}
+
+    def save(self, state) -> dict:
+        return {"y": state.y, "rate": state.rate, "xz": state.xz}
+
+    def restore(self, t, saved) -> State:
+        return State(t, saved["y"], saved["rate"], saved["xz"])
+
+
+class SpatialModel:
+    """Adapter of the spatial model (:mod:`spatial`, :mod:`chart`)."""
+
+    dimensions = 3
+
+    def __init__(self, case):
+        self.case = case
+        self.cable = spatial_cable(case)
+        self.track = VesselTrack.from_model(case.vessel)
+
+    def velocities(self, t):
+        v0 = self.track.state(t).velocity if self.cable.start.moving else np.zeros(3)
+        return v0, np.zeros(3)
+
+    def origin(self, t):
+        if self.cable.start.moving:
+            return self.track.state(t).position
+        return np.asarray(self.cable.start.position, dtype=float)
+
+    def initial(self) -> SpatialState:
+        cable = self.cable
+        static = _static_shape(self.case, cable.name, cable.s)
+        tangents = np.column_stack([static.force[:, 0], np.zeros(len(static.s)), static.force[:, 1]])
+        tangents /= static.tension[:, None]
+        chart = choose_chart(tangents)
+        phi, theta = angles(tangents, chart)
+        guess = np.column_stack([static.tension, np.zeros((len(phi), 3)), phi, theta])
+        t, n, b = frames(guess, chart)
+        v0 = self.velocities(0.0)[0]
+        guess[:, 1:4] = np.column_stack([t @ v0, n @ v0, b @ v0])
+        xyz = np.column_stack([static.x, np.zeros_like(static.x), static.z])
+        y = steady3(cable, guess, chart, self.velocities(0.0), xyz)
+        return SpatialState(0.0, y, np.zeros_like(y), positions3(cable, y, chart, self.origin(0.0)), chart)
+
+    def step(self, state, dt, coefficients):
+        return step3(self.cable, state, dt, coefficients, self)
+
+    def outputs(self, state) -> dict:
+        t, n, b = frames(state.y, state.chart)
+        u, v, w = state.y[:, 1:2], state.y[:, 2:3], state.y[:, 3:4]
+        return {"position": state.xyz, "velocity": u * t + v * n + w * b, "tension": state.y[:, 0]}
+
+    def save(self, state) -> dict:
+        return {"y": state.y, "rate": state.rate, "xyz": state.xyz, "chart": state.chart}
+
+    def restore(self, t, saved) -> SpatialState:
+        return SpatialState(t, saved["y"], saved["rate"], saved["xyz"], saved["chart"])
+
+
+def spatial_cable(case) -> SpatialCable:
+    """The spatial model of a case's single cable (same rules as :func:`model2d.planar_cable`)."""
+    planar = planar_cable(case, check_plane=False)    # validates the ends and builds the parameters
+    cable = case.cables[0]
+    env = case.environment
+
+    def end(e, key, first):
+        kind = planar_end(case, e, key, first).kind
+        if e.kind == "vessel":
+            return SpatialEnd(kind, moving=True, position=tuple(case.vessel.tow_point))
+        if e.kind == "anchor":
+            return SpatialEnd(kind, position=tuple(e.position))
+        if e.kind == "body":
+            body = case.bodies[e.name]
+            return SpatialEnd(kind, body.mass + body.added_mass, body.net_buoyancy, body.drag_area,
+                              tuple(body.force))
+        return SpatialEnd(kind)
+
+    current = env.current
+    if current.profile is None:
+        z, rows = np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
+    else:
+        table = np.asarray(current.profile, dtype=float)[::-1]
+        z, rows = table[:, 0], table[:, 1:4]
+    return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
+                        end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows)
+
+
+def model_for(case):
+    """The planar or the spatial adapter, by ``simulation.dimensions`` (``auto``: planar if it fits)."""
+    wanted = case.simulation.dimensions
+    if wanted == 2:
+        return PlanarModel(case)
+    if wanted == 3:
+        return SpatialModel(case)
+    try:
+        return PlanarModel(case)
+    except CaseError as error:
+        if all("x–z plane" in p.message for p in error.problems):
+            return SpatialModel(case)
+        raise
+
