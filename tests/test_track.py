@@ -74,3 +74,19 @@ def test_heading_to_absolute_value_takes_the_short_way():
 def test_turn_of_given_radius_from_rest_is_refused():
     with pytest.raises(CaseError, match="speed > 0"):
         track("    - {turn: {radius: 100, angle_deg: 90}}\n")
+
+
+def test_pitch_moves_a_stern_tow_point_with_consistent_derivatives():
+    tr = track("    - {straight: {speed: 3.0, duration: 10}}\n    - {turn: {radius: 300, angle_deg: 90}}\n",
+               tow_point="[-60, 2, 5]")
+    amplitude, omega = 0.05, 0.6283
+    tr.pitch = lambda t: (amplitude * np.sin(omega * t), amplitude * omega * np.cos(omega * t),
+                          -amplitude * omega**2 * np.sin(omega * t))
+    quarter = 0.25 * 2 * np.pi / omega                         # bow up at its most
+    assert tr.state(quarter).position[2] == pytest.approx(-60 * np.sin(0.05) + 5 * np.cos(0.05))
+    for t in (2.0, 37.0, 80.0):
+        h = 1e-4
+        p = [tr.state(t + k * h).position for k in (-1, 0, 1)]
+        v = [tr.state(t + k * h).velocity for k in (-1, 0, 1)]
+        assert np.allclose(tr.state(t).velocity, (p[2] - p[0]) / (2 * h), atol=1e-6)
+        assert np.allclose(tr.state(t).acceleration, (v[2] - v[0]) / (2 * h), atol=1e-5)

@@ -19,7 +19,7 @@ import numpy as np
 import xarray as xr
 
 from kanat.continuum.models import model_for
-from kanat.continuum.schemes import FamilyScheme
+from kanat.continuum.schemes import ContinuumScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure, State
 from kanat.io.results import case_sha256, provenance
 from kanat.io.stream import Checkpoint, ResultStream
@@ -28,7 +28,7 @@ from kanat.schemes import get_scheme
 CHECKPOINT_WALL_S = 2.0
 TIME_VARS = {"position": (("node", "xyz"), "m"), "velocity": (("node", "xyz"), "m/s"),
              "tension": (("node",), "N"), "body_position": (("body", "xyz"), "m"),
-             "vessel_position": (("xyz",), "m"), "vessel_heading": ((), "rad"),
+             "vessel_position": (("xyz",), "m"), "vessel_heading": ((), "rad"), "vessel_pitch": ((), "rad"),
              "newton_iterations": ((), "1")}
 
 
@@ -62,7 +62,7 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
     case : kanat.model.Case
     output : path-like
         Result file (netCDF); its checkpoint is ``OUTPUT.ckpt.npz``.
-    scheme : str or FamilyScheme, optional
+    scheme : str or ContinuumScheme, optional
         Overrides ``simulation.scheme`` (default ``generalized-alpha``).
     resume : bool
         Continue a killed run from its checkpoint.
@@ -89,11 +89,10 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
         stream = ResultStream(output, _static(case, model, scheme), TIME_VARS)
         _write(stream, case, model, state, 0.0)
     status, last_checkpoint = "ok", time.perf_counter()
-    coefficients = scheme.coefficients()
     try:
         while done < total:
             try:
-                state, spent, cut = _advance(model, state, dt, coefficients, 0)
+                state, spent, cut = _advance(scheme, model, state, dt, 0)
             except NewtonFailure as failure:
                 status = _failure_message(failure, state, model.cable, dt)
                 break
@@ -119,16 +118,16 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
     return RunSummary(status, Path(output), wall, done, mean, cuts, state)
 
 
-def _advance(model, state, dt, coefficients, level):
+def _advance(scheme, model, state, dt, level):
     """One step of ``dt``, cut into halves recursively when Newton fails (returns iterations, cuts)."""
     try:
-        new, spent = model.step(state, dt, coefficients)
+        new, spent = scheme.step(model, state, dt)
         return new, spent, 0
     except NewtonFailure:
         if level >= MAX_CUTS:
             raise
-    half, spent_a, cuts_a = _advance(model, state, dt / 2, coefficients, level + 1)
-    new, spent_b, cuts_b = _advance(model, half, dt / 2, coefficients, level + 1)
+    half, spent_a, cuts_a = _advance(scheme, model, state, dt / 2, level + 1)
+    new, spent_b, cuts_b = _advance(scheme, model, half, dt / 2, level + 1)
     return new, spent_a + spent_b, 1 + cuts_a + cuts_b
 
 
@@ -144,7 +143,7 @@ def _failure_message(failure: NewtonFailure, state, cable, dt: float) -> str:
                       "or more segments")
 
 
-def _scheme(case, scheme) -> FamilyScheme:
+def _scheme(case, scheme) -> ContinuumScheme:
     sim = case.simulation
     chosen = get_scheme(scheme or sim.scheme or "generalized-alpha", "continuum",
                         lambda_inf=sim.lambda_inf, gamma=sim.gamma)
@@ -165,5 +164,6 @@ def _write(stream: ResultStream, case, model, state, iterations: int) -> None:
     values = model.outputs(state)
     vessel = model.track.state(state.t)
     body = values["position"][-1:] if case.cables[0].to.kind == "body" else np.zeros((0, 3))
+    pitch = model.track.pitch(state.t)[0] if model.track.pitch is not None else 0.0
     stream.append(state.t, **values, body_position=body, vessel_position=vessel.position,
-                  vessel_heading=vessel.heading, newton_iterations=iterations)
+                  vessel_heading=vessel.heading, vessel_pitch=pitch, newton_iterations=iterations)

@@ -22,14 +22,31 @@ from kanat.schemes import Scheme
 
 
 @dataclass(frozen=True)
-class FamilyScheme(Scheme):
-    """A member of the generalized-α family; subclasses give ``coefficients()``."""
+class ContinuumScheme(Scheme):
+    """Base of every continuum scheme: ``step(model, state, dt) -> (state, iterations)``.
+
+    ``model`` is a planar or spatial adapter (:mod:`kanat.continuum.models`) holding the
+    cable, its ends and the vessel track; a step that cannot be taken raises
+    :class:`kanat.continuum.stepper.NewtonFailure` (the run loop then cuts the step).
+    """
 
     model: ClassVar[str] = "continuum"
+
+    def step(self, model, state, dt: float):
+        raise NotImplementedError
+
+
+@dataclass(frozen=True)
+class FamilyScheme(ContinuumScheme):
+    """A member of the generalized-α family; subclasses give ``coefficients()``."""
 
     def coefficients(self) -> tuple[float, float, float]:
         """``(am, ak, gamma)``."""
         raise NotImplementedError
+
+    def step(self, model, state, dt: float):
+        """Newton on the box equations with this member's weights (:mod:`stepper`, :mod:`spatial`)."""
+        return model.step(state, dt, self.coefficients())
 
 
 @dataclass(frozen=True)

@@ -78,18 +78,39 @@ class VesselTrack:
     phases : list of Phase
         In time order, contiguous.
     tow_point : array_like, shape (3,)
-        Lever arm of the tow point in vessel axes [m].
+        Lever arm of the tow point in vessel axes [m], from the pitch centre.
+    pitch : callable, optional
+        ``t -> (angle, rate, acceleration)`` of the pitch [rad, rad/s, rad/s^2], bow up
+        positive (SPEC §6.2). The lever arm turns with it about the vessel's y axis, so a
+        stern tow point rises and falls with the pitch.
     """
 
-    def __init__(self, phases: list[Phase], tow_point=(0.0, 0.0, 0.0)):
+    def __init__(self, phases: list[Phase], tow_point=(0.0, 0.0, 0.0), pitch=None):
         self.phases = list(phases)
         self.tow_point = np.asarray(tow_point, dtype=float)
+        self.pitch = pitch
         self._starts = np.array([p.start for p in self.phases])
 
     @classmethod
-    def from_model(cls, vessel) -> VesselTrack:
+    def from_model(cls, vessel, pitch=None) -> VesselTrack:
         """Compile a :class:`kanat.model.Vessel` (raises CaseError for impossible segments)."""
-        return cls(compile_phases(vessel.track), vessel.tow_point)
+        return cls(compile_phases(vessel.track), vessel.tow_point, pitch)
+
+    def pitched_arm(self, t: float, arm):
+        """Lever arm in level vessel axes after the pitch at ``t``, with its rate and acceleration.
+
+        Bow up by ``a`` maps ``(x, y, z)`` to ``(x cos a - z sin a, y, x sin a + z cos a)``.
+        """
+        arm = np.asarray(arm, dtype=float)
+        if self.pitch is None:
+            return arm, np.zeros(3), np.zeros(3)
+        a, rate, accel = self.pitch(t)
+        c, s = math.cos(a), math.sin(a)
+        x, y, z = arm
+        turned = np.array([x * c - z * s, y, x * s + z * c])
+        d_turned = np.array([-x * s - z * c, 0.0, x * c - z * s])          # d(turned)/da
+        dd_turned = np.array([-x * c + z * s, 0.0, -x * s - z * c])
+        return turned, rate * d_turned, accel * d_turned + rate * rate * dd_turned
 
     @property
     def duration(self) -> float:
@@ -104,7 +125,7 @@ class VesselTrack:
 
     def state(self, t: float, lever_arm=None) -> VesselState:
         """Kinematics at time ``t`` [s] of the point ``lever_arm`` (default: the tow point)."""
-        arm = self.tow_point if lever_arm is None else np.asarray(lever_arm, dtype=float)
+        arm, arm_rate, arm_accel = self.pitched_arm(t, self.tow_point if lever_arm is None else lever_arm)
         phase = self._phase(t)
         tau = t - phase.start
         if tau > phase.duration:                      # past the end of the track: straight on
@@ -115,10 +136,14 @@ class VesselTrack:
             x, y, psi, v = phase.at(tau)
             a, r = phase.acceleration, phase.yaw_rate
         c, s = math.cos(psi), math.sin(psi)
-        rx, ry = c * arm[0] - s * arm[1], s * arm[0] + c * arm[1]     # lever arm, global frame
+        yaw = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+        rx, ry, _ = yaw @ arm                                  # lever arm in the global frame
+        lx, ly, lz = yaw @ arm_rate                            # its rate of turning with the pitch
+        ax, ay, az = yaw @ arm_accel
         position = np.array([x + rx, y + ry, arm[2]])
-        velocity = np.array([v * c - r * ry, v * s + r * rx, 0.0])
-        accel = np.array([a * c - v * r * s - r * r * rx, a * s + v * r * c - r * r * ry, 0.0])
+        velocity = np.array([v * c - r * ry + lx, v * s + r * rx + ly, lz])
+        accel = np.array([a * c - v * r * s - r * r * rx - 2 * r * ly + ax,
+                          a * s + v * r * c - r * r * ry + 2 * r * lx + ay, az])
         return VesselState(position, velocity, accel, psi, r, v)
 
 
