@@ -172,6 +172,23 @@ def _pitch(loaded, output: Path, plot: Optional[Path], debug: bool) -> None:
     out.print(f"wrote {output}" + (f" and figures at {plot}" if plot is not None else ""))
 
 
+@app.command("compare-schemes")
+def compare_schemes(case: Path = typer.Argument(..., help="YAML continuum case."),
+                    output: Path = typer.Option(..., "-o", "--output", help="Directory for the result files."),
+                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Run a continuum case with box, backward Euler, generalized trapezoidal and generalized-α
+    against a fine reference, and print seed 002's comparison table."""
+    from kanat.continuum.compare import compare_schemes as compare, table
+
+    loaded = _load(case, debug)
+    try:
+        with console.status("running every scheme and a fine reference ..."):
+            rows = compare(loaded, output)
+    except Exception as error:  # noqa: BLE001 - reported by _fail
+        _fail(error, debug, "comparison failed")
+    typer.echo(table(rows))
+
+
 def _load(case: Path, debug: bool):
     """Load a case, printing its warnings in yellow; explain and exit if it cannot be read."""
     import warnings

@@ -16,14 +16,41 @@ from kanat.continuum.model2d import planar_cable, positions
 from kanat.continuum.spatial import SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.stepper import State, steady, step
 from kanat.errors import CaseError
-from kanat.statics import solve_cable
+from kanat.statics import CableSolution, solve_cable
 from kanat.statics.setup import cable_problems
 from kanat.vessel.track import VesselTrack
 
 
 def _static_shape(case, name, s):
-    """The statics solution of the case's cable at stations ``s`` (the initial guess)."""
+    """The statics solution of the case's cable at stations ``s`` (the initial guess).
+
+    A cable with a free tail has no statics solution of its own (statics refuses free ends);
+    its guess is :func:`free_tail_guess`, which the discrete steady solve then corrects.
+    """
+    if case.cables[0].to.kind == "free":
+        return free_tail_guess(case, s)
     return solve_cable(cable_problems(case)[name], "auto", s)
+
+
+def free_tail_guess(case, s) -> CableSolution:
+    """A straight cable trailing from the tow point at the critical angle of the relative flow.
+
+    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (SPEC §7.4); the
+    tension grows from 0 at the tail with the tangential weight and drag. Vertical in still water.
+    """
+    env, cable = case.environment, case.cables[0]
+    lt = case.line_types[cable.line_type]
+    w = lt.weight_in_water_value(env.water_density, env.gravity)
+    speed = case.vessel.initial_speed - env.current.at(0.0)[0]
+    r = 0.5 * env.water_density * lt.diameter * lt.drag_normal * speed**2
+    phi = np.arccos((-w + np.sqrt(w * w + 4 * r * r)) / (2 * r)) if r > 0 else 0.5 * np.pi
+    along = np.array([-np.sign(speed) * np.cos(phi) if speed else 0.0, -np.sin(phi)])
+    per_length = w * np.sin(phi) + 0.5 * env.water_density * np.pi * lt.diameter * lt.drag_tangential * (
+        speed * np.cos(phi))**2
+    tension = np.maximum(per_length * (cable.length - s), 1e-6 * w * cable.length)
+    origin = np.array([case.vessel.tow_point[0], case.vessel.tow_point[2]])
+    xz = origin + np.outer(s, along)
+    return CableSolution(s, xz[:, 0], xz[:, 1], np.outer(tension, along), "free-tail guess")
 
 
 class PlanarModel:
