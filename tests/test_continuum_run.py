@@ -104,3 +104,31 @@ def test_killed_run_resumes_to_the_same_answer(tmp_path):
     assert b.attrs["status"] == "ok" and a.sizes == b.sizes
     np.testing.assert_array_equal(a.tension.values, b.tension.values)
     np.testing.assert_array_equal(a.position.values, b.position.values)
+
+
+ARRAY = (EXAMPLES / "towed_array.yaml").read_text()
+
+
+@pytest.mark.parametrize("dims", [2, 3])
+def test_free_tail_trails_at_the_critical_angle_and_stays_steady(tmp_path, dims):
+    """At a free end T = 0, so its normal balance is w cos(phi) = R sin(phi)^2: the critical angle."""
+    text = ARRAY.replace("speed_kn: 8, duration: 30", "speed_kn: 8, duration: 300").replace(
+        "dimensions: 2", f"dimensions: {dims}").replace("duration: 200, dt", "duration: 50, dt")
+    summary = run(parse_case(text), tmp_path / "a.nc")
+    ds = read_result(tmp_path / "a.nc")
+    assert summary.ok
+    assert ds.tension.values[0, -1] == 0.0
+    assert np.abs(ds.tension.values[-1] - ds.tension.values[0]).max() < 1e-6 * ds.tension.values[0, 0]
+    tail = ds.position.values[0, -1] - ds.position.values[0, -2]
+    angle = np.degrees(np.arctan2(-tail[2], -tail[0]))
+    w, r = 2.0, 0.5 * 1025 * 0.08 * 1.2 * (8 * 0.514444) ** 2
+    critical = np.degrees(np.arccos((-w + np.sqrt(w * w + 4 * r * r)) / (2 * r)))
+    assert angle == pytest.approx(critical, abs=0.05)
+
+
+def test_slowing_array_sinks_and_unloads(tmp_path):
+    summary = run(parse_case(ARRAY), tmp_path / "a.nc")
+    ds = read_result(tmp_path / "a.nc")
+    assert summary.ok
+    assert ds.position.values[-1, -1, 2] < ds.position.values[0, -1, 2] - 5.0        # tail sinks
+    assert ds.tension.values[-1, 0] < 0.5 * ds.tension.values[0, 0]                   # (5/8)^2 of the drag
