@@ -30,6 +30,8 @@ from numba import njit
 # Parameter vector layout (see :func:`kanat.continuum.model2d.parameters`).
 M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA = range(14)
 NPAR = 14
+# The elastic law follows the scalars: p[LAW] = n knots, then n tensions (ascending), then n strains.
+LAW = NPAR
 # End conditions: kind and parameters (BPAR: [kind, Vx, Vz, mass, net_buoyancy, half_rho_cds, Fx, Fz]).
 VELOCITY, BODY, FREE = 0, 1, 2
 NBPAR = 8
@@ -38,10 +40,37 @@ LOWER = UPPER = 5      # bandwidths of the Jacobian
 
 
 @njit(cache=True)
+def _law_segment(T, p):
+    n = int(p[LAW])
+    i = np.searchsorted(p[LAW + 1:LAW + 1 + n], T.real) - 1
+    i = min(max(i, 0), n - 2)
+    t0, t1 = p[LAW + 1 + i], p[LAW + 2 + i]
+    e0, e1 = p[LAW + 1 + n + i], p[LAW + 2 + n + i]
+    return t0, e0, (e1 - e0) / (t1 - t0)
+
+
+@njit(cache=True)
+def strain(T, p):
+    """Strain ``e(T)`` of the elastic law: piecewise linear through its knots, extended linearly.
+
+    A linear law ``e = T / EA`` is the two knots ``(0, 0), (EA, 1)``. Within a segment the law
+    is linear in ``T``, so complex-step derivatives pass through it exactly.
+    """
+    t0, e0, slope = _law_segment(T, p)
+    return e0 + slope * (T - t0)
+
+
+@njit(cache=True)
+def compliance(T, p):
+    """``de/dT`` of the elastic law at ``T`` [1/N] (piecewise constant)."""
+    return _law_segment(T, p)[2]
+
+
+@njit(cache=True)
 def node_load(T, u, v, phi, ucx, ucz, p):
     """``(f_t, f_n)``: weight in water and drag per unit unstretched length (SPEC §2.1)."""
     c, s = np.cos(phi), np.sin(phi)
-    root = np.sqrt(1.0 + T / p[EA])
+    root = np.sqrt(1.0 + strain(T, p))
     ur = u - (ucx * c + ucz * s)
     vr = v - (-ucx * s + ucz * c)
     ft = -p[W0] * s - 0.5 * p[RHO] * np.pi * p[DIAM] * p[CT] * ur * np.sqrt(ur * ur) * root
@@ -72,8 +101,8 @@ def interval_residual(xl, xr, yl, yr, dl, dr, cl, cr, p, out):
     mass, normal_mass = p[M], p[M] + p[MA]
     out[0] = c * mass * (rate[1] - mb[2] * rate[3]) - grad[0] - 0.5 * (ftl + ftr)
     out[1] = c * normal_mass * (rate[2] + mb[1] * rate[3]) - kb[0] * grad[3] - 0.5 * (fnl + fnr)
-    out[2] = c * rate[0] / p[EA] - grad[1] + kb[2] * grad[3]
-    out[3] = c * (1.0 + mb[0] / p[EA]) * rate[3] - grad[2] - kb[1] * grad[3]
+    out[2] = c * compliance(mb[0], p) * rate[0] - grad[1] + kb[2] * grad[3]
+    out[3] = c * (1.0 + strain(mb[0], p)) * rate[3] - grad[2] - kb[1] * grad[3]
 
 
 @njit(cache=True)
@@ -165,7 +194,7 @@ def _node_loads(wk, cur, p):
 def _interval_rows(j, wm, wk, wr, load, dload, p, chain, res, band):
     """Rows of interval ``j`` (module docstring) and their exact derivatives."""
     l, r = j - 1, j
-    c, ds, ea = p[INERTIA], p[DS], p[EA]
+    c, ds = p[INERTIA], p[DS]
     mass, normal_mass = p[M], p[M] + p[MA]
     mb1, mb2, mb0 = 0.5 * (wm[l, 1] + wm[r, 1]), 0.5 * (wm[l, 2] + wm[r, 2]), 0.5 * (wm[l, 0] + wm[r, 0])
     kb0, kb1, kb2 = 0.5 * (wk[l, 0] + wk[r, 0]), 0.5 * (wk[l, 1] + wk[r, 1]), 0.5 * (wk[l, 2] + wk[r, 2])
@@ -176,8 +205,9 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, res, band):
     row = 2 + 4 * (j - 1)
     res[row] = c * mass * (r1 - mb2 * r3) - g0 - 0.5 * (load[l, 0] + load[r, 0])
     res[row + 1] = c * normal_mass * (r2 + mb1 * r3) - kb0 * g3 - 0.5 * (load[l, 1] + load[r, 1])
-    res[row + 2] = c * r0 / ea - g1 + kb2 * g3
-    res[row + 3] = c * (1.0 + mb0 / ea) * r3 - g2 - kb1 * g3
+    flex, stretch = compliance(mb0, p), 1.0 + strain(mb0, p)
+    res[row + 2] = c * flex * r0 - g1 + kb2 * g3
+    res[row + 3] = c * stretch * r3 - g2 - kb1 * g3
     dm = np.zeros((4, 4))          # dR[row i] / d(weighted state of one node)[q], for m, k, r
     dk = np.zeros((4, 4))
     dr = np.zeros((4, 4))
@@ -196,12 +226,12 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, res, band):
         dr[1, 3] = 0.5 * c * normal_mass * mb1
         dk[1, 0] = -0.5 * g3
         dk[1, 3] = -kb0 * sign / ds
-        dr[2, 0] = 0.5 * c / ea
+        dr[2, 0] = 0.5 * c * flex
         dk[2, 1] = -sign / ds
         dk[2, 2] = 0.5 * g3
         dk[2, 3] = kb2 * sign / ds
-        dm[3, 0] = 0.5 * c * r3 / ea
-        dr[3, 3] = 0.5 * c * (1.0 + mb0 / ea)
+        dm[3, 0] = 0.5 * c * r3 * flex
+        dr[3, 3] = 0.5 * c * stretch
         dk[3, 1] = -0.5 * g3
         dk[3, 2] = -sign / ds
         dk[3, 3] = -kb1 * sign / ds

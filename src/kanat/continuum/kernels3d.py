@@ -29,7 +29,7 @@ import numpy as np
 from numba import njit
 
 from kanat.continuum.kernels2d import (AK, AM, CN, CT, DIAM, DS, DT, EA, FREE, GAMMA, INERTIA, MA, RHO,
-                                       STEP, VELOCITY, W0, M)
+                                       STEP, VELOCITY, W0, M, compliance, strain)
 
 LOWER = UPPER = 8
 # End parameters: [kind, Vt1, Vt2, Vp (velocity, chart), mass, net_buoyancy, half_rho_cds, F1, F2, Fp]
@@ -47,7 +47,7 @@ def frame(phi, theta):
 def node_load3(T, u, v, w, phi, theta, cur, up, p):
     """``(f_t, f_n, f_b)``: weight in water and drag of the relative flow per unstretched length."""
     t, n, b = frame(phi, theta)
-    root = np.sqrt(1.0 + T / p[EA])
+    root = np.sqrt(1.0 + strain(T, p))
     ur = u - (cur[0] * t[0] + cur[1] * t[1] + cur[2] * t[2])
     vr = v - (cur[0] * n[0] + cur[1] * n[1] + cur[2] * n[2])
     wr = w - (cur[0] * b[0] + cur[1] * b[1] + cur[2] * b[2])
@@ -63,14 +63,15 @@ def node_load3(T, u, v, w, phi, theta, cur, up, p):
 @njit(cache=True)
 def mass_times(y, r, p, out):
     """``out = M(y) r`` (rows of the module docstring)."""
-    m, mn, ea = p[M], p[M] + p[MA], p[EA]
+    m, mn = p[M], p[M] + p[MA]
     cp, sp = np.cos(y[4]), np.sin(y[4])
+    stretch = 1.0 + strain(y[0], p)
     out[0] = m * (r[1] - y[2] * r[4] + y[3] * cp * r[5])
     out[1] = mn * (r[2] + y[1] * r[4] - y[3] * sp * r[5])
     out[2] = mn * (r[3] + (-y[1] * cp + y[2] * sp) * r[5])
-    out[3] = r[0] / ea
-    out[4] = (1.0 + y[0] / ea) * r[4]
-    out[5] = -(1.0 + y[0] / ea) * cp * r[5]
+    out[3] = compliance(y[0], p) * r[0]
+    out[4] = stretch * r[4]
+    out[5] = -stretch * cp * r[5]
 
 
 @njit(cache=True)
@@ -112,14 +113,15 @@ def stiffness_matrix(y, out):
 @njit(cache=True)
 def d_mass_times(y, r, p, out):
     """``out[i, q] = d(M(y) r)_i / d y_q`` for fixed ``r``."""
-    m, mn, ea = p[M], p[M] + p[MA], p[EA]
+    m, mn = p[M], p[M] + p[MA]
     cp, sp = np.cos(y[4]), np.sin(y[4])
+    flex, stretch = compliance(y[0], p), 1.0 + strain(y[0], p)
     out[:, :] = 0.0
     out[0, 2], out[0, 3], out[0, 4] = -m * r[4], m * cp * r[5], -m * y[3] * sp * r[5]
     out[1, 1], out[1, 3], out[1, 4] = mn * r[4], -mn * sp * r[5], -mn * y[3] * cp * r[5]
     out[2, 1], out[2, 2], out[2, 4] = -mn * cp * r[5], mn * sp * r[5], mn * (y[1] * sp + y[2] * cp) * r[5]
-    out[4, 0] = r[4] / ea
-    out[5, 0], out[5, 4] = -cp * r[5] / ea, (1.0 + y[0] / ea) * sp * r[5]
+    out[4, 0] = r[4] * flex
+    out[5, 0], out[5, 4] = -cp * r[5] * flex, stretch * sp * r[5]
 
 
 @njit(cache=True)

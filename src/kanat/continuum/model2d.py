@@ -93,13 +93,49 @@ class PlanarCable:
         return replace(self, segments=segments, params=params)
 
 
-def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds):
-    """The kernel parameter vector (scheme entries zero)."""
-    p = np.zeros(k.NPAR)
+def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds,
+               law=None):
+    """The kernel parameter vector: the scalars (scheme entries zero), then the elastic law.
+
+    ``law`` is ``(tensions, strains)`` knots (tensions ascending, through (0, 0)); default the
+    linear law ``e = T / EA`` (knots (0, 0) and (EA, 1)).
+    """
+    tensions, strains = law if law is not None else ((0.0, stiffness), (0.0, 1.0))
+    p = np.zeros(k.NPAR + 1 + 2 * len(tensions))
     p[[k.M, k.MA, k.W0, k.EA, k.DIAM, k.CN, k.CT, k.RHO, k.DS]] = (
         mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds)
     p[k.INERTIA] = 1.0
+    p[k.LAW] = len(tensions)
+    p[k.LAW + 1:] = np.concatenate([tensions, strains])
     return p
+
+
+def elastic_law_knots(law, max_strain: float = 0.5, samples: int = 400):
+    """Knots ``(tensions, strains)`` of a case's ``elastic_law`` for :func:`parameters`.
+
+    A table is used as given, through (0, 0). A polynomial ``f(e) = c1 e + c2 e^2 + ...`` is
+    sampled on ``0 <= e <= max_strain`` and must increase there (so that ``e(T)`` exists);
+    beyond the last knot the law continues with its last slope.
+    """
+    if law.table is not None:
+        rows = np.array([(0.0, 0.0), *law.table], dtype=float)
+        strains, tensions = rows[:, 0], rows[:, 1]
+    else:
+        strains = np.linspace(0.0, max_strain, samples + 1)
+        tensions = sum(c * strains ** (i + 1) for i, c in enumerate(law.polynomial))
+    if np.any(np.diff(tensions) <= 0):
+        raise CaseError([Problem("line_types.elastic_law", "the tension of the elastic law must increase with "
+                                 f"strain up to {max_strain:g} for the continuum model (it inverts the law)")])
+    return tensions, strains
+
+
+def strain_of(tension, params) -> np.ndarray:
+    """NumPy strain ``e(T)`` of the law in ``params`` (as :func:`kernels2d.strain`), for positions."""
+    n = int(params[k.LAW])
+    knots_t, knots_e = params[k.LAW + 1:k.LAW + 1 + n], params[k.LAW + 1 + n:k.LAW + 1 + 2 * n]
+    i = np.clip(np.searchsorted(knots_t, tension) - 1, 0, n - 2)
+    slope = (knots_e[i + 1] - knots_e[i]) / (knots_t[i + 1] - knots_t[i])
+    return knots_e[i] + slope * (np.asarray(tension) - knots_t[i])
 
 
 def planar_cable(case, check_plane: bool = True) -> PlanarCable:
@@ -114,9 +150,10 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     cable = case.cables[0]
     env = case.environment
     lt = case.line_types[cable.line_type]
+    law = elastic_law_knots(lt.elastic_law) if getattr(lt, "elastic_law", None) is not None else None
     p = parameters(lt.mass, lt.added_mass, lt.weight_in_water_value(env.water_density, env.gravity),
                    lt.axial_stiffness, lt.diameter, lt.drag_normal, lt.drag_tangential, env.water_density,
-                   cable.length / cable.segments)
+                   cable.length / cable.segments, law)
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
     current = env.current
@@ -167,7 +204,7 @@ def _end(case, end, key: str, first: bool) -> EndCondition:
 
 def positions(cable: PlanarCable, y: np.ndarray, origin) -> np.ndarray:
     """Node positions (N+1, 2) from the first end, trapezoidal in ``(1 + e) t`` (2nd order)."""
-    stretch = 1.0 + y[:, 0] / cable.params[k.EA]
+    stretch = 1.0 + strain_of(y[:, 0], cable.params)
     step = np.column_stack([stretch * np.cos(y[:, 3]), stretch * np.sin(y[:, 3])])
     increments = 0.5 * cable.ds * (step[1:] + step[:-1])
     return np.vstack([np.zeros((1, 2)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)

@@ -11,15 +11,25 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 
 
+def law(T, p):
+    """Strain and compliance ``(e(T), de/dT)`` of the piecewise-linear law in ``p``."""
+    n = int(p[k.LAW])
+    knots_t, knots_e = p[k.LAW + 1:k.LAW + 1 + n], p[k.LAW + 1 + n:k.LAW + 1 + 2 * n]
+    slopes = np.diff(knots_e) / np.diff(knots_t)
+    i = np.clip(np.searchsorted(knots_t, T) - 1, 0, n - 2)
+    return knots_e[i] + slopes[i] * (T - knots_t[i]), slopes[i]
+
+
 def mass_matrix(Y, p):
-    """``M(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (SPEC §2.1)."""
+    """``M(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (SPEC §2.1; ``1/EA -> de/dT`` for a nonlinear law)."""
     T, u, v = Y[:, 0], Y[:, 1], Y[:, 2]
+    e, flex = law(T, p)
     n = len(Y)
     M = np.zeros((n, 4, 4))
     M[:, 0, 1], M[:, 0, 3] = p[k.M], -p[k.M] * v
     M[:, 1, 2], M[:, 1, 3] = p[k.M] + p[k.MA], (p[k.M] + p[k.MA]) * u
-    M[:, 2, 0] = 1.0 / p[k.EA]
-    M[:, 3, 3] = 1.0 + T / p[k.EA]
+    M[:, 2, 0] = flex
+    M[:, 3, 3] = 1.0 + e
     return M
 
 
@@ -41,7 +51,7 @@ def loads(Y, current, p):
     n = np.column_stack([-np.sin(phi), np.cos(phi)])
     ur = u - np.sum(current * t, axis=1)
     vr = v - np.sum(current * n, axis=1)
-    root = np.sqrt(1.0 + T / p[k.EA])
+    root = np.sqrt(1.0 + law(T, p)[0])
     F = np.zeros_like(Y)
     F[:, 0] = -p[k.W0] * np.sin(phi) - 0.5 * p[k.RHO] * np.pi * p[k.DIAM] * p[k.CT] * np.abs(ur) * ur * root
     F[:, 1] = -p[k.W0] * np.cos(phi) - 0.5 * p[k.RHO] * p[k.DIAM] * p[k.CN] * np.abs(vr) * vr * root

@@ -14,6 +14,7 @@ from scipy.linalg import solve_banded
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
+from kanat.continuum.model2d import strain_of
 from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -78,7 +79,7 @@ class SpatialState:
 def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin) -> np.ndarray:
     """Global node positions (N+1, 3), trapezoidal in ``(1 + e) t`` from the first end."""
     t, _, _ = frames(y, chart)
-    step = (1.0 + y[:, 0] / cable.params[k.EA])[:, None] * t
+    step = (1.0 + strain_of(y[:, 0], cable.params))[:, None] * t
     increments = 0.5 * cable.ds * (step[1:] + step[:-1])
     return np.vstack([np.zeros((1, 3)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)
 
