@@ -160,6 +160,22 @@ def pitch(case: Path = typer.Argument(..., help="YAML case file with a pitch blo
     _pitch(_load(case, debug), output, plot, debug)
 
 
+@app.command("pitch-tow")
+def pitch_tow(case: Path = typer.Argument(..., help="Continuum tow case with a vessel.pitch block."),
+              output: Path = typer.Option(..., "-o", "--output", help="Directory for results and the plot."),
+              debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Tow through the vessel's pitch once per stabilizer mode; print the top-tension statistics."""
+    from kanat.vessel.coupled import compare_modes
+
+    loaded = _load(case, debug)
+    try:
+        with console.status("running the tow once per stabilizer mode ..."):
+            table = compare_modes(loaded, output)
+    except Exception as error:  # noqa: BLE001 - reported by _fail
+        _fail(error, debug, "coupled run failed")
+    typer.echo(table)
+
+
 def _pitch(loaded, output: Path, plot: Optional[Path], debug: bool) -> None:
     from kanat.vessel.pitch import run_pitch_case
 

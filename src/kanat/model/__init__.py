@@ -26,11 +26,12 @@ from .vessel import (
                        TrackSegment,
                        Turn,
                        Vessel,
+                       VesselPitch,
 )
 
 __all__ = [
     "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "ElasticLaw", "Environment", "Heading",
     "JonswapWaves", "KNOT", "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES",
     "Simulation", "SpeedStep", "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy",
-    "Stabilizer", "Straight", "TrackSegment", "Turn", "Vessel", "Waves",
+    "Stabilizer", "Straight", "TrackSegment", "Turn", "Vessel", "VesselPitch", "Waves",
 ]

@@ -323,10 +323,18 @@ def check_sphere(case: Case, out: Findings) -> None:
 
 
 def check_pitch(case: Case, out: Findings) -> None:
-    """No harmonic of the wave frequency should sit on the pitch natural frequency."""
-    pitch = case.pitch
-    if pitch is None:
-        return
+    """No harmonic of the wave frequency should sit on the pitch natural frequency.
+
+    Applies to the ``pitch`` block of a pitch case and to ``vessel.pitch`` of a tow.
+    """
+    for where, pitch in ((("pitch",), case.pitch), (("vessel", "pitch"), case.vessel.pitch)):
+        if pitch is not None:
+            _check_one_pitch(where, pitch, out)
+
+
+def _check_one_pitch(where: tuple, pitch, out: Findings) -> None:
+    from kanat.vessel.pitch_system import RESONANCE_RTOL      # the solver's own guard
+
     key = "natural_frequency" if pitch.natural_frequency is not None else "restoring"
     omega, omega0, zeta = pitch.wave_frequency, pitch.omega0, pitch.damping_ratio
     n = np.arange(1, pitch.harmonics + 1)
@@ -335,18 +343,16 @@ def check_pitch(case: Case, out: Findings) -> None:
     worst = int(np.argmin(denominator))
     text = (f"harmonic n = {n[worst]} of the wave frequency ({n[worst]} × {omega:.4g} = "
             f"{n[worst] * omega:.4g} rad/s) ")
-    from kanat.vessel.pitch_system import RESONANCE_RTOL      # the solver's own guard
-
     if zeta == 0 and abs(n[worst] * omega - omega0) <= RESONANCE_RTOL * omega0:
-        out.error(("pitch", key), text + f"is within {100 * RESONANCE_RTOL:g} % of the natural frequency "
+        out.error((*where, key), text + f"is within {100 * RESONANCE_RTOL:g} % of the natural frequency "
                   f"{omega0:.4g} rad/s and there is no damping: the steady state is unbounded; change "
                   f"{key} or give damping_ratio > 0")
     elif 1 / denominator[worst] > RESONANCE_GAIN:
-        out.warning(("pitch", key), text + f"is close to the natural frequency {omega0:.4g} "
+        out.warning((*where, key), text + f"is close to the natural frequency {omega0:.4g} "
                     f"rad/s: its response is amplified {1 / denominator[worst]:.3g} times")
     stabilizer = pitch.stabilizer
     if stabilizer.mode != "off" and stabilizer.max_moment == 0:
-        out.warning(("pitch", "stabilizer", "max_moment"), f"stabilizer mode "
+        out.warning((*where, "stabilizer", "max_moment"), f"stabilizer mode "
                     f"'{stabilizer.mode}' with max_moment 0 N m has no effect")
 
 

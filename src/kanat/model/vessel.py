@@ -12,6 +12,7 @@ from typing import Annotated, Any, ClassVar, Union
 from pydantic import Discriminator, Tag, computed_field, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+from .problems import PitchModel
 
 KNOT = 0.514444
 """One knot in m/s."""
@@ -182,6 +183,30 @@ AnySegment = Annotated[
     Discriminator(_segment_key)]
 
 
+class VesselPitch(PitchModel):
+    """The tow vessel's pitch in regular head seas (SPEC §6.2), coupled to the tow.
+
+    The fields of :class:`~kanat.model.PitchModel` (``inertia``, ``natural_frequency`` or
+    ``restoring``, ``wave_moment_amplitude``, ``wave_period``, ``damping_ratio``,
+    ``stabilizer``, ``harmonics``, ``time_points``), with one mode, ``stabilizer.mode``,
+    and the wave phase at the run's ``t = 0``: the pitch at time ``t`` is the steady pitch
+    at ``t + phase_deg / 360 * wave_period`` of the period that :func:`kanat.vessel.solve_pitch`
+    solves (whose ``t = 0`` has the wave moment ``-M_m sin(omega t)`` at zero, falling).
+    ``modes`` is refused: a tow runs one mode (compare them with
+    :func:`kanat.vessel.coupled.compare_modes`).
+    """
+
+    phase_deg: float = quantity(0.0, unit="deg", description="wave phase at t = 0 of the run")
+
+    @model_validator(mode="after")
+    def _one_mode(self) -> VesselPitch:
+        if self.modes is not None:
+            raise ValueError("'modes' is for model: pitch; the vessel pitches with one mode, "
+                             "'stabilizer.mode' (to compare the modes on a tow, use "
+                             "python -m kanat.vessel.coupled CASE -o DIR)")
+        return self
+
+
 class Vessel(KanatModel):
     """The towing vessel.
 
@@ -193,13 +218,15 @@ class Vessel(KanatModel):
         initial position.
     track : tuple of TrackSegment
         Segments in execution order.
-    pitch : dict or None
-        Pitch model of the vessel (SPEC §6.2); kept as given for now.
+    pitch : VesselPitch or None
+        The vessel's own pitch (SPEC §6.2): the steady periodic pitch of its stabilizer
+        mode turns the tow point's lever arm about the pitch centre
+        (:func:`kanat.vessel.pitch_motion.pitch_motion`). ``None``: no pitch.
     """
 
     tow_point: Vector3 = quantity(ZERO3, unit="m")
     track: tuple[AnySegment, ...] = ()
-    pitch: dict[str, Any] | None = None
+    pitch: VesselPitch | None = None
 
     @property
     def initial_speed(self) -> float:
