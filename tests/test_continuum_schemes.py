@@ -32,10 +32,13 @@ def test_amplification_at_infinite_frequency(scheme, expected):
 
 
 def test_registry_names_and_errors():
-    assert set(scheme_classes("continuum")) == {"generalized-alpha", "box", "backward-euler",
-                                                 "generalized-trapezoidal"}
+    names = set(scheme_classes("continuum"))
+    assert {"generalized-alpha", "box", "backward-euler", "generalized-trapezoidal", "factorized",
+            "factorized-4", "wave-factorized", "wave-factorized-2", "wave-factorized-3"} <= names
+    assert not names & set(scheme_classes("lumped"))                      # one registry, no clashes
     assert get_scheme("generalized-alpha", "continuum", lambda_inf=-0.7).lambda_inf == -0.7
-    with pytest.raises(Exception, match="valid: backward-euler, box, generalized-alpha"):
+    with pytest.raises(Exception, match="unknown continuum scheme 'runge-kutta'; valid: backward-euler, box, "
+                                        "factorized"):
         get_scheme("runge-kutta", "continuum")
 
 

@@ -176,6 +176,34 @@ def pitch_tow(case: Path = typer.Argument(..., help="Continuum tow case with a v
     typer.echo(table)
 
 
+@app.command()
+def stability(case: Path = typer.Argument(..., help="YAML continuum case."),
+              scheme: str = typer.Option(..., "--scheme", help="Scheme to sweep (e.g. wave-factorized)."),
+              output: Optional[Path] = typer.Option(None, "-o", "--output", help="netCDF of the sweep."),
+              plot: Optional[Path] = typer.Option(None, "--plot", help="Stability map (PNG)."),
+              dts: Optional[str] = typer.Option(None, "--dt", help="Comma-separated time steps [s]."),
+              debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Run a case over a range of time steps: CFL numbers, bounded or not, error against a reference."""
+    from kanat.continuum.stability import default_steps, stability_sweep, summary
+
+    loaded = _load(case, debug)
+    try:
+        steps = [float(v) for v in dts.split(",")] if dts else default_steps(loaded)
+        with console.status(f"sweeping {len(steps)} time steps ..."):
+            ds = stability_sweep(loaded, scheme, steps)
+        if output is not None:
+            from kanat.io.results import write_result
+
+            write_result(ds, output)
+        if plot is not None:
+            from kanat.report.stability_plot import plot_stability_map
+
+            plot_stability_map(ds, plot)
+    except Exception as error:  # noqa: BLE001 - reported by _fail
+        _fail(error, debug, "stability sweep failed")
+    typer.echo(summary(ds))
+
+
 def _pitch(loaded, output: Path, plot: Optional[Path], debug: bool) -> None:
     from kanat.vessel.pitch import run_pitch_case
 

@@ -107,4 +107,7 @@ class GeneralizedTrapezoidal(FamilyScheme):
         return 0.0, 0.0, self.gamma
 
 
-SCHEMES = (GeneralizedAlpha, Box, BackwardEuler, GeneralizedTrapezoidal)
+from kanat.continuum.factorized_schemes import Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3  # noqa: E402,E501  seed 000
+
+SCHEMES = (GeneralizedAlpha, Box, BackwardEuler, GeneralizedTrapezoidal,
+           Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)

@@ -1,0 +1,122 @@
+"""Seed 000's factorized and wave-factorized schemes as registered continuum schemes.
+
+Five names, each a :class:`~kanat.continuum.schemes.ContinuumScheme` whose ``step`` takes
+the planar or the spatial model:
+
+| name | what one step does | order |
+|---|---|---|
+| ``factorized`` | two upwind sweeps, ``B+`` forward and ``B-`` backward (SPEC §2.5, eqs. 9–11) | 1 |
+| ``factorized-4`` | four sweeps, one per wave and direction (eqs. 12–15) | 1 |
+| ``wave-factorized`` | planar: longitudinal then transverse block, gamma-weighted box (SPEC §2.6) | 2 at gamma 1/2 |
+| ``wave-factorized-2`` | spatial: longitudinal \\| both transverse waves (paper section 4.2) | 2 at gamma 1/2 |
+| ``wave-factorized-3`` | spatial: longitudinal \\| normal \\| binormal | 2 at gamma 1/2 |
+
+``wave-factorized`` on a spatial model uses the two-block split; on a planar model, which
+has two wave types, every wave split is the two-block one. The registry
+(:mod:`kanat.continuum.schemes`) imports this module; import the classes from there.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+from kanat.continuum.factorized import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
+from kanat.continuum.factorized_system import finish, prepare
+from kanat.continuum.schemes import ContinuumScheme
+from kanat.continuum.wave_factorized import wave_factorized_step
+from kanat.errors import KanatError
+
+
+@dataclass(frozen=True)
+class Factorized(ContinuumScheme):
+    """Factorization by propagation direction: two implicit upwind sweeps per step (seed 000 eq. 11).
+
+    Parameters
+    ----------
+    implicit_source : bool
+        Linearize the loads in the first sweep (default); False is the paper's explicit ``D^n``.
+    compiled : bool
+        Run the step compiled (numba); False runs its NumPy twin.
+    delta : bool
+        Sweep increments driven by the upwind residual (Beam–Warming delta form), whose
+        steady state does not depend on the step; False (default) is the paper's eq. 8.
+    """
+
+    name: ClassVar[str] = "factorized"
+    order: ClassVar[int] = 1
+    explicit: ClassVar[bool] = False
+    sweeps: ClassVar[tuple] = TWO_SWEEPS
+    implicit_source: bool = True
+    compiled: bool = True
+    delta: bool = False
+
+    def step(self, model, state, dt: float):
+        """One step: ``(new_state, 1)``; raises NewtonFailure when an end cannot be solved."""
+        world, y, chart = prepare(model, state, dt)
+        new = factorized_step(world, y, dt, self.sweeps, self.implicit_source, self.compiled, self.delta)
+        return finish(model, state, y, new, chart, dt), 1
+
+
+@dataclass(frozen=True)
+class Factorized4(Factorized):
+    """Factorization by direction and wave type: four sweeps ``B_1+, B_1-, B_2+, B_2-`` (eqs. 14–15)."""
+
+    name: ClassVar[str] = "factorized-4"
+    sweeps: ClassVar[tuple] = FOUR_SWEEPS
+
+
+@dataclass(frozen=True)
+class WaveFactorized(ContinuumScheme):
+    """Wave factorization: one gamma-weighted box sub-step per wave block (seed 000 eqs. 23–24, 29).
+
+    Parameters
+    ----------
+    gamma : float
+        Weight of the new level in each sub-step, in [1/2, 1]. Default 0.6: at 1/2 (the paper's
+        Crank–Nicolson) round-off grows without bound in a steady tow (docs/factorization.md);
+        set ``gamma: 0.5`` in the case for the paper's scheme.
+    iterations : int
+        Passes over the blocks per step (1: the paper's quasi-linear scheme).
+    compiled : bool
+        Assemble the blocks compiled (numba); False uses the NumPy assembly.
+    """
+
+    name: ClassVar[str] = "wave-factorized"
+    order: ClassVar[int] = 2
+    explicit: ClassVar[bool] = False
+    blocks: ClassVar[int] = 2
+    gamma: float = 0.6
+    iterations: int = 1
+    compiled: bool = True
+
+    def __post_init__(self):
+        if not 0.5 <= self.gamma <= 1.0:
+            raise KanatError(f"gamma = {self.gamma} is outside [1/2, 1] for the wave-factorized scheme "
+                             "(1/2 is Crank–Nicolson)")
+        if self.iterations < 1:
+            raise KanatError(f"iterations = {self.iterations}; the wave-factorized scheme needs at least one pass")
+
+    def step(self, model, state, dt: float):
+        """One step: ``(new_state, iterations)``."""
+        world, y, chart = prepare(model, state, dt)
+        count = self.blocks if world.system.dim == 3 else 2
+        new = wave_factorized_step(world, y, dt, count, self.gamma, self.iterations, self.compiled)
+        return finish(model, state, y, new, chart, dt), self.iterations
+
+
+@dataclass(frozen=True)
+class WaveFactorized2(WaveFactorized):
+    """Spatial wave factorization in two blocks: longitudinal | both transverse waves."""
+
+    name: ClassVar[str] = "wave-factorized-2"
+
+
+@dataclass(frozen=True)
+class WaveFactorized3(WaveFactorized):
+    """Spatial wave factorization in three blocks: longitudinal | normal | binormal."""
+
+    name: ClassVar[str] = "wave-factorized-3"
+    blocks: ClassVar[int] = 3
+
+
+SCHEMES = (Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)

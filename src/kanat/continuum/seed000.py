@@ -1,0 +1,248 @@
+"""Seed 000's three comparisons (Kaliukh & Vusatiuk 2018), one function and one command each.
+
+    python -m kanat.continuum.seed000 accel      -o DIR    # towed vehicle from rest (section 3)
+    python -m kanat.continuum.seed000 planar80   -o DIR    # 80 m tow 15 -> 20 kn (section 4.1, table 1)
+    python -m kanat.continuum.seed000 spatial100 -o DIR    # 100 m tow, 45 deg turn (section 4.2, table 2)
+
+Each writes a CSV table and a PNG figure into ``DIR`` and prints the table. The cases are
+``examples/seed000_*.yaml``; their comments list the published data and the unpublished
+data chosen here. "Full" is the generalized-α box scheme (SPEC §2.4) at the same grid and
+step; the other columns are seed 000's schemes (:mod:`factorized_schemes`).
+
+Angles are chart-free: ``inclination`` is the tangent's angle below the horizontal (the
+paper's ``phi`` for a cable trailing astern), ``azimuth`` the heading of its horizontal part
+measured from astern (``atan2(t_y, -t_x)``; the paper's ``theta`` has another origin).
+"""
+from __future__ import annotations
+
+import argparse
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from kanat.continuum.chart import frames
+from kanat.continuum.models import model_for
+from kanat.continuum.stepper import NewtonFailure
+from kanat.io import parse_case
+from kanat.schemes import get_scheme
+
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
+FULL = "generalized-alpha"
+
+
+@dataclass(frozen=True)
+class Trace:
+    """States of one run at its output times, and its cost."""
+
+    scheme: str
+    times: np.ndarray
+    states: list
+    wall_time_s: float
+    steps: int
+    status: str = "ok"
+
+
+def case_text(name: str, path=None) -> str:
+    """The YAML text of ``examples/seed000_<name>.yaml`` (or of ``path``)."""
+    path = Path(path) if path else EXAMPLES / f"seed000_{name}.yaml"
+    if not path.exists():
+        raise FileNotFoundError(f"{path} not found; pass the case file with --case (the examples folder of "
+                                "the kanat source tree holds it)")
+    return path.read_text()
+
+
+def simulate(case, scheme, times, dt=None) -> Trace:
+    """Run ``case`` in memory with ``scheme`` and keep the states at ``times`` (multiples of ``dt``)."""
+    model = model_for(case)
+    dt = dt or case.simulation.dt
+    chosen = get_scheme(scheme, "continuum", gamma=case.simulation.gamma)
+    state = model.initial()
+    kept, steps = [], 0
+    start = time.perf_counter()
+    status = "ok"
+    for target in times:
+        try:
+            while state.t < target - 0.5 * dt:
+                state, _ = chosen.step(model, state, dt)
+                steps += 1
+        except NewtonFailure as failure:
+            status = f"{failure} at t = {state.t:.4g} s near node {failure.node}"
+            break
+        kept.append(state)
+    return Trace(chosen.name, np.asarray(times[:len(kept)], dtype=float), kept, time.perf_counter() - start,
+                 steps, status)
+
+
+def tangents(state) -> np.ndarray:
+    """Global unit tangents (n, 3) of a planar or spatial state."""
+    if hasattr(state, "chart"):
+        return frames(state.y, state.chart)[0]
+    phi = state.y[:, 3]
+    return np.column_stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
+
+
+def profile(state, s, stations) -> dict:
+    """Tension, inclination and azimuth at arclengths ``stations`` (interpolated between nodes)."""
+    t = tangents(state)
+    inclination = np.arctan2(-t[:, 2], np.hypot(t[:, 0], t[:, 1]))
+    azimuth = np.unwrap(np.arctan2(t[:, 1], -t[:, 0]))
+    at = lambda v: np.interp(stations, s, v)
+    return {"tension": at(state.y[:, 0]), "inclination": at(inclination), "azimuth": at(azimuth)}
+
+
+def body_relative(state, model) -> np.ndarray:
+    """Body position relative to the tow point (x, z) [m]: distance astern ``-x`` and depth ``-z``."""
+    if hasattr(state, "chart"):
+        xyz = state.xyz[-1] - model.origin(state.t)
+        return np.array([-xyz[0], -xyz[2]])
+    xz = state.xz[-1] - model.drive.origin(state.t)
+    return np.array([-xz[0], -xz[1]])
+
+
+def accel(segments: int = 24, dt: float = 0.002, schemes=(FULL, "factorized", "factorized-4", "wave-factorized"),
+          path=None) -> pd.DataFrame:
+    """Section 3: depth and distance astern of the towed vehicle against time, every scheme.
+
+    Returns a table with columns ``time, scheme, distance, depth`` and the run costs in
+    ``attrs`` (wall time per scheme).
+    """
+    text = case_text("accel", path).replace("segments: 24,", f"segments: {segments},")
+    case = parse_case(text)
+    times = np.round(np.arange(0.0, case.simulation.duration + 1e-9, 0.05), 10)
+    model = model_for(case)
+    rows, walls = [], {}
+    for name in schemes:
+        trace = simulate(case, name, times, dt)
+        walls[name] = trace.wall_time_s
+        for t, state in zip(trace.times, trace.states):
+            distance, depth = body_relative(state, model)
+            rows.append({"time": t, "scheme": name, "distance": distance, "depth": depth})
+    table = pd.DataFrame(rows)
+    table.attrs["wall_time_s"] = walls
+    return table
+
+
+def planar80(segment_counts=(5, 10), dt: float = 0.01, times=(0.0, 10.0, 24.0), scheme: str = "wave-factorized",
+             path=None) -> pd.DataFrame:
+    """Section 4.1, table 1: tension and inclination along the cable, full vs ``scheme``.
+
+    One row per (segments, t, s) with both schemes' values, their relative difference in
+    percent, and the wall times (``attrs["wall_time_s"]``, ``attrs["speedup"]``).
+    """
+    base = case_text("planar80", path)
+    stations = np.array([0.0, 20.0, 40.0, 60.0, 80.0])
+    rows, walls, speedup = [], {}, {}
+    for segments in segment_counts:
+        case = parse_case(base.replace("segments: 10,", f"segments: {segments},"))
+        s = np.linspace(0.0, 80.0, segments + 1)
+        full, fact = simulate(case, FULL, times, dt), simulate(case, scheme, times, dt)
+        walls[(segments, FULL)], walls[(segments, scheme)] = full.wall_time_s, fact.wall_time_s
+        speedup[segments] = full.wall_time_s / fact.wall_time_s
+        for t, a, b in zip(full.times, full.states, fact.states):
+            pa, pb = profile(a, s, stations), profile(b, s, stations)
+            for i, station in enumerate(stations):
+                rows.append({"segments": segments, "time": t, "s": station,
+                             "tension_full": pa["tension"][i], f"tension_{scheme}": pb["tension"][i],
+                             "tension_diff_pct": 100 * (pb["tension"][i] / pa["tension"][i] - 1),
+                             "inclination_full": pa["inclination"][i],
+                             f"inclination_{scheme}": pb["inclination"][i],
+                             "inclination_diff_pct": 100 * (pb["inclination"][i] / pa["inclination"][i] - 1)})
+    table = pd.DataFrame(rows)
+    table.attrs.update(wall_time_s=walls, speedup=speedup)
+    return table
+
+
+def spatial100(dt: float = 0.05, times=(0.0, 10.0, 60.0), schemes=(FULL, "wave-factorized-2", "wave-factorized-3"),
+               path=None, history_every: float = 1.0) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Section 4.2, table 2: T, inclination and azimuth at s = 0, 40, 100 m; full vs two and three blocks.
+
+    Returns the table and a history (every ``history_every`` s) of each split's largest
+    deviation from the full scheme in ``w`` (binormal velocity) and azimuth — the paper's
+    observation that the three-block split accumulates error there.
+    """
+    case = parse_case(case_text("spatial100", path))
+    stations = np.array([0.0, 40.0, 100.0])
+    s = np.linspace(0.0, 100.0, case.cables[0].segments + 1)
+    history_times = np.round(np.arange(0.0, max(times) + 1e-9, history_every), 10)
+    grid = np.union1d(history_times, times)
+    runs = [simulate(case, name, grid, dt) for name in schemes]
+    traces = {trace.scheme: trace for trace in runs}
+    rows = []
+    for t in times:
+        i = int(np.argmin(np.abs(grid - t)))
+        row = {"time": t}
+        for name, trace in traces.items():
+            if i >= len(trace.states):
+                continue
+            values = profile(trace.states[i], s, stations)
+            for j, station in enumerate(stations):
+                for key in ("tension", "inclination", "azimuth"):
+                    row[f"{key}_{int(station)}_{name}"] = values[key][j]
+        rows.append(row)
+    history = []
+    full = runs[0]
+    for trace in runs[1:]:
+        name = trace.scheme
+        for t, a, b in zip(grid, full.states, trace.states):
+            wa, wb = _binormal_speed(a), _binormal_speed(b)
+            za, zb = profile(a, s, s)["azimuth"], profile(b, s, s)["azimuth"]
+            history.append({"time": t, "scheme": name, "w_error": np.max(np.abs(wb - wa)),
+                            "azimuth_error": np.max(np.abs(zb - za)),
+                            "tension_error_pct": 100 * np.max(np.abs(b.y[:, 0] / a.y[:, 0] - 1))})
+    table = pd.DataFrame(rows)
+    table.attrs["wall_time_s"] = {name: trace.wall_time_s for name, trace in traces.items()}
+    table.attrs["status"] = {name: trace.status for name, trace in traces.items()}
+    return table, pd.DataFrame(history)
+
+
+def _binormal_speed(state) -> np.ndarray:
+    """The velocity's component out of the cable's local vertical plane (chart-free ``w``) [m/s]."""
+    t, n, b = frames(state.y, state.chart)
+    velocity = state.y[:, 1:2] * t + state.y[:, 2:3] * n + state.y[:, 3:4] * b
+    horizontal = np.cross(t, np.array([0.0, 0.0, 1.0]))
+    norm = np.linalg.norm(horizontal, axis=1, keepdims=True)
+    return np.sum(velocity * horizontal / np.where(norm > 0, norm, 1.0), axis=1)
+
+
+def main(argv=None) -> None:
+    """Command line: ``python -m kanat.continuum.seed000 {accel,planar80,spatial100} -o DIR``."""
+    from kanat.report.stability_plot import plot_accel, plot_planar80, plot_spatial100
+
+    parser = argparse.ArgumentParser(prog="python -m kanat.continuum.seed000", description=__doc__.splitlines()[0])
+    parser.add_argument("comparison", choices=["accel", "planar80", "spatial100"])
+    parser.add_argument("-o", "--output", type=Path, default=Path("."), help="folder for the table and the figure")
+    parser.add_argument("--case", type=Path, default=None, help="case file (default: examples/seed000_<name>.yaml)")
+    args = parser.parse_args(argv)
+    out = args.output
+    out.mkdir(parents=True, exist_ok=True)
+    pd.set_option("display.width", 200)
+    pd.set_option("display.max_columns", 30)
+    if args.comparison == "accel":
+        table = accel(path=args.case)
+        table.to_csv(out / "seed000_accel.csv", index=False)
+        plot_accel(table, out / "seed000_accel.png")
+        print(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
+                                                               values=["distance", "depth"]).round(4))
+        print("wall time [s]:", {k: round(v, 2) for k, v in table.attrs["wall_time_s"].items()})
+    elif args.comparison == "planar80":
+        table = planar80(path=args.case)
+        table.to_csv(out / "seed000_planar80.csv", index=False)
+        plot_planar80(table, out / "seed000_planar80.png")
+        print(table.round(4).to_string(index=False))
+        print("speed-up of the wave-factorized scheme:", {k: round(v, 2) for k, v in table.attrs["speedup"].items()})
+    else:
+        table, history = spatial100(path=args.case)
+        table.to_csv(out / "seed000_spatial100.csv", index=False)
+        history.to_csv(out / "seed000_spatial100_history.csv", index=False)
+        plot_spatial100(table, history, out / "seed000_spatial100.png")
+        print(table.T.round(4).to_string())
+        print(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
+        print("wall time [s]:", {k: round(v, 2) for k, v in table.attrs["wall_time_s"].items()})
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,120 @@
+"""The block assembly of the wave-factorized step, compiled (numba).
+
+The same banded system as :func:`kanat.continuum.wave_factorized._block_solve` builds with
+NumPy (its readable twin; the tests compare the two): the gamma-weighted box rows of one
+wave block at every interval and its linearized end conditions, in LAPACK band storage
+for :func:`scipy.linalg.solve_banded`.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from kanat.continuum.factorized_compiled import load, lu_factor, lu_solve, mass_stiffness, physical
+
+STEP = 1e-30
+
+
+@njit(cache=True)
+def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, par0, par1):
+    """Band (lower + upper + 1, n nb), right-hand side (n nb,) and bandwidths of one block."""
+    n, d = Yn.shape
+    nb, h = own.shape[0], comps.shape[0]
+    lower, upper = h + nb - 1, 2 * nb - 1 - h
+    size = n * nb
+    band = np.zeros((lower + upper + 1, size))
+    rhs = np.zeros(size)
+    is_own = np.zeros(d, dtype=np.bool_)
+    for q in own:
+        is_own[q] = True
+    Ms, Ks = np.empty((n, d, d)), np.empty((n, d, d))
+    Fg = np.empty((n, d))
+    J = np.empty((n, d, nb))
+    ya, f = np.empty(d), np.empty(d)
+    z, fz = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
+    for i in range(n):
+        for q in range(d):
+            ya[q] = gamma * latest[i, q] + (1.0 - gamma) * Yn[i, q]
+        mass_stiffness(ya, p, dim, Ms[i], Ks[i])
+        load(latest[i], cur[i], up, p, dim, f)
+        for q in range(d):
+            Fg[i, q] = gamma * f[q] + (1.0 - gamma) * Fn[i, q]
+        for c in range(nb):
+            for q in range(d):
+                z[q] = latest[i, q]
+            z[own[c]] += 1j * STEP
+            load(z, cur[i], up, p, dim, fz)
+            for q in range(d):
+                J[i, q, c] = fz[q].imag / STEP
+    Mbar, LU = np.empty((d, d)), np.empty((d, d))
+    piv = np.empty(d, dtype=np.int64)
+    col, sol = np.empty(d), np.empty(d)
+    Bbar, Dbar = np.empty((d, d)), np.empty(d)
+    Jl, Jr = np.empty((d, nb)), np.empty((d, nb))
+    for j in range(n - 1):
+        for a in range(d):
+            for b in range(d):
+                Mbar[a, b] = 0.5 * (Ms[j, a, b] + Ms[j + 1, a, b])
+        lu_factor(Mbar, LU, piv)
+        for b in range(d):
+            for a in range(d):
+                col[a] = 0.5 * (Ks[j, a, b] + Ks[j + 1, a, b])
+            lu_solve(LU, piv, col, sol)
+            for a in range(d):
+                Bbar[a, b] = sol[a]
+        for a in range(d):
+            col[a] = 0.5 * (Fg[j, a] + Fg[j + 1, a])
+        lu_solve(LU, piv, col, Dbar)
+        for c in range(nb):
+            for a in range(d):
+                col[a] = 0.5 * gamma * J[j, a, c]
+            lu_solve(LU, piv, col, sol)
+            for a in range(d):
+                Jl[a, c] = sol[a]
+            for a in range(d):
+                col[a] = 0.5 * gamma * J[j + 1, a, c]
+            lu_solve(LU, piv, col, sol)
+            for a in range(d):
+                Jr[a, c] = sol[a]
+        for ia in range(nb):
+            a = own[ia]
+            row = h + nb * j + ia
+            value = (Yn[j, a] + Yn[j + 1, a]) / (2.0 * dt) + Dbar[a]
+            for b in range(d):
+                other = latest[j + 1, b] - latest[j, b] if not is_own[b] else 0.0
+                value -= Bbar[a, b] * ((1.0 - gamma) * (Yn[j + 1, b] - Yn[j, b]) + gamma * other) / ds
+            for c in range(nb):
+                value -= Jl[a, c] * latest[j, own[c]] + Jr[a, c] * latest[j + 1, own[c]]
+                eye = 1.0 / (2.0 * dt) if c == ia else 0.0
+                left = eye - gamma * Bbar[a, own[c]] / ds - Jl[a, c]
+                right = eye + gamma * Bbar[a, own[c]] / ds - Jr[a, c]
+                cl, cr = nb * j + c, nb * (j + 1) + c
+                band[upper + row - cl, cl] = left
+                band[upper + row - cr, cr] = right
+            rhs[row] = value
+    for side in (-1.0, 1.0):
+        node = 0 if side < 0 else n - 1
+        row0 = 0 if side < 0 else size - h
+        par = par0 if side < 0 else par1
+        out = np.empty(dim, dtype=np.complex128)
+        base = np.empty(h)
+        for c in range(-1, nb):
+            for q in range(d):
+                z[q] = latest[node, q]
+            if c >= 0:
+                z[own[c]] += 1j * STEP
+            physical(z, Yn[node], par, side, dt, gamma, cur[node], up, p, dim, out)
+            for i in range(h):
+                if c < 0:
+                    base[i] = out[comps[i]].real
+                else:
+                    coef = out[comps[i]].imag / STEP
+                    colx = nb * node + c
+                    band[upper + row0 + i - colx, colx] = coef
+        for i in range(h):
+            acc = -base[i]
+            for c in range(nb):
+                colx = nb * node + c
+                acc += band[upper + row0 + i - colx, colx] * latest[node, own[c]]
+            rhs[row0 + i] = acc
+    return band, rhs, lower, upper
