@@ -20,6 +20,7 @@ from kanat.errors import KanatError, SolverError
 from kanat.io.results import case_sha256, provenance
 from kanat.io.stream import Checkpoint, ResultStream
 from kanat.lumped import kernels, stepping
+from kanat.lumped.advance import advance
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.integrators import state_positions
 from kanat.lumped.network import build_network
@@ -135,6 +136,11 @@ class _Run:
                          net.law_n, net.law_x, net.law_y, self.T)
         return x, v, heading
 
+    def element_tensions(self, state):
+        """Element tensions (m,) of a state."""
+        self.tensions(state)
+        return self.T
+
     def slice(self, state):
         x, v, heading = self.tensions(state)
         position = self.system.vessel(state["t"])[0]
@@ -147,6 +153,22 @@ def _initial_state(case, net, system, scheme, h):
     velocity = system.vessel(0.0)[1]
     free = system.free_index
     return scheme.start(system, 0.0, x[free], np.broadcast_to(velocity, (len(free), 3)).copy(), h)
+
+
+def _start(case, system, chosen, info, notes, output_path, case_hash, resume):
+    """The state to step from: the initial equilibrium, or the checkpoint of a killed run.
+    Returns ``(state, snap_state, h, steps, outputs, step_info)``."""
+    net, sim = system.net, case.simulation
+    if not resume:
+        h = _step_size(case, chosen, info, notes)
+        return _initial_state(case, net, system, chosen, h), None, h, 0, 0, info
+    ckpt = Checkpoint.load(output_path, case_hash)
+    state, snap = _restore(ckpt)
+    info = stepping.step_info(net, system.full(state["t"], *state_positions(state))[0],
+                              sim.mass_matrix == "consistent")
+    h = _step_size(case, chosen, info, notes)
+    system.evaluations = ckpt.info["evaluations"]
+    return state, snap, h, ckpt.info["steps"], ckpt.outputs, info
 
 
 def _save(path, case_hash, outputs, state, tracker, steps, evaluations):
@@ -198,17 +220,8 @@ def run(case, output_path, *, scheme=None, resume: bool = False, progress=None,
     chosen = _choose(case, scheme, info, notes)
     case_hash = case_sha256(case)
     outputs_total = int(round(sim.duration / sim.output_interval))
-    if resume:
-        ckpt = Checkpoint.load(output_path, case_hash)
-        state, snap = _restore(ckpt)
-        info = stepping.step_info(net, system.full(state["t"], *state_positions(state))[0],
-                                  sim.mass_matrix == "consistent")
-        h = _step_size(case, chosen, info, notes)
-        steps, outputs, system.evaluations = ckpt.info["steps"], ckpt.outputs, ckpt.info["evaluations"]
-    else:
-        h = _step_size(case, chosen, info, notes)
-        state = _initial_state(case, net, system, chosen, h)
-        steps, outputs, snap = 0, 0, None
+    state, snap, h, steps, outputs, info = _start(case, system, chosen, info, notes, output_path, case_hash,
+                                                  resume)
     runner = _Run(case, system, chosen, h)
     attrs = provenance(case, model="lumped", scheme=chosen.name, wall_time_s=0.0, status="running",
                        dt=h, dt_case=sim.dt, axial_period=info.axial_period, mass_matrix=sim.mass_matrix,
@@ -224,11 +237,9 @@ def run(case, output_path, *, scheme=None, resume: bool = False, progress=None,
     status, last_ckpt = "ok", time.perf_counter()
     try:
         while outputs <= outputs_total:
-            for _ in range(per_output):
-                state = chosen.step(system, state, h)
-                steps += 1
-                runner.tensions(state)
-                tracker.update(state["t"], runner.T)
+            state, taken = advance(chosen, system, state, h, per_output, tracker,
+                                   runner.element_tensions)
+            steps += taken
             values, x = runner.slice(state)
             failure = _check(system, x, runner.T, state["t"])
             if failure:

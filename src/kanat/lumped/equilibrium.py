@@ -15,6 +15,8 @@ only on its neighbours), so it costs ``3 x colours`` force evaluations.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
@@ -23,10 +25,15 @@ from kanat.errors import SolverError
 from kanat.lumped.system import LumpedSystem
 
 MAX_ITERATIONS = 400
+DIRECT_ITERATIONS = 150        # before stiffness continuation takes over
+CONTINUATION_START = 1e6       # N: stiffest elastic law coefficient of the first continuation stage
 RESIDUAL_TOLERANCE = 1e-9      # of the largest nodal load scale
 FD_STEP = 1e-7                 # relative finite-difference step (of element length)
 INITIAL_PSEUDO_PERIOD = 0.05   # dtau0 as a fraction of the slowest pendulum period sqrt(L/g)
 MAX_STEP_FRACTION = 0.25       # largest node move per iteration, in element lengths
+STALL, STALL_GROWTH = 0.01, 1.5   # pseudo-time step growth when the residual moves by < 1 %
+LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before the PTC step is tried
+ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
 
 
 def distance2_colouring(net) -> np.ndarray:
@@ -82,8 +89,92 @@ class _SteadyForces:
         return F[s.free_index].copy(), M[s.free_index].copy()
 
 
+def _newton(J, F, xf, forces, length):
+    """A Newton step ``-J dx = F`` shortened (halving, from at most MAX_STEP_FRACTION of an
+    element per node) until the residual's 2-norm falls; None if it never does."""
+    try:
+        direction = spla.splu((-J).tocsc()).solve(F.ravel()).reshape(-1, 3)
+    except RuntimeError:                                         # singular: slack parts
+        return None
+    alpha = min(1.0, MAX_STEP_FRACTION * length / max(np.max(np.linalg.norm(direction, axis=1)), 1e-300))
+    norm2 = np.linalg.norm(F)
+    for _ in range(LINE_SEARCH_HALVINGS):
+        F_new, M_new = forces(0.0, xf + alpha * direction)
+        if np.isfinite(np.linalg.norm(F_new)) and np.linalg.norm(F_new) < (1.0 - 1e-4 * alpha) * norm2:
+            return alpha * direction, F_new, M_new
+        alpha *= 0.5
+    return None
+
+
+def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
+    """One pseudo-transient step, eq. (1), clipped to MAX_STEP_FRACTION; None if it blows up."""
+    A = sp.block_diag(list(M / dtau**2), format="csc") - J
+    dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
+    biggest = np.max(np.linalg.norm(dx, axis=1))
+    if biggest > MAX_STEP_FRACTION * length:
+        dx *= MAX_STEP_FRACTION * length / biggest
+    F_new, M_new = forces(0.0, xf + dx)
+    norm_new = np.max(np.abs(F_new))
+    return (dx, F_new, M_new) if np.isfinite(norm_new) and norm_new <= 10.0 * norm else None
+
+
+def _tolerance(net, xf) -> float:
+    """Force residual at which the equilibrium is converged [N]: RESIDUAL_TOLERANCE of the nodal
+    load scale, but not below the round-off of the stiffest element's force."""
+    scale = max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+    stiffness = np.max(net.law_y[:, 0]) / np.min(net.el_length) if net.law_y.size else 0.0
+    noise = ROUNDOFF_FACTOR * np.finfo(float).eps * stiffness * max(np.max(np.abs(xf), initial=0.0), 1.0)
+    return max(RESIDUAL_TOLERANCE * scale, noise)
+
+
 def equilibrium(net, case, x0=None, velocity=None):
-    """Static equilibrium of the network, eq. (1).
+    """Static equilibrium of the network, eq. (1), with continuation in axial stiffness.
+
+    Tried directly first; if that fails, the elastic laws are softened so that the stiffest
+    tangent is CONTINUATION_START [N] and stiffened tenfold per stage back to the true laws,
+    each stage starting from the last: a softer line's equilibrium is stretched more, so every
+    element stays taut when it stiffens and Newton's method sees no slack kinks.
+
+    Parameters and returns as :func:`_solve`.
+    """
+    if x0 is None and velocity is None:
+        x0 = statics_guess(net, case)
+    stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
+    if stiffest <= CONTINUATION_START:
+        return _solve(net, case, x0, velocity, MAX_ITERATIONS)
+    try:
+        return _solve(net, case, x0, velocity, DIRECT_ITERATIONS)
+    except SolverError:
+        pass
+    factors = CONTINUATION_START / stiffest * 10.0 ** np.arange(int(np.ceil(np.log10(stiffest / CONTINUATION_START))))
+    x = x0
+    for factor in [*factors, 1.0]:
+        soft = dataclasses.replace(net, law_y=net.law_y * factor)
+        x, info = _solve(soft, case, x, velocity, MAX_ITERATIONS)
+    info["continuation_stages"] = len(factors) + 1
+    return x, info
+
+
+def statics_guess(net, case):
+    """Node positions from the 2-D statics solver (:func:`kanat.statics.solve_statics`) when the
+    case is one it takes (planar single cables ending at the vessel, anchors or bodies), else
+    None: a far better start than the network's straight guess for a long towed cable."""
+    from kanat.statics import solve_statics
+    try:
+        result = solve_statics(case)
+    except Exception:                                        # networks, free ends, 3-D loads: no guess
+        return None
+    x = net.x_guess.copy()
+    for name, solution in result.cables.items():
+        nodes = net.node_index[net.node_cable == name]
+        if len(nodes) != len(solution.s):
+            return None
+        x[nodes] = solution.position
+    return x if np.all(np.isfinite(x)) else None
+
+
+def _solve(net, case, x0, velocity, max_iterations):
+    """Static equilibrium of the network, eq. (1), from ``x0`` (or the network's guess).
 
     Parameters
     ----------
@@ -117,32 +208,33 @@ def equilibrium(net, case, x0=None, velocity=None):
         neighbours[i].add(j)
         neighbours[j].add(i)
     xf = np.array((net.x_guess if x0 is None else x0)[system.free_index], dtype=float)
-    scale = max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+    tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)
     step = FD_STEP * length
     dtau = INITIAL_PSEUDO_PERIOD * np.sqrt(np.max(net.el_length) * len(net.el_length) / case.environment.gravity)
     F, M = forces(0.0, xf)
     norm = np.max(np.abs(F))
-    for iteration in range(1, MAX_ITERATIONS + 1):
-        if norm <= RESIDUAL_TOLERANCE * scale:
+    for iteration in range(1, max_iterations + 1):
+        if norm <= tolerance:
             break
         J = _jacobian(system, 0.0, xf, colour, step, neighbours)
-        A = sp.block_diag(list(M / dtau**2), format="csc") - J
-        dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
-        biggest = np.max(np.linalg.norm(dx, axis=1))
-        if biggest > MAX_STEP_FRACTION * length:
-            dx *= MAX_STEP_FRACTION * length / biggest
-        F_new, M_new = forces(0.0, xf + dx)
-        norm_new = np.max(np.abs(F_new))
-        if not np.isfinite(norm_new) or norm_new > 10.0 * norm:
+        trials = [t for t in (_pseudo_transient(J, M, F, xf, forces, length, dtau, norm),
+                              _newton(J, F, xf, forces, length)) if t is not None]
+        trial = min(trials, key=lambda t: np.max(np.abs(t[1]))) if trials else None   # the better of the two
+        if trial is None:
             dtau *= 0.25
             continue
+        dx, F_new, M_new = trial
+        norm_new = np.max(np.abs(F_new))
         xf, F, M = xf + dx, F_new, M_new
-        dtau *= min(max(norm / max(norm_new, 1e-300), 0.5), 10.0)
+        growth = norm / max(norm_new, 1e-300)
+        if abs(growth - 1.0) < STALL:             # a stalled pseudo-time (slack parts merely sinking): longer steps
+            growth = STALL_GROWTH
+        dtau *= min(max(growth, 0.5), 10.0)
         norm = norm_new
     else:
         worst = system.free_index[int(np.argmax(np.abs(F).sum(axis=1)))]
-        raise SolverError(f"the initial equilibrium did not converge in {MAX_ITERATIONS} iterations "
+        raise SolverError(f"the initial equilibrium did not converge in {max_iterations} iterations "
                           f"(largest force residual {norm:.3g} N near {net.where(worst)}); give bodies "
                           "and points a 'position' near their expected place, or use "
                           "simulation.initial_state: as_given")

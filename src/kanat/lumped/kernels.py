@@ -26,24 +26,32 @@ PCG_TOLERANCE = 1e-13      # relative residual of the consistent-mass solve (rou
 PCG_MAX_ITERATIONS = 200   # the preconditioned mass matrix has condition number < 4: ~20 suffice
 
 
-@njit(cache=True)
-def elastic(kind, n, xs, ys, e):
-    """Elastic tension ``f(e)`` and its slope ``df/de`` of one law (network.law_arrays)."""
-    if kind == 0:
+@njit(cache=True, inline="always")
+def elastic_row(kinds, ns, xs, ys, row, e):
+    """Elastic tension ``f(e)`` and its slope ``df/de`` of law ``row`` of the law arrays
+    (network.law_arrays): a polynomial ``sum y_k e^k`` or a table through ``(0, 0)``."""
+    n = ns[row]
+    if kinds[row] == 0:
         f, df, p = 0.0, 0.0, 1.0
         for k in range(n):
-            df += (k + 1) * ys[k] * p
+            df += (k + 1) * ys[row, k] * p
             p *= e
-            f += ys[k] * p
+            f += ys[row, k] * p
         return f, df
     for k in range(1, n):
-        if e <= xs[k] or k == n - 1:
-            slope = (ys[k] - ys[k - 1]) / (xs[k] - xs[k - 1])
-            return ys[k - 1] + slope * (e - xs[k - 1]), slope
+        if e <= xs[row, k] or k == n - 1:
+            slope = (ys[row, k] - ys[row, k - 1]) / (xs[row, k] - xs[row, k - 1])
+            return ys[row, k - 1] + slope * (e - xs[row, k - 1]), slope
     return 0.0, 0.0
 
 
 @njit(cache=True)
+def elastic(kind, n, xs, ys, e):
+    """Elastic tension ``f(e)`` and its slope ``df/de`` of one law given as its own arrays."""
+    return elastic_row(np.array([kind]), np.array([n]), xs.reshape((1, -1)), ys.reshape((1, -1)), 0, e)
+
+
+@njit(cache=True, inline="always")
 def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
            law, law_kind, law_n, law_x, law_y, F, M, T, strain):
     """Nodal forces, lumped mass blocks and element tensions, eqs. (1)-(8).
@@ -69,33 +77,39 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
             F[a, r] = node_force[a, r]
             for q in range(3):
                 M[a, r, q] = node_mass[a] if r == q else 0.0
+    t = np.empty(3)
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
-        d = x[j] - x[i]
-        length = np.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
-        t = d / length
+        d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
+        length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        t[0], t[1], t[2] = d0 / length, d1 / length, d2 / length
         e = length / L0[k] - 1.0
         edot = (t[0] * (v[j, 0] - v[i, 0]) + t[1] * (v[j, 1] - v[i, 1]) + t[2] * (v[j, 2] - v[i, 2])) / L0[k]
         tension = 0.0
         if e > 0.0:
-            f, _ = elastic(law_kind[law[k]], law_n[law[k]], law_x[law[k]], law_y[law[k]], e)
+            f, _ = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             tension = max(0.0, f + c[k] * edot)
         T[k] = tension
         strain[k] = e
-        vr = uw[k] - 0.5 * (v[i] + v[j])
-        vts = vr[0] * t[0] + vr[1] * t[1] + vr[2] * t[2]
-        vn = vr - vts * t
+        vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
+        vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
+        vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
+        vts = vr0 * t[0] + vr1 * t[1] + vr2 * t[2]
+        vn0, vn1, vn2 = vr0 - vts * t[0], vr1 - vts * t[1], vr2 - vts * t[2]
         s = np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0
-        fd = s * (cn[k] * np.sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2]) * vn + ct[k] * abs(vts) * vts * t)
+        cn_speed = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
+        ct_speed = s * ct[k] * abs(vts) * vts
         ats = aw[k, 0] * t[0] + aw[k, 1] * t[1] + aw[k, 2] * t[2]
-        fi = (disp[k] + ma[k]) * (aw[k] - ats * t)
+        inertia = disp[k] + ma[k]
         half = 0.5 * L0[k]
+        mass = m[k] + ma[k]
         for r in range(3):
-            load = (fd[r] + fi[r]) * half
+            vn = vn0 if r == 0 else (vn1 if r == 1 else vn2)
+            load = (cn_speed * vn + ct_speed * t[r] + inertia * (aw[k, r] - ats * t[r])) * half
             F[i, r] += tension * t[r] + load
             F[j, r] += -tension * t[r] + load
             for q in range(3):
-                blk = half * ((m[k] + ma[k]) * (1.0 if r == q else 0.0) - ma[k] * t[r] * t[q])
+                blk = half * (mass * (1.0 if r == q else 0.0) - ma[k] * t[r] * t[q])
                 M[i, r, q] += blk
                 M[j, r, q] += blk
         F[i, 2] -= w[k] * half
@@ -122,12 +136,27 @@ def solve3(A, b):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def lumped_solve(M, F, free, a):
-    """``a_n = M_n^-1 F_n`` on free nodes (lumped mass, eq. 8); ``a`` of others untouched."""
-    for node in range(M.shape[0]):
-        if free[node]:
-            a[node] = solve3(M[node], F[node])
+    """``a_n = M_n^-1 F_n`` on free nodes (lumped mass, eq. 8) by cofactors of each symmetric
+    3 x 3 block; ``a`` of the other nodes untouched."""
+    for n in range(M.shape[0]):
+        if not free[n]:
+            continue
+        c00 = M[n, 1, 1] * M[n, 2, 2] - M[n, 1, 2] * M[n, 2, 1]
+        c01 = M[n, 1, 2] * M[n, 2, 0] - M[n, 1, 0] * M[n, 2, 2]
+        c02 = M[n, 1, 0] * M[n, 2, 1] - M[n, 1, 1] * M[n, 2, 0]
+        inv = 1.0 / (M[n, 0, 0] * c00 + M[n, 0, 1] * c01 + M[n, 0, 2] * c02)
+        c10 = M[n, 0, 2] * M[n, 2, 1] - M[n, 0, 1] * M[n, 2, 2]
+        c11 = M[n, 0, 0] * M[n, 2, 2] - M[n, 0, 2] * M[n, 2, 0]
+        c12 = M[n, 0, 1] * M[n, 2, 0] - M[n, 0, 0] * M[n, 2, 1]
+        c20 = M[n, 0, 1] * M[n, 1, 2] - M[n, 0, 2] * M[n, 1, 1]
+        c21 = M[n, 0, 2] * M[n, 1, 0] - M[n, 0, 0] * M[n, 1, 2]
+        c22 = M[n, 0, 0] * M[n, 1, 1] - M[n, 0, 1] * M[n, 1, 0]
+        b0, b1, b2 = F[n, 0], F[n, 1], F[n, 2]
+        a[n, 0] = (c00 * b0 + c10 * b1 + c20 * b2) * inv
+        a[n, 1] = (c01 * b0 + c11 * b1 + c21 * b2) * inv
+        a[n, 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
 
 
 @njit(cache=True)
@@ -223,7 +252,7 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
         tdv = t[0] * dv[0] + t[1] * dv[1] + t[2] * dv[2]
         tension, slope = 0.0, 0.0
         if e > 0.0:
-            f, df = elastic(law_kind[law[k]], law_n[law[k]], law_x[law[k]], law_y[law[k]], e)
+            f, df = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             tension = f + c[k] * tdv / L0[k]
             slope = df
         vr = uw[k] - 0.5 * (v[i] + v[j])
@@ -250,14 +279,13 @@ def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
     """Element tensions only, eqs. (1)-(2) (for outputs and snap detection)."""
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
-        d = x[j] - x[i]
-        length = np.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
+        d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
+        length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
         e = length / L0[k] - 1.0
         T[k] = 0.0
         if e > 0.0:
-            dv = v[j] - v[i]
-            edot = (d[0] * dv[0] + d[1] * dv[1] + d[2] * dv[2]) / (length * L0[k])
-            f, _ = elastic(law_kind[law[k]], law_n[law[k]], law_x[law[k]], law_y[law[k]], e)
+            edot = (d0 * (v[j, 0] - v[i, 0]) + d1 * (v[j, 1] - v[i, 1]) + d2 * (v[j, 2] - v[i, 2])) / (length * L0[k])
+            f, _ = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             T[k] = max(0.0, f + c[k] * edot)
 
 

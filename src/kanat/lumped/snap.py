@@ -27,20 +27,22 @@ class SnapTracker:
     """
 
     def __init__(self, t0: float, tension: np.ndarray, state: dict | None = None):
+        self._pending, self._pending_rows = [], 0
         if state is not None:
             self._arrays = {k: np.array(v) for k, v in state.items()}
+            self._arrays["prev_time"] = self._arrays["prev_time"].reshape(1)
             return
         m = len(tension)
         self._arrays = {
             "taut": tension > 0.0, "active": np.zeros(m, bool), "start": np.zeros(m),
             "peak": np.zeros(m), "rate": np.zeros(m), "prev_tension": np.array(tension, float),
-            "prev_time": np.array(float(t0)),
+            "prev_time": np.array([float(t0)]),
             **{f"done_{k}": np.zeros(0) for k in EVENT_FIELDS}}
 
     def update(self, t: float, tension: np.ndarray) -> None:
         """Account for the tensions ``tension`` (m,) at time ``t``."""
         a = self._arrays
-        rate = (tension - a["prev_tension"]) / max(t - float(a["prev_time"]), 1e-300)
+        rate = (tension - a["prev_tension"]) / max(t - float(a["prev_time"][0]), 1e-300)
         taut = tension > 0.0
         ended = a["active"] & ~taut
         if np.any(ended):
@@ -51,18 +53,40 @@ class SnapTracker:
         act = a["active"]
         a["peak"][act] = np.maximum(a["peak"][act], tension[act])
         a["rate"][act] = np.maximum(a["rate"][act], rate[act])
-        a["taut"], a["prev_tension"], a["prev_time"] = taut, np.array(tension, float), np.array(float(t))
+        a["taut"], a["prev_tension"], a["prev_time"] = taut, np.array(tension, float), np.array([float(t)])
 
     def _close(self, elements: np.ndarray) -> None:
         a = self._arrays
-        new = {"time": a["start"][elements], "element": elements.astype(float),
-               "peak_tension": a["peak"][elements], "rise_rate": a["rate"][elements]}
-        for k in EVENT_FIELDS:
-            a[f"done_{k}"] = np.concatenate([a[f"done_{k}"], new[k]])
+        self._append(a["start"][elements], elements.astype(float), a["peak"][elements], a["rate"][elements])
         a["active"][elements] = False
+
+    def _append(self, *columns) -> None:
+        """Queue closed events (merged into the ``done_*`` arrays lazily: appends stay O(1))."""
+        self._pending.append(np.column_stack([np.asarray(c, float) for c in columns]))
+        self._pending_rows += len(self._pending[-1])
+
+    def _merge(self) -> None:
+        if self._pending:
+            rows = np.concatenate(self._pending)
+            a = self._arrays
+            for k, column in zip(EVENT_FIELDS, rows.T):
+                a[f"done_{k}"] = np.concatenate([a[f"done_{k}"], column])
+            self._pending, self._pending_rows = [], 0
+
+    def kernel_arrays(self) -> tuple:
+        """The live per-element arrays ``(taut, active, start, peak, rate, prev_tension,
+        prev_time)`` that :func:`kanat.lumped.fast.snap_update` updates in place."""
+        a = self._arrays
+        return tuple(a[k] for k in ("taut", "active", "start", "peak", "rate", "prev_tension", "prev_time"))
+
+    def absorb(self, events: np.ndarray) -> None:
+        """Record events closed by the compiled update: rows (time, element, peak, rate)."""
+        if len(events):
+            self._append(*events.T)
 
     def events(self) -> dict[str, np.ndarray]:
         """All events so far, the open ones included, sorted by time."""
+        self._merge()
         a = self._arrays
         open_ = np.flatnonzero(a["active"])
         out = {"time": np.concatenate([a["done_time"], a["start"][open_]]),
@@ -75,8 +99,10 @@ class SnapTracker:
     @property
     def count(self) -> int:
         """Number of events so far."""
-        return len(self._arrays["done_time"]) + int(np.count_nonzero(self._arrays["active"]))
+        return (len(self._arrays["done_time"]) + self._pending_rows
+                + int(np.count_nonzero(self._arrays["active"])))
 
     def state(self) -> dict[str, np.ndarray]:
         """Arrays to save in a checkpoint."""
+        self._merge()
         return {k: np.array(v) for k, v in self._arrays.items()}

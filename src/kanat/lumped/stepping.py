@@ -26,7 +26,8 @@ from kanat.lumped.kernels import elastic
 SAFETY = 0.8                 # margin below the stability limit
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
-IMPLICIT_COST = 12.0         # force evaluations one Newton iteration with a sparse LU is worth
+IMPLICIT_COST = 12.0         # compiled force evaluations one compiled Newton iteration (band LU) is worth
+                             # (12-15 measured on 20-40 element lines, benchmarks/bench_lumped_moordyn.py)
 IMPLICIT_ITERATIONS = 3.0    # typical Newton iterations per implicit step
 
 

@@ -1,0 +1,194 @@
+"""Advancing a run by many steps: the fused compiled path where it applies, else step by step.
+
+:func:`advance` is what the driver calls between two outputs. For the lumped mass matrix
+and the built-in ``rk4`` and ``abm4`` schemes it hands the whole stretch to
+:mod:`kanat.lumped.fast` (:class:`FusedArrays` packs the network, environment and work
+arrays once per run); any other scheme (the implicit one, a user's own) or the consistent
+mass matrix goes through ``scheme.step`` with the tensions and snap events updated after
+every step in Python. Both paths give the same states to round-off (tests).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kanat.lumped import fast, fast_implicit, kernels
+from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, state_positions
+
+
+def supports(system, scheme) -> bool:
+    """Whether the fused path can run ``scheme`` on ``system``."""
+    return (type(scheme) in (RK4, ABM4, GeneralizedAlphaLumped) and not system.consistent
+            and system.steady_velocity is None)
+
+
+class FusedArrays:
+    """The typed-array tuples :mod:`kanat.lumped.fast` takes, built once from a system.
+
+    Attributes
+    ----------
+    nodes, el, bodies, env, work : tuple
+        See :func:`kanat.lumped.fast.acceleration`.
+    """
+
+    def __init__(self, system):
+        net = system.net
+        n, m, nb = net.n_nodes, net.n_elements, len(net.body_node)
+        self.nodes = (system.free_index.astype(np.int64), net.vessel_nodes.astype(np.int64),
+                      net.anchor_nodes.astype(np.int64), np.ascontiguousarray(net.anchor_position, float),
+                      np.ascontiguousarray(net.node_force, float), system.node_mass, net.free.copy())
+        self.el = system.el_args
+        buoys = net.body_node[net.buoy_body] if len(net.buoy_body) else np.zeros(0, np.int64)
+        self.bodies = (net.body_node.astype(np.int64), net.body_drag_area.astype(float),
+                       net.body_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
+                       net.buoy_area.astype(float), net.buoy_height.astype(float))
+        cz, cu = current_table(system.current)
+        still = system.sea is None and len(cz) == 1                  # water kinematics constant in space and time
+        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still)
+        self.work = (np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 6)), np.zeros(m),
+                     np.zeros(m), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((nb, 3)),
+                     np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros((n, 3)))
+        if still:                                                     # set once: uw (m, 3), bu (nb, 3)
+            self.work[7][:], self.work[10][:] = cu[0], cu[0]
+        self.events = np.zeros((max(fast.EVENT_BUFFER_MIN, 4 * m), 4))
+        self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
+        self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)))
+        self.band = np.zeros((3 * len(system.free_index), 2 * self.bandwidth + 1))
+
+
+def current_table(current) -> tuple[np.ndarray, np.ndarray]:
+    """The current as ascending heights ``(k,)`` and velocities ``(k, 3)`` (one row: uniform)."""
+    if current.profile is None:
+        return np.zeros(1), np.asarray(current.at(0.0), float).reshape(1, 3)
+    table = np.asarray(current.profile, dtype=float)[::-1]
+    return np.ascontiguousarray(table[:, 0]), np.ascontiguousarray(table[:, 1:4])
+
+
+def sea_arrays(sea) -> tuple:
+    """A :class:`kanat.physics.waves.LinearSea` (or None) as the tuple :func:`fast.sea_add` takes;
+    ``depth <= 0`` stands for deep water."""
+    if sea is None:
+        empty = np.zeros(0)
+        return empty, empty, empty, empty, empty, empty, 0.0, empty
+    depth = 0.0 if sea.depth is None else float(sea.depth)
+    inv = 1.0 / (1.0 - np.exp(-2.0 * sea.k * depth)) if depth > 0 else np.ones_like(sea.k)
+    return (np.asarray(sea.amplitude, float), np.asarray(sea.omega, float), np.asarray(sea.k, float),
+            np.cos(sea.direction), np.sin(sea.direction), np.asarray(sea.phase, float), depth, inv)
+
+
+def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Tow point position, velocity (k, 3) and heading (k,) at ``times`` (k,), from the
+    :class:`kanat.vessel.track.VesselTrack` phases (:func:`kanat.lumped.fast.track_states`)."""
+    times = np.ascontiguousarray(times, dtype=float)
+    k = len(times)
+    position, velocity, heading = np.empty((k, 3)), np.empty((k, 3)), np.empty(k)
+    if system.track is None:
+        position[:] = np.asarray(system.case.vessel.tow_point, float)
+        velocity[:], heading[:] = 0.0, 0.0
+        return position, velocity, heading
+    fast.track_states(times, _phase_table(system), system.track.tow_point, position, velocity, heading)
+    return position, velocity, heading
+
+
+def _phase_table(system) -> np.ndarray:
+    """Phases as rows (start, duration, x, y, heading, speed, acceleration, yaw rate)."""
+    if getattr(system, "_phases", None) is None:
+        fields = ("start", "duration", "x", "y", "heading", "speed", "acceleration", "yaw_rate")
+        system._phases = np.array([[getattr(ph, f) for f in fields] for ph in system.track.phases], float)
+    return system._phases
+
+
+def _arrays(system) -> FusedArrays:
+    if getattr(system, "_fused", None) is None:
+        system._fused = FusedArrays(system)
+    return system._fused
+
+
+def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> tuple[dict, int]:
+    """Take ``steps`` steps of size ``h`` from ``state``, updating ``tracker`` after each.
+
+    Parameters
+    ----------
+    scheme : kanat.schemes.Scheme
+    system : kanat.lumped.system.LumpedSystem
+    state : dict
+        The scheme's state (not modified).
+    tracker : kanat.lumped.snap.SnapTracker
+    tensions : callable
+        ``tensions(state) -> T`` (m,), the element tensions of a state (Python path).
+
+    Returns
+    -------
+    state : dict
+    taken : int
+        Steps taken (fewer than ``steps`` only when the state became non-finite).
+    """
+    if not supports(system, scheme):
+        for done in range(steps):
+            state = scheme.step(system, state, h)
+            tracker.update(state["t"], tensions(state))
+            if not np.all(np.isfinite(state_positions(state)[0])):
+                return state, done + 1
+        return state, steps
+    state = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+    taken = 0
+    while taken < steps and isinstance(scheme, ABM4) and len(state["history"]) < 4:
+        state = scheme.step(system, state, h)                     # RK4 start-up, in Python
+        tracker.update(state["t"], tensions(state))
+        taken += 1
+    while taken < steps:
+        if isinstance(scheme, GeneralizedAlphaLumped):
+            done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
+            if failed:                                            # the Python scheme halves the step
+                state = scheme.step(system, state, h)
+                tracker.update(state["t"], tensions(state))
+                done += 1
+        else:
+            done = _fused(scheme, system, state, h, steps - taken, tracker)
+        taken += done
+        if not np.all(np.isfinite(state_positions(state)[0])):
+            break
+    return state, taken
+
+
+def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool]:
+    """Compiled generalized-α steps from ``state`` (updated in place): (steps taken, failed)."""
+    arrays = _arrays(system)
+    t0 = float(state["t"])
+    af = scheme.coefficients[1]
+    mid = track_samples(system, t0 + h * (np.arange(steps) + 1.0 - af))
+    end = track_samples(system, t0 + h * (np.arange(steps) + 1.0))
+    x, v, a = (np.array(state[k], dtype=float) for k in ("x", "v", "a"))
+    done, iterations, count, failed = fast_implicit.steps(
+        t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
+        arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
+        arrays.blocks, arrays.band, tracker.kernel_arrays(), arrays.events)
+    tracker.absorb(arrays.events[:count].copy())
+    state.update(t=t0 + done * h, x=x, v=v, a=a, iterations=state["iterations"] + iterations)
+    system.evaluations += iterations
+    return done, failed
+
+
+def _fused(scheme, system, state, h, steps, tracker) -> int:
+    """One compiled call from ``state`` (updated in place); returns the steps it took."""
+    arrays = _arrays(system)
+    t0 = float(state["t"])
+    samples = track_samples(system, t0 + 0.5 * h * np.arange(2 * steps + 1))
+    snap = tracker.kernel_arrays()
+    args = (samples, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work, snap, arrays.events)
+    if isinstance(scheme, ABM4):
+        done, count = fast.abm4_steps(t0, h, steps, state["y"], state["history"], *args)
+    else:
+        done, count = fast.rk4_steps(t0, h, steps, state["y"], *args)
+    tracker.absorb(arrays.events[:count].copy())
+    state["t"] = t0 + done * h
+    system.evaluations += done * scheme.evaluations_per_step
+    return done
+
+
+def element_tensions(system, state, out: np.ndarray) -> np.ndarray:
+    """Element tensions (m,) of a scheme state, written into ``out`` (the Python path)."""
+    net = system.net
+    x, v, _, _ = system.full(state["t"], *state_positions(state))
+    kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+                     net.law_n, net.law_x, net.law_y, out)
+    return out

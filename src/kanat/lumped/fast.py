@@ -1,0 +1,358 @@
+"""Fused explicit stepping: many RK4 or ABM4 steps of a lumped network in one compiled call.
+
+The Python path (:class:`kanat.lumped.system.LumpedSystem` ``rhs`` driven step by step by
+:mod:`kanat.lumped.integrators`) costs some 50-200 us of interpreter and NumPy overhead per
+force evaluation; explicit schemes take thousands of small steps per simulated second, so
+that overhead dominates. Here the whole right-hand side — prescribed nodes, current
+profile, wave kinematics, element forces (:func:`kernels.forces`), body loads, surface
+buoys, the lumped-mass solve — and the per-step tension and snap-event bookkeeping run
+inside numba. The equations are those of :mod:`kanat.lumped.system` (eqs. 1-2) and
+:mod:`kanat.physics.waves` (eqs. 2-5); the Python path is this module's twin, and the
+tests compare them.
+
+It applies to the lumped mass matrix and the built-in ``rk4`` and ``abm4`` schemes
+(:func:`supports`); the driver falls back to the Python path otherwise. The vessel's
+tow point is sampled on the half-step grid of each call by :func:`track_samples`.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from kanat.lumped import kernels
+
+EVENT_BUFFER_MIN = 1024     # closed snap events held before the kernel hands them back
+
+
+# --- environment --------------------------------------------------------------------------
+@njit(cache=True, inline="always")
+def current_at(z, cz, cu, u, p):
+    """Set ``u[p]`` to the current at height ``z`` from a piecewise-linear profile (``cz``
+    ascending, ``cu`` (k, 3)); constant beyond the ends (as ``np.interp``)."""
+    n = cz.shape[0]
+    i, w = 0, 0.0
+    if n > 1 and z >= cz[n - 1]:
+        i = n - 1
+    elif n > 1 and z > cz[0]:
+        while cz[i + 1] < z:
+            i += 1
+        w = (z - cz[i]) / (cz[i + 1] - cz[i])
+    for r in range(3):
+        u[p, r] = cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0)
+
+
+@njit(cache=True, inline="always")
+def sea_add(x, y, z, t, sea, u, a, p):
+    """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5)."""
+    amp, omega, k, cosd, sind, phase, depth, inv = sea
+    for j in range(amp.shape[0]):
+        theta = k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j]
+        if depth <= 0.0:
+            c = math.exp(k[j] * min(z, 0.0))
+            s = c
+        else:
+            zc = min(max(z, -depth), 0.0)
+            below = math.exp(-2.0 * k[j] * (zc + depth))
+            scale = math.exp(k[j] * zc) * inv[j]
+            c, s = scale * (1.0 + below), scale * (1.0 - below)
+        aw, aw2 = amp[j] * omega[j], amp[j] * omega[j] * omega[j]
+        ct, st = math.cos(theta), math.sin(theta)
+        u[p, 0] += c * ct * aw * cosd[j]
+        u[p, 1] += c * ct * aw * sind[j]
+        u[p, 2] += s * st * aw
+        a[p, 0] += c * st * aw2 * cosd[j]
+        a[p, 1] += c * st * aw2 * sind[j]
+        a[p, 2] -= s * ct * aw2
+
+
+@njit(cache=True, inline="always")
+def sea_elevation(x, y, t, sea):
+    """Surface elevation at ``(x, y)`` (waves eq. 2)."""
+    amp, omega, k, cosd, sind, phase = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5]
+    eta = 0.0
+    for j in range(amp.shape[0]):
+        eta += amp[j] * math.cos(k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j])
+    return eta
+
+
+@njit(cache=True)
+def water(points, t, cz, cu, sea, u, a):
+    """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current + waves."""
+    for p in range(points.shape[0]):
+        current_at(points[p, 2], cz, cu, u, p)
+        for r in range(3):
+            a[p, r] = 0.0
+        sea_add(points[p, 0], points[p, 1], points[p, 2], t, sea, u, a, p)
+
+
+# --- vessel ----------------------------------------------------------------------------------
+@njit(cache=True)
+def track_states(times, phases, arm, position, velocity, heading):
+    """Tow point kinematics at ``times`` (ascending or not) from the track's phases (rows start,
+    duration, x, y, heading, speed, acceleration, yaw rate; :mod:`kanat.vessel.track`): closed
+    forms of a straight phase of constant acceleration or a turn at constant speed, straight on
+    past the last phase; ``arm`` the tow point's lever arm in vessel axes."""
+    n = phases.shape[0]
+    for q in range(times.shape[0]):
+        t = times[q]
+        low, high = 0, n - 1                       # the last phase starting at or before t
+        while low < high:
+            mid = (low + high + 1) // 2
+            if phases[mid, 0] <= t:
+                low = mid
+            else:
+                high = mid - 1
+        p = low
+        start, duration, x0, y0, psi0, v0, a, r = phases[p]
+        elapsed = t - start
+        tau, over = min(elapsed, duration), max(elapsed - duration, 0.0)
+        if r == 0.0:
+            run = v0 * tau + 0.5 * a * tau * tau
+            psi, v = psi0, v0 + a * tau
+            x, y = x0 + run * math.cos(psi0), y0 + run * math.sin(psi0)
+        else:
+            psi, v = psi0 + r * tau, v0
+            x = x0 + v0 / r * (math.sin(psi) - math.sin(psi0))
+            y = y0 + v0 / r * (math.cos(psi0) - math.cos(psi))
+        c, s = math.cos(psi), math.sin(psi)
+        x, y = x + v * over * c, y + v * over * s
+        rate = 0.0 if over > 0.0 else r
+        rx, ry = c * arm[0] - s * arm[1], s * arm[0] + c * arm[1]
+        position[q, 0], position[q, 1], position[q, 2] = x + rx, y + ry, arm[2]
+        velocity[q, 0], velocity[q, 1], velocity[q, 2] = v * c - rate * ry, v * s + rate * rx, 0.0
+        heading[q] = psi
+
+
+# --- right-hand side ------------------------------------------------------------------------
+@njit(cache=True, inline="always")
+def place(y, vpos, vvel, nodes, x, v):
+    """All nodes' positions and velocities from ``y = (q, q_dot)`` (flat, free nodes) and the
+    prescribed motion."""
+    free_index, vessel_nodes, anchor_nodes, anchor_pos = nodes[0], nodes[1], nodes[2], nodes[3]
+    nf = free_index.shape[0]
+    for k in range(nf):
+        for r in range(3):
+            x[free_index[k], r] = y[3 * k + r]
+            v[free_index[k], r] = y[3 * nf + 3 * k + r]
+    for k in range(vessel_nodes.shape[0]):
+        for r in range(3):
+            x[vessel_nodes[k], r] = vpos[r]
+            v[vessel_nodes[k], r] = vvel[r]
+    for k in range(anchor_nodes.shape[0]):
+        for r in range(3):
+            x[anchor_nodes[k], r] = anchor_pos[k, r]
+            v[anchor_nodes[k], r] = 0.0
+
+
+PACKED = ((0, 3, 4), (3, 1, 5), (4, 5, 2))   # packed symmetric 3 x 3: xx, yy, zz, xy, xz, yz
+
+
+@njit(cache=True)
+def forces_packed(x, v, uw, aw, node_force, node_mass, el, F, M, T):
+    """Nodal forces ``F`` (n, 3), packed symmetric mass blocks ``M`` (n, 6) (:data:`PACKED`) and
+    element tensions ``T`` — the equations of :func:`kernels.forces` (its eqs. 1-8) written for
+    the fused path: scalars only, the mass block stored once per node."""
+    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el
+    for a in range(x.shape[0]):
+        for r in range(3):
+            F[a, r] = node_force[a, r]
+            M[a, r] = node_mass[a]
+            M[a, r + 3] = 0.0
+    for k in range(el_i.shape[0]):
+        i, j = el_i[k], el_j[k]
+        d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
+        length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        inv = 1.0 / length
+        t0, t1, t2 = d0 * inv, d1 * inv, d2 * inv
+        e = length / L0[k] - 1.0
+        tension = 0.0
+        if e > 0.0:
+            edot = (t0 * (v[j, 0] - v[i, 0]) + t1 * (v[j, 1] - v[i, 1]) + t2 * (v[j, 2] - v[i, 2])) / L0[k]
+            f, _ = kernels.elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
+            tension = max(0.0, f + c[k] * edot)
+        T[k] = tension
+        vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
+        vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
+        vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
+        vts = vr0 * t0 + vr1 * t1 + vr2 * t2
+        vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
+        half = 0.5 * L0[k]
+        s = half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
+        normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
+        axial = s * ct[k] * abs(vts) * vts
+        ats = aw[k, 0] * t0 + aw[k, 1] * t1 + aw[k, 2] * t2
+        fi = half * (disp[k] + ma[k])
+        l0 = normal * vn0 + axial * t0 + fi * (aw[k, 0] - ats * t0)
+        l1 = normal * vn1 + axial * t1 + fi * (aw[k, 1] - ats * t1)
+        l2 = normal * vn2 + axial * t2 + fi * (aw[k, 2] - ats * t2) - w[k] * half
+        F[i, 0] += l0 + tension * t0
+        F[i, 1] += l1 + tension * t1
+        F[i, 2] += l2 + tension * t2
+        F[j, 0] += l0 - tension * t0
+        F[j, 1] += l1 - tension * t1
+        F[j, 2] += l2 - tension * t2
+        mass, added = half * (m[k] + ma[k]), half * ma[k]
+        for node in (i, j):
+            M[node, 0] += mass - added * t0 * t0
+            M[node, 1] += mass - added * t1 * t1
+            M[node, 2] += mass - added * t2 * t2
+            M[node, 3] -= added * t0 * t1
+            M[node, 4] -= added * t0 * t2
+            M[node, 5] -= added * t1 * t2
+
+
+@njit(cache=True, inline="always")
+def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
+    """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
+    — system eqs. (1)-(2)."""
+    node_force, node_mass = nodes[4], nodes[5]
+    x, v, F, M, T, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[6], work[7], work[8]
+    bx, bu, ba = work[9], work[10], work[11]
+    rho, g, cz, cu, sea, still = env
+    body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height = bodies
+    place(y, vpos, vvel, nodes, x, v)
+    el_i, el_j = el[0], el[1]
+    if not still:                        # else uw, aw hold the uniform current and zero (FusedArrays)
+        for k in range(el_i.shape[0]):
+            for r in range(3):
+                mid[k, r] = 0.5 * (x[el_i[k], r] + x[el_j[k], r])
+        water(mid, t, cz, cu, sea, uw, aw)
+    forces_packed(x, v, uw, aw, node_force, node_mass, el, F, M, T)
+    if body_node.shape[0] > 0:
+        if not still:
+            for b in range(body_node.shape[0]):
+                for r in range(3):
+                    bx[b, r] = x[body_node[b], r]
+            water(bx, t, cz, cu, sea, bu, ba)
+        kernels.body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
+        for b in range(buoy_node.shape[0]):
+            keel = buoy_node[b]
+            immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]
+            immersion = min(max(immersion, 0.0), buoy_height[b])
+            F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
+
+
+@njit(cache=True, inline="always")
+def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
+    """``dy/dt`` of ``y = (q, q_dot)`` (flat) with the vessel at sample ``s`` — system eq. (1),
+    lumped mass; leaves the element tensions at ``y`` in ``work[4]``."""
+    nf = nodes[0].shape[0]
+    loads(t, y, samples[0][s], samples[1][s], samples[2][s], nodes, el, bodies, env, work)
+    for i in range(3 * nf):
+        dy[i] = y[3 * nf + i]
+    M, F, free_index = work[3], work[2], nodes[0]
+    for k in range(nf):
+        n = free_index[k]
+        xx, yy, zz, xy, xz, yz = M[n, 0], M[n, 1], M[n, 2], M[n, 3], M[n, 4], M[n, 5]
+        c00, c11, c22 = yy * zz - yz * yz, xx * zz - xz * xz, xx * yy - xy * xy
+        c01, c02, c12 = xz * yz - xy * zz, xy * yz - yy * xz, xy * xz - xx * yz
+        inv = 1.0 / (xx * c00 + xy * c01 + xz * c02)
+        b0, b1, b2 = F[n, 0], F[n, 1], F[n, 2]
+        dy[3 * nf + 3 * k] = (c00 * b0 + c01 * b1 + c02 * b2) * inv
+        dy[3 * nf + 3 * k + 1] = (c01 * b0 + c11 * b1 + c12 * b2) * inv
+        dy[3 * nf + 3 * k + 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
+
+
+# --- bookkeeping after each step --------------------------------------------------------------
+@njit(cache=True)
+def snap_update(t, T, snap, events, count):
+    """One step of :meth:`kanat.lumped.snap.SnapTracker.update` on its arrays; closed events are
+    appended to ``events`` (time, element, peak, rate) from row ``count``; returns the new count."""
+    taut, active, start, peak, rate, prev_T, prev_time = snap
+    dt = max(t - prev_time[0], 1e-300)
+    for k in range(T.shape[0]):
+        r = (T[k] - prev_T[k]) / dt
+        now = T[k] > 0.0
+        if active[k] and not now:
+            events[count, 0], events[count, 1] = start[k], k
+            events[count, 2], events[count, 3] = peak[k], rate[k]
+            count += 1
+            active[k] = False
+        if now and not taut[k]:
+            start[k], peak[k], rate[k] = t, 0.0, 0.0
+            active[k] = True
+        if active[k]:
+            peak[k] = max(peak[k], T[k])
+            rate[k] = max(rate[k], r)
+        taut[k] = now
+        prev_T[k] = T[k]
+    prev_time[0] = t
+    return count
+
+
+@njit(cache=True)
+def tensions_at(y, s, samples, nodes, el, work):
+    """Element tensions at ``y`` into ``work[4]`` (vessel at sample ``s``)."""
+    x, v, T = work[0], work[1], work[4]
+    place(y, samples[0][s], samples[1][s], nodes, x, v)
+    kernels.tensions(x, v, el[0], el[1], el[2], el[10], el[11], el[12], el[13], el[14], el[15], T)
+
+
+@njit(cache=True)
+def finite(y):
+    """Whether every entry of ``y`` is finite."""
+    for i in range(y.shape[0]):
+        if not np.isfinite(y[i]):
+            return False
+    return True
+
+
+# --- schemes ----------------------------------------------------------------------------------
+@njit(cache=True)
+def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, events):
+    """Classical RK4 steps from ``(t0, y)``; vessel samples at ``t0 + h j / 2``. The snap update of
+    each new state uses the tensions of the next step's first evaluation (at that very state).
+    Stops early when the event buffer could overflow or the state is non-finite. Returns
+    (steps done, events)."""
+    n = y.shape[0]
+    k1, k2, k3, k4, tmp = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+    count, T = 0, work[4]
+    for step in range(steps):
+        t = t0 + step * h
+        derivative(t, y, 2 * step, samples, nodes, el, bodies, env, work, k1)
+        if step > 0:                                  # the state reached by the previous step
+            count = snap_update(t, T, snap, events, count)
+            if count + T.shape[0] > events.shape[0]:
+                return step, count
+        for i in range(n):
+            tmp[i] = y[i] + 0.5 * h * k1[i]
+        derivative(t + 0.5 * h, tmp, 2 * step + 1, samples, nodes, el, bodies, env, work, k2)
+        for i in range(n):
+            tmp[i] = y[i] + 0.5 * h * k2[i]
+        derivative(t + 0.5 * h, tmp, 2 * step + 1, samples, nodes, el, bodies, env, work, k3)
+        for i in range(n):
+            tmp[i] = y[i] + h * k3[i]
+        derivative(t + h, tmp, 2 * step + 2, samples, nodes, el, bodies, env, work, k4)
+        for i in range(n):
+            y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+        if not finite(y):
+            return step + 1, count
+    tensions_at(y, 2 * steps, samples, nodes, el, work)
+    return steps, snap_update(t0 + steps * h, T, snap, events, count)
+
+
+@njit(cache=True)
+def abm4_steps(t0, h, steps, y, history, samples, nodes, el, bodies, env, work, snap, events):
+    """ABM4 PECE steps (``history`` (4, n): ``f_n .. f_n-3``, updated in place); as :func:`rk4_steps`."""
+    n = y.shape[0]
+    fp, yp = np.empty(n), np.empty(n)
+    count = 0
+    for step in range(steps):
+        if count + work[4].shape[0] > events.shape[0]:
+            return step, count
+        t1 = t0 + (step + 1) * h
+        for i in range(n):
+            yp[i] = y[i] + h * (55.0 * history[0, i] - 59.0 * history[1, i] + 37.0 * history[2, i]
+                                - 9.0 * history[3, i]) / 24.0
+        derivative(t1, yp, 2 * step + 2, samples, nodes, el, bodies, env, work, fp)
+        for i in range(n):
+            y[i] += h * (9.0 * fp[i] + 19.0 * history[0, i] - 5.0 * history[1, i] + history[2, i]) / 24.0
+            for r in range(3, 0, -1):
+                history[r, i] = history[r - 1, i]
+        derivative(t1, y, 2 * step + 2, samples, nodes, el, bodies, env, work, history[0])
+        count = snap_update(t1, work[4], snap, events, count)    # the corrector's evaluation is at y
+        if not finite(y):
+            return step + 1, count
+    return steps, count

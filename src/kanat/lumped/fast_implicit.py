@@ -1,0 +1,201 @@
+"""Fused generalized-α steps: the implicit scheme of :mod:`kanat.lumped.implicit` compiled whole.
+
+Each step solves the same equations as :func:`kanat.lumped.implicit.generalized_alpha_step`
+(its eqs. 1-3: Newmark update, residual ``M a_m - F`` at ``t_m``, tangent
+``(1 - alpha_m) M + (1 - alpha_f) (gamma h C + beta h^2 K)``) with the lumped mass, but the
+force evaluation (:func:`kanat.lumped.fast.loads`), the tangent blocks
+(:func:`kernels.tangent_blocks`), its assembly and the linear solve run in numba. The
+tangent is stored as a band matrix over the free nodes in a bandwidth-reducing order
+(reverse Cuthill–McKee, :func:`band_order`) and factorized by LU without pivoting — the
+matrix is dominated by its mass blocks, and its geometric and drag parts are positive
+semidefinite — at ``O(n b^2)`` per Newton iteration. A step whose Newton iteration fails is
+handed back; :mod:`kanat.lumped.advance` then takes it with the Python scheme, which halves it.
+The Python path is this module's twin (tests).
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from numba import njit
+from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+from kanat.lumped import fast, kernels
+
+ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
+
+
+def band_order(net, free_index) -> tuple[np.ndarray, int]:
+    """Position of each free node in the band order (n_nodes,; -1 for prescribed nodes) and the
+    band half-width in degrees of freedom."""
+    n_free = len(free_index)
+    local = -np.ones(net.n_nodes, dtype=np.int64)
+    local[free_index] = np.arange(n_free)
+    a, b = local[net.el_i], local[net.el_j]
+    keep = (a >= 0) & (b >= 0)
+    graph = sp.coo_matrix((np.ones(2 * keep.sum()), (np.r_[a[keep], b[keep]], np.r_[b[keep], a[keep]])),
+                          shape=(n_free, n_free)).tocsr()
+    order = reverse_cuthill_mckee(graph, symmetric_mode=True) if n_free else np.zeros(0, np.int64)
+    rank = np.empty(n_free, dtype=np.int64)
+    rank[order] = np.arange(n_free)
+    position = -np.ones(net.n_nodes, dtype=np.int64)
+    position[free_index] = rank
+    spread = int(np.max(np.abs(rank[a[keep]] - rank[b[keep]]), initial=0))
+    return position, 3 * spread + 2
+
+
+@njit(cache=True)
+def band_add_packed(A, bw, p, packed, scale):
+    """Add ``scale`` times a packed symmetric block (fast.PACKED order) on the diagonal at node ``p``."""
+    for r in range(3):
+        row = 3 * p + r
+        for q in range(3):
+            A[row, 3 * p + q - row + bw] += scale * packed[fast.PACKED[r][q]]
+
+
+@njit(cache=True)
+def band_add(A, bw, pi, pj, block, scale):
+    """Add ``scale * block`` (3 x 3) at node rows ``pi``, columns ``pj`` of band matrix ``A``."""
+    for r in range(3):
+        row = 3 * pi + r
+        for q in range(3):
+            A[row, 3 * pj + q - row + bw] += scale * block[r, q]
+
+
+@njit(cache=True)
+def band_solve(A, bw, b):
+    """Solve ``A x = b`` in place (``A`` band storage (n, 2 bw + 1), overwritten by its LU
+    factors without pivoting; ``b`` by ``x``). Returns False on a zero pivot."""
+    n = A.shape[0]
+    for k in range(n):
+        pivot = A[k, bw]
+        if pivot == 0.0 or not np.isfinite(pivot):
+            return False
+        for i in range(k + 1, min(n, k + bw + 1)):
+            factor = A[i, k - i + bw] / pivot
+            if factor == 0.0:
+                continue
+            A[i, k - i + bw] = factor
+            for j in range(k + 1, min(n, k + bw + 1)):
+                A[i, j - i + bw] -= factor * A[k, j - k + bw]
+            b[i] -= factor * b[k]
+    for k in range(n - 1, -1, -1):
+        s = b[k]
+        for j in range(k + 1, min(n, k + bw + 1)):
+            s -= A[k, j - k + bw] * b[j]
+        b[k] = s / A[k, bw]
+    return True
+
+
+@njit(cache=True)
+def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
+    """Tangent ``c_mass M + c_damp (C + D + D_body) + c_stiff K`` in band storage (kernels
+    eq. tangent_blocks; body drag ``-dF/dv``), at the state in ``work``."""
+    x, v, M, uw, bu = work[0], work[1], work[3], work[7], work[10]
+    K, C, D = blocks
+    A[:, :] = 0.0
+    kernels.tangent_blocks(x, v, uw, el[0], el[1], el[2], el[7], el[8], el[9], el[10], el[11], el[12], el[13],
+                           el[14], el[15], K, C, D)
+    el_i, el_j = el[0], el[1]
+    for k in range(el_i.shape[0]):
+        pi, pj = position[el_i[k]], position[el_j[k]]
+        for a, b, sign in ((pi, pi, 1.0), (pi, pj, -1.0), (pj, pi, -1.0), (pj, pj, 1.0)):
+            if a >= 0 and b >= 0:
+                band_add(A, bw, a, b, K[k], sign * c_stiff)
+                band_add(A, bw, a, b, C[k], sign * c_damp)
+                band_add(A, bw, a, b, D[k], c_damp)
+    free_index = nodes[0]
+    for f in range(free_index.shape[0]):
+        band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
+    body_node, drag_area, rho = bodies[0], bodies[1], env[0]
+    block = np.empty((3, 3))
+    for b in range(body_node.shape[0]):
+        node = body_node[b]
+        if position[node] < 0:
+            continue
+        ur0, ur1, ur2 = bu[b, 0] - v[node, 0], bu[b, 1] - v[node, 1], bu[b, 2] - v[node, 2]
+        speed = np.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
+        inv = 1.0 / max(speed, 1e-12)
+        ur = (ur0, ur1, ur2)
+        for r in range(3):
+            for q in range(3):
+                block[r, q] = 0.5 * rho * drag_area[b] * ((speed if r == q else 0.0) + ur[r] * ur[q] * inv)
+        band_add(A, bw, position[node], position[node], block, c_damp)
+
+
+@njit(cache=True)
+def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_pos, vm_vel, vm_head,
+                position, bw, nodes, el, bodies, env, work, blocks, A, out_x, out_v, out_a):
+    """One generalized-α step (implicit.py eqs. 1-3); returns the Newton iterations used, or
+    ``-iterations`` when it did not converge."""
+    am, af, gamma, beta = coefficients
+    nf = x0.shape[0]
+    free_index = nodes[0]
+    ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
+    F, M = work[2], work[3]
+    a1 = out_a
+    a1[:, :] = a0
+    tm = t + (1.0 - af) * h
+    for iteration in range(1, max_iterations + 1):
+        for f in range(nf):
+            for r in range(3):
+                x1 = x0[f, r] + h * v0[f, r] + h * h * ((0.5 - beta) * a0[f, r] + beta * a1[f, r])
+                v1 = v0[f, r] + h * ((1.0 - gamma) * a0[f, r] + gamma * a1[f, r])
+                ym[3 * f + r] = (1.0 - af) * x1 + af * x0[f, r]
+                ym[3 * nf + 3 * f + r] = (1.0 - af) * v1 + af * v0[f, r]
+        fast.loads(tm, ym, vm_pos, vm_vel, vm_head, nodes, el, bodies, env, work)
+        for f in range(nf):
+            node = free_index[f]
+            p = position[node]
+            for r in range(3):
+                s = -F[node, r]
+                for q in range(3):
+                    s += M[node, fast.PACKED[r][q]] * ((1.0 - am) * a1[f, q] + am * a0[f, q])
+                rhs[3 * p + r] = -s
+        if not np.all(np.isfinite(rhs)):
+            return -iteration
+        assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
+                 (1.0 - af) * beta * h * h)
+        if not band_solve(A, bw, rhs):
+            return -iteration
+        biggest, scale = 0.0, ACCELERATION_SCALE
+        for f in range(nf):
+            p = position[free_index[f]]
+            for r in range(3):
+                a1[f, r] += rhs[3 * p + r]
+                biggest = max(biggest, abs(rhs[3 * p + r]))
+                scale = max(scale, abs(a1[f, r]))
+        if biggest <= tolerance * scale:
+            for f in range(nf):
+                for r in range(3):
+                    out_x[f, r] = x0[f, r] + h * v0[f, r] + h * h * ((0.5 - beta) * a0[f, r] + beta * a1[f, r])
+                    out_v[f, r] = v0[f, r] + h * ((1.0 - gamma) * a0[f, r] + gamma * a1[f, r])
+            return iteration
+    return -max_iterations
+
+
+@njit(cache=True)
+def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
+          position, bw, nodes, el, bodies, env, work, blocks, A, snap, events):
+    """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
+    Returns (steps done, Newton iterations, events, failed): it stops before a step whose
+    Newton iteration fails, before the event buffer could overflow, or on a non-finite state."""
+    nf = x.shape[0]
+    nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
+    y = np.empty(6 * nf)
+    iterations, n_events = 0, 0
+    for step in range(count):
+        if n_events + work[4].shape[0] > events.shape[0]:
+            return step, iterations, n_events, False
+        used = newton_step(t0 + step * h, h, coefficients, max_iterations, tolerance, x, v, a,
+                           mid_samples[0][step], mid_samples[1][step], mid_samples[2][step],
+                           position, bw, nodes, el, bodies, env, work, blocks, A, nx, nv, na)
+        if used < 0:
+            return step, iterations, n_events, True
+        iterations += used
+        x[:, :], v[:, :], a[:, :] = nx, nv, na
+        y[: 3 * nf], y[3 * nf:] = x.ravel(), v.ravel()
+        fast.tensions_at(y, step, end_samples, nodes, el, work)
+        n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
+        if not fast.finite(y):
+            return step + 1, iterations, n_events, False
+    return count, iterations, n_events, False
