@@ -21,6 +21,7 @@ import xarray as xr
 from kanat.continuum.models import model_for
 from kanat.continuum.schemes import ContinuumScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure, State
+from kanat.errors import CaseError, Problem
 from kanat.io.results import case_sha256, provenance
 from kanat.io.stream import Checkpoint, ResultStream
 from kanat.schemes import get_scheme
@@ -72,6 +73,8 @@ def run(case, output, *, scheme=None, resume: bool = False, progress=None,
         Checkpoint every this many output steps (default: every ``CHECKPOINT_WALL_S`` of wall time).
     """
     sim = case.simulation
+    if sim.dt is None:
+        raise CaseError([Problem("simulation.dt", "the continuum model needs a time step dt [s]")])
     scheme = _scheme(case, scheme)
     model = model_for(case)
     dt, every = sim.dt, max(1, int(round(sim.output_interval / sim.dt)))

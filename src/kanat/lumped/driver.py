@@ -82,7 +82,7 @@ def _choose(case, scheme, info, notes):
     sim = case.simulation
     spec = scheme if scheme is not None else sim.scheme
     if spec is None:
-        chosen = stepping.choose_scheme(info, sim.dt, scheme_classes("lumped"))
+        chosen = stepping.choose_scheme(info, sim.step_or_default, scheme_classes("lumped"))
         chosen = get_scheme(chosen.name, "lumped", lambda_inf=sim.lambda_inf)
         notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
         return chosen
@@ -93,8 +93,13 @@ def _step_size(case, scheme, info, notes) -> float:
     sim = case.simulation
     out = sim.output_interval
     if not scheme.explicit:
-        return stepping.fit_step(sim.dt, out)
+        if sim.dt is None:
+            notes.append(f"{scheme.name}: no dt given; stepping at the default {sim.step_or_default:g} s")
+        return stepping.fit_step(sim.step_or_default, out)
     safe = info.safe_step(scheme)
+    if sim.dt is None:
+        notes.append(f"{scheme.name}: no dt given; stepping at the safe step {safe:.3g} s")
+        return stepping.fit_step(safe, out)
     h = stepping.fit_step(min(sim.dt, safe), out)
     if safe < sim.dt:
         notes.append(f"{scheme.name}: dt {sim.dt:g} s exceeds the safe step {safe:.3g} s "
@@ -224,7 +229,7 @@ def run(case, output_path, *, scheme=None, resume: bool = False, progress=None,
                                                   resume)
     runner = _Run(case, system, chosen, h)
     attrs = provenance(case, model="lumped", scheme=chosen.name, wall_time_s=0.0, status="running",
-                       dt=h, dt_case=sim.dt, axial_period=info.axial_period, mass_matrix=sim.mass_matrix,
+                       dt=h, dt_case=sim.dt if sim.dt is not None else "", axial_period=info.axial_period, mass_matrix=sim.mass_matrix,
                        **{f"scheme_{k}": v for k, v in chosen.parameters().items()})
     stream = ResultStream(output_path, static_dataset(net, attrs), TIME_VARS,
                           resume_at=outputs if resume else None)

@@ -188,6 +188,11 @@ def check_time_steps(case: Case, out: Findings) -> None:
     sim = case.simulation
     if sim is None:
         return
+    if sim.dt is None:
+        if case.model == "continuum":
+            out.error(("simulation", "dt"), "the continuum model needs a time step dt [s] (e.g. 1.0 for a "
+                      "1000 m tow; the lumped model is the one that can choose its own)")
+        return
     if sim.dt > sim.duration:
         out.error(("simulation", "dt"), f"dt {fmt(sim.dt)} s is longer than the duration "
                   f"{fmt(sim.duration)} s")

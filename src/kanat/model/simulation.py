@@ -6,6 +6,12 @@ from typing import Literal
 from ._base import KanatModel, quantity
 
 
+DEFAULT_OUTPUT_DT = 1.0
+"""Stored interval [s] when neither ``output_dt`` nor ``dt`` is given."""
+DEFAULT_IMPLICIT_DT = 0.1
+"""Step [s] of the lumped implicit scheme when the case gives no ``dt`` (at most the output interval)."""
+
+
 class Simulation(KanatModel):
     """How long and how finely to integrate, and with which scheme.
 
@@ -20,10 +26,13 @@ class Simulation(KanatModel):
         Weight of the generalized trapezoidal scheme, in [1/2, 1].
     duration : float
         Simulated time [s].
-    dt : float
-        Time step [s].
+    dt : float or None
+        Time step [s]. The continuum model needs it. The lumped model may go without: its
+        explicit schemes then step at their safe step, its implicit scheme at
+        :data:`DEFAULT_IMPLICIT_DT` (at most the output interval).
     output_dt : float or None
-        Interval between stored results [s]; None: every step.
+        Interval between stored results [s]; None: every step, or :data:`DEFAULT_OUTPUT_DT`
+        when ``dt`` is not given either.
     dimensions : {2, 3, "auto"}
         Planar (x-z) or spatial model; ``auto`` picks 2 when everything stays in the
         x-z plane.
@@ -40,7 +49,7 @@ class Simulation(KanatModel):
     lambda_inf: float = quantity(-0.5, unit="-", ge=-1, le=0)
     gamma: float | None = quantity(None, unit="-", ge=0.5, le=1)
     duration: float = quantity(unit="s", gt=0)
-    dt: float = quantity(unit="s", gt=0)
+    dt: float | None = quantity(None, unit="s", gt=0)
     output_dt: float | None = quantity(None, unit="s", gt=0)
     dimensions: Literal[2, 3, "auto"] = "auto"
     frame_pole: str = "auto"
@@ -49,5 +58,12 @@ class Simulation(KanatModel):
 
     @property
     def output_interval(self) -> float:
-        """``output_dt`` if given, else ``dt`` [s]."""
-        return self.output_dt if self.output_dt is not None else self.dt
+        """``output_dt`` if given, else ``dt``, else :data:`DEFAULT_OUTPUT_DT` [s]."""
+        if self.output_dt is not None:
+            return self.output_dt
+        return self.dt if self.dt is not None else DEFAULT_OUTPUT_DT
+
+    @property
+    def step_or_default(self) -> float:
+        """``dt`` if given, else the default step of implicit lumped runs [s]."""
+        return self.dt if self.dt is not None else min(self.output_interval, DEFAULT_IMPLICIT_DT)
