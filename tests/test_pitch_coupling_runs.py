@@ -137,3 +137,28 @@ def test_compare_modes_refuses_a_case_without_vessel_pitch(tmp_path):
     case = EXAMPLE.model_copy(update={"vessel": EXAMPLE.vessel.model_copy(update={"pitch": None})})
     with pytest.raises(KanatError, match="no vessel.pitch block"):
         compare_modes(case, tmp_path)
+
+
+def test_lumped_tow_sees_the_vessel_pitch(tmp_path):
+    """The lumped model's tow point rises and falls with the pitch (x sin(pitch) at the stern)."""
+    import numpy as np
+
+    import kanat.lumped
+    from kanat.io import parse_case
+    from kanat.io.results import read_result
+    from kanat.vessel.pitch_motion import pitch_motion
+
+    text = EXAMPLE_PATH.read_text().replace("model: continuum", "model: lumped")
+    text = text.replace("segments: 100", "segments: 20")
+    lines = [line for line in text.splitlines() if not line.strip().startswith(("scheme:", "duration:"))]
+    text = "\n".join(lines).replace("simulation:", "simulation:\n  scheme: generalized-alpha-lumped\n  duration: 20")
+    case = parse_case(text)
+    summary = kanat.lumped.run(case, tmp_path / "r.nc")
+    assert summary.status == "ok", summary.status
+    ds = read_result(tmp_path / "r.nc")
+    motion = pitch_motion(case.vessel.pitch)
+    angle = np.array([motion(t)[0] for t in ds.time.values])
+    arm = np.asarray(case.vessel.tow_point)
+    expected = arm[0] * np.sin(angle) + arm[2] * np.cos(angle)
+    np.testing.assert_allclose(ds.vessel_position.values[:, 2], expected, atol=1e-9)
+    assert np.ptp(expected) > 0.5          # rectangular stabilizer: about 1 m of heave at the stern

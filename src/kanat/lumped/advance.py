@@ -85,6 +85,11 @@ def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
         position[:] = np.asarray(system.case.vessel.tow_point, float)
         velocity[:], heading[:] = 0.0, 0.0
         return position, velocity, heading
+    if system.track.pitch is not None:        # the compiled phase table knows no pitch: ask the track
+        for i, t in enumerate(times):
+            s = system.track.state(t)
+            position[i], velocity[i], heading[i] = s.position, s.velocity, s.heading
+        return position, velocity, heading
     fast.track_states(times, _phase_table(system), system.track.tow_point, position, velocity, heading)
     return position, velocity, heading
 
