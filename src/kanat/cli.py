@@ -274,5 +274,10 @@ def _statics(loaded, case: Path, output: Path, plot: Optional[Path], method: str
     out.print(f"wrote {output}" + (f" and {plot}" if plot is not None else ""))
 
 
+from kanat.cli_study import register  # noqa: E402 - the study verbs: sweep, report, validate-suite
+
+register(app)
+
+
 if __name__ == "__main__":  # python -m kanat.cli
     app()

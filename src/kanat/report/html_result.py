@@ -1,0 +1,239 @@
+"""The HTML report of one result file (``kanat report RESULT.nc -o report.html``).
+
+Sections for a dynamic result: summary and provenance; statistics at the chosen nodes and
+bodies; time histories; range graphs along every cable; snap events; tension spectra;
+body depth excursions; the animated 3-D view. Statics and pitch results get their own
+short pages (shape and tension; pitch per mode).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from kanat.analysis import (body_depth_excursions, body_statistics, cable_names, first_nodes, has_events,
+                            node_statistics, range_graph, select_nodes, snap_events, snap_summary,
+                            statistic_units, summary_statistics, tension_spectrum, time_window)
+from kanat.errors import KanatError
+from kanat.report.html import Page, fmt, frame_table, table_html
+from kanat.report.html_animation import animation_section, thin
+
+MAX_HISTORY_POINTS = 5000
+"""Samples per time-history trace (evenly thinned beyond)."""
+EVENT_ROWS = 200
+
+
+def default_nodes(ds: xr.Dataset) -> np.ndarray:
+    """The first and last node of every cable."""
+    cables = ds["cable"].values
+    last = [int(np.flatnonzero(cables == name)[-1]) for name in cable_names(ds)]
+    return np.unique(np.concatenate([first_nodes(ds), last]))
+
+
+def _label(ds: xr.Dataset, i: int) -> str:
+    return f"node {i} ({ds['cable'].values[i]}, s = {ds['s'].values[i]:.4g} m)"
+
+
+def _provenance(ds: xr.Dataset, source: str) -> str:
+    rows = [("file", source)] + [(k, v) for k, v in ds.attrs.items()]
+    dims = ", ".join(f"{d} = {n}" for d, n in ds.sizes.items())
+    status = str(ds.attrs.get("status", ""))
+    badge = "ok" if status == "ok" else "failed"
+    return (f'<p>status: <span class="{badge}">{fmt(status)}</span>; dimensions: {dims}</p>'
+            + table_html(["attribute", "value"], rows, text_columns=("attribute", "value")))
+
+
+def _summary_table(ds: xr.Dataset, window) -> str:
+    stats = summary_statistics(ds, window)
+    rows = [(name, value, statistic_units(name)) for name, value in stats.items()]
+    return table_html(["statistic", "value", "units"], rows, text_columns=("statistic", "units"))
+
+
+def _statistics_tables(ds: xr.Dataset, nodes, window) -> str:
+    stats = node_statistics(ds, "tension", nodes, window)
+    rows = [(_label(ds, int(i)), *(stats[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
+            for j, i in enumerate(stats["node"].values)]
+    out = "<h3>tension at the chosen nodes [N]</h3>" + table_html(
+        ["node", "min", "max", "mean", "std", "MPM"], rows, text_columns=("node",))
+    bodies = body_statistics(ds, window)
+    if "body" in bodies.coords:
+        rows = [(str(b), *(bodies[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
+                for j, b in enumerate(bodies["body"].values)]
+        out += "<h3>body depth [m]</h3>" + table_html(["body", "min", "max", "mean", "std", "MPM"], rows,
+                                                       text_columns=("body",))
+    span = stats.attrs["window"]
+    return out + (f'<p class="note">window {span[0]:g} to {span[1]:g} s. MPM: Rayleigh most-probable maximum '
+                  "of a narrow-band process, mean + std &middot; sqrt(2 ln N), N the zero up-crossings in the "
+                  "window (kanat.analysis.statistics).</p>")
+
+
+def _histories(page: Page, ds: xr.Dataset, nodes) -> str:
+    import plotly.graph_objects as go
+    from plotly.subplots import make_subplots
+
+    keep = thin(ds.sizes["time"], MAX_HISTORY_POINTS)
+    t = ds["time"].values[keep]
+    tension = go.Figure()
+    for i in nodes:
+        tension.add_trace(go.Scatter(x=t, y=ds["tension"].values[keep, i] / 1e3, name=_label(ds, int(i)),
+                                     mode="lines"))
+    tension.update_layout(title={"text": "tension at the chosen nodes"}, xaxis_title="time [s]",
+                          yaxis_title="tension [kN]", height=400)
+    html = page.figure(tension, "plot-tension-history")
+    motion = make_subplots(rows=1, cols=2, subplot_titles=("body depth [m]", "vessel speed over ground [m/s]"))
+    for k, name in enumerate(ds["body"].values if ds.sizes.get("body", 0) else []):
+        motion.add_trace(go.Scatter(x=t, y=-ds["body_position"].values[keep, k, 2], name=f"{name} depth"), 1, 1)
+    v = ds["vessel_position"].values
+    speed = np.hypot(*np.gradient(v[:, :2], ds["time"].values, axis=0).T) if len(v) > 1 else np.zeros(len(v))
+    motion.add_trace(go.Scatter(x=t, y=speed[keep], name="vessel speed"), 1, 2)
+    motion.update_yaxes(autorange="reversed", row=1, col=1)
+    motion.update_xaxes(title_text="time [s]")
+    motion.update_layout(height=380)
+    return html + page.figure(motion, "plot-body-history")
+
+
+def _range_graphs(page: Page, ds: xr.Dataset, window) -> str:
+    import plotly.graph_objects as go
+
+    rg = range_graph(ds, "tension", window)
+    fig = go.Figure()
+    for k, name in enumerate(cable_names(ds)):
+        sel = rg["cable"].values == name
+        s, color = rg["s"].values[sel], f"hsl({(210 + 67 * k) % 360},60%,40%)"
+        fig.add_trace(go.Scatter(x=s, y=rg["max"].values[sel] / 1e3, name=f"{name} max", line={"color": color},
+                                 legendgroup=name))
+        fig.add_trace(go.Scatter(x=s, y=rg["min"].values[sel] / 1e3, name=f"{name} min", fill="tonexty",
+                                 line={"color": color, "dash": "dot"}, legendgroup=name))
+        fig.add_trace(go.Scatter(x=s, y=rg["mean"].values[sel] / 1e3, name=f"{name} mean",
+                                 line={"color": color, "width": 1}, legendgroup=name))
+    fig.update_layout(title={"text": "tension range along the cables"}, xaxis_title="s, arclength in its cable [m]",
+                      yaxis_title="tension [kN]", height=420)
+    return page.figure(fig, "plot-range-graph")
+
+
+def _events(page: Page, ds: xr.Dataset, window) -> str:
+    import plotly.graph_objects as go
+
+    if not has_events(ds):
+        return '<p class="note">This result records no snap events (the continuum model keeps its cables taut; ' \
+               "snap loads are the lumped model's).</p>"
+    events = snap_events(ds, window)
+    if not len(events):
+        return "<p>No snap event (slack &rarr; taut) in the window.</p>"
+    fig = go.Figure(go.Scatter(x=events["time"], y=events["peak_tension"] / 1e3, mode="markers",
+                               text=events["cable"], marker={"size": 7, "color": events["segment"],
+                                                             "colorscale": "Viridis", "showscale": True,
+                                                             "colorbar": {"title": {"text": "segment"}}}))
+    fig.update_layout(title={"text": f"{len(events)} snap events"}, xaxis_title="time [s]",
+                      yaxis_title="peak tension [kN]", height=380)
+    return (page.figure(fig, "plot-snap-events") + "<h3>per cable</h3>"
+            + frame_table(snap_summary(ds, window).set_index("cable"), text_columns=("cable",))
+            + "<h3>events</h3>" + frame_table(events, text_columns=("cable",), limit=EVENT_ROWS))
+
+
+def _spectra(page: Page, ds: xr.Dataset, nodes, window) -> str:
+    import plotly.graph_objects as go
+
+    spectrum = tension_spectrum(ds, nodes, window)
+    fig = go.Figure()
+    for j, i in enumerate(spectrum["node"].values):
+        fig.add_trace(go.Scatter(x=spectrum["frequency"].values[1:], y=spectrum["psd"].values[1:, j],
+                                 name=_label(ds, int(i))))
+    fig.update_layout(title={"text": "tension spectra (Welch)"}, xaxis_title="frequency [Hz]",
+                      yaxis_title="PSD [N²/Hz]", yaxis_type="log", height=380)
+    return page.figure(fig, "plot-spectra") + (f'<p class="note">Hann segments of {spectrum.attrs["segment_s"]:g} s, '
+                                               "half overlap, mean removed (kanat.analysis.spectra).</p>")
+
+
+def _excursions(ds: xr.Dataset, window) -> str:
+    ex = body_depth_excursions(ds, window)
+    if not ex.sizes.get("body", 0):
+        return "<p>No bodies.</p>"
+    frame = ex.to_dataframe()
+    frame.index = frame.index.astype(str)
+    return frame_table(frame, text_columns=("body",)) + '<p class="note">depths in m, times in s.</p>'
+
+
+def select_bodies(ds: xr.Dataset, bodies) -> xr.Dataset:
+    """The result restricted to the named bodies (all when None)."""
+    if bodies is None or not ds.sizes.get("body", 0):
+        return ds
+    names = [str(b) for b in ds["body"].values]
+    unknown = [b for b in bodies if b not in names]
+    if unknown:
+        raise KanatError(f"no body {', '.join(map(repr, unknown))} in this result; "
+                         f"bodies: {', '.join(names) or 'none'}")
+    return ds.isel(body=[names.index(b) for b in bodies])
+
+
+def dynamic_page(ds: xr.Dataset, source: str, nodes=None, window=None, bodies=None) -> Page:
+    """The report page of a dynamic result (``bodies``: names for the body plots and tables)."""
+    index = default_nodes(ds) if nodes is None else select_nodes(ds, nodes)
+    window = None if window is None else tuple(window)
+    chosen = select_bodies(ds, bodies)
+    part = time_window(chosen, window)
+    page = Page(f"kanat report: {ds.attrs.get('case_name', '') or Path(source).stem}",
+                f"{ds.attrs.get('model', '')} model, scheme {ds.attrs.get('scheme', '')}, "
+                f"{float(ds['time'].values[-1]):g} s simulated")
+    page.section("summary", "Case summary and provenance", _provenance(ds, source))
+    page.section("statistics", "Statistics", _summary_table(ds, window) + _statistics_tables(chosen, index, window))
+    page.section("histories", "Time histories", _histories(page, part, index))
+    page.section("range", "Range graphs", _range_graphs(page, ds, window))
+    page.section("events", "Snap events", _events(page, ds, window))
+    if part.sizes["time"] >= 16:
+        page.section("spectra", "Tension spectra", _spectra(page, ds, index, window))
+    page.section("excursions", "Body depth excursions", _excursions(chosen, window))
+    page.section("animation", "3-D view", animation_section(page, ds))
+    return page
+
+
+def static_page(ds: xr.Dataset, source: str) -> Page:
+    """The report page of a statics or pitch result (no time)."""
+    import plotly.graph_objects as go
+
+    page = Page(f"kanat report: {ds.attrs.get('case_name', '') or Path(source).stem}", f"{ds.attrs.get('model', '')}")
+    page.section("summary", "Case summary and provenance", _provenance(ds, source))
+    if "pitch" in ds and "mode" in ds.dims:
+        fig = go.Figure([go.Scatter(x=ds["time"].values, y=ds["pitch"].values[k], name=str(m))
+                         for k, m in enumerate(ds["mode"].values)])
+        fig.update_layout(title={"text": "steady pitch over one wave period"}, xaxis_title="time [s]",
+                          yaxis_title="pitch [rad]")
+        page.section("pitch", "Pitch", page.figure(fig, "plot-pitch"))
+    elif "position" in ds and "tension" in ds:
+        fig = go.Figure()
+        for name in cable_names(ds):
+            sel = ds["cable"].values == name
+            fig.add_trace(go.Scatter(x=ds["position"].values[sel, 0], y=ds["position"].values[sel, 2],
+                                     name=f"{name}", text=[f"T = {t:.4g} N" for t in ds["tension"].values[sel]]))
+        fig.update_layout(title={"text": "shape (hover: tension)"}, xaxis_title="x [m]", yaxis_title="z [m]",
+                          yaxis_scaleanchor="x")
+        page.section("shape", "Shape and tension", page.figure(fig, "plot-shape"))
+    stats = pd.Series(summary_statistics(ds))
+    page.section("statistics", "Summary", frame_table(stats.to_frame("value"), text_columns=("index",)))
+    return page
+
+
+def result_report(ds: xr.Dataset, output, source: str = "", nodes=None, window=None, bodies=None) -> Path:
+    """Write the HTML report of one result.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A result (case-format.md).
+    output : path-like
+        The HTML file.
+    source : str
+        Where the result came from (shown in the provenance).
+    nodes : sequence of int or str, optional
+        Nodes for time histories, statistics and spectra (indices or ``CABLE@S``);
+        default the first and last node of every cable.
+    window : (float or None, float or None), optional
+        Time window of the statistics, range graphs, spectra and events [s].
+    bodies : sequence of str, optional
+        Bodies for the depth histories and tables; default every body.
+    """
+    page = dynamic_page(ds, source, nodes, window, bodies) if "time" in ds.dims and "position" in ds \
+        else static_page(ds, source)
+    return page.write(output)

@@ -1,0 +1,60 @@
+"""The validation report page (``kanat validate-suite -o validation.html``).
+
+One row per check: SPEC §7 case, what is checked, the oracle and its source, the
+tolerance, the measured and expected values, pass/fail and the time taken; a plot of each
+check's error as a fraction of its tolerance; the §7 cases left out of the fast suite.
+"""
+from __future__ import annotations
+
+import html
+
+import numpy as np
+
+from kanat.report.html import Page, table_html
+
+
+def _spec_key(result) -> tuple:
+    return tuple(int(p) for p in result.spec.split(".") if p.isdigit())
+
+
+def _usage(result) -> float:
+    """|measured - expected| as a fraction of the allowed deviation (<= 1 passes)."""
+    allowed = result.tolerance.abs + result.tolerance.rel * abs(result.expected)
+    if result.error or not np.isfinite(result.measured):
+        return float("nan")
+    deviation = abs(result.measured - result.expected)
+    return deviation / allowed if allowed > 0 else (0.0 if deviation == 0 else float("inf"))
+
+
+def validation_report(results, output):
+    """Write the validation page for ``results`` (:class:`kanat.validation.CheckResult` list)."""
+    import plotly.graph_objects as go
+
+    from kanat.validation.core import NOT_IN_SUITE
+
+    results = sorted(results, key=_spec_key)
+    passed = sum(r.passed for r in results)
+    page = Page("kanat validation report", f"{passed} of {len(results)} checks pass (SPEC §7, fast suite)")
+    rows = [(f"§{r.spec}", r.check_id, r.title, r.oracle, str(r.tolerance), r.units,
+             r.measured if not r.error else r.error.splitlines()[0], r.expected, "pass" if r.passed else "FAIL",
+             r.seconds) for r in results]
+    header = ["SPEC", "check", "what", "oracle (source)", "tolerance", "units", "measured", "expected", "result",
+              "time [s]"]
+    page.section("checks", "Checks", table_html(header, rows, text_columns=("SPEC", "check", "what",
+                                                                           "oracle (source)", "tolerance", "units")))
+    usage = [_usage(r) for r in results]
+    fig = go.Figure(go.Bar(x=[r.check_id for r in results], y=[u if np.isfinite(u) else None for u in usage],
+                           marker={"color": ["#137333" if r.passed else "#b3261e" for r in results]}))
+    fig.add_hline(y=1.0, line_dash="dash", annotation_text="tolerance")
+    fig.update_layout(title={"text": "deviation from the oracle as a fraction of the tolerance"},
+                      yaxis_type="log", yaxis_title="|measured - expected| / allowed", height=420)
+    page.section("margins", "Margins", page.figure(fig, "plot-validation-margins")
+                 + '<p class="note">Bars at zero deviation are not drawn on the log axis.</p>')
+    failures = [r for r in results if r.error]
+    if failures:
+        page.section("errors", "Checks that could not run", "".join(
+            f"<h3>{html.escape(r.check_id)}</h3><pre>{html.escape(r.error)}</pre>" for r in failures))
+    page.section("not-run", "SPEC §7 cases not in the fast suite",
+                 table_html(["SPEC", "case", "checked by"], [(f"§{a}", b, c) for a, b, c in NOT_IN_SUITE],
+                            text_columns=("SPEC", "case", "checked by")))
+    return page.write(output)

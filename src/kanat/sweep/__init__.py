@@ -1,0 +1,134 @@
+"""Parameter studies: a base case, keys to vary and their values, every combination run.
+
+Public API
+----------
+sweep(case, vary, out_dir, scheduler=None, workers=None, progress=None, window=None) -> StudyResult
+    Run a study (cartesian product of the values) on Dask distributed; resume a killed one.
+plan_study(case, vary) -> StudyPlan
+    The cases of a study, validated, without running them.
+parse_values(spec, key="") -> list
+    The value syntax: ``4,6,8``, ``4:8:2``, ``linspace(a,b,n)``, ``uniform(a,b,n,seed)``,
+    ``normal(mean,std,n,seed)`` (:mod:`.values`).
+read_summary(path) -> (Dataset, keys, statistics)
+    A study's summary table (:mod:`.store` describes the directory).
+
+Example
+-------
+>>> from kanat.sweep import sweep
+>>> result = sweep("examples/speed_step_2d.yaml",
+...                {"vessel.track[1].to_speed_kn": "8:12:2", "cables[0].length": [800, 1000]},
+...                "study/", workers=2)                                    # doctest: +SKIP
+>>> result.summary["top_tension_max"]                                     # doctest: +SKIP
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import xarray as xr
+
+from kanat.sweep.engine import run_case, run_dask, run_serial
+from kanat.sweep.plan import CaseSpec, StudyPlan, plan_study
+from kanat.sweep.progress import StudyProgress, rich_progress
+from kanat.sweep.store import StudyStore, read_summary, summary_dataset
+from kanat.sweep.values import parse_values
+
+__all__ = ["CaseSpec", "StudyPlan", "StudyProgress", "StudyResult", "parse_values", "plan_study", "read_summary",
+           "run_case", "summary_dataset", "sweep"]
+
+
+@dataclass
+class StudyResult:
+    """What a study did.
+
+    Attributes
+    ----------
+    out_dir : pathlib.Path
+    summary : xarray.Dataset
+        One row per case (:mod:`kanat.sweep.store`).
+    ran, skipped, failed : int
+        Cases run now, cases already finished before (resume), and failed cases (in all).
+    """
+
+    out_dir: object
+    summary: xr.Dataset
+    ran: int
+    skipped: int
+    failed: int
+
+    @property
+    def total(self) -> int:
+        return self.summary.sizes.get("case", 0)
+
+
+def sweep(case, vary: dict, out_dir, scheduler=None, workers: int | None = None, progress=None,
+          window=None) -> StudyResult:
+    """Run a parameter study.
+
+    Parameters
+    ----------
+    case : path-like, kanat.model.Case or dict
+        The base case; key paths are in case-file terms (``vessel.track[1].to_speed_kn``).
+    vary : dict of str to values
+        Key path -> list of values, or text in the syntax of :mod:`kanat.sweep.values`.
+        Every combination is a case (the first key varies slowest).
+    out_dir : path-like
+        Study directory (created; an existing one of the same study is resumed: finished
+        cases are skipped).
+    scheduler : None, "serial", str or distributed.Client
+        None: an in-process Dask ``LocalCluster``; ``"serial"``: no Dask, one case after
+        another here; an address: that Dask cluster; a Client: use it.
+    workers : int, optional
+        Worker processes of the local cluster (default: every core).
+    progress : callable, True or None
+        ``progress(StudyProgress)`` after each finished case; True draws a rich bar.
+    window : (float or None, float or None), optional
+        Time window of the summary statistics [s].
+
+    Returns
+    -------
+    StudyResult
+
+    Raises
+    ------
+    KanatError or CaseError
+        For a study that cannot start (bad key path or values, no valid case, another
+        study in ``out_dir``). A case that fails never raises: it is recorded.
+    """
+    plan = plan_study(case, vary)
+    store = StudyStore(out_dir)
+    store.prepare(plan)
+    done = store.finished()
+    todo = [c for c in plan.cases if c.name not in done]
+    state = StudyProgress(total=len(plan.cases), done=len(done),
+                          failed=sum(r["status"] != "ok" for r in done.values()))
+    specs = {c.name: c for c in plan.cases}
+    reporter = rich_progress(state) if progress is True else None
+    callback = reporter.update if reporter is not None else progress
+
+    def on_done(name: str, outcome: dict) -> None:
+        spec = specs[name]
+        record = {"index": spec.index, "name": name, "parameters": spec.parameters,
+                  "result": str(store.result_file(name).relative_to(store.root)), **outcome}
+        store.record(record)
+        store.write_summary(plan)
+        if record["status"] == "ok":                 # finished: its checkpoint is no longer needed
+            store.checkpoint_file(name).unlink(missing_ok=True)
+        state.finish(record)
+        if callback is not None:
+            callback(state)
+
+    for spec in [c for c in todo if c.error]:        # invalid variants: recorded, never run
+        on_done(spec.name, {"status": "failed", "message": spec.error, "statistics": {}, "wall_time_s": 0.0})
+    jobs = [(c.name, (c.text, f"{plan.base} [{c.name}]", str(store.result_file(c.name)), window))
+            for c in todo if not c.error]
+    try:
+        if reporter is not None:
+            reporter.start()
+        if jobs:
+            (run_serial(jobs, on_done) if scheduler == "serial" else
+             run_dask(jobs, on_done, scheduler=scheduler, workers=workers))
+    finally:
+        if reporter is not None:
+            reporter.stop()
+    summary = store.write_summary(plan)
+    return StudyResult(store.root, summary, ran=len(todo), skipped=len(done), failed=state.failed)
