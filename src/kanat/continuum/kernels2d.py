@@ -42,8 +42,10 @@ LOWER = UPPER = 5      # bandwidths of the Jacobian
 @njit(cache=True)
 def _law_segment(T, p):
     n = int(p[LAW])
-    i = np.searchsorted(p[LAW + 1:LAW + 1 + n], T.real) - 1
-    i = min(max(i, 0), n - 2)
+    i = 0
+    if n > 2:                                  # a linear law (two knots) needs no search
+        i = np.searchsorted(p[LAW + 1:LAW + 1 + n], T.real) - 1
+        i = min(max(i, 0), n - 2)
     t0, t1 = p[LAW + 1 + i], p[LAW + 2 + i]
     e0, e1 = p[LAW + 1 + n + i], p[LAW + 2 + n + i]
     return t0, e0, (e1 - e0) / (t1 - t0)

@@ -88,26 +88,30 @@ def stiffness_times(y, g, out):
 
 @njit(cache=True)
 def mass_matrix(y, p, out):
-    """``out = M(y)`` (6, 6)."""
-    r = np.zeros(6)
-    col = np.empty(6)
-    for q in range(6):
-        r[:] = 0.0
-        r[q] = 1.0
-        mass_times(y, r, p, col)
-        out[:, q] = col
+    """``out = M(y)`` (6, 6), the rows of :func:`mass_times` written out (one law lookup)."""
+    m, mn = p[M], p[M] + p[MA]
+    cp, sp = np.cos(y[4]), np.sin(y[4])
+    stretch = 1.0 + strain(y[0], p)
+    out[:, :] = 0.0
+    out[0, 1], out[0, 4], out[0, 5] = m, -m * y[2], m * y[3] * cp
+    out[1, 2], out[1, 4], out[1, 5] = mn, mn * y[1], -mn * y[3] * sp
+    out[2, 3], out[2, 5] = mn, mn * (-y[1] * cp + y[2] * sp)
+    out[3, 0] = compliance(y[0], p)
+    out[4, 4] = stretch
+    out[5, 5] = -stretch * cp
 
 
 @njit(cache=True)
 def stiffness_matrix(y, out):
-    """``out = K(y)`` (6, 6)."""
-    g = np.zeros(6)
-    col = np.empty(6)
-    for q in range(6):
-        g[:] = 0.0
-        g[q] = 1.0
-        stiffness_times(y, g, col)
-        out[:, q] = col
+    """``out = K(y)`` (6, 6), the rows of :func:`stiffness_times` written out."""
+    cp, sp = np.cos(y[4]), np.sin(y[4])
+    out[:, :] = 0.0
+    out[0, 0] = -1.0
+    out[1, 4] = -y[0]
+    out[2, 5] = y[0] * cp
+    out[3, 1], out[3, 4], out[3, 5] = -1.0, y[2], -y[3] * cp
+    out[4, 2], out[4, 4], out[4, 5] = -1.0, -y[1], y[3] * sp
+    out[5, 3], out[5, 5] = -1.0, y[1] * cp - y[2] * sp
 
 
 @njit(cache=True)
