@@ -73,7 +73,7 @@ def test_resume_gives_the_same_answer_as_an_uninterrupted_run(scheme, tmp_path):
 
 
 def test_resume_refuses_a_changed_case(tmp_path):
-    run(tow_case("rk4", duration=1.0), tmp_path / "r.nc")
+    run(tow_case("rk4", duration=1.0), tmp_path / "r.nc", checkpoint_every=1, stop_after=0.5)   # killed
     with pytest.raises(KanatError, match="different case"):
         run(tow_case("rk4", duration=2.0), tmp_path / "r.nc", resume=True)
 

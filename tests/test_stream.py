@@ -58,3 +58,14 @@ def test_checkpoint_refuses_another_case_and_a_missing_file(tmp_path):
     Checkpoint(0.0, 1, "abc", {}, {}).save(path)
     with pytest.raises(KanatError, match="different case"):
         Checkpoint.load(path, "xyz")
+
+
+def test_a_finished_run_removes_its_checkpoint_a_failed_one_keeps_it(tmp_path):
+    for status, kept in (("ok", False), ("Newton did not converge", True)):
+        path = tmp_path / f"{kept}.nc"
+        stream = ResultStream(path, static(), TIME_VARS)
+        stream.append(0.0, tension=np.zeros(4), position=np.zeros((4, 3)))
+        stream.flush()
+        Checkpoint(0.0, 1, "abc", {}, {}).save(path)
+        stream.close(status)
+        assert Checkpoint.path_for(path).exists() == kept

@@ -111,11 +111,17 @@ class ResultStream:
         self._file._h5file.flush()
 
     def close(self, status: str = "ok", **attrs) -> None:
-        """Write what is buffered, record the final status and attributes, and close the file."""
+        """Write what is buffered, record the final status and attributes, and close the file.
+
+        A run closed with ``ok`` needs no resuming, so its checkpoint is removed; an interrupted
+        or failed run keeps it for ``--resume``.
+        """
         self.flush()
         for key, value in {"status": status, **attrs}.items():
             self._file.attrs[key] = _netcdf_attr(value)
         self._file.close()
+        if status == "ok":
+            Checkpoint.path_for(self.path).unlink(missing_ok=True)
 
 
 @dataclass(frozen=True)
