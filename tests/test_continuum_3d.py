@@ -9,7 +9,7 @@ from kanat.continuum.chart import choose_chart, frames, rechart
 from kanat.continuum.models import SpatialModel
 from kanat.continuum.run import run
 from kanat.continuum.schemes import GeneralizedAlpha
-from kanat.continuum.spatial import SpatialState, positions3, step3
+from kanat.continuum.spatial import SpatialState, step3
 from kanat.io import parse_case
 from kanat.io.results import read_result
 

@@ -6,7 +6,7 @@ second end is a body, an anchor or free.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -49,8 +49,39 @@ class EndCondition:
                          0.5 * density * self.drag_area, self.force[0], self.force[1]])
 
 
+class CableGrid:
+    """What the planar and the spatial cable share: the grid of nodes and the current profile.
+
+    Subclasses have ``length``, ``segments``, ``current_z`` (ascending heights, m) and
+    ``current_rows`` (the current at those heights, one column per component, m/s).
+    """
+
+    @property
+    def ds(self) -> float:
+        """Unstretched segment length [m]."""
+        return self.length / self.segments
+
+    @property
+    def s(self) -> np.ndarray:
+        """Unstretched arclength of the nodes [m], shape (N+1,)."""
+        return np.linspace(0.0, self.length, self.segments + 1)
+
+    def current_at(self, z) -> np.ndarray:
+        """Current at heights ``z`` (n,): linear between rows, constant beyond -> (n, components)."""
+        return np.column_stack([np.interp(z, self.current_z, column) for column in self.current_rows.T])
+
+
+def current_table(case):
+    """The case's current as ``(heights ascending (k,), rows (k, 3))`` [m, m/s] (one row if uniform)."""
+    current = case.environment.current
+    if current.profile is None:
+        return np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
+    table = np.asarray(current.profile, dtype=float)[::-1]
+    return table[:, 0], table[:, 1:4]
+
+
 @dataclass(frozen=True)
-class PlanarCable:
+class PlanarCable(CableGrid):
     """A planar cable ready for the kernels.
 
     Attributes
@@ -62,7 +93,7 @@ class PlanarCable:
     params : ndarray, shape (kernels2d.NPAR,)
         Physical parameters; scheme entries are filled per step.
     start, end : EndCondition
-    current_z, current_xz : ndarray
+    current_z, current_rows : ndarray
         Current profile: heights (ascending) [m] and (u_x, u_z) rows [m/s].
     """
 
@@ -73,24 +104,7 @@ class PlanarCable:
     start: EndCondition
     end: EndCondition
     current_z: np.ndarray = field(default_factory=lambda: np.zeros(1))
-    current_xz: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))
-
-    @property
-    def ds(self) -> float:
-        return self.length / self.segments
-
-    @property
-    def s(self) -> np.ndarray:
-        return np.linspace(0.0, self.length, self.segments + 1)
-
-    def current_at(self, z) -> np.ndarray:
-        """Current ``(u_x, u_z)`` at heights ``z`` (n,) -> (n, 2)."""
-        return np.column_stack([np.interp(z, self.current_z, self.current_xz[:, i]) for i in range(2)])
-
-    def with_segments(self, segments: int) -> PlanarCable:
-        params = self.params.copy()
-        params[k.DS] = self.length / segments
-        return replace(self, segments=segments, params=params)
+    current_rows: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))
 
 
 def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds,
@@ -156,12 +170,7 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                    cable.length / cable.segments, law)
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
-    current = env.current
-    if current.profile is None:
-        z, rows = np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
-    else:
-        table = np.asarray(current.profile, dtype=float)[::-1]
-        z, rows = table[:, 0], table[:, 1:4]
+    z, rows = current_table(case)
     if check_plane:
         _planar_or_refuse(case, rows)
     return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])

@@ -12,7 +12,7 @@ import numpy as np
 from kanat.continuum.chart import angles, choose_chart, frames
 from kanat.continuum.drive import Drive
 from kanat.continuum.model2d import _end as planar_end
-from kanat.continuum.model2d import planar_cable, positions
+from kanat.continuum.model2d import current_table, planar_cable, positions
 from kanat.continuum.spatial import SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.stepper import State, steady, step
 from kanat.errors import CaseError
@@ -143,7 +143,6 @@ def spatial_cable(case) -> SpatialCable:
     """The spatial model of a case's single cable (same rules as :func:`model2d.planar_cable`)."""
     planar = planar_cable(case, check_plane=False)    # validates the ends and builds the parameters
     cable = case.cables[0]
-    env = case.environment
 
     def end(e, key, first):
         kind = planar_end(case, e, key, first).kind
@@ -157,12 +156,7 @@ def spatial_cable(case) -> SpatialCable:
                               tuple(body.force))
         return SpatialEnd(kind)
 
-    current = env.current
-    if current.profile is None:
-        z, rows = np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
-    else:
-        table = np.asarray(current.profile, dtype=float)[::-1]
-        z, rows = table[:, 0], table[:, 1:4]
+    z, rows = current_table(case)
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows)
 

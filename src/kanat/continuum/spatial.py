@@ -14,7 +14,7 @@ from scipy.linalg import solve_banded
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
-from kanat.continuum.model2d import strain_of
+from kanat.continuum.model2d import CableGrid, strain_of
 from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -40,7 +40,7 @@ class SpatialEnd:
 
 
 @dataclass(frozen=True)
-class SpatialCable:
+class SpatialCable(CableGrid):
     """A spatial cable ready for the kernels (see :class:`kanat.continuum.model2d.PlanarCable`)."""
 
     name: str
@@ -50,19 +50,7 @@ class SpatialCable:
     start: SpatialEnd
     end: SpatialEnd
     current_z: np.ndarray = field(default_factory=lambda: np.zeros(1))
-    current_xyz: np.ndarray = field(default_factory=lambda: np.zeros((1, 3)))
-
-    @property
-    def ds(self) -> float:
-        return self.length / self.segments
-
-    @property
-    def s(self) -> np.ndarray:
-        return np.linspace(0.0, self.length, self.segments + 1)
-
-    def current_at(self, z) -> np.ndarray:
-        """Global current (n, 3) at heights ``z`` (n,)."""
-        return np.column_stack([np.interp(z, self.current_z, self.current_xyz[:, i]) for i in range(3)])
+    current_rows: np.ndarray = field(default_factory=lambda: np.zeros((1, 3)))
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,6 @@
 """Statics checks (SPEC §7 cases 1, 4, 5): seed 001, the critical angle, the elastic catenary.
 
-The same comparisons as ``scripts/validation_statics.py`` and the statics tests, each
-reduced to one number against its oracle.
+The same comparisons as the statics tests, each reduced to one number against its oracle.
 """
 from __future__ import annotations
 
