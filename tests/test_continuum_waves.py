@@ -12,7 +12,8 @@ from scipy.optimize import brentq
 from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import EndCondition, PlanarCable, parameters
 from kanat.continuum.schemes import Box, GeneralizedAlpha
-from kanat.continuum.stepper import State, step
+from kanat.continuum.stepper import step
+from kanat.validation.checks_dynamics import straight_cable  # noqa: F401 - shared with the validation suite
 
 
 class StepDrive:
@@ -26,15 +27,6 @@ class StepDrive:
 
     def origin(self, t):
         return np.array([self.velocity[0] * t, self.velocity[1] * t])
-
-
-def straight_cable(length, segments, tension, stiffness=1e6, mass=1.0, added_mass=0.0, end=None):
-    p = parameters(mass, added_mass, 0.0, stiffness, 0.01, 0.0, 0.0, 1025.0, length / segments)
-    cable = PlanarCable("c", length, segments, p, EndCondition(k.VELOCITY), end or EndCondition(k.VELOCITY))
-    y = np.zeros((segments + 1, 4))
-    y[:, 0] = tension
-    xz = np.column_stack([cable.s * (1 + tension / stiffness), np.zeros(segments + 1)])
-    return cable, State(0.0, y, np.zeros_like(y), xz)
 
 
 def march(cable, state, drive, dt, steps, scheme):

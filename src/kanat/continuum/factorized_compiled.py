@@ -16,7 +16,7 @@ from numba import njit
 
 from kanat.continuum import kernels2d as k2
 from kanat.continuum import kernels3d as k3
-from kanat.continuum.factorized_kernels import sweep
+from kanat.continuum.factorized_kernels import lu_factor, lu_solve, sweep
 
 STEP = 1e-30
 ENDPAR = 10
@@ -69,48 +69,6 @@ def axes(y, dim):
         c, s = np.cos(y[3]), np.sin(y[3])
         a[0, 0], a[0, 1], a[1, 0], a[1, 1] = c, s, -s, c
     return a
-
-
-@njit(cache=True)
-def lu_factor(A, LU, piv):
-    """In-place LU with partial pivoting of a small ``A`` (d, d) into ``LU``, row order ``piv``."""
-    d = A.shape[0]
-    for i in range(d):
-        piv[i] = i
-        for j in range(d):
-            LU[i, j] = A[i, j]
-    for col in range(d):
-        pivot = col
-        for i in range(col + 1, d):
-            if abs(LU[i, col]) > abs(LU[pivot, col]):
-                pivot = i
-        if pivot != col:
-            for j in range(d):
-                LU[col, j], LU[pivot, j] = LU[pivot, j], LU[col, j]
-            piv[col], piv[pivot] = piv[pivot], piv[col]
-        inv = 1.0 / LU[col, col]
-        for i in range(col + 1, d):
-            LU[i, col] *= inv
-            f = LU[i, col]
-            if f != 0.0:
-                for j in range(col + 1, d):
-                    LU[i, j] -= f * LU[col, j]
-
-
-@njit(cache=True)
-def lu_solve(LU, piv, b, out):
-    """``out = A^-1 b`` from :func:`lu_factor`."""
-    d = b.shape[0]
-    for i in range(d):
-        acc = b[piv[i]]
-        for j in range(i):
-            acc -= LU[i, j] * out[j]
-        out[i] = acc
-    for i in range(d - 1, -1, -1):
-        acc = out[i]
-        for j in range(i + 1, d):
-            acc -= LU[i, j] * out[j]
-        out[i] = acc / LU[i, i]
 
 
 @njit(cache=True)

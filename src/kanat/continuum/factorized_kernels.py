@@ -41,6 +41,7 @@ def sweep(A, C, r, X0, forward):
     else:
         start, stop, step = n - 2, 0, -1
     work = np.empty((d, d))
+    piv = np.empty(d, dtype=np.int64)
     for i in range(start, stop, step):
         prev = X[i - step]
         for a in range(d):
@@ -48,42 +49,54 @@ def sweep(A, C, r, X0, forward):
             for b in range(d):
                 acc += C[i, a, b] * prev[b]
             rhs[a] = acc
-        solve_small(A[i], rhs, work, X[i])
+        lu_factor(A[i], work, piv)
+        lu_solve(work, piv, rhs, X[i])
     return X
 
 
 @njit(cache=True)
-def solve_small(A, b, work, out):
-    """``out = A^-1 b`` for a small dense ``A`` (d, d): Gaussian elimination with partial pivoting.
+def lu_factor(A, LU, piv):
+    """In-place LU with partial pivoting of a small ``A`` (d, d) into ``LU``, row order ``piv``.
 
-    ``work`` (d, d) is scratch; ``b`` is left untouched. Cheaper than a LAPACK call at d <= 6.
+    Hand-written for d <= 6: cheaper than a LAPACK call per node inside a compiled sweep.
     """
-    d = b.shape[0]
+    d = A.shape[0]
     for i in range(d):
-        out[i] = b[i]
+        piv[i] = i
         for j in range(d):
-            work[i, j] = A[i, j]
+            LU[i, j] = A[i, j]
     for col in range(d):
         pivot = col
         for i in range(col + 1, d):
-            if abs(work[i, col]) > abs(work[pivot, col]):
+            if abs(LU[i, col]) > abs(LU[pivot, col]):
                 pivot = i
         if pivot != col:
             for j in range(d):
-                work[col, j], work[pivot, j] = work[pivot, j], work[col, j]
-            out[col], out[pivot] = out[pivot], out[col]
-        inv = 1.0 / work[col, col]
+                LU[col, j], LU[pivot, j] = LU[pivot, j], LU[col, j]
+            piv[col], piv[pivot] = piv[pivot], piv[col]
+        inv = 1.0 / LU[col, col]
         for i in range(col + 1, d):
-            f = work[i, col] * inv
+            LU[i, col] *= inv
+            f = LU[i, col]
             if f != 0.0:
-                for j in range(col, d):
-                    work[i, j] -= f * work[col, j]
-                out[i] -= f * out[col]
+                for j in range(col + 1, d):
+                    LU[i, j] -= f * LU[col, j]
+
+
+@njit(cache=True)
+def lu_solve(LU, piv, b, out):
+    """``out = A^-1 b`` from :func:`lu_factor`."""
+    d = b.shape[0]
+    for i in range(d):
+        acc = b[piv[i]]
+        for j in range(i):
+            acc -= LU[i, j] * out[j]
+        out[i] = acc
     for i in range(d - 1, -1, -1):
         acc = out[i]
         for j in range(i + 1, d):
-            acc -= work[i, j] * out[j]
-        out[i] = acc / work[i, i]
+            acc -= LU[i, j] * out[j]
+        out[i] = acc / LU[i, i]
 
 
 def sweep_numpy(A, C, r, X0, forward):

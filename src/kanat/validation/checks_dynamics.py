@@ -31,7 +31,8 @@ class _Drive:
         return np.zeros(2) if self.smooth else np.array(self.velocity) * t
 
 
-def _cable(length, segments, tension, stiffness=1e6, mass=1.0, added_mass=0.0, end=None):
+def straight_cable(length, segments, tension, stiffness=1e6, mass=1.0, added_mass=0.0, end=None):
+    """A straight weightless cable at rest under ``tension`` and its state (planar, no drag)."""
     from kanat.continuum import kernels2d as k
     from kanat.continuum.model2d import EndCondition, PlanarCable, parameters
     from kanat.continuum.stepper import State
@@ -91,7 +92,7 @@ def _observed_order(scheme):
     scale = np.array([1000.0, 0.1, 0.1, 1e-3])
 
     def final(dt):
-        cable, state = _cable(50.0, 10, 1000.0, 1e4, 1.0, 0.5)
+        cable, state = straight_cable(50.0, 10, 1000.0, 1e4, 1.0, 0.5)
         return _march(cable, state, _Drive(smooth=True), dt, int(round(0.6 / dt)), scheme)[0].y
     reference = final(0.001 / 8)
     errors = [np.max(np.abs(final(dt) - reference) / scale) for dt in steps]
@@ -118,7 +119,7 @@ def _longitudinal():
     from kanat.continuum.schemes import GeneralizedAlpha
 
     ea, m, t0, dv = 1e6, 1.0, 1000.0, 0.1
-    cable, state = _cable(1000.0, 200, t0, ea, m)
+    cable, state = straight_cable(1000.0, 200, t0, ea, m)
     state, _ = _march(cable, state, _Drive((-dv, 0.0)), 0.0025, 200, GeneralizedAlpha(-0.3))
     jump = math.sqrt(ea * m) * dv
     speed = _front(cable.s, state.y[:, 0], t0 + 0.5 * jump) / state.t
@@ -145,7 +146,7 @@ def transverse_speed():
     from kanat.continuum.schemes import GeneralizedAlpha
 
     t0, m, ma, dv = 1000.0, 1.0, 0.6, 0.05
-    cable, state = _cable(1000.0, 250, t0, 1e7, m, ma)
+    cable, state = straight_cable(1000.0, 250, t0, 1e7, m, ma)
     state, _ = _march(cable, state, _Drive((0.0, dv)), 0.05, 200, GeneralizedAlpha(-0.3))
     return _front(cable.s, state.y[:, 2], 0.5 * dv) / state.t, math.sqrt(t0 / (m + ma))
 
@@ -156,7 +157,7 @@ def taut_string_frequency():
     from kanat.continuum.schemes import Box
 
     length, t0, m = 100.0, 1000.0, 1.0
-    cable, state = _cable(length, 50, t0, 1e7, m)
+    cable, state = straight_cable(length, 50, t0, 1e7, m)
     state.y[:, 2] = 0.01 * np.sin(np.pi * cable.s / length)
     _, trace = _march(cable, state, _Drive(), 0.02, 600, Box(), probe=lambda s: s.y[25, 2])
     return 1.0 / _period(trace), math.sqrt(t0 / (m * (1 + t0 / 1e7))) / (2 * length)
@@ -173,7 +174,7 @@ def axial_end_mass_frequency():
 
     length, ea, m, body, force = 100.0, 1e6, 1.0, 100.0, 1000.0
     beta = brentq(lambda b: b * np.tan(b) - m * length / body, 1e-6, np.pi / 2 - 1e-9)
-    cable, state = _cable(length, 50, force, ea, m, end=EndCondition(k.BODY, mass=body, force=(force, 0.0)))
+    cable, state = straight_cable(length, 50, force, ea, m, end=EndCondition(k.BODY, mass=body, force=(force, 0.0)))
     state.y[:, 0] = force + 0.01 * ea * beta / length * np.cos(beta * cable.s / length)
     _, trace = _march(cable, state, _Drive(), 0.004, 500, Box(), probe=lambda s: s.y[-1, 1])
     return 2 * np.pi / _period(trace), beta * math.sqrt(ea / m) / length
