@@ -30,7 +30,7 @@ from kanat.continuum.schemes import (
     WaveFactorized2,
     WaveFactorized3,
 )
-from kanat.continuum.seed000 import body_relative
+from kanat.studies.seed000 import body_relative
 from kanat.continuum.stepper import NewtonFailure
 from kanat.io import parse_case
 

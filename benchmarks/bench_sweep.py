@@ -65,7 +65,7 @@ def warm_client(workers: int):
 
     cluster = local_cluster(workers)
     client = Client(cluster)
-    client.run(lambda: __import__("kanat.sweep.engine") and __import__("kanat.continuum.run") and None)
+    client.run(lambda: __import__("kanat.sweep.engine") and __import__("kanat.api") and None)
     return cluster, client
 
 

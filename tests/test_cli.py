@@ -55,7 +55,9 @@ def test_debug_shows_the_exception(tmp_path):
 
 
 def test_run_refuses_models_this_build_lacks_and_says_what_to_do(tmp_path, monkeypatch):
-    monkeypatch.setattr("kanat.cli.RUNNERS", {})
+    from kanat import api
+
+    monkeypatch.setattr(api, "MODELS", {k: v for k, v in api.MODELS.items() if k != "continuum"})
     case = tmp_path / "dyn.yaml"
     text = (EXAMPLES / "towed_body.yaml").read_text().replace("model: statics", "model: continuum")
     case.write_text(text + "simulation: {duration: 10, dt: 1, output_dt: 1}\n")

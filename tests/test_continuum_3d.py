@@ -7,11 +7,12 @@ import pytest
 
 from kanat.continuum.chart import choose_chart, frames, rechart
 from kanat.continuum.models import SpatialModel
-from kanat.continuum.run import run
 from kanat.continuum.schemes import GeneralizedAlpha
 from kanat.continuum.spatial import SpatialState, step3
 from kanat.io import parse_case
 from kanat.io.results import read_result
+
+from helpers import run
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 STEP = (EXAMPLES / "speed_step_2d.yaml").read_text().replace("duration: 600\n", "duration: 200\n")

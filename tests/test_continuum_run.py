@@ -11,22 +11,12 @@ import pytest
 from typer.testing import CliRunner
 
 from kanat.cli import app
-from kanat.continuum.run import run
 from kanat.io import parse_case
 from kanat.io.results import read_result
 from kanat.statics import solve_statics
 
-from test_cli import plain
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
-STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
-
-
-def case_text(duration=600, dt=1.0, segments=100, before=60, to_kn=10, extra=""):
-    text = STEP_CASE.replace("duration: 600\n", f"duration: {duration}\n").replace("dt: 1.0\n", f"dt: {dt}\n")
-    text = text.replace("output_dt: 1.0", f"output_dt: {dt}").replace("segments: 100", f"segments: {segments}")
-    text = text.replace("speed_kn: 6, duration: 60", f"speed_kn: 6, duration: {before}")
-    return text.replace("to_speed_kn: 10", f"to_speed_kn: {to_kn}") + extra
+from helpers import EXAMPLES, plain, run
+from helpers import step_case_text as case_text
 
 
 def test_steady_tow_from_static_state_stays_steady(tmp_path):
@@ -80,7 +70,8 @@ def test_failure_stops_once_keeps_results_and_explains(tmp_path):
     words = plain(result.output)
     assert "compression" in words and "model: lumped" in words
     ds = read_result(out)
-    assert ds.attrs["status"].startswith("Newton did not converge") and ds.sizes["time"] == 21
+    assert ds.attrs["status"].startswith("failed:") and "compression" in ds.attrs["status"]
+    assert 2 <= ds.sizes["time"] <= 22
 
 
 def test_killed_run_resumes_to_the_same_answer(tmp_path):
@@ -96,7 +87,7 @@ def test_killed_run_resumes_to_the_same_answer(tmp_path):
         time.sleep(0.01)
     os.kill(proc.pid, signal.SIGKILL)
     proc.wait()
-    partial = read_result(killed)
+    partial = read_result(str(killed) + ".part")
     assert partial.attrs["status"] == "running" and 0 < partial.sizes["time"] < 2401
     resumed = CliRunner().invoke(app, ["run", str(path), "-o", str(killed), "--resume"])
     assert resumed.exit_code == 0, resumed.output

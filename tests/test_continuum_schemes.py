@@ -7,7 +7,7 @@ from kanat.continuum.schemes import BackwardEuler, Box, GeneralizedAlpha, Genera
 from kanat.continuum.stepper import step
 from kanat.schemes import get_scheme, scheme_classes
 
-from test_continuum_waves import straight_cable
+from kanat.validation.checks_dynamics import straight_cable
 
 
 def amplification(coefficients, kappa_h):

@@ -13,33 +13,9 @@ from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import EndCondition, PlanarCable, parameters
 from kanat.continuum.schemes import Box, GeneralizedAlpha
 from kanat.continuum.stepper import step
-from kanat.validation.checks_dynamics import straight_cable  # noqa: F401 - shared with the validation suite
+from kanat.validation.checks_dynamics import straight_cable
 
-
-class StepDrive:
-    """First end moving with velocity ``velocity`` for t > 0 (at rest before), far end held."""
-
-    def __init__(self, velocity):
-        self.velocity = velocity
-
-    def velocities(self, t):
-        return (self.velocity if t > 0 else (0.0, 0.0)), (0.0, 0.0)
-
-    def origin(self, t):
-        return np.array([self.velocity[0] * t, self.velocity[1] * t])
-
-
-def march(cable, state, drive, dt, steps, scheme):
-    coefficients = scheme.coefficients()
-    for _ in range(steps):
-        state, _ = step(cable, state, dt, coefficients, drive)
-    return state
-
-
-def front(s, values, level):
-    """Arclength where ``values`` first falls through ``level`` walking from s = 0."""
-    i = np.argmax(values < level)
-    return s[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (s[i] - s[i - 1])
+from helpers import StepDrive, front, march, run
 
 
 def test_longitudinal_step_speed_and_jump():
@@ -119,7 +95,6 @@ def test_case_elastic_law_reaches_the_kernels(tmp_path):
     """A linear law written as a table gives the linear run; the case plumbing is exercised."""
     from pathlib import Path
 
-    from kanat.continuum.run import run
     from kanat.io import parse_case
     from kanat.io.results import read_result
 

@@ -17,15 +17,16 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from test_continuum_run import case_text
-from test_continuum_waves import StepDrive, front, straight_cable
 
 from kanat.continuum.models import model_for
-from kanat.continuum.run import run
 from kanat.continuum.schemes import Factorized, Factorized4, GeneralizedAlpha, WaveFactorized
-from kanat.continuum.seed000 import body_relative
 from kanat.io import parse_case
 from kanat.io.results import read_result
+from kanat.studies.seed000 import body_relative
+from kanat.validation.checks_dynamics import straight_cable
+
+from helpers import StepDrive, front, run
+from helpers import step_case_text as case_text
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 T0, MASS, ADDED, EA, LENGTH = 1000.0, 1.0, 0.5, 1e4, 100.0

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from kanat.io.results import read_result
-from kanat.lumped import run
+from helpers import run
 from kanat.model import Case
 from kanat.physics.waves import sea_from_model
 from kanat.statics import solve_cable

@@ -6,10 +6,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from kanat.continuum.run import run as run_continuum
 from kanat.io import load_case
 from kanat.io.results import read_result
-from kanat.lumped import run as run_lumped
+
+from helpers import run as run_continuum
+from helpers import run as run_lumped
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "speed_step_2d.yaml"
 STEP_AT, DURATION = 60.0, 150.0

@@ -5,7 +5,7 @@ import pytest
 
 from kanat.errors import CaseError, KanatError
 from kanat.io.results import read_result
-from kanat.lumped import run
+from helpers import killed_run, run
 from kanat.model import Case
 from kanat.schemes import get_scheme, scheme_classes
 
@@ -59,9 +59,8 @@ def test_schemes_agree_on_the_speed_step(tmp_path):
 def test_resume_gives_the_same_answer_as_an_uninterrupted_run(scheme, tmp_path):
     case = tow_case(scheme)
     run(case, tmp_path / "full.nc")
-    killed = run(case, tmp_path / "part.nc", checkpoint_every=2, stop_after=3.0)
-    assert killed.status == "killed"
-    part = read_result(tmp_path / "part.nc")
+    killed_run(case, tmp_path / "part.nc", at=3.0, every=2)
+    part = read_result(tmp_path / "part.nc.part")
     assert part.attrs["status"] == "running" and part.sizes["time"] == 7
     resumed = run(case, tmp_path / "part.nc", resume=True)
     assert resumed.ok
@@ -73,7 +72,7 @@ def test_resume_gives_the_same_answer_as_an_uninterrupted_run(scheme, tmp_path):
 
 
 def test_resume_refuses_a_changed_case(tmp_path):
-    run(tow_case("rk4", duration=1.0), tmp_path / "r.nc", checkpoint_every=1, stop_after=0.5)   # killed
+    killed_run(tow_case("rk4", duration=1.0), tmp_path / "r.nc", at=0.5, every=1)
     with pytest.raises(KanatError, match="different case"):
         run(tow_case("rk4", duration=2.0), tmp_path / "r.nc", resume=True)
 
@@ -85,8 +84,9 @@ def test_a_line_that_goes_slack_records_snap_events_in_the_file(tmp_path):
         dict(track=[{"straight": {"speed": 2.0, "duration": 1.0}}, {"speed_step": {"to_speed": 0.0}}]))})
     summary = run(case, tmp_path / "r.nc", progress=lambda t, info: None)
     ds = read_result(tmp_path / "r.nc")
-    assert summary.snap_events > 0 and ds.attrs["snap_events"] == summary.snap_events
-    assert ds.sizes["event"] == summary.snap_events
+    events = summary.extra["snap_events"]
+    assert events > 0 and ds.attrs["snap_events"] == events
+    assert ds.sizes["event"] == events
     assert np.all(ds["event_peak_tension"].values >= 0) and np.all(np.diff(ds["event_time"].values) >= 0)
     assert set(ds["event_segment"].values) <= set(range(10))
     assert ds["segment_tension"].values.min() == 0.0              # slack seen in the output too
@@ -95,8 +95,8 @@ def test_a_line_that_goes_slack_records_snap_events_in_the_file(tmp_path):
 def test_progress_is_called_every_output(tmp_path):
     calls = []
     run(tow_case("rk4", duration=1.0), tmp_path / "r.nc", progress=lambda t, info: calls.append((t, info)))
-    assert len(calls) == 2 and calls[-1][1]["outputs"] == 3
-    assert calls[-1][0] == pytest.approx(1.0)
+    assert [t for t, _ in calls] == pytest.approx([0.0, 0.5, 1.0])
+    assert calls[-1][1]["steps"] > 0
 
 
 def test_a_failing_run_stops_once_keeps_results_and_says_where(tmp_path):
@@ -114,10 +114,12 @@ def test_a_failing_run_stops_once_keeps_results_and_says_where(tmp_path):
     assert ds.attrs["status"] == summary.status and ds.sizes["time"] >= 2
 
 
-def test_lumped_run_refuses_other_models(tmp_path):
-    case = tow_case().model_copy(update={"model": "continuum"})
-    with pytest.raises(KanatError, match="model: lumped"):
-        run(case, tmp_path / "r.nc")
+def test_dynamic_model_refuses_steady_models():
+    from kanat import api
+
+    case = tow_case().model_copy(update={"model": "statics"})
+    with pytest.raises(KanatError, match="not a dynamic model"):
+        api.dynamic_model(case)
 
 
 def test_new_model_fields_validate():

@@ -11,8 +11,13 @@ import xarray as xr
 
 from kanat.io import load_case
 from kanat.io.results import read_result
-from kanat.lumped import run, seed004
+from kanat.analysis import step_response
+from kanat.cli import app
+from kanat.studies import seed004
 from kanat.report.lumped_plot import plot_seed004
+from typer.testing import CliRunner
+
+from helpers import run
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 CASES = {1: "seed004_head_5.6s_1to4.yaml", 2: "seed004_following_4.5s_1to2.yaml", 3: "seed004_head_8s_1to2.yaml"}
@@ -32,13 +37,13 @@ def results(tmp_path_factory):
 
 def test_figure1_has_every_finding_of_spec_section_5(results):
     ds = results[1]
-    stats = seed004.step_statistics(ds)
+    stats = step_response.step_statistics(ds, seed004.POINTS)
     found = seed004.findings(stats, figure=1)
     assert all(found.values()), {k: v for k, v in found.items() if not v}
     tow, _, buoy = stats
     assert tow.settled.mean > 3 * tow.before.mean and tow.settled.range > 3 * tow.before.range   # 1 -> 4 m/s
     assert buoy.transient.mean > 1.1 * buoy.before.mean and buoy.settled.mean < 1.05 * buoy.before.mean
-    snaps = seed004.snap_counts(ds)                # jerks: the bridles go slack and snap taut
+    snaps = step_response.snap_counts(ds)                # jerks: the bridles go slack and snap taut
     assert set(snaps) == {"bridle_port", "bridle_stbd"}
     assert all(before == 0 and after > 0 for before, after in snaps.values())
     assert snaps["bridle_port"] == snaps["bridle_stbd"]                 # the spread is symmetric
@@ -46,7 +51,7 @@ def test_figure1_has_every_finding_of_spec_section_5(results):
 
 @pytest.mark.parametrize("figure", [2, 3])
 def test_figures_2_and_3_show_the_papers_trends(results, figure):
-    found = seed004.findings(seed004.step_statistics(results[figure]), figure=figure)
+    found = seed004.findings(step_response.step_statistics(results[figure], seed004.POINTS), figure=figure)
     missing = {k for k, ok in found.items() if not ok}
     assert missing == NOT_REPRODUCED[figure]       # the rest of the paper's statements hold
     assert len(found) - len(missing) >= 5
@@ -66,7 +71,7 @@ def test_viscoelasticity_matters_in_the_step_not_in_steady_waves(tmp_path):
         records[damping] = read_result(tmp_path / f"{damping}.nc")
     t = records[0.0]["time"].values
     for label, cable, end in seed004.POINTS:
-        a, b = (seed004.point_tension(ds, cable, end) for ds in records.values())
+        a, b = (step_response.point_tension(ds, cable, end) for ds in records.values())
         steady = np.max(np.abs(a - b)[(t > 50) & (t < 150)])
         step = np.max(np.abs(a - b)[(t >= 150) & (t < 160)])
         assert step > 100 * steady and step > 100.0, f"{label}: {steady:.3g} N in waves, {step:.3g} N at the step"
@@ -90,8 +95,8 @@ def synthetic(step_at=100.0, end=300.0, dt=0.25):
 
 def test_statistics_on_a_record_with_known_answers():
     ds = synthetic()
-    assert seed004.step_time(ds) == pytest.approx(100.0)
-    tow, board, buoy = seed004.step_statistics(ds)
+    assert step_response.step_time(ds) == pytest.approx(100.0)
+    tow, board, buoy = step_response.step_statistics(ds, seed004.POINTS)
     assert tow.before.mean == pytest.approx(1000.0, abs=1e-6) and tow.before.range == pytest.approx(200.0, rel=1e-9)
     assert tow.settled.mean == pytest.approx(3000.0, abs=1e-6) and tow.settled.range == pytest.approx(800.0, rel=1e-9)
     assert board.before.mean == pytest.approx(500.0, abs=1e-6) and board.settled.range == pytest.approx(400.0)
@@ -100,7 +105,7 @@ def test_statistics_on_a_record_with_known_answers():
     rise = max(100 * (math.sin(2 * math.pi * (s + 1.0) / 5) - math.sin(2 * math.pi * s / 5)) for s in np.arange(0, 5, 0.25))
     assert tow.jerk_before == pytest.approx(rise, rel=1e-9)
     assert 2000.0 - 500.0 < tow.jerk_after < 2000.0 + 500.0   # the 2 kN jump at the step, give or take the sines
-    table = seed004.table([tow, board, buoy])
+    table = step_response.table([tow, board, buoy])
     assert table.count("\n") == 4 and "| tow point | 1.00 | 0.20 |" in table
 
 
@@ -109,15 +114,17 @@ def test_no_step_is_a_clear_error():
     ds["vessel_position"] = (("time", "xyz"), np.column_stack([ds["time"].values, 0 * ds["time"].values,
                                                                0 * ds["time"].values]))
     with pytest.raises(ValueError, match="no speed step"):
-        seed004.step_time(ds)
+        step_response.step_time(ds)
     with pytest.raises(ValueError, match="no cable 'trawl'"):
-        seed004.point_tension(synthetic(), "trawl", 0)
+        step_response.point_tension(synthetic(), "trawl", 0)
 
 
 def test_one_command_writes_figures_and_tables(results, tmp_path):
     for figure, ds in results.items():
         ds.to_netcdf(tmp_path / f"{Path(CASES[figure]).stem}.nc")
-    assert seed004.main([str(EXAMPLES / CASES[f]) for f in CASES] + ["-o", str(tmp_path), "--reuse"]) == 0
+    result = CliRunner().invoke(app, ["study", "seed004", *(str(EXAMPLES / CASES[f]) for f in CASES), "-o", str(tmp_path),
+                                      "--reuse"])
+    assert result.exit_code == 0, result.output
     for name in CASES.values():
         stem = Path(name).stem
         assert (tmp_path / f"{stem}.png").stat().st_size > 30_000

@@ -14,8 +14,8 @@ import pytest
 
 from kanat.errors import KanatError
 from kanat.model import PitchModel
-from kanat.vessel import (
-    RESONANCE_RTOL,
+from kanat.model.problems import RESONANCE_RTOL
+from kanat.vessel.pitch import (
     Feedback,
     Off,
     PitchSystem,
@@ -26,11 +26,11 @@ from kanat.vessel import (
     solve_mode,
     solve_pitch,
 )
-from kanat.vessel.pitch_fourier import fourier_pitch, harmonic_response, steady_state
-from kanat.vessel.pitch_laws import FourierSeries
-from kanat.vessel.pitch_optimal import optimal_shape
-from kanat.vessel.pitch_scan import truncation_errors
-from kanat.vessel.pitch_time import periodic_orbit, transient
+from kanat.vessel.pitch.fourier import fourier_pitch, harmonic_response, steady_state
+from kanat.vessel.pitch.laws import FourierSeries
+from kanat.vessel.pitch.optimal import optimal_shape
+from kanat.studies.pitch import truncation_errors
+from kanat.vessel.pitch.periodic import periodic_orbit, transient
 
 I_Y, OMEGA, M_M, M0 = 2e7, 2 * math.pi / 10, 7e5, 1e6     # paper data (eqs. 2, 4, 5)
 OMEGA0 = 0.876                                             # examples/pitch_seed003.yaml
@@ -201,7 +201,7 @@ def test_resonance_guard_from_the_model():
 
 
 def test_unknown_mode_and_method_are_explained():
-    from kanat.vessel import stabilizer_law
+    from kanat.vessel.pitch import stabilizer_law
 
     with pytest.raises(KanatError, match="known: off, sinusoidal, rectangular, feedback, optimal"):
         stabilizer_law("square", PAPER)

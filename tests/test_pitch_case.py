@@ -1,4 +1,4 @@
-"""The pitch case end to end: case file -> run_pitch_case -> result file and figures
+"""The pitch case end to end: case file -> kanat.api.run -> result file and figures
 (case-format.md: ``pitch(mode, time)``, ``stabilizer_moment(mode, time)``,
 ``amplitude(mode)``, ``max_abs(mode)``)."""
 import math
@@ -14,7 +14,19 @@ from kanat.model import Case
 from kanat.io import check_case, load_case, parse_case
 from kanat.io.results import read_result
 from kanat.report.pitch_plot import FILES
-from kanat.vessel import ResonanceError, run_pitch_case
+from kanat.vessel.pitch import ResonanceError
+
+
+def run_pitch_case(case, output, plot_dir=None):
+    """What ``kanat pitch CASE -o OUTPUT --plot DIR`` does: the result, the table, the figures."""
+    from kanat import api
+    from kanat.report.pitch_plot import plot_pitch_case
+    from kanat.studies.pitch import figure_data
+
+    outcome = api.run(case, output=output, model="pitch")
+    if plot_dir is not None:
+        plot_pitch_case(outcome.solution, figure_data(outcome.solution), Path(plot_dir))
+    return outcome.dataset, outcome.text
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_seed003.yaml"
 
@@ -73,7 +85,7 @@ def test_resonance_is_refused_by_the_loader_and_the_solver_alike(tmp_path):
 
 def test_a_case_without_pitch_block_is_refused(tmp_path):
     case = load_case(EXAMPLE.parent / "seed001_sphere.yaml")
-    with pytest.raises(KanatError, match="has no 'pitch' block; kanat pitch solves model: pitch"):
+    with pytest.raises(KanatError, match="has no 'pitch' block; the pitch model solves model: pitch"):
         run_pitch_case(case, tmp_path / "none.nc")
 
 

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from kanat.io import load_case
-from kanat.vessel import PitchSystem, solve_pitch
-from kanat.vessel.pitch_scan import claim_band, claim_holds, natural_frequency_scan
+from kanat.vessel.pitch import PitchSystem, solve_pitch
+from kanat.studies.pitch import claim_band, claim_holds, natural_frequency_scan
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_seed003.yaml"
 I_Y, OMEGA, M_M, M0 = 2e7, 2 * math.pi / 10, 7e5, 1e6

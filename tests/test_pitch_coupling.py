@@ -15,15 +15,15 @@ from kanat.io import load_case
 from kanat.model import PitchModel
 from kanat.model.problems import STABILIZER_MODES
 from kanat.model.vessel import Vessel, VesselPitch
-from kanat.vessel import solve_pitch
-from kanat.vessel.coupled import (
+from kanat.vessel.pitch import solve_pitch
+from kanat.studies.pitch_tow import (
     rest_phase_deg,
     snap_events,
     statistics_window,
     tension_statistics,
     with_stabilizer_mode,
 )
-from kanat.vessel.pitch_motion import pitch_motion, series_from_samples
+from kanat.vessel.pitch.motion import pitch_motion, series_from_samples
 from kanat.vessel.track import VesselTrack
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"

@@ -19,8 +19,9 @@ from kanat.errors import KanatError
 from kanat.io import load_case
 from kanat.io.results import read_result
 from kanat.model import PitchModel
-from kanat.vessel import solve_pitch
-from kanat.vessel.coupled import compare_modes, main, with_stabilizer_mode
+from kanat.report.coupled_plot import plot_coupled
+from kanat.studies.pitch_tow import compare_modes, with_stabilizer_mode
+from kanat.vessel.pitch import solve_pitch
 from kanat.vessel.track import VesselTrack
 
 EXAMPLE_PATH = Path(__file__).resolve().parents[1] / "examples" / "pitch_tow_6kn.yaml"
@@ -36,8 +37,9 @@ def shortened(duration):
 @pytest.fixture(scope="module")
 def coupled(tmp_path_factory):
     out = tmp_path_factory.mktemp("coupled")
-    table = compare_modes(shortened(200.0), out, MODES, transient=TRANSIENT)
-    return table, read_result(out / "summary.nc"), out
+    comparison, _ = compare_modes(shortened(200.0), out, MODES, transient=TRANSIENT)
+    plot_coupled(read_result(out / "summary.nc"), out / "coupled.png")
+    return comparison.table(), read_result(out / "summary.nc"), out
 
 
 def of(summary, name, mode):
@@ -127,10 +129,11 @@ def test_kanat_run_writes_the_pitch_solvers_response_as_vessel_pitch(tmp_path):
         -60 * math.sin(response.pitch[index[0]]) + 5 * math.cos(response.pitch[index[0]]))
 
 
-def test_the_module_runs_as_a_command(tmp_path, capsys):
-    code = main([str(EXAMPLE_PATH), "-o", str(tmp_path), "--modes", "off", "--no-plot", "--transient", "0"])
-    assert code == 0
-    assert "off" in capsys.readouterr().out and (tmp_path / "summary.nc").exists()
+def test_the_study_runs_as_a_command(tmp_path):
+    result = CliRunner().invoke(app, ["study", "pitch-tow", str(EXAMPLE_PATH), "-o", str(tmp_path), "--mode", "off",
+                                      "--transient", "0"])
+    assert result.exit_code == 0, result.output
+    assert "off" in result.output and (tmp_path / "summary.nc").exists() and (tmp_path / "coupled.png").exists()
 
 
 def test_compare_modes_refuses_a_case_without_vessel_pitch(tmp_path):
@@ -143,17 +146,18 @@ def test_lumped_tow_sees_the_vessel_pitch(tmp_path):
     """The lumped model's tow point rises and falls with the pitch (x sin(pitch) at the stern)."""
     import numpy as np
 
-    import kanat.lumped
     from kanat.io import parse_case
+
+    from helpers import run
     from kanat.io.results import read_result
-    from kanat.vessel.pitch_motion import pitch_motion
+    from kanat.vessel.pitch.motion import pitch_motion
 
     text = EXAMPLE_PATH.read_text().replace("model: continuum", "model: lumped")
     text = text.replace("segments: 100", "segments: 20")
     lines = [line for line in text.splitlines() if not line.strip().startswith(("scheme:", "duration:"))]
     text = "\n".join(lines).replace("simulation:", "simulation:\n  scheme: generalized-alpha-lumped\n  duration: 20")
     case = parse_case(text)
-    summary = kanat.lumped.run(case, tmp_path / "r.nc")
+    summary = run(case, tmp_path / "r.nc")
     assert summary.status == "ok", summary.status
     ds = read_result(tmp_path / "r.nc")
     motion = pitch_motion(case.vessel.pitch)

@@ -13,13 +13,12 @@ import numpy as np
 import pytest
 
 from kanat.analysis import range_graph
-from kanat.continuum.run import run
 from kanat.io import parse_case
 from kanat.io.results import read_result
 from kanat.report.html_report import write_report
 from kanat.sweep import sweep
 
-from test_sweep import short_case
+from helpers import run, short_case
 
 CHROMIUM = "/usr/bin/chromium"
 ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",

@@ -13,14 +13,13 @@ from typer.testing import CliRunner
 
 from kanat.analysis import node_statistics
 from kanat.cli_study import parse_vary, parse_window, register
-from kanat.continuum.run import run
 from kanat.errors import KanatError
 from kanat.io import parse_case
 from kanat.io.results import read_result
 from kanat.report.html_report import write_report
 from kanat.sweep import read_summary
 
-from test_sweep import short_case
+from helpers import run, short_case
 
 URL = re.compile(r"""(?:src|href)\s*=\s*["']?(https?:)?//""", re.I)
 
@@ -65,7 +64,7 @@ def test_statics_result_page(tmp_path):
     from kanat.io.results import statics_dataset, write_result
     from kanat.statics import solve_statics
 
-    from test_sweep import EXAMPLES
+    from helpers import EXAMPLES
 
     result = write_result(statics_dataset(solve_statics(load_case(EXAMPLES / "towed_body.yaml"))), tmp_path / "s.nc")
     html = write_report(result, tmp_path / "s.html").read_text()

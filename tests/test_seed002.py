@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from kanat.continuum.compare import compare_schemes, table
+from kanat.studies.seed002 import compare_schemes, table
 from kanat.io import parse_case
 
 EXAMPLE = (Path(__file__).resolve().parents[1] / "examples" / "seed002_turn.yaml").read_text()

@@ -2,7 +2,7 @@
 case edited by hand, a killed study resumes with every case exactly once, failures are recorded.
 
 Oracles: the serial run of the same study (engine independence), and a case file edited by
-hand and run directly with kanat.continuum.run (variant building).
+hand and run directly with kanat.api.run (variant building).
 """
 import json
 import os
@@ -16,23 +16,16 @@ import numpy as np
 import pytest
 
 from kanat.analysis import summary_statistics
-from kanat.continuum.run import run
 from kanat.io import parse_case
 from kanat.io.results import read_result
 from kanat.sweep import read_summary, sweep
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+from helpers import EXAMPLES, run, short_case
+
 SPEEDS = [7, 8, 9, 11]
 DRAGS = [1.2, 1.5]
 VARY = {"vessel.track[1].to_speed_kn": "7,8,9,11", "line_types.towcable.drag_normal": DRAGS}
 STATS = ("tension_max", "tension_min", "top_tension_mean", "top_tension_std", "top_tension_mpm", "depth_max_sled")
-
-
-def short_case(duration=60, segments=20, before=10):
-    """speed_step_2d.yaml shortened: 6 kn for ``before`` s, then the step; ``segments`` elements."""
-    text = (EXAMPLES / "speed_step_2d.yaml").read_text()
-    text = text.replace("duration: 600\n", f"duration: {duration}\n").replace("segments: 100", f"segments: {segments}")
-    return text.replace("speed_kn: 6, duration: 60", f"speed_kn: 6, duration: {before}")
 
 
 @pytest.fixture(scope="module")
@@ -44,11 +37,9 @@ def base(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def client():
-    from dask.distributed import Client
+    from kanat.sweep.cluster import local_cluster
 
-    from kanat.sweep.engine import local_cluster
-
-    with local_cluster(2) as cluster, Client(cluster) as c:
+    with local_cluster(2) as c:
         yield c
 
 

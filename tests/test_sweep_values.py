@@ -12,7 +12,7 @@ from kanat.io.results import case_sha256
 from kanat.sweep import parse_values, plan_study
 from kanat.sweep.variants import parse_key, set_value, short_labels, variant_text, validate_variant
 
-from test_sweep import EXAMPLES
+from helpers import EXAMPLES
 
 
 @pytest.mark.parametrize("text, expected", [

@@ -65,9 +65,9 @@ def test_unknown_check_is_explained():
 
 
 def test_validate_suite_verb(tmp_path):
-    from test_report_html import app
+    from kanat.cli import app
 
-    out = CliRunner().invoke(app(), ["validate-suite", "-o", str(tmp_path / "v.html"), "--only", "seed001-alpha0",
+    out = CliRunner().invoke(app, ["validate-suite", "-o", str(tmp_path / "v.html"), "--only", "seed001-alpha0",
                                      "--only", "longitudinal-jump"])
     assert out.exit_code == 0, out.output
     assert "2/2 checks pass" in out.output and (tmp_path / "v.html").exists()

@@ -1,11 +1,19 @@
 """kanat: statics and dynamics of marine cable systems.
 
-Public API
-----------
-load_case
-    Read and validate a YAML case file (:mod:`kanat.io.case_file`).
-solve_statics
-    Steady state of a case (:mod:`kanat.statics`).
+Public API (:mod:`kanat.api`)
+-----------------------------
+load_case(path | yaml_text | mapping) -> Case
+    Read and validate a case; ``case.replace({...})`` gives a validated variant.
+solve_statics(case, method="auto") -> xarray.Dataset
+    The steady state.
+simulate(case, scheme=None, output=None, resume=False, progress=None) -> xarray.Dataset
+    Run any case with its model: in memory, or streamed to a netCDF file.
+run(case, ...) -> Outcome
+    The same, with the run summary and its text (what ``kanat run`` prints).
+read_result(path) -> xarray.Dataset
+    A result file.
+
+The names are loaded on first use, so ``import kanat`` stays light.
 """
 from importlib.metadata import PackageNotFoundError, version
 
@@ -13,3 +21,14 @@ try:
     __version__ = version("kanat")
 except PackageNotFoundError:  # running from a source tree that was never installed
     __version__ = "0+unknown"
+
+_API = ("load_case", "solve_statics", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
+__all__ = ["__version__", *_API]
+
+
+def __getattr__(name):
+    if name in _API:
+        from kanat import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'kanat' has no attribute {name!r}")

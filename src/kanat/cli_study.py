@@ -1,8 +1,9 @@
-"""The study verbs of the ``kanat`` command line: ``sweep``, ``report``, ``validate-suite``.
+"""The study verbs of the ``kanat`` command line: ``study``, ``sweep``, ``report``, ``validate-suite``.
 
 ``kanat.cli`` calls :func:`register` to add them to its Typer app. Each verb maps to one
-function of the package (:func:`kanat.sweep.sweep`, :func:`kanat.report.html_report.write_report`,
-:func:`kanat.validation.run_suite`), nothing else.
+function of the package (:mod:`kanat.studies`, :func:`kanat.sweep.sweep`,
+:func:`kanat.report.html_report.write_report`, :func:`kanat.validation.run_suite`) and
+draws its pictures with :mod:`kanat.report`, nothing else.
 """
 from __future__ import annotations
 
@@ -10,27 +11,13 @@ from pathlib import Path
 from typing import List, Optional
 
 import typer
-from rich.console import Console
-from rich.panel import Panel
 from rich.text import Text
 
-from kanat.errors import CaseError, KanatError
+from kanat.cli_common import CONTEXT, console, fail, load, out
+from kanat.errors import KanatError
 
-console = Console(stderr=True)
-out = Console()
-
-
-def _fail(error: Exception, debug: bool, title: str) -> None:
-    """Explain a failure in one paragraph and exit non-zero (traceback only with --debug)."""
-    if debug:
-        raise error
-    known = isinstance(error, (KanatError, CaseError))
-    text = str(error) if known else (f"{type(error).__name__}: {error}\n\nThis is a bug in kanat; rerun with "
-                                     "--debug for the traceback and report it.")
-    console.print(Panel(Text(text, overflow="fold"), title=title, border_style="red", expand=False))
-    raise typer.Exit(1 if known else 2)
-
-
+study = typer.Typer(no_args_is_help=True, rich_markup_mode=None, context_settings=CONTEXT,
+                    help="The source papers' studies: seed 000, 002 and 004 comparisons, stability, pitch-tow.")
 def parse_window(text: Optional[str]):
     """``"100:600"`` -> (100.0, 600.0); either side may be empty (``"100:"``)."""
     if not text:
@@ -77,8 +64,8 @@ def sweep(case: Path = typer.Argument(..., help="Base case file (YAML)."),
     except KeyboardInterrupt:
         console.print(f"[yellow]interrupted; rerun the same command to resume {output}[/yellow]")
         raise typer.Exit(130) from None
-    except Exception as error:  # noqa: BLE001 - reported by _fail
-        _fail(error, debug, "study failed to start")
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "study failed to start")
     out.print(f"{result.total} cases in {result.out_dir}: {result.ran} run now, {result.skipped} already done, "
               f"{result.failed} failed; summary: {result.out_dir / 'summary.nc'}")
     if result.failed:
@@ -96,8 +83,8 @@ def _report(source: Path, output: Path, nodes, window, debug: bool, bodies=None)
     try:
         with console.status(f"writing the report of {source} ..."):
             path = write_report(source, output, nodes=nodes, window=window, bodies=bodies)
-    except Exception as error:  # noqa: BLE001 - reported by _fail
-        _fail(error, debug, "report failed")
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "report failed")
     out.print(f"wrote {path} ({path.stat().st_size / 1e6:.1f} MB)")
 
 
@@ -111,7 +98,7 @@ def report(source: Path = typer.Argument(..., help="Result file (.nc) or study d
     try:
         span = parse_window(window)
     except KanatError as error:
-        _fail(error, debug, "report failed")
+        fail(error, debug, "report failed")
     _report(source, output, node or None, span, debug, body or None)
 
 
@@ -125,8 +112,8 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
         with console.status("running the validation suite ..."):
             results = run_suite(only)
         path = write_validation_report(results, output)
-    except Exception as error:  # noqa: BLE001 - reported by _fail
-        _fail(error, debug, "validation suite failed")
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "validation suite failed")
     for r in results:
         style = "green" if r.passed else "red"
         out.print(Text(f"{'pass' if r.passed else 'FAIL'}  {r.check_id:<28} {r.measured_text}", style=style))
@@ -136,8 +123,153 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
         raise typer.Exit(1)
 
 
+@study.command("seed000")
+def seed000(comparison: str = typer.Argument(..., help="accel | planar80 | spatial100"),
+            output: Path = typer.Option(Path("."), "-o", "--output", help="Folder for the table and the figure."),
+            case: Optional[Path] = typer.Option(None, "--case", help="Case file (default examples/seed000_*)."),
+            debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Seed 000's comparisons of the full and the factorized schemes (tables and figures)."""
+    import numpy as np
+    import pandas as pd
+
+    from kanat.report.stability_plot import plot_accel, plot_planar80, plot_spatial100
+    from kanat.studies import seed000 as study000
+
+    if comparison not in ("accel", "planar80", "spatial100"):
+        fail(KanatError(f"unknown comparison '{comparison}'; choose accel, planar80 or spatial100"), debug,
+             "seed 000")
+    output.mkdir(parents=True, exist_ok=True)
+    pd.set_option("display.width", 200)
+    pd.set_option("display.max_columns", 30)
+    try:
+        with console.status(f"running seed 000's {comparison} comparison ..."):
+            if comparison == "spatial100":
+                table, history = study000.spatial100(path=case)
+            else:
+                table = getattr(study000, comparison)(path=case)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "seed 000 comparison failed")
+    table.to_csv(output / f"seed000_{comparison}.csv", index=False)
+    if comparison == "accel":
+        plot_accel(table, output / "seed000_accel.png")
+        out.print(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
+                                                                 values=["distance", "depth"]).round(4).to_string())
+    elif comparison == "planar80":
+        plot_planar80(table, output / "seed000_planar80.png")
+        out.print(table.round(4).to_string(index=False))
+        out.print(f"speed-up of the wave-factorized scheme: {table.attrs['speedup']}")
+    else:
+        history.to_csv(output / "seed000_spatial100_history.csv", index=False)
+        plot_spatial100(table, history, output / "seed000_spatial100.png")
+        out.print(table.T.round(4).to_string())
+        out.print(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
+    if "wall_time_s" in table.attrs:
+        out.print(f"solver time [s]: { {k: round(v, 2) for k, v in table.attrs['wall_time_s'].items()} }")
+    out.print(f"wrote {output}")
+
+
+@study.command("compare-schemes")
+def compare_schemes(case: Path = typer.Argument(..., help="Continuum case file."),
+                    output: Path = typer.Option(..., "-o", "--output", help="Directory for the result files."),
+                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Seed 002: box, backward Euler, generalized trapezoidal and generalized-α against a fine reference."""
+    from kanat.studies.seed002 import compare_schemes as compare, table
+
+    loaded = load(case, debug)
+    try:
+        with console.status("running every scheme and a fine reference ..."):
+            rows = compare(loaded, output)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "comparison failed")
+    out.print(table(rows))
+
+
+@study.command("stability")
+def stability(case: Path = typer.Argument(..., help="Continuum case file."),
+              scheme: str = typer.Option(..., "--scheme", help="Scheme to sweep (e.g. wave-factorized)."),
+              output: Optional[Path] = typer.Option(None, "-o", "--output", help="netCDF of the sweep."),
+              plot: Optional[Path] = typer.Option(None, "--plot", help="Stability map (PNG)."),
+              dts: Optional[str] = typer.Option(None, "--dt", help="Comma-separated time steps (s)."),
+              debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Run a case over a range of time steps: Courant numbers, bounded or not, error against a reference."""
+    from kanat.studies.stability import default_steps, stability_sweep, summary
+
+    loaded = load(case, debug)
+    try:
+        steps = [float(v) for v in dts.split(",")] if dts else default_steps(loaded)
+        with console.status(f"sweeping {len(steps)} time steps ..."):
+            ds = stability_sweep(loaded, scheme, steps)
+        if output is not None:
+            from kanat.io.results import write_result
+
+            write_result(ds, output)
+        if plot is not None:
+            from kanat.report.stability_plot import plot_stability_map
+
+            plot_stability_map(ds, plot)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "stability sweep failed")
+    out.print(summary(ds))
+
+
+@study.command("seed004")
+def seed004(cases: List[Path] = typer.Argument(..., help="Seed 004 case files (examples/seed004_*.yaml)."),
+            output: Path = typer.Option(..., "-o", "--output", help="Folder for .nc, .png and .md."),
+            reuse: bool = typer.Option(False, "--reuse", help="Reuse DIR/<case>.nc when it exists."),
+            debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Seed 004's towing cases: tension figures, tables and the paper's findings."""
+    from kanat.report.lumped_plot import plot_seed004
+    from kanat.studies.seed004 import run_cases
+
+    try:
+        with console.status(f"running {len(cases)} seed 004 case(s) ..."):
+            done = run_cases(cases, output, reuse)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "seed 004 study failed")
+    failed = False
+    for path, ds, text in done:
+        if ds.attrs.get("status") != "ok":
+            console.print(f"{path}: {ds.attrs.get('status')}")
+            failed = True
+            continue
+        plot_seed004(ds, output / f"{path.stem}.png")
+        (output / f"{path.stem}.md").write_text(text)
+        out.print(text)
+    if failed:
+        raise typer.Exit(1)
+
+
+@study.command("pitch-tow")
+def pitch_tow(case: Path = typer.Argument(..., help="Continuum tow case with a vessel.pitch block."),
+              output: Path = typer.Option(..., "-o", "--output", help="Directory for results and the plot."),
+              modes: Optional[List[str]] = typer.Option(None, "--mode", help="Stabilizer mode (repeat)."),
+              transient: Optional[float] = typer.Option(None, "--transient",
+                                                        help="Seconds left out of the statistics."),
+              case_phase: bool = typer.Option(False, "--case-phase",
+                                              help="Start every mode at the case's phase_deg."),
+              debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Tow through the vessel's pitch once per stabilizer mode; print the top-tension statistics."""
+    from kanat.report.coupled_plot import plot_coupled
+    from kanat.studies.pitch_tow import DEFAULT_MODES, compare_modes
+
+    loaded = load(case, debug)
+    try:
+        with console.status("running the tow once per stabilizer mode ..."):
+            comparison, summary = compare_modes(loaded, output, tuple(modes or DEFAULT_MODES), transient=transient,
+                                                start_at_rest=not case_phase)
+        plot_coupled(summary, Path(output) / "coupled.png")
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "coupled run failed")
+    out.print(comparison.table())
+    out.print(f"wrote {output}/<mode>.nc, summary.nc, coupled.png")
+
+
 def register(app: typer.Typer) -> None:
-    """Add ``sweep``, ``report`` and ``validate-suite`` to the ``kanat`` app."""
+    """Add ``study``, ``sweep``, ``report`` and ``validate-suite`` to the ``kanat`` app (and the
+    older names ``compare-schemes``, ``stability`` and ``pitch-tow`` of the study verbs)."""
+    app.add_typer(study, name="study")
     app.command("sweep")(sweep)
     app.command("report")(report)
     app.command("validate-suite")(validate_suite)
+    for name, verb in (("compare-schemes", compare_schemes), ("stability", stability), ("pitch-tow", pitch_tow)):
+        app.command(name, hidden=True)(verb)

@@ -69,3 +69,9 @@ def get_scheme(spec, model: str, **parameters) -> Scheme:
     cls = classes[spec]
     fields = {f.name for f in dataclasses.fields(cls)} if dataclasses.is_dataclass(cls) else set()
     return cls(**{k: v for k, v in parameters.items() if k in fields and v is not None})
+
+
+def label(scheme: Scheme) -> str:
+    """The scheme's name and parameters, as ``generalized-alpha(lambda_inf=-0.5)``."""
+    params = ",".join(f"{k}={v!r}" for k, v in scheme.parameters().items())
+    return f"{scheme.name}({params})"

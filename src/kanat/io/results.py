@@ -48,7 +48,7 @@ def case_sha256(case) -> str:
     return hashlib.sha256(case.model_dump_json(by_alias=True).encode()).hexdigest()
 
 
-def provenance(case, *, model: str, scheme: str, wall_time_s: float, status: str = "ok", **extra) -> dict:
+def provenance(case, *, model: str, scheme: str, wall_time_s: float = 0.0, status: str = "running", **extra) -> dict:
     """Global attributes every result file carries (case-format.md)."""
     attrs = {
         "kanat_version": kanat.__version__,
@@ -117,7 +117,7 @@ def statics_dataset(result, wall_time_s: float = 0.0) -> xr.Dataset:
     wall_time_s : float
         Solve time recorded in the provenance [s].
     """
-    attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s)
+    attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s, status="ok")
     if result.sphere is not None:
         return annotate(_sphere_dataset(result.sphere, attrs))
     names, s, position, tension, angle = [], [], [], [], []
@@ -186,7 +186,7 @@ def pitch_dataset(result, case, wall_time_s: float = 0.0) -> xr.Dataset:
     wall_time_s : float
         Solve time recorded in the provenance [s].
     """
-    from kanat.vessel.pitch_system import RESONANCE_RTOL
+    from kanat.model.problems import RESONANCE_RTOL
 
     modes = list(result.responses)
     rows = [result.responses[m] for m in modes]
@@ -196,7 +196,7 @@ def pitch_dataset(result, case, wall_time_s: float = 0.0) -> xr.Dataset:
 
     def reduction(metric):
         return [result.reduction(m, metric) if has_off else np.nan for m in modes]
-    attrs = provenance(case, model="pitch", scheme="fourier+shooting", wall_time_s=wall_time_s,
+    attrs = provenance(case, model="pitch", scheme="fourier+shooting", wall_time_s=wall_time_s, status="ok",
                        inertia_kg_m2=system.inertia, natural_frequency_rad_s=system.natural_frequency,
                        wave_frequency_rad_s=system.wave_frequency, wave_period_s=system.period,
                        wave_moment_amplitude_N_m=system.wave_moment_amplitude,

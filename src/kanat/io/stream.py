@@ -1,16 +1,22 @@
 """Results written as a run goes, and checkpoints to resume a killed run.
 
-A dynamic run opens a :class:`ResultStream`: the time-independent variables are written
-at once, then every output step appends one slice along the unlimited ``time``
-dimension and flushes it, so a killed run leaves a readable file with everything up to
-its last output. ``status`` says ``running`` until the run closes the stream with ``ok``
-or its failure message.
+A dynamic run streams its result into ``OUT.nc.part``: the time-independent variables at
+once, then one slice per output along the unlimited ``time`` dimension, written in
+blocks and flushed to disk (HDF5 included) at least every ``FLUSH_WALL_S`` seconds and
+before every checkpoint. ``status`` says ``running`` until the run ends; then the file
+gets its final status and attributes and is renamed to ``OUT.nc``, so an earlier result
+at ``OUT.nc`` is replaced only by a complete one. A killed run leaves ``OUT.nc.part``:
+readable, with everything up to its last flushed output, and continued by ``--resume``.
 
 A :class:`Checkpoint` is the solver's full state at an output time, written atomically
-beside the result (``OUT.nc.ckpt.npz``). Resuming truncates the result to the
-checkpoint's output count and continues from its state, so a resumed run gives the same
-answer as an uninterrupted one. The checkpoint records the case's SHA-256 and refuses a
-changed case.
+(write, then rename) beside the result (``OUT.nc.ckpt.npz``). Resuming truncates the
+result to the checkpoint's output count and continues from its state, so a resumed run
+gives the same answer as an uninterrupted one, bit for bit. The checkpoint records the
+case's SHA-256 and the scheme (name and parameters) and refuses a different one.
+
+The file is written with h5netcdf directly (no round trip through an ``xarray.Dataset``);
+names, units and coordinates come from :mod:`kanat.io.schema`, as for the in-memory
+recorder, so both read back as the same dataset.
 """
 from __future__ import annotations
 
@@ -20,86 +26,151 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-import h5netcdf
 import numpy as np
-import xarray as xr
 
 from kanat.errors import KanatError
-from kanat.io.results import _netcdf_attr, annotate
+from kanat.io.schema import TIME_COORD, Layout, attributes, netcdf_attr, time_dims
+
+CHUNK_OUTPUTS = 64
+"""Outputs per HDF5 chunk along ``time`` (appends stay cheap; reads by time stay quick)."""
+
+
+def part_path(path) -> Path:
+    """Where a run streams its result until it ends: ``OUT.nc.part``."""
+    path = Path(path)
+    return path.with_name(path.name + ".part")
+
+
+def _string_dtype():
+    import h5py
+
+    return h5py.string_dtype()
 
 
 class ResultStream:
-    """Append-as-you-go netCDF result (h5netcdf, unlimited ``time``).
-
-    Slices are buffered in memory and written in blocks, at the latest ``FLUSH_WALL_S``
-    seconds of wall time after the first unwritten one, and always by :meth:`flush`
-    (called before every checkpoint) and :meth:`close`.
+    """Run-loop observer: the result file, streamed (module docstring).
 
     Parameters
     ----------
     path : path-like
-        Result file; created (or, with ``resume_at``, reopened and truncated).
-    static : xarray.Dataset or None
-        Time-independent variables and the global attributes (None when resuming).
-    time_vars : dict of str to (tuple of str, str)
-        Time-dependent variables: dimensions after ``time`` and units.
-    resume_at : int, optional
-        Number of output slices to keep when resuming a run.
+        The final result file ``OUT.nc``.
     """
 
     FLUSH_WALL_S = 1.0
 
-    def __init__(self, path, static: xr.Dataset | None, time_vars: dict, resume_at: int | None = None):
+    def __init__(self, path):
         self.path = Path(path)
-        self.time_vars = dict(time_vars)
+        self.part = part_path(self.path)
+        self._file = None
+        self._buffer: list[tuple[float, dict]] = []
+        self._oldest = 0.0
+        self._names: tuple = ()
+
+    # --- observer protocol ---------------------------------------------------------
+
+    def start(self, layout: Layout, resume_at: int | None = None) -> None:
+        """Create the file, or reopen a killed run's file truncated to ``resume_at`` outputs."""
+        import h5netcdf
+
+        self._names = layout.time_variables
         if resume_at is None:
-            self._create(static)
-        self._file = h5netcdf.File(self.path, "a")
+            self._create(layout)
+        elif not self.part.exists():
+            if not self.path.exists():
+                raise KanatError(f"no result {self.path} (or {self.part}) to resume; run without --resume")
+            os.replace(self.path, self.part)
+        self._file = h5netcdf.File(self.part, "a")
         if resume_at is not None:
             self._file.resize_dimension("time", resume_at)
         self._file.attrs["status"] = "running"
         self._sync()
-        self._buffer: list[tuple[float, dict]] = []
-        self._oldest = 0.0
 
-    def _create(self, static: xr.Dataset) -> None:
-        ds = static.copy()
-        ds["time"] = ("time", np.zeros(0), {"units": "s", "long_name": "simulated time"})
-        for name, (dims, units) in self.time_vars.items():
-            shape = (0,) + tuple(ds.sizes[d] for d in dims)
-            ds[name] = (("time",) + tuple(dims), np.zeros(shape), {"units": units})
-        ds = annotate(ds)
-        ds.attrs = {k: _netcdf_attr(v) for k, v in ds.attrs.items()}
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        ds.to_netcdf(self.path, engine="h5netcdf", unlimited_dims=["time"])
-
-    @property
-    def count(self) -> int:
-        """Slices appended so far (written or buffered)."""
-        return self._file.dimensions["time"].size + len(self._buffer)
-
-    def append(self, t: float, **values) -> None:
-        """Add one output slice at time ``t`` [s]; every time variable must be given."""
-        missing = set(self.time_vars) - set(values)
-        if missing:
-            raise ValueError(f"missing time variables: {sorted(missing)}")
+    def record(self, point) -> None:
+        """Buffer one output (a :class:`kanat.dynamics.Point`); write the buffer when it is older
+        than ``FLUSH_WALL_S``."""
         if not self._buffer:
             self._oldest = time.perf_counter()
-        self._buffer.append((t, {k: np.array(v, dtype=float) for k, v in values.items()}))
+        self._buffer.append((point.time, point.values))
         if time.perf_counter() - self._oldest > self.FLUSH_WALL_S:
             self.flush()
 
     def flush(self) -> None:
-        """Write the buffered slices to the file as one block and flush it to disk."""
+        """Write the buffered slices as one block and push them to disk."""
         if not self._buffer:
             return
-        n, m = self._file.dimensions["time"].size, len(self._buffer)
-        self._file.resize_dimension("time", n + m)
-        self._file.variables["time"][n:n + m] = [t for t, _ in self._buffer]
-        for name in self.time_vars:
-            self._file.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
+        f = self._file
+        n, m = f.dimensions["time"].size, len(self._buffer)
+        f.resize_dimension("time", n + m)
+        f.variables["time"][n:n + m] = [t for t, _ in self._buffer]
+        for name in self._names:
+            f.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
         self._sync()
         self._buffer.clear()
+
+    def finish(self, status: str, final: dict, attrs: dict) -> None:
+        """Write what is buffered, the end-of-run variables and attributes; rename to ``OUT.nc``.
+
+        A run that ends with ``ok`` needs no resuming, so its checkpoint is removed; an
+        interrupted or failed run keeps it for ``--resume``.
+        """
+        self.flush()
+        f = self._file
+        for name, (dims, values) in final.items():
+            self._final_variable(name, dims, np.asarray(values))
+        for key, value in {**attrs, "status": status}.items():
+            f.attrs[key] = netcdf_attr(value)
+        f.close()
+        self._file = None
+        os.replace(self.part, self.path)
+        if status == "ok":
+            Checkpoint.path_for(self.path).unlink(missing_ok=True)
+
+    def abandon(self) -> None:
+        """Close the file as a killed run leaves it: status ``running``, unflushed outputs lost."""
+        if self._file is not None:
+            self._buffer.clear()
+            self._file.close()
+            self._file = None
+
+    # --- the file --------------------------------------------------------------------
+
+    def _create(self, layout: Layout) -> None:
+        import h5netcdf
+
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        sizes = layout.sizes()
+        with h5netcdf.File(self.part, "w") as f:
+            f.dimensions = {**sizes, "time": None}
+            for name, values in layout.labels.items():
+                var = f.create_variable(name, (name,), dtype=_string_dtype())
+                var[:] = np.array(list(values), dtype=object)
+            for name, (dims, values) in layout.static.items():
+                values = np.asarray(values)
+                text = values.dtype.kind in "OUS"
+                var = f.create_variable(name, dims, dtype=_string_dtype() if text else values.dtype)
+                var[...] = values.astype(object) if text else values
+                var.attrs.update(attributes(name, dims))
+            t = f.create_variable("time", ("time",), dtype="f8", chunks=(CHUNK_OUTPUTS,))
+            t.attrs.update(TIME_COORD.attrs())
+            for name in layout.time_variables:
+                dims = time_dims(name)
+                shape = tuple(max(sizes[d], 1) for d in dims[1:])
+                var = f.create_variable(name, dims, dtype="f8", chunks=(CHUNK_OUTPUTS,) + shape,
+                                        fillvalue=np.nan)
+                var.attrs.update(attributes(name, dims))
+            f.attrs.update({k: netcdf_attr(v) for k, v in layout.attrs.items()})
+
+    def _final_variable(self, name: str, dims: tuple, values: np.ndarray) -> None:
+        f = self._file
+        for dim, size in zip(dims, values.shape):
+            if dim not in f.dimensions:
+                f.dimensions[dim] = None                   # unlimited: a resumed run rewrites it
+            if f.dimensions[dim].isunlimited():
+                f.resize_dimension(dim, size)
+        var = f.variables[name] if name in f.variables else f.create_variable(name, dims, dtype=values.dtype)
+        if values.size:
+            var[...] = values
+        var.attrs.update(attributes(name, dims))
 
     def _sync(self) -> None:
         """Push everything written so far to disk, HDF5 metadata included.
@@ -109,19 +180,6 @@ class ResultStream:
         """
         self._file.flush()
         self._file._h5file.flush()
-
-    def close(self, status: str = "ok", **attrs) -> None:
-        """Write what is buffered, record the final status and attributes, and close the file.
-
-        A run closed with ``ok`` needs no resuming, so its checkpoint is removed; an interrupted
-        or failed run keeps it for ``--resume``.
-        """
-        self.flush()
-        for key, value in {"status": status, **attrs}.items():
-            self._file.attrs[key] = _netcdf_attr(value)
-        self._file.close()
-        if status == "ok":
-            Checkpoint.path_for(self.path).unlink(missing_ok=True)
 
 
 @dataclass(frozen=True)
@@ -135,6 +193,8 @@ class Checkpoint:
     outputs : int
         Output slices written up to and including this time.
     case_sha256 : str
+    scheme : str
+        The scheme's name and parameters (a resume must use the same).
     state : dict of str to ndarray
         The solver's arrays (positions, velocities, multistep history, ...).
     info : dict
@@ -144,6 +204,7 @@ class Checkpoint:
     time: float
     outputs: int
     case_sha256: str
+    scheme: str
     state: dict
     info: dict
 
@@ -152,18 +213,18 @@ class Checkpoint:
         return Path(str(result_path) + ".ckpt.npz")
 
     def save(self, result_path) -> Path:
-        """Write atomically beside the result file."""
+        """Write atomically beside the result file (write, then rename)."""
         path = self.path_for(result_path)
         tmp = path.with_name(path.name + ".part.npz")
         meta = json.dumps({"time": self.time, "outputs": self.outputs, "case_sha256": self.case_sha256,
-                           "info": self.info})
+                           "scheme": self.scheme, "info": self.info})
         np.savez(tmp, __meta__=np.array(meta), **self.state)
         os.replace(tmp, path)
         return path
 
     @classmethod
-    def load(cls, result_path, case_sha256: str) -> Checkpoint:
-        """Read the checkpoint of ``result_path``; refuse one written for another case."""
+    def load(cls, result_path, case_sha256: str, scheme: str) -> Checkpoint:
+        """Read the checkpoint of ``result_path``; refuse one written for another case or scheme."""
         path = cls.path_for(result_path)
         if not path.exists():
             raise KanatError(f"no checkpoint {path} to resume from; run without --resume to start afresh")
@@ -173,4 +234,8 @@ class Checkpoint:
         if meta["case_sha256"] != case_sha256:
             raise KanatError(f"{path} was written for a different case (the case file changed since); "
                              "run without --resume to start afresh")
-        return cls(meta["time"], meta["outputs"], meta["case_sha256"], state, meta["info"])
+        if meta.get("scheme") != scheme:
+            raise KanatError(f"{path} was written by scheme {meta.get('scheme')}, not {scheme}: one result "
+                             f"file holds one scheme; resume with the scheme it was started with, or run "
+                             "without --resume to start afresh")
+        return cls(meta["time"], meta["outputs"], meta["case_sha256"], meta["scheme"], state, meta["info"])

@@ -2,10 +2,9 @@
 
 Public API
 ----------
-run(case, output_path, *, scheme=None, resume=False, progress=None, checkpoint_every=None,
-    stop_after=None) -> RunSummary
-    Run a ``model: lumped`` case, streaming results and checkpoints (:mod:`.driver`); the steps
-    between outputs go through :func:`.advance.advance` (compiled paths :mod:`.fast`,
+LumpedModel(case, scheme=None)
+    A ``model: lumped`` case ready for the run loop of :mod:`kanat.dynamics` (:mod:`.adapter`);
+    the steps between outputs go through :func:`.advance.advance` (compiled paths :mod:`.fast`,
     :mod:`.fast_implicit`).
 build_network(case) -> Network
     The case as nodes, elements and bodies (:mod:`.network`).
@@ -13,12 +12,10 @@ equilibrium(net, case) -> (x, info)
     The initial static state (:mod:`.equilibrium`).
 LumpedSystem
     The equations of motion (:mod:`.system`); schemes in :mod:`.integrators`.
-
-Seed 004's example: :mod:`.seed004` (statistics, findings, ``python -m kanat.lumped.seed004``).
 """
-from kanat.lumped.driver import RunSummary, run
+from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.network import Network, build_network
 from kanat.lumped.system import LumpedSystem
 
-__all__ = ["LumpedSystem", "Network", "RunSummary", "build_network", "equilibrium", "run"]
+__all__ = ["LumpedModel", "LumpedSystem", "Network", "build_network", "equilibrium"]

@@ -1,7 +1,7 @@
 """Figure of the coupled tow (issue 6.5): top tension per stabilizer mode of the tow vessel.
 
 Draws on a new :class:`matplotlib.figure.Figure` (no pyplot state) from the summary dataset
-of :func:`kanat.vessel.coupled.summary_dataset`.
+of :func:`kanat.studies.pitch_tow.summary_dataset`.
 """
 from __future__ import annotations
 

@@ -6,15 +6,8 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from kanat.lumped.seed004 import (
-    BEFORE,
-    POINTS,
-    SETTLED,
-    TRANSIENT,
-    point_tension,
-    step_statistics,
-    step_time,
-)
+from kanat.analysis.step_response import BEFORE, SETTLED, TRANSIENT, point_tension, step_statistics, step_time
+from kanat.studies.seed004 import POINTS
 
 
 def plot_seed004(ds, path=None, points=POINTS) -> Figure:
@@ -29,7 +22,7 @@ def plot_seed004(ds, path=None, points=POINTS) -> Figure:
         A lumped result (case-format.md names) with a speed step.
     path : path-like, optional
     points : sequence of (label, cable, end)
-        See :data:`kanat.lumped.seed004.POINTS`.
+        See :data:`kanat.studies.seed004.POINTS`.
     """
     t = ds["time"].values
     ts, te = step_time(ds), float(t[-1])

@@ -18,7 +18,7 @@ def _save(fig: Figure, path) -> Figure:
 
 
 def plot_stability_map(ds, path=None) -> Figure:
-    """Stability map of a :func:`kanat.continuum.stability.stability_sweep` dataset.
+    """Stability map of a :func:`kanat.studies.stability.stability_sweep` dataset.
 
     Left: each run at its ``(sigma_long, sigma_tr)``, filled when bounded, crossed when not,
     coloured by its distance from the reference; the paper's stable band of ``sigma_long``

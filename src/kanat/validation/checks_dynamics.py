@@ -198,17 +198,9 @@ simulation: {scheme: generalized-alpha, lambda_inf: -0.5, duration: 30, dt: 1.0,
        "body position relative to the tow point and the tension stay at their initial values; largest "
        "relative change (of 1000 m, of the top tension) over 30 s", Tolerance(abs=1e-6))
 def steady_tow():
-    import tempfile
-    from pathlib import Path
+    from kanat import api
 
-    from kanat.continuum.run import run
-    from kanat.io import parse_case
-    from kanat.io.results import read_result
-
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "steady.nc"
-        run(parse_case(STEADY_TOW), path)
-        ds = read_result(path)
+    ds = api.simulate(api.load_case(STEADY_TOW))
     relative = ds["body_position"].values[:, 0] - ds["vessel_position"].values
     drift = np.abs(relative - relative[0]).max() / 1000.0
     tension = np.abs(ds["tension"].values - ds["tension"].values[0]).max() / ds["tension"].values.max()
@@ -219,7 +211,7 @@ def steady_tow():
        "periodic orbit by shooting (time integration); worst max|difference| / amplitude over the modes "
        "off, sinusoidal, rectangular (50 harmonics)", Tolerance(abs=0.01))
 def pitch_fourier_vs_time():
-    from kanat.vessel import Off, PitchSystem, Rectangular, Sinusoidal, solve_mode
+    from kanat.vessel.pitch import Off, PitchSystem, Rectangular, Sinusoidal, solve_mode
 
     system, times = PitchSystem(2e7, 0.876, 7e5, 2 * math.pi / 10), np.linspace(0.0, 10.0, 401)
     worst = 0.0
@@ -233,7 +225,7 @@ def pitch_fourier_vs_time():
 @check("pitch-rectangular-mean", "7.9", "seed 003: mean pitch offset of the rectangular mode",
        "M0 / (2 I_y omega_0^2) (the mean of f_2 = M0/2, SPEC §6.2)", Tolerance(rel=1e-3), "rad")
 def pitch_rectangular_mean():
-    from kanat.vessel import PitchSystem, Rectangular, solve_mode
+    from kanat.vessel.pitch import PitchSystem, Rectangular, solve_mode
 
     i_y, w0, m0 = 2e7, 0.876, 1e6
     times = np.linspace(0.0, 10.0, 2001)[:-1]

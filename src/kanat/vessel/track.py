@@ -97,11 +97,11 @@ class VesselTrack:
 
         ``pitch`` (a callable ``t -> (angle, rate, acceleration)``) overrides the vessel's
         own; without it, a ``vessel.pitch`` block becomes the steady pitch of its stabilizer
-        mode (:func:`kanat.vessel.pitch_motion.pitch_motion`; may raise ResonanceError).
+        mode (:func:`kanat.vessel.pitch.motion.pitch_motion`; may raise ResonanceError).
         """
         if pitch is None and getattr(vessel, "pitch", None) is not None:
             # imported here: this method is the hook, and the solver is only needed with a pitch block
-            from kanat.vessel.pitch_motion import pitch_motion
+            from kanat.vessel.pitch.motion import pitch_motion
 
             pitch = pitch_motion(vessel.pitch)
         return cls(compile_phases(vessel.track), vessel.tow_point, pitch)

@@ -24,9 +24,9 @@ from scipy.optimize import linprog
 
 from kanat.errors import SolverError
 
-from .pitch_fourier import steady_state, wave_series
-from .pitch_laws import Shaped
-from .pitch_system import PitchSystem
+from .fourier import steady_state, wave_series
+from .laws import Shaped
+from .system import PitchSystem
 
 OBJECTIVES = ("amplitude", "max_abs")
 SAMPLES = 720      # time samples per period in the linear programme (every 0.5 deg of phase)

@@ -1,8 +1,8 @@
 """Seed 000's three comparisons (Kaliukh & Vusatiuk 2018), one function and one command each.
 
-    python -m kanat.continuum.seed000 accel      -o DIR    # towed vehicle from rest (section 3)
-    python -m kanat.continuum.seed000 planar80   -o DIR    # 80 m tow 15 -> 20 kn (section 4.1, table 1)
-    python -m kanat.continuum.seed000 spatial100 -o DIR    # 100 m tow, 45 deg turn (section 4.2, table 2)
+    kanat study seed000 accel      -o DIR    # towed vehicle from rest (section 3)
+    kanat study seed000 planar80   -o DIR    # 80 m tow 15 -> 20 kn (section 4.1, table 1)
+    kanat study seed000 spatial100 -o DIR    # 100 m tow, 45 deg turn (section 4.2, table 2)
 
 Each writes a CSV table and a PNG figure into ``DIR`` and prints the table. The cases are
 ``examples/seed000_*.yaml``; their comments list the published data and the unpublished
@@ -15,19 +15,16 @@ measured from astern (``atan2(t_y, -t_x)``; the paper's ``theta`` has another or
 """
 from __future__ import annotations
 
-import argparse
-import time
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from kanat import api, dynamics
 from kanat.continuum.chart import frames
 from kanat.continuum.models import model_for
-from kanat.continuum.stepper import NewtonFailure
 from kanat.io import parse_case
-from kanat.schemes import get_scheme
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 FULL = "generalized-alpha"
@@ -35,7 +32,20 @@ FULL = "generalized-alpha"
 
 @dataclass(frozen=True)
 class Trace:
-    """States of one run at its output times, and its cost."""
+    """States of one run at its output times, and its cost.
+
+    Attributes
+    ----------
+    scheme : str
+    times : ndarray
+        Times of the states kept [s].
+    states : list
+        The continuum model's states at ``times``.
+    wall_time_s : float
+        The run's solver time (compiling excluded) [s].
+    steps : int
+    status : str
+    """
 
     scheme: str
     times: np.ndarray
@@ -54,26 +64,46 @@ def case_text(name: str, path=None) -> str:
     return path.read_text()
 
 
+class KeepStates:
+    """Run-loop observer keeping the model's states at the outputs in ``times`` [s]."""
+
+    def __init__(self, times):
+        self.wanted = {round(float(t), 9) for t in times}
+        self.times, self.states = [], []
+
+    def start(self, layout, resume_at=None):
+        """Nothing to prepare."""
+
+    def record(self, point) -> None:
+        if round(point.time, 9) in self.wanted:
+            self.times.append(point.time)
+            self.states.append(point.state)
+
+    def flush(self):
+        """Nothing buffered."""
+
+    def finish(self, status, final, attrs):
+        """Nothing to close."""
+
+
 def simulate(case, scheme, times, dt=None) -> Trace:
-    """Run ``case`` in memory with ``scheme`` and keep the states at ``times`` (multiples of ``dt``)."""
-    model = model_for(case)
+    """Run ``case`` in memory through the run loop with ``scheme`` and keep the states at ``times``
+    (multiples of ``dt``, default the case's)."""
     dt = dt or case.simulation.dt
-    chosen = get_scheme(scheme, "continuum", gamma=case.simulation.gamma)
-    state = model.initial()
-    kept, steps = [], 0
-    start = time.perf_counter()
-    status = "ok"
-    for target in times:
-        try:
-            while state.t < target - 0.5 * dt:
-                state, _ = chosen.step(model, state, dt)
-                steps += 1
-        except NewtonFailure as failure:
-            status = f"{failure} at t = {state.t:.4g} s near node {failure.node}"
-            break
-        kept.append(state)
-    return Trace(chosen.name, np.asarray(times[:len(kept)], dtype=float), kept, time.perf_counter() - start,
-                 steps, status)
+    counts = np.round(np.asarray(times, float) / dt).astype(int)
+    every = int(np.gcd.reduce(counts[counts > 0])) if np.any(counts > 0) else 1
+    sim = case.simulation.model_copy(update={"dt": dt, "output_dt": every * dt, "duration": counts.max() * dt})
+    varied = case.model_copy(update={"simulation": sim})
+    keep = KeepStates(np.asarray(times, float))
+    models = []
+
+    def build():
+        models.append(api.dynamic_model(varied, scheme))
+        return models[-1]
+    summary = dynamics.run(build, [keep])
+    status = summary.status.removeprefix("failed: ")
+    return Trace(models[0].scheme.name, np.asarray(keep.times), keep.states, summary.solver_time_s,
+                 summary.steps, status)
 
 
 def tangents(state) -> np.ndarray:
@@ -205,44 +235,3 @@ def _binormal_speed(state) -> np.ndarray:
     horizontal = np.cross(t, np.array([0.0, 0.0, 1.0]))
     norm = np.linalg.norm(horizontal, axis=1, keepdims=True)
     return np.sum(velocity * horizontal / np.where(norm > 0, norm, 1.0), axis=1)
-
-
-def main(argv=None) -> None:
-    """Command line: ``python -m kanat.continuum.seed000 {accel,planar80,spatial100} -o DIR``."""
-    from kanat.report.stability_plot import plot_accel, plot_planar80, plot_spatial100
-
-    parser = argparse.ArgumentParser(prog="python -m kanat.continuum.seed000", description=__doc__.splitlines()[0])
-    parser.add_argument("comparison", choices=["accel", "planar80", "spatial100"])
-    parser.add_argument("-o", "--output", type=Path, default=Path("."), help="folder for the table and the figure")
-    parser.add_argument("--case", type=Path, default=None, help="case file (default: examples/seed000_<name>.yaml)")
-    args = parser.parse_args(argv)
-    out = args.output
-    out.mkdir(parents=True, exist_ok=True)
-    pd.set_option("display.width", 200)
-    pd.set_option("display.max_columns", 30)
-    if args.comparison == "accel":
-        table = accel(path=args.case)
-        table.to_csv(out / "seed000_accel.csv", index=False)
-        plot_accel(table, out / "seed000_accel.png")
-        print(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
-                                                               values=["distance", "depth"]).round(4))
-        print("wall time [s]:", {k: round(v, 2) for k, v in table.attrs["wall_time_s"].items()})
-    elif args.comparison == "planar80":
-        table = planar80(path=args.case)
-        table.to_csv(out / "seed000_planar80.csv", index=False)
-        plot_planar80(table, out / "seed000_planar80.png")
-        print(table.round(4).to_string(index=False))
-        print("speed-up of the wave-factorized scheme:", {k: round(v, 2) for k, v in table.attrs["speedup"].items()})
-    else:
-        table, history = spatial100(path=args.case)
-        table.to_csv(out / "seed000_spatial100.csv", index=False)
-        history.to_csv(out / "seed000_spatial100_history.csv", index=False)
-        plot_spatial100(table, history, out / "seed000_spatial100.png")
-        print(table.T.round(4).to_string())
-        print(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
-        print("wall time [s]:", {k: round(v, 2) for k, v in table.attrs["wall_time_s"].items()})
-    print(f"wrote {out}")
-
-
-if __name__ == "__main__":
-    main()

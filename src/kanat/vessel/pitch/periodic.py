@@ -22,8 +22,8 @@ from scipy.integrate import solve_ivp
 
 from kanat.errors import SolverError
 
-from .pitch_laws import Piece
-from .pitch_system import PitchSystem
+from .laws import Piece
+from .system import PitchSystem
 
 RTOL = 1e-11                # relative tolerance of DOP853
 ATOL_FRACTION = 1e-13       # absolute tolerance, as a fraction of the angle scale M_m / k
@@ -150,7 +150,7 @@ def periodic_orbit(system: PitchSystem, pieces: list[Piece], times=None, guess=N
     raise SolverError(
         f"periodic shooting for the pitch did not converge in {NEWTON_MAX_ITERATIONS} Newton "
         f"iterations (residual {np.max(np.abs(r) / scale):.3g} of the state scale); give "
-        "damping_ratio > 0, lower the feedback gain, or use kanat.vessel.pitch_time.transient")
+        "damping_ratio > 0, lower the feedback gain, or use kanat.vessel.pitch.periodic.transient")
 
 
 def _with_iterations(sol: PeriodSolution, iterations: int) -> PeriodSolution:

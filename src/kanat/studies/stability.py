@@ -19,9 +19,10 @@ import time
 import numpy as np
 import xarray as xr
 
+from kanat import api, dynamics
 from kanat.continuum import kernels2d as k
 from kanat.continuum.models import model_for
-from kanat.continuum.stepper import NewtonFailure
+from kanat.errors import SolverError
 from kanat.schemes import get_scheme
 
 BOUND_FACTOR = 10.0           # tension beyond this multiple of the reference's largest tension is unbounded
@@ -37,22 +38,38 @@ def courant_numbers(model, state, dt: float) -> tuple[float, float]:
     return c_l * dt / ds, c_t * dt / ds
 
 
+class PeakTension:
+    """Run-loop observer: the largest tension so far, the last state, and a stop beyond ``bound`` [N]."""
+
+    def __init__(self, bound: float = np.inf):
+        self.bound, self.peak, self.state = bound, 0.0, None
+
+    def start(self, layout, resume_at=None):
+        """Nothing to prepare."""
+
+    def record(self, point) -> None:
+        self.state = point.state
+        self.peak = max(self.peak, float(np.max(np.abs(point.values["tension"]))))
+        if self.peak > self.bound:
+            raise dynamics.StopRun(f"tension {self.peak:.3g} N beyond the bound {self.bound:.3g} N at "
+                                   f"t = {point.time:.4g} s")
+
+    def flush(self):
+        """Nothing buffered."""
+
+    def finish(self, status, final, attrs):
+        """Nothing to close."""
+
+
 def run_in_memory(case, scheme, dt: float, duration: float, bound: float = np.inf):
-    """Run ``case`` with ``scheme`` and step ``dt`` for ``duration``: ``(final_state, peak_tension, status)``."""
-    model = model_for(case)
-    state = model.initial()
-    peak = float(np.max(state.y[:, 0]))
-    steps = round(duration / dt)
+    """Run ``case`` with ``scheme`` and step ``dt`` for ``duration`` through the run loop, checking the
+    tension after every step: ``(last_state, peak_tension, status)``."""
+    sim = case.simulation.model_copy(update={"dt": dt, "output_dt": dt, "duration": round(duration / dt) * dt})
+    varied = case.model_copy(update={"simulation": sim})
+    peak = PeakTension(bound)
     with np.errstate(all="ignore"):
-        for _ in range(steps):
-            try:
-                state, _ = scheme.step(model, state, dt)
-            except NewtonFailure as failure:
-                return state, peak, f"{failure} at t = {state.t:.4g} s near node {failure.node}"
-            peak = max(peak, float(np.max(np.abs(state.y[:, 0]))))
-            if not np.isfinite(peak) or peak > bound:
-                return state, peak, f"tension {peak:.3g} N beyond the bound {bound:.3g} N at t = {state.t:.4g} s"
-    return state, peak, "ok"
+        summary = dynamics.run(lambda: api.dynamic_model(varied, scheme), [peak])
+    return peak.state, peak.peak, summary.status.removeprefix("failed: ")
 
 
 def stability_sweep(case, scheme, dts, duration: float | None = None, reference=None,
@@ -93,7 +110,7 @@ def stability_sweep(case, scheme, dts, duration: float | None = None, reference=
     ref_dt = reference_dt or dts[0]
     ref_state, ref_peak, ref_status = run_in_memory(case, ref_scheme, ref_dt, duration)
     if ref_status != "ok":
-        raise NewtonFailure(f"the reference run ({ref_scheme.name}, dt = {ref_dt:g} s) failed: {ref_status}", 0)
+        raise SolverError(f"the reference run ({ref_scheme.name}, dt = {ref_dt:g} s) failed: {ref_status}")
     model = model_for(case)
     initial = model.initial()
     length = model.cable.length

@@ -1,9 +1,9 @@
 """Does a pitch stabilizer on the tow vessel calm the cable? (issue 6.5, SPEC §6.2 coupled to the tow)
 
 :func:`compare_modes` runs one continuum case, whose ``vessel.pitch`` block sets the ship,
-the sea and the stabilizer, once per stabilizer mode (``kanat.continuum.run.run``). The
+the sea and the stabilizer, once per stabilizer mode (:func:`kanat.api.run`). The
 stern tow point follows the steady pitch of each mode
-(:func:`kanat.vessel.pitch_motion.pitch_motion`). After the transient, the top tension gets
+(:func:`kanat.vessel.pitch.motion.pitch_motion`). After the transient, the top tension gets
 these statistics:
 
 * mean, min, max, range (max - min) and standard deviation, over a window of whole wave periods
@@ -15,16 +15,13 @@ these statistics:
 
 The statistics also hold the tow point's kinematics over one period, computed from the track,
 not from the cable: the pitch amplitude, and the range of the heave and of the vertical velocity.
-One result file per mode is written (``DIR/<mode>.nc``), plus ``DIR/summary.nc`` and the
-figure ``DIR/coupled.png`` (:func:`kanat.report.coupled_plot.plot_coupled`).
-
-Run it as ``python -m kanat.vessel.coupled CASE -o DIR``.
+One result file per mode is written (``DIR/<mode>.nc``), plus ``DIR/summary.nc``; the command
+``kanat study pitch-tow CASE -o DIR`` also draws ``DIR/coupled.png``
+(:func:`kanat.report.coupled_plot.plot_coupled`).
 """
 from __future__ import annotations
 
-import argparse
 import math
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -145,7 +142,7 @@ def rest_phase_deg(block) -> float:
     """
     from scipy.optimize import brentq
 
-    from kanat.vessel.pitch_motion import pitch_motion
+    from kanat.vessel.pitch.motion import pitch_motion
 
     motion = pitch_motion(block)
     times = np.linspace(0.0, motion.period, KINEMATIC_SAMPLES + 1)
@@ -271,8 +268,7 @@ def run_modes(case, out_dir, modes=DEFAULT_MODES, *, transient: float | None = N
     progress : callable, optional
         ``progress(mode, run_summary)`` after each run.
     """
-    from kanat.continuum.run import run
-    from kanat.io.results import read_result
+    from kanat import api
 
     _check_case(case)
     out_dir = Path(out_dir)
@@ -285,10 +281,10 @@ def run_modes(case, out_dir, modes=DEFAULT_MODES, *, transient: float | None = N
         if start_at_rest:
             moded = with_phase(moded, rest_phase_deg(moded.vessel.pitch))
         path = out_dir / f"{mode}.nc"
-        summary = run(moded, path)
+        outcome = api.run(moded, output=path)
+        summary, ds = outcome.summary, outcome.dataset
         if progress is not None:
             progress(mode, summary)
-        ds = read_result(path)
         time, top = ds["time"].values, ds["tension"].values[:, 0]
         reached = summary.ok and time[-1] >= window[1] - 1e-9
         stats = tension_statistics(time, top, *window) if reached else None
@@ -298,23 +294,23 @@ def run_modes(case, out_dir, modes=DEFAULT_MODES, *, transient: float | None = N
 
 
 def compare_modes(case, out_dir, modes=DEFAULT_MODES, *, transient: float | None = None,
-                  start_at_rest: bool = True, plot: bool = True) -> str:
-    """Run ``case`` per stabilizer mode; write the results, the summary and the figure; return the table.
+                  start_at_rest: bool = True) -> tuple[Comparison, xr.Dataset]:
+    """Run ``case`` per stabilizer mode; write the results and the summary.
 
-    Writes ``out_dir/<mode>.nc`` (each run's result file), ``out_dir/summary.nc``
-    (:func:`summary_dataset`) and, with ``plot``, ``out_dir/coupled.png``. ``transient`` and
-    ``start_at_rest`` as in :func:`run_modes`.
+    Writes ``out_dir/<mode>.nc`` (each run's result file) and ``out_dir/summary.nc``
+    (:func:`summary_dataset`). ``transient`` and ``start_at_rest`` as in :func:`run_modes`.
+
+    Returns
+    -------
+    (Comparison, xarray.Dataset)
+        The comparison (its ``table()`` is the side-by-side text) and the summary dataset.
     """
     from kanat.io.results import write_result
 
     comparison = run_modes(case, out_dir, modes, transient=transient, start_at_rest=start_at_rest)
     summary = comparison.dataset(case)
     write_result(summary, Path(out_dir) / "summary.nc")
-    if plot:
-        from kanat.report.coupled_plot import plot_coupled
-
-        plot_coupled(summary, Path(out_dir) / "coupled.png")
-    return comparison.table()
+    return comparison, summary
 
 
 def _check_case(case) -> None:
@@ -411,33 +407,3 @@ def summary_dataset(comparison: Comparison, case) -> xr.Dataset:
                        snap_definition="top tension below snap_fraction * its window mean, then back above it",
                        result_files=" ".join(r.path.name for r in runs))
     return xr.Dataset(data, coords={"mode": np.array(modes, dtype=object), "time": time}, attrs=attrs)
-
-
-def main(argv=None) -> int:
-    """``python -m kanat.vessel.coupled CASE -o DIR [--modes ...] [--transient S] [--no-plot]``."""
-    from kanat.io import load_case
-
-    parser = argparse.ArgumentParser(prog="python -m kanat.vessel.coupled", description=(
-        "Run a towed case once per stabilizer mode of the tow vessel and compare the top tension."))
-    parser.add_argument("case", type=Path, help="continuum case with a vessel.pitch block")
-    parser.add_argument("-o", "--output", type=Path, required=True, help="directory for the results")
-    parser.add_argument("--modes", nargs="+", default=list(DEFAULT_MODES), help="stabilizer modes")
-    parser.add_argument("--transient", type=float, default=None,
-                        help="seconds left out of the statistics (default a third of the duration)")
-    parser.add_argument("--case-phase", action="store_true",
-                        help="start every mode at the case's phase_deg (default: where its pitch rate is 0)")
-    parser.add_argument("--no-plot", action="store_true", help="skip the figure")
-    args = parser.parse_args(argv)
-    try:
-        table = compare_modes(load_case(args.case), args.output, tuple(args.modes), transient=args.transient,
-                              start_at_rest=not args.case_phase, plot=not args.no_plot)
-    except KanatError as error:
-        print(f"error: {error}", file=sys.stderr)
-        return 1
-    print(table)
-    print(f"wrote {args.output}/<mode>.nc, summary.nc" + ("" if args.no_plot else ", coupled.png"))
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,5 +1,5 @@
 """Ship pitch with a reactive stabilizer (seed 003, SPEC §6.2): modes, both solution
-paths, the comparison table and the ``kanat pitch`` case runner.
+paths and the comparison table.
 
 ``I_y phi'' + c phi' + k phi = M_m sin(omega t + pi) + f(t)``, ``0 <= f <= M0``.
 
@@ -7,9 +7,9 @@ Two paths to the periodic steady state, which must agree:
 
 * ``"fourier"``: the series of paper eqs. 7, 10, 11, 12 (SPEC §6.2) with ``N`` harmonics,
   each answered by ``A / (I_y (omega_0^2 - (n omega)^2))`` or, damped, the complex transfer
-  function (:mod:`.pitch_fourier`); open-loop modes only;
+  function (:mod:`.fourier`); open-loop modes only;
 * ``"shooting"``: DOP853 time integration with Newton shooting on the initial state for
-  the periodic orbit (:mod:`.pitch_time`), for every mode. The feedback mode has no
+  the periodic orbit (:mod:`.periodic`), for every mode. The feedback mode has no
   open-loop Fourier form and is solved this way only.
 
 ``solve_pitch`` solves each mode by its primary path (Fourier when it has one) and, with
@@ -17,20 +17,18 @@ Two paths to the periodic steady state, which must agree:
 """
 from __future__ import annotations
 
-import time as _time
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from kanat.errors import KanatError
 from kanat.model.problems import STABILIZER_MODES
 
-from .pitch_fourier import fourier_pitch
-from .pitch_laws import OPEN_LOOP, Feedback
-from .pitch_optimal import optimal_shape
-from .pitch_system import PitchSystem
-from .pitch_time import periodic_orbit
+from .fourier import fourier_pitch
+from .laws import OPEN_LOOP, Feedback
+from .optimal import optimal_shape
+from .system import PitchSystem
+from .periodic import periodic_orbit
 
 MODES = STABILIZER_MODES     # off, sinusoidal, rectangular, feedback, optimal
 PAPER_MODES = ("off", "sinusoidal", "rectangular")
@@ -250,46 +248,3 @@ def summary_table(result: PitchResult) -> str:
     lines.append("off/mode: how many times the stabilizer reduces the pitch; Fourier vs shooting: "
                  "max_t |phi_F - phi_T| / amplitude")
     return "\n".join(lines)
-
-
-def run_pitch_case(case, output_path, plot_dir=None):
-    """Solve a ``model: pitch`` case, write its result file and, optionally, its figures.
-
-    Parameters
-    ----------
-    case : kanat.model.Case
-        With a ``pitch`` block.
-    output_path : path-like
-        netCDF result (case-format.md: ``pitch(mode, time)``, ``stabilizer_moment(mode,
-        time)``, ``amplitude(mode)``, ``max_abs(mode)``). On a solver failure a result
-        holding only the provenance, with ``status`` saying why, is written, and the
-        error is raised again.
-    plot_dir : path-like, optional
-        Directory for the figures (:func:`kanat.report.pitch_plot.plot_pitch_case`); a
-        path ending in ``.png`` gets fig. 2 and the other figures beside it.
-
-    Returns
-    -------
-    (xarray.Dataset, str)
-        The result written and the comparison table (:func:`summary_table`).
-    """
-    from kanat.io.results import failed_dataset, pitch_dataset, write_result
-
-    if case.pitch is None:
-        raise KanatError(f"case '{case.name}' has no 'pitch' block; kanat pitch solves model: pitch "
-                         "cases (see docs/case-format.md)")
-    start = _time.perf_counter()
-    try:
-        result = solve_pitch(case.pitch, name=case.name)
-    except KanatError as error:
-        write_result(failed_dataset(case, str(error), model="pitch", scheme="fourier+shooting",
-                                    wall_time_s=_time.perf_counter() - start), output_path)
-        raise
-    ds = pitch_dataset(result, case, wall_time_s=_time.perf_counter() - start)
-    write_result(ds, output_path)
-    if plot_dir is not None:
-        from kanat.report.pitch_plot import plot_pitch_case
-
-        from .pitch_scan import figure_data
-        plot_pitch_case(result, figure_data(result), Path(plot_dir))
-    return ds, result.table()

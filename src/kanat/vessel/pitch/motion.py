@@ -24,9 +24,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .pitch import PitchResponse, solve_pitch
-from .pitch_fourier import fourier_pitch
-from .pitch_laws import FourierSeries
+from .solve import PitchResponse, solve_pitch
+from .fourier import fourier_pitch
+from .laws import FourierSeries
 
 
 @dataclass(frozen=True)

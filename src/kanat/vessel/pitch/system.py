@@ -12,12 +12,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from kanat.errors import SolverError
-
-RESONANCE_RTOL = 1e-3
-"""Relative detuning ``|n omega - omega_0| / omega_0`` below which an undamped case is
-refused. Within 0.1 % of resonance the undamped amplification ``1/|1 - (n omega/omega_0)^2|``
-exceeds ~500, and any real damping ratio above 0.001 would change the answer by more
-than half: the undamped steady state says nothing there."""
+from kanat.model.problems import RESONANCE_RTOL
 
 
 class ResonanceError(SolverError):

@@ -8,10 +8,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .pitch_fourier import steady_state, wave_series
-from .pitch_laws import OPEN_LOOP
-from .pitch_system import PitchSystem, ResonanceError
-from .pitch_time import periodic_orbit
+from kanat.vessel.pitch.fourier import steady_state, wave_series
+from kanat.vessel.pitch.laws import OPEN_LOOP
+from kanat.vessel.pitch.system import PitchSystem, ResonanceError
+from kanat.vessel.pitch.periodic import periodic_orbit
 
 CLAIM_FACTOR = 2.0    # "the amplitude falls more than 2 times" (paper, after fig. 2)
 SCAN_SAMPLES = 721    # time samples per period of a scan (every 0.5 deg of phase)
@@ -109,7 +109,7 @@ def moment_surface(system: PitchSystem, mode: str, max_moments, times, harmonics
 
 def truncation_errors(system: PitchSystem, law, max_moment: float, harmonics, times) -> np.ndarray:
     """``max_t |phi_N - phi_shooting| / amplitude`` for each ``N`` in ``harmonics``, shape (k,)."""
-    from .pitch_fourier import fourier_pitch
+    from kanat.vessel.pitch.fourier import fourier_pitch
 
     times = np.asarray(times, dtype=float)
     reference = periodic_orbit(system, law.pieces(max_moment, system.wave_frequency), times).pitch

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .pitch_laws import FourierSeries, OpenLoopLaw
-from .pitch_system import PitchSystem
+from .laws import FourierSeries, OpenLoopLaw
+from .system import PitchSystem
 
 
 def harmonic_response(system: PitchSystem, n, cos_amp, sin_amp) -> tuple[np.ndarray, np.ndarray]:
@@ -57,7 +57,7 @@ def steady_state(system: PitchSystem, forcing: FourierSeries) -> FourierSeries:
     Raises
     ------
     ResonanceError
-        Undamped with a harmonic within :data:`~.pitch_system.RESONANCE_RTOL` of ``omega_0``.
+        Undamped with a harmonic within :data:`~kanat.model.problems.RESONANCE_RTOL` of ``omega_0``.
     """
     system.check_resonance()
     n = np.arange(1, forcing.harmonics + 1)

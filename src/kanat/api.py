@@ -1,0 +1,296 @@
+"""kanat's front door: load a case, solve its statics, simulate it, read a result.
+
+>>> import kanat
+>>> case = kanat.load_case("examples/speed_step_2d.yaml")
+>>> longer = case.replace({"cables[0].length": 1200})          # a validated new case
+>>> ds = kanat.simulate(longer)                                  # in memory, no file
+>>> ds.tension.sel(time=600).plot(x="s")                         # doctest: +SKIP
+
+Every model runs through one table, :data:`MODELS`: the steady models (``statics``,
+``pitch``) return their dataset at once; the dynamic ones (``continuum``, ``lumped``) are
+built here and driven by the one run loop of :mod:`kanat.dynamics`, their outputs going
+to an in-memory recorder or streamed to a netCDF file with checkpoints. The command line
+and the parameter studies call these functions and nothing below them.
+"""
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass
+from os import PathLike
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+from kanat import __version__, dynamics
+from kanat.continuum.adapter import ContinuumModel
+from kanat.errors import CaseError, KanatError
+from kanat.lumped.adapter import LumpedModel
+from kanat.model import Case
+
+
+class RunFailedWarning(UserWarning):
+    """A simulation that stopped before its end; its result says why in ``attrs["status"]``."""
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What running a case gave.
+
+    Attributes
+    ----------
+    status : str
+        ``ok`` or ``failed: ...`` (also the dataset's ``status`` attribute).
+    text : str
+        A few lines for the terminal: the run summary, or the statics or pitch table.
+    dataset : xarray.Dataset
+        The result (read back from ``output`` when one was written).
+    output : Path or None
+    summary : kanat.dynamics.RunSummary or None
+        Dynamic models only.
+    solution : object or None
+        Steady models only: the solver's own result (:class:`kanat.statics.StaticsResult`,
+        :class:`kanat.vessel.pitch.PitchResult`), for pictures.
+    """
+
+    status: str
+    text: str
+    dataset: Any
+    output: Path | None = None
+    summary: dynamics.RunSummary | None = None
+    solution: Any = None
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "ok"
+
+
+# --- the steady models ------------------------------------------------------------------
+
+def _statics_dataset(case: Case, method: str = "auto"):
+    from kanat.io.results import statics_dataset
+    from kanat.statics import solve_statics as solve
+
+    start = time.perf_counter()
+    result = solve(case, method=method)
+    return statics_dataset(result, wall_time_s=time.perf_counter() - start), result.summary(), result
+
+
+def _pitch_dataset(case: Case, method: str = "auto"):
+    from kanat.io.results import pitch_dataset
+    from kanat.vessel.pitch import solve_pitch
+
+    if case.pitch is None:
+        raise KanatError(f"case '{case.name}' has no 'pitch' block; the pitch model solves model: pitch cases")
+    start = time.perf_counter()
+    result = solve_pitch(case.pitch, name=case.name)
+    return pitch_dataset(result, case, wall_time_s=time.perf_counter() - start), result.table(), result
+
+
+@dataclass(frozen=True)
+class Steady:
+    """A model solved at once: ``solve(case, method) -> (dataset, text, solution)``."""
+
+    solve: Callable
+
+
+@dataclass(frozen=True)
+class Dynamic:
+    """A model run by :func:`kanat.dynamics.run`: ``build(case, scheme) -> DynamicModel``."""
+
+    build: Callable
+
+
+MODELS: dict[str, Steady | Dynamic] = {
+    "statics": Steady(_statics_dataset),
+    "pitch": Steady(_pitch_dataset),
+    "continuum": Dynamic(ContinuumModel),
+    "lumped": Dynamic(LumpedModel),
+}
+"""Every model by its case-file name (``model:``)."""
+
+
+# --- the front door ---------------------------------------------------------------------
+
+def load_case(source: str | PathLike | Mapping) -> Case:
+    """A validated case from a file, YAML text or a mapping.
+
+    Parameters
+    ----------
+    source : path-like, str or mapping
+        A case file (YAML, or a MoorDyn input file), the YAML text of a case, or the case
+        as nested dicts and lists (the YAML structure).
+
+    Returns
+    -------
+    kanat.model.Case
+
+    Raises
+    ------
+    kanat.errors.CaseError
+        Every problem at once, with file, line and key path.
+
+    Warns
+    -----
+    kanat.io.CaseWarning
+        For a case that runs but probably not as meant.
+    """
+    from kanat.io import parse_case
+    from kanat.io import load_case as load_file
+
+    if isinstance(source, Mapping):
+        import yaml
+
+        return parse_case(yaml.safe_dump(dict(source), sort_keys=False), file="<dict>")
+    if isinstance(source, str) and ("\n" in source or ":" in source and not Path(source).suffix):
+        return parse_case(source, file="<text>")
+    return load_file(source)
+
+
+def solve_statics(case: Case, method: str = "auto"):
+    """The steady state of a case, as the dataset ``kanat statics`` writes.
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+        Any case with cables (its vessel's initial speed sets the flow), or a seed 001
+        ``sphere_two_cables`` problem.
+    method : str
+        ``auto``, ``shooting``, ``collocation`` or ``catenary``.
+
+    Returns
+    -------
+    xarray.Dataset
+        Positions, tensions and angles at the nodes, no ``time`` dimension.
+
+    Raises
+    ------
+    kanat.errors.SolverError
+        When no steady state is found (the message says what was tried).
+    """
+    return _statics_dataset(case, method)[0]
+
+
+def dynamic_model(case: Case, scheme=None):
+    """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme``."""
+    entry = MODELS.get(case.model)
+    if not isinstance(entry, Dynamic):
+        dynamic = ", ".join(k for k, v in MODELS.items() if isinstance(v, Dynamic))
+        raise KanatError(f"model '{case.model}' is not a dynamic model; dynamic models: {dynamic}")
+    return entry.build(case, scheme)
+
+
+def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=None,
+        checkpoint_every: int | None = None, observers=(), method: str = "auto", model: str | None = None) -> Outcome:
+    """Run any case with a model of :data:`MODELS`; the command line's ``kanat run``.
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    scheme : str or kanat.schemes.Scheme, optional
+        Dynamic models: overrides ``simulation.scheme``.
+    output : path-like, optional
+        Result file (netCDF). Dynamic runs stream into it as they go (``OUT.nc.part`` until
+        they end) and checkpoint beside it; None keeps the result in memory only.
+    resume : bool
+        Continue a killed dynamic run from its checkpoint (needs ``output``).
+    progress : callable, optional
+        ``progress(t, info)`` after every output of a dynamic run.
+    checkpoint_every : int, optional
+        Checkpoint every so many outputs (default: every few seconds of wall time).
+    observers : sequence, optional
+        More observers of the dynamic run loop (:mod:`kanat.dynamics`).
+    method : str
+        Statics only: the statics method.
+    model : str, optional
+        Run the case with this model instead of its own (``statics`` for the steady state of
+        a dynamic case).
+
+    Returns
+    -------
+    Outcome
+    """
+    name = model or case.model
+    entry = MODELS.get(name)
+    if entry is None:
+        hint = (" To get the steady (initial) state of this case, run: kanat statics CASE -o OUT.nc"
+                if "statics" in MODELS else "")
+        raise KanatError(f"model '{name}' is not available in kanat {__version__} (available: "
+                         f"{', '.join(MODELS)}).{hint}")
+    if isinstance(entry, Steady):
+        return _steady(entry, case, name, output, method)
+    if resume and output is None:
+        raise KanatError("resume needs the result file of the run to continue (output)")
+    from kanat.io.results import case_sha256, read_result
+    from kanat.io.stream import ResultStream
+
+    recorder = dynamics.Recorder() if output is None else None
+    sinks = [recorder] if recorder is not None else [ResultStream(output)]
+    checkpointer = None
+    if output is not None:
+        checkpointer = dynamics.Checkpointer(output, case_sha256(case), checkpoint_every, before=sinks)
+        sinks.append(checkpointer)
+    if progress is not None:
+        sinks.append(dynamics.Progress(progress))
+    summary = dynamics.run(lambda: entry.build(case, scheme), [*sinks, *observers], resume=checkpointer if resume else None, output=output)
+    dataset = recorder.dataset() if recorder is not None else read_result(output)
+    if not summary.ok:
+        warnings.warn(f"the run stopped: {summary.status}", RunFailedWarning, stacklevel=2)
+    return Outcome(summary.status, summary.summary(), dataset, None if output is None else Path(output), summary)
+
+
+def simulate(case: Case, scheme=None, output=None, resume: bool = False, progress=None):
+    """Run a case with its model and return its result.
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+        Any model: ``continuum`` and ``lumped`` run in time; ``statics`` and ``pitch``
+        solve their steady state.
+    scheme : str or kanat.schemes.Scheme, optional
+        Overrides ``simulation.scheme`` (a name of :func:`kanat.schemes.scheme_classes`, or
+        a scheme object such as ``GeneralizedAlpha(lambda_inf=-0.3)``).
+    output : path-like, optional
+        None: the result stays in memory and no file is written. A path: the run streams
+        its result there as it goes, with checkpoints, and the dataset is read back.
+    resume : bool
+        Continue a killed run from its checkpoint beside ``output``.
+    progress : callable, optional
+        ``progress(t, info)`` after every output step.
+
+    Returns
+    -------
+    xarray.Dataset
+        The result of case-format.md; ``attrs["status"]`` is ``ok`` or says why the run
+        stopped (then the outputs up to the failure are kept, and a
+        :class:`RunFailedWarning` is issued).
+    """
+    return run(case, scheme=scheme, output=output, resume=resume, progress=progress).dataset
+
+
+def read_result(path):
+    """A result file as an ``xarray.Dataset`` (fully loaded, file closed).
+
+    A file whose ``status`` is ``ok`` but which holds a non-finite value is refused: it
+    cannot be a sound result.
+    """
+    from kanat.io.results import read_result as read
+
+    return read(path)
+
+
+# --- helpers ----------------------------------------------------------------------------
+
+def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcome:
+    from kanat.io.results import failed_dataset, write_result
+
+    start = time.perf_counter()
+    try:
+        dataset, text, solution = entry.solve(case, method)
+    except KanatError as error:
+        if output is not None and not isinstance(error, CaseError):
+            write_result(failed_dataset(case, str(error), model=name, scheme=method,
+                                        wall_time_s=time.perf_counter() - start), output)
+        raise
+    if output is not None:
+        write_result(dataset, output)
+    return Outcome("ok", text, dataset, None if output is None else Path(output), solution=solution)

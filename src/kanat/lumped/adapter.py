@@ -1,0 +1,198 @@
+"""The lumped model behind the run loop's contract (:mod:`kanat.dynamics`).
+
+:class:`LumpedModel` starts from the network equilibrium (SPEC §4) with every node moving
+at the vessel's initial velocity, steps with the chosen scheme — between two outputs in
+one compiled call where :mod:`kanat.lumped.advance` can — and tracks every snap event.
+A case that names no scheme gets the fastest safe one, and a case without ``dt`` a
+documented step (:mod:`kanat.lumped.stepping`); both decisions are in ``notes``. Its checks
+of every output: no element stretched beyond the line's strain limit, no node below the
+seabed.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kanat.dynamics import StepFailure, Steps
+from kanat.errors import SolverError
+from kanat.io.results import provenance
+from kanat.io.schema import Layout
+from kanat.lumped import kernels, stepping
+from kanat.lumped.advance import advance
+from kanat.lumped.equilibrium import equilibrium
+from kanat.lumped.integrators import state_positions
+from kanat.lumped.network import build_network
+from kanat.lumped.output import NodeTension
+from kanat.lumped.snap import SnapTracker
+from kanat.lumped.system import LumpedSystem
+from kanat.schemes import get_scheme, scheme_classes
+
+DEFAULT_MAX_STRAIN = 0.5
+"""An element stretched beyond this (when the line type sets no ``max_strain``) stops the run."""
+TIME_VARIABLES = ("position", "velocity", "tension", "segment_tension", "body_position", "vessel_position",
+                  "vessel_heading", "vessel_pitch")
+
+
+@dataclass
+class LumpedState:
+    """The scheme's state (``t``, positions, velocities, history) and the snap events so far."""
+
+    scheme: dict
+    snaps: SnapTracker
+
+
+class LumpedModel:
+    """A ``model: lumped`` case ready to run (the contract of :mod:`kanat.dynamics`).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    scheme : str or kanat.schemes.Scheme, optional
+        Overrides ``simulation.scheme``; None and none in the case: the fastest safe one.
+    """
+
+    name = "lumped"
+
+    def __init__(self, case, scheme=None):
+        sim = case.simulation
+        self.case, self.net = case, build_network(case)
+        self.system = LumpedSystem(self.net, case, sim.mass_matrix)
+        self.info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent")
+        self.notes: list[str] = []
+        self.scheme = self._choose(scheme)
+        self.dt = self._step_size()
+        self.output_interval, self.duration = sim.output_interval, sim.duration
+        self.node_tension = NodeTension(self.net)
+        self.max_strain = np.array([getattr(case.line_types.get(str(c)), "max_strain", None) or DEFAULT_MAX_STRAIN
+                                    for c in self._segment_line_types()])
+        self._T = np.zeros(self.net.n_elements)
+
+    def _segment_line_types(self):
+        cables = {c.name: c.line_type for c in self.case.cables}
+        return [cables.get(str(c)) for c in self.net.segment_cable]
+
+    def _choose(self, scheme):
+        sim = self.case.simulation
+        spec = scheme if scheme is not None else sim.scheme
+        if spec is None:
+            chosen = stepping.choose_scheme(self.info, sim.step_or_default, scheme_classes("lumped"))
+            self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
+            spec = chosen.name
+        return get_scheme(spec, "lumped", lambda_inf=sim.lambda_inf)
+
+    def _step_size(self) -> float:
+        sim, info, scheme = self.case.simulation, self.info, self.scheme
+        out = sim.output_interval
+        if not scheme.explicit:
+            if sim.dt is None:
+                self.notes.append(f"{scheme.name}: no dt given; stepping at the default {sim.step_or_default:g} s")
+            return stepping.fit_step(sim.step_or_default, out)
+        safe = info.safe_step(scheme)
+        if sim.dt is None:
+            self.notes.append(f"{scheme.name}: no dt given; stepping at the safe step {safe:.3g} s")
+            return stepping.fit_step(safe, out)
+        h = stepping.fit_step(min(sim.dt, safe), out)
+        if safe < sim.dt:
+            self.notes.append(f"{scheme.name}: dt {sim.dt:g} s exceeds the safe step {safe:.3g} s "
+                              f"({stepping.SAFETY} x stability limit / highest axial frequency, shortest axial "
+                              f"nodal period {info.axial_period:.3g} s); stepping at {h:.4g} s")
+        return h
+
+    # 1. set up ------------------------------------------------------------------------
+    def layout(self) -> Layout:
+        net, sim = self.net, self.case.simulation
+        attrs = provenance(self.case, model=self.name, scheme=self.scheme.name, dt=self.dt,
+                           dt_case=sim.dt if sim.dt is not None else "", axial_period=self.info.axial_period,
+                           mass_matrix=sim.mass_matrix, output_interval=self.output_interval,
+                           **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
+        static = {"s": (("node",), net.node_s), "cable": (("node",), net.node_cable.astype(str)),
+                  "segment_cable": (("segment",), net.segment_cable.astype(str)),
+                  "segment_length": (("segment",), net.el_length)}
+        return Layout(static, {"xyz": ("x", "y", "z"), "body": list(net.body_names)}, TIME_VARIABLES, attrs)
+
+    # 2. initial state and checkpoints ------------------------------------------------------
+    def initial(self) -> LumpedState:
+        sim, system = self.case.simulation, self.system
+        if sim.initial_state == "equilibrium":
+            x = equilibrium(self.net, self.case)[0]
+        else:
+            x = self.net.x_guess.copy()
+        free = system.free_index
+        velocity = np.broadcast_to(system.vessel(0.0)[1], (len(free), 3)).copy()
+        state = self.scheme.start(system, 0.0, x[free], velocity, self.dt)
+        return LumpedState(state, SnapTracker(0.0, self._tensions(state)))
+
+    def save(self, state: LumpedState) -> dict:
+        arrays = {f"scheme_{k}": np.asarray(v) for k, v in state.scheme.items()}
+        arrays.update({f"snap_{k}": v for k, v in state.snaps.state().items()})
+        arrays["evaluations"] = np.array(self.system.evaluations)
+        return arrays
+
+    def restore(self, arrays: dict) -> LumpedState:
+        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations") else v)
+                  for k, v in arrays.items() if k.startswith("scheme_")}
+        snaps = {k[5:]: v for k, v in arrays.items() if k.startswith("snap_")}
+        self.system.evaluations = int(arrays["evaluations"])
+        x = self.system.full(scheme["t"], *state_positions(scheme))[0]
+        self.info = stepping.step_info(self.net, x, self.case.simulation.mass_matrix == "consistent")
+        return LumpedState(scheme, SnapTracker(scheme["t"], self._tensions(scheme), snaps))
+
+    # 3. step -----------------------------------------------------------------------------
+    def advance(self, state: LumpedState, t_end: float):
+        steps = int(round((t_end - state.scheme["t"]) / self.dt))
+        before = state.scheme.get("iterations", 0)
+        try:
+            scheme_state, taken = advance(self.scheme, self.system, state.scheme, self.dt, steps, state.snaps,
+                                          self._tensions)
+        except SolverError as error:
+            raise StepFailure(str(error)) from None
+        return LumpedState(scheme_state, state.snaps), Steps(taken, scheme_state.get("iterations", 0) - before)
+
+    def _tensions(self, scheme_state) -> np.ndarray:
+        """Element tensions (m,) of a scheme state (a view of one work array)."""
+        net = self.net
+        x, v, _, _ = self.system.full(scheme_state["t"], *state_positions(scheme_state))
+        kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+                         net.law_n, net.law_x, net.law_y, self._T)
+        return self._T
+
+    # 4. outputs ------------------------------------------------------------------------
+    def outputs(self, state: LumpedState) -> dict:
+        system, net = self.system, self.net
+        t = state.scheme["t"]
+        x, v, _, heading = system.full(t, *state_positions(state.scheme))
+        T = self._tensions(state.scheme).copy()
+        pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
+        idx = net.node_index
+        return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
+                "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
+                "vessel_heading": heading, "vessel_pitch": pitch}
+
+    # 5. status ---------------------------------------------------------------------------
+    def check(self, state: LumpedState, values: dict) -> str | None:
+        net, t = self.net, state.scheme["t"]
+        x = self.system.full(t, *state_positions(state.scheme))[0]
+        strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
+        k = int(np.argmax(strain - self.max_strain))
+        if strain[k] > self.max_strain[k]:
+            return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
+                    f"{t:.6g} s in {net.element_where(k)} (tension {values['segment_tension'][k]:.4g} N); check "
+                    "axial_stiffness and the loads, or reduce dt, or set line_types.<name>.max_strain")
+        depth = self.case.environment.depth
+        if depth is not None:
+            z = values["position"][:, 2]
+            deep = int(np.argmin(z))
+            if z[deep] < -depth * (1.0 + 1e-9):
+                return (f"a node is {-depth - z[deep]:.4g} m below the seabed at t = {t:.6g} s "
+                        f"({net.where(int(net.node_index[deep]))}); this model has no seabed contact yet")
+        return None
+
+    # 6. finish ---------------------------------------------------------------------------
+    def final(self, state: LumpedState) -> tuple[dict, dict]:
+        events = state.snaps.events()
+        variables = {"event_time": (("event",), events["time"]),
+                     "event_segment": (("event",), events["element"]),
+                     "event_peak_tension": (("event",), events["peak_tension"]),
+                     "event_rise_rate": (("event",), events["rise_rate"])}
+        return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations}

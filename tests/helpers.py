@@ -1,0 +1,99 @@
+"""What several test modules share: the examples folder, case builders, runs, output cleaning.
+
+Test modules import from here, never from each other.
+"""
+import re
+from pathlib import Path
+
+import numpy as np
+
+from kanat import api, dynamics
+from kanat.continuum.stepper import step
+from kanat.io.results import case_sha256
+from kanat.io.stream import ResultStream
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
+
+
+def plain(output: str) -> str:
+    """Command output as one line of words: panel borders removed, wrapped lines joined."""
+    return " ".join(re.sub("[│╭╮╰╯─]", " ", output).split())
+
+
+def run(case, output=None, **options):
+    """Run ``case`` through :func:`kanat.api.run` (to ``output`` if given) and return its
+    :class:`kanat.dynamics.RunSummary`."""
+    return api.run(case, output=output, **options).summary
+
+
+class _Killed(BaseException):
+    """Stands for a kill -9 in an in-process run."""
+
+
+def killed_run(case, output, at: float, every: int):
+    """Run ``case`` to ``output`` with a checkpoint every ``every`` outputs and stop it dead at
+    simulated time ``at``, as a kill would: the stream's unflushed outputs are lost and the file
+    keeps ``status: running``. Returns the time reached."""
+    stream = ResultStream(output)
+    checkpoints = dynamics.Checkpointer(output, case_sha256(case), every, before=[stream])
+
+    class Kill:
+        def start(self, layout, resume_at=None):
+            pass
+
+        def record(self, point):
+            if point.time >= at - 1e-9:
+                raise _Killed
+
+        def flush(self):
+            pass
+
+        def finish(self, status, final, attrs):
+            pass
+    try:
+        dynamics.run(lambda: api.dynamic_model(case), [stream, checkpoints, Kill()])
+    except _Killed:
+        stream.abandon()
+    return at
+
+
+def step_case_text(duration=600, dt=1.0, segments=100, before=60, to_kn=10, extra=""):
+    """``examples/speed_step_2d.yaml`` with its duration, step, grid and speed step changed."""
+    text = STEP_CASE.replace("duration: 600\n", f"duration: {duration}\n").replace("dt: 1.0\n", f"dt: {dt}\n")
+    text = text.replace("output_dt: 1.0", f"output_dt: {dt}").replace("segments: 100", f"segments: {segments}")
+    text = text.replace("speed_kn: 6, duration: 60", f"speed_kn: 6, duration: {before}")
+    return text.replace("to_speed_kn: 10", f"to_speed_kn: {to_kn}") + extra
+
+
+def short_case(duration=60, segments=20, before=10):
+    """speed_step_2d.yaml shortened: 6 kn for ``before`` s, then the step; ``segments`` elements."""
+    text = STEP_CASE.replace("duration: 600\n", f"duration: {duration}\n").replace("segments: 100", f"segments: {segments}")
+    return text.replace("speed_kn: 6, duration: 60", f"speed_kn: 6, duration: {before}")
+
+
+class StepDrive:
+    """First end moving with velocity ``velocity`` for t > 0 (at rest before), far end held."""
+
+    def __init__(self, velocity):
+        self.velocity = velocity
+
+    def velocities(self, t):
+        return (self.velocity if t > 0 else (0.0, 0.0)), (0.0, 0.0)
+
+    def origin(self, t):
+        return np.array([self.velocity[0] * t, self.velocity[1] * t])
+
+
+def march(cable, state, drive, dt, steps, scheme):
+    """``steps`` planar steps of ``dt`` with a generalized-α family ``scheme``."""
+    coefficients = scheme.coefficients()
+    for _ in range(steps):
+        state, _ = step(cable, state, dt, coefficients, drive)
+    return state
+
+
+def front(s, values, level):
+    """Arclength where ``values`` first falls through ``level`` walking from s = 0."""
+    i = np.argmax(values < level)
+    return s[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (s[i] - s[i - 1])
