@@ -11,9 +11,9 @@ from kanat.io import check_text, parse_case
 # Line numbers of BASE (1-based) used by the tests below.
 BASE = textwrap.dedent("""\
     name: errors
-    model: continuum
+    model: lumped
     environment:
-      depth: 500
+      depth: 2000
       waves: {type: regular, height: 1.0, period: 8.0}
     line_types:
       towcable:
@@ -79,9 +79,9 @@ def test_base_is_valid():
     ("to: sled", "to: sledd", "cables[0].to", 22,
      ["'sledd' is not a body or point", "bodies: sled", "(did you mean 'sled'?)"]),
     # enum values
-    ("model: continuum", "model: continum", "model", 2,
-     ["'continum' is not one of: continuum, lumped, statics, pitch",
-      "(did you mean 'continuum'?)"]),
+    ("model: lumped", "model: lumpd", "model", 2,
+     ["'lumpd' is not one of: continuum, lumped, statics, pitch",
+      "(did you mean 'lumped'?)"]),
     ("type: regular", "type: regullar", "environment.waves.type", 5,
      ["'regullar' is not a valid type; valid: regular, jonswap (did you mean 'regular'?)"]),
     ("{straight: {speed", "{stright: {speed", "vessel.track[0].stright", 15,
@@ -93,7 +93,8 @@ def test_base_is_valid():
     ("to: sled", "to: anchor:[0, x, -1]", "cables[0].to", 22,
      ["anchor coordinates must be 3 numbers"]),
     ("to: sled", "to: free\n    extra: 1", "cables[0].extra", 23,
-     ["unknown key 'extra'; valid keys: name, line_type, length, segments, from, to"]),
+     ["unknown key 'extra'; valid keys: name, line_type, length, segments, sections, "
+      "attachments, from, to"]),
     # cross-field rules inside a block
     ("{straight: {speed: 3.0,", "{straight: {speed: 3.0, speed_kn: 6,", "vessel.track[0].straight",
      15, ["give either 'speed' (m/s) or 'speed_kn' (knots), not both"]),
@@ -121,7 +122,7 @@ def test_missing_key_points_at_its_block():
 
 
 def test_missing_model_lists_choices():
-    problem = only_error(edit("model: continuum\n", ""))
+    problem = only_error(edit("model: lumped\n", ""))
     assert problem.key == "" and problem.line == 1
     assert "missing required key 'model'; one of: continuum, lumped, statics, pitch" in str(problem)
 
@@ -130,7 +131,7 @@ def test_missing_required_section_points_at_model_line():
     text = edit("simulation:\n  duration: 600\n  dt: 1.0\n  output_dt: 1.0\n", "")
     problem = only_error(text)
     assert (problem.key, problem.line) == ("simulation", 2)
-    assert "model 'continuum' needs a 'simulation' block" in problem.message
+    assert "model 'lumped' needs a 'simulation' block" in problem.message
 
 
 def test_duplicate_key_names_both_lines():
@@ -208,7 +209,7 @@ def test_three_mistakes_give_three_problems():
 
 
 def test_three_independent_mistakes_in_three_sections():
-    text = edit("  dt: 1.0", "  dt: -1", edit("model: continuum", "model: lumpd",
+    text = edit("  dt: 1.0", "  dt: -1", edit("model: lumped", "model: lumpd",
                                           edit("net_buoyancy: -4448", "net_buoyancy: heavy")))
     found = errors_of(text)
     assert [(p.key, p.line) for p in found] == [("model", 2), ("bodies.sled.net_buoyancy", 12),

@@ -41,7 +41,7 @@ def test_valid_cases_load_without_problems(name):
 
 def test_case_format_example_fields():
     case = load_case(CASES / "full.yaml")
-    assert case.name == "sled-speed-step" and case.model == "continuum"
+    assert case.name == "sled-speed-step" and case.model == "lumped"
     assert case.environment.depth == 2000
     assert isinstance(case.environment.waves, RegularWaves)
     assert case.environment.waves.heading_deg == 180
@@ -69,8 +69,8 @@ def test_full_case_with_sphere_and_pitch_blocks_loads_with_ignored_warnings():
     assert case.sphere_two_cables.dimensionless.QkL == 0.45
     assert case.pitch.stabilizer.max_moment == 1e6
     messages = [str(w.message) for w in record]
-    assert any("sphere_two_cables: ignored by model 'continuum'" in m for m in messages)
-    assert any("pitch: ignored by model 'continuum'" in m for m in messages)
+    assert any("sphere_two_cables: ignored by model 'lumped'" in m for m in messages)
+    assert any("pitch: ignored by model 'lumped'" in m for m in messages)
 
 
 def test_sphere_and_pitch_blocks():
@@ -180,7 +180,7 @@ def test_check_case_never_raises_for_content(tmp_path):
 
 def test_load_case_warns_with_case_warning(tmp_path):
     path = tmp_path / "still.yaml"
-    path.write_text((CASES / "full.yaml").read_text().replace("model: continuum",
+    path.write_text((CASES / "full.yaml").read_text().replace("model: lumped",
                                                               "model: statics")
                     .replace("speed: 3.086", "speed: 0"))
     with pytest.warns(CaseWarning, match=r"initial tow speed is 0 m/s"):

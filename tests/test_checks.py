@@ -16,7 +16,7 @@ CASES = Path(__file__).parent / "data" / "cases"
 # A towed sled with a mooring next to it; every check is quiet on it.
 GOOD = textwrap.dedent("""\
     name: good
-    model: continuum
+    model: lumped
     environment:
       depth: 1000
       waves: {type: regular, height: 2.0, period: 8.0}
@@ -140,8 +140,8 @@ SPAN = GOOD.replace("simulation:", textwrap.indent(textwrap.dedent("""\
       line_type: rope
       length: 100
       segments: 10
-      from: anchor:[0, 0, -1000]
-      to: anchor:[DX, 0, -1000]
+      from: anchor:[0, 0, -900]
+      to: anchor:[DX, 0, -900]
     """), "  ") + "simulation:")
 
 
@@ -194,7 +194,7 @@ def test_jonswap_steepness():
 
 
 def test_statics_tow_at_zero_speed():
-    text = edit("model: continuum", "model: statics", edit("speed: 2.0", "speed: 0"))
+    text = edit("model: lumped", "model: statics", edit("speed: 2.0", "speed: 0"))
     problem = next(p for p in findings(text) if p.key == "vessel.track[0]")
     assert problem.severity == "warning" and "initial tow speed is 0 m/s" in problem.message
 
@@ -252,7 +252,7 @@ def test_stabilizer_without_moment():
 def test_ignored_sections_warn():
     text = GOOD + (CASES / "pitch.yaml").read_text().split("model: pitch\n")[1]
     problem = next(p for p in findings(text) if p.key == "pitch")
-    assert problem.severity == "warning" and "ignored by model 'continuum'" in problem.message
+    assert problem.severity == "warning" and "ignored by model 'lumped'" in problem.message
 
 
 @pytest.mark.parametrize("period, depth, expected", [

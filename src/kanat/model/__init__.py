@@ -4,10 +4,11 @@ Every class is a frozen pydantic model whose field names are the keys of the YAM
 case format (``docs/case-format.md``); read case files with
 :func:`kanat.io.case_file.load_case`.
 """
-from .cable import Cable, CableEnd
+from .cable import Attachment, Cable, CableEnd, CableSection
 from .case import Case
 from .components import Body, ElasticLaw, LineType, Point, SurfaceBuoy
-from .environment import Current, Environment, JonswapWaves, RegularWaves, Waves
+from .environment import Current, Environment, JonswapWaves, RegularWaves, Seabed, Waves
+from .operations import HarmonicMotion, VesselMotion, WinchStep
 from .problems import (
                        PitchModel,
                        SphereDimensional,
@@ -30,8 +31,9 @@ from .vessel import (
 )
 
 __all__ = [
-    "Accelerate", "Body", "Cable", "CableEnd", "Case", "Current", "ElasticLaw", "Environment", "Heading",
-    "JonswapWaves", "KNOT", "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES",
-    "Simulation", "SpeedStep", "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy",
-    "Stabilizer", "Straight", "TrackSegment", "Turn", "Vessel", "VesselPitch", "Waves",
+    "Accelerate", "Attachment", "Body", "Cable", "CableEnd", "CableSection", "Case", "Current",
+    "ElasticLaw", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT", "LineType",
+    "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
+    "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy", "Stabilizer",
+    "Straight", "TrackSegment", "Turn", "Vessel", "VesselMotion", "VesselPitch", "Waves", "WinchStep",
 ]

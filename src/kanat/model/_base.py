@@ -53,10 +53,25 @@ def field_keys(model: type[BaseModel]) -> list[str]:
 
 def suggest(word: object, options: list[str] | tuple[str, ...]) -> str:
     """`` (did you mean 'x'?)`` for the closest option to ``word``, or ``""``."""
-    if not isinstance(word, str):
+    if not isinstance(word, str) or len(options) > MAX_SUGGEST_OPTIONS:
         return ""
     close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.6)
     return f" (did you mean '{close[0]}'?)" if close else ""
+
+
+MAX_SUGGEST_OPTIONS = 200
+"""Longest list :func:`suggest` searches (difflib costs ~5 us an option; a case with
+thousands of wrong names must not take minutes to report them)."""
+MAX_LISTED = 12
+"""Most names :func:`listing` writes out."""
+
+
+def listing(names, empty: str = "none") -> str:
+    """``a, b, c`` for the names in a message, at most :data:`MAX_LISTED` of them."""
+    names = list(names)
+    if len(names) > MAX_LISTED:
+        return ", ".join(map(str, names[:MAX_LISTED])) + f", ... ({len(names)} in all)"
+    return ", ".join(map(str, names)) or empty
 
 
 def fmt(value: object) -> str:
@@ -81,3 +96,52 @@ Vector3 = Annotated[tuple[float, float, float], BeforeValidator(_as_vector3)]
 """Three components ``(x, y, z)`` in the global or vessel frame."""
 
 ZERO3: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+
+def _as_vector6(value: Any) -> Any:
+    """Accept any 6-sequence of numbers (surge, sway, heave, roll, pitch, yaw)."""
+    if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__len__") or len(value) != 6:
+        got = f"{len(value)} values" if isinstance(value, (list, tuple)) else repr(value)
+        raise ValueError(f"must be a list of 6 numbers, one per degree of freedom "
+                         f"(surge, sway, heave, roll, pitch, yaw) (got {got})")
+    return tuple(value)
+
+
+Vector6 = Annotated[tuple[float, float, float, float, float, float], BeforeValidator(_as_vector6)]
+"""Six components, one per degree of freedom: surge, sway, heave, roll, pitch, yaw."""
+
+
+def square_matrix(size: int, names: str):
+    """Before-validator: ``size`` numbers (a diagonal) or ``size`` rows of ``size`` -> rows.
+
+    Parameters
+    ----------
+    size : int
+        3 or 6.
+    names : str
+        What the rows and columns are, for the message (``"x, y, z"``).
+    """
+    def parse(value: Any) -> Any:
+        if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__len__"):
+            raise ValueError(f"must be {size} numbers (a diagonal) or {size} rows of {size} "
+                             f"numbers ({names}) (got {value!r})")
+        rows = list(value)
+        if len(rows) == size and all(not hasattr(r, "__len__") for r in rows):
+            return tuple(tuple(rows[i] if i == j else 0.0 for j in range(size))
+                         for i in range(size))
+        if len(rows) != size or any(isinstance(r, (str, bytes, dict)) or not hasattr(r, "__len__")
+                                    or len(r) != size for r in rows):
+            raise ValueError(f"must be {size} numbers (a diagonal) or {size} rows of {size} "
+                             f"numbers ({names})")
+        return tuple(tuple(r) for r in rows)
+    return BeforeValidator(parse)
+
+
+Matrix3 = Annotated[tuple[Vector3, Vector3, Vector3], square_matrix(3, "x, y, z")]
+"""A 3x3 matrix, written as 3 numbers (its diagonal) or 3 rows of 3."""
+
+_Row6 = tuple[float, float, float, float, float, float]
+Matrix6 = Annotated[tuple[_Row6, _Row6, _Row6, _Row6, _Row6, _Row6],
+                    square_matrix(6, "surge, sway, heave, roll, pitch, yaw")]
+"""A 6x6 matrix over the degrees of freedom (surge, sway, heave, roll, pitch, yaw),
+written as 6 numbers (its diagonal) or 6 rows of 6."""

@@ -12,10 +12,11 @@ from typing import Any, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from ._base import KanatModel, suggest
+from ._base import KanatModel, fmt, listing, suggest
 from .cable import Cable
 from .components import Body, LineType, Point
 from .environment import Environment
+from .operations import WinchStep
 from .problems import PitchModel, SphereTwoCables
 from .simulation import Simulation
 from .vessel import Vessel
@@ -34,6 +35,7 @@ def _resolve_named_ends(data: dict[str, Any], bodies: list[str], points: list[st
     cables = data.get("cables")
     if not isinstance(cables, list):
         return
+    bodies, points = set(bodies), set(points)  # O(1) lookups: cases may have thousands
     resolved = []
     for cable in cables:
         if isinstance(cable, dict):
@@ -66,6 +68,8 @@ class Case(KanatModel):
     sphere_two_cables : SphereTwoCables or None
     pitch : PitchModel or None
         Required by ``model: pitch``.
+    winch : tuple of WinchStep
+        Pay-out and haul-in of the first cable at its ``from`` end, in time order.
     """
 
     name: str = ""
@@ -79,6 +83,10 @@ class Case(KanatModel):
     simulation: Simulation | None = Field(None, validate_default=True)
     sphere_two_cables: SphereTwoCables | None = Field(None, validate_default=True)
     pitch: PitchModel | None = Field(None, validate_default=True)
+    winch: tuple[WinchStep, ...] = Field(
+        (), description="pay-out (rate > 0) and haul-in (rate < 0) of the first cable at its "
+                        "'from' end: steps {start, duration, rate} in time order, not "
+                        "overlapping")
 
     @model_validator(mode="before")
     @classmethod
@@ -143,6 +151,30 @@ class Case(KanatModel):
                              "wave_moment_amplitude, wave_period, ...}")
         return value
 
+    @field_validator("winch")
+    @classmethod
+    def _winch_steps(cls, steps: tuple[WinchStep, ...], info: ValidationInfo) -> Any:
+        if not steps:
+            return steps
+        cables = info.data.get("cables")
+        if cables is not None and not cables:
+            raise ValueError("a winch acts on the first cable, but the case has no cables")
+        for i in range(1, len(steps)):
+            if steps[i].start < steps[i - 1].end * (1 - 1e-12):
+                raise ValueError(f"step {i} starts at {fmt(steps[i].start)} s, before step "
+                                 f"{i - 1} ends at {fmt(steps[i - 1].end)} s; list the steps "
+                                 "in time order without overlap")
+        if cables:
+            length, lowest = cables[0].length, 0.0
+            paid = 0.0
+            for step in steps:
+                paid += step.change
+                lowest = min(lowest, paid)
+            if length + lowest <= 0:
+                raise ValueError(f"the winch hauls in {fmt(-lowest)} m of cable "
+                                 f"'{cables[0].name}', which is only {fmt(length)} m long")
+        return steps
+
     @model_validator(mode="after")
     def _cross_references(self) -> Case:
         messages = reference_errors(self)
@@ -151,17 +183,29 @@ class Case(KanatModel):
         return self
 
 
+def _line_type_errors(case: Case, i: int) -> list[str]:
+    cable, known = case.cables[i], list(case.line_types)
+    single = len(cable.sections) == 1 and "sections" not in cable.model_fields_set
+    keys = ([f"cables[{i}].line_type"] if single else
+            [f"cables[{i}].sections[{j}].line_type" for j in range(len(cable.sections))])
+    return [f"{key}: '{section.line_type}' is not a line type; known: "
+            f"{listing(known)}{suggest(section.line_type, known)}"
+            for key, section in zip(keys, cable.sections) if section.line_type not in known]
+
+
 def reference_errors(case: Case) -> list[str]:
     """Messages for cables naming line types, bodies or points the case lacks."""
     messages = []
     for i, cable in enumerate(case.cables):
-        if cable.line_type not in case.line_types:
-            known = ", ".join(case.line_types) or "none"
-            messages.append(f"cables[{i}].line_type: '{cable.line_type}' is not a line type; "
-                            f"known: {known}{suggest(cable.line_type, list(case.line_types))}")
+        messages += _line_type_errors(case, i)
+        for j, item in enumerate(cable.attachments):
+            if item.body not in case.bodies:
+                messages.append(f"cables[{i}].attachments[{j}].body: '{item.body}' is not a "
+                                f"body; known: {listing(case.bodies)}"
+                                f"{suggest(item.body, list(case.bodies))}")
         for key, end in (("from", cable.from_), ("to", cable.to)):
             group = {"body": case.bodies, "point": case.points}.get(end.kind)
             if group is not None and end.name not in group:
                 messages.append(f"cables[{i}].{key}: '{end.name}' is not a {end.kind}; known: "
-                                f"{', '.join(group) or 'none'}{suggest(end.name, list(group))}")
+                                f"{listing(group)}{suggest(end.name, list(group))}")
     return messages

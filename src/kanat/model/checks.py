@@ -20,6 +20,7 @@ from .cable import Cable, CableEnd
 from .case import Case
 from .environment import JonswapWaves, RegularWaves
 from .paths import Path, key_path, line_of
+from .support import check_support
 from .vessel import Heading, Turn
 
 MAX_STRETCH = 0.20          # strain beyond which fixed ends are an error, not a warning
@@ -389,6 +390,7 @@ CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
     check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
     check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
+    check_support,
 )
 
 

@@ -1,5 +1,5 @@
-"""Line types, bodies and junction points (case sections ``line_types``, ``bodies``,
-``points``)."""
+"""Line types and junction points (case sections ``line_types`` and ``points``); bodies
+are in :mod:`kanat.model.body` (imported here too)."""
 from __future__ import annotations
 
 import math
@@ -8,6 +8,7 @@ from typing import Annotated, Any
 from pydantic import BeforeValidator, Field, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+from .body import Body, SurfaceBuoy  # noqa: F401 - bodies lived here; kept importable
 
 
 def _as_pair(value: Any) -> Any:
@@ -17,6 +18,10 @@ def _as_pair(value: Any) -> Any:
 
 
 TableRow = Annotated[tuple[float, float], BeforeValidator(_as_pair)]
+
+DEFAULT_MAX_STRAIN = 0.1
+"""Strain limit of a line without ``max_strain`` or a tabulated law [-] (10 %: beyond the
+working range of synthetic ropes, five times the breaking strain of steel)."""
 
 
 class ElasticLaw(KanatModel):
@@ -77,6 +82,12 @@ class LineType(KanatModel):
         Drag coefficients C_n (on d) and C_t (on pi d) [-].
     breaking_load : float or None
         Minimum breaking load [N].
+    bending_stiffness : float
+        EI [N m^2]; 0: a perfectly flexible line.
+    max_strain : float or None
+        Strain limit of the line [-]; None: from the material (:meth:`strain_limit`).
+    added_mass_tangential : float
+        Tangential added mass per length [kg/m] (MoorDyn's CaAx rho pi d^2 / 4).
     """
 
     diameter: float = quantity(unit="m", gt=0)
@@ -98,6 +109,19 @@ class LineType(KanatModel):
     elastic_law: ElasticLaw | None = Field(
         None, description="nonlinear elastic part of the tension (lumped model); "
                           "default: linear axial_stiffness * strain")
+    bending_stiffness: float = quantity(
+        0.0, unit="N m^2", ge=0,
+        description="bending stiffness EI; 0: a perfectly flexible line. Line ends stay "
+                    "moment-free (pinned) unless a body end says otherwise")
+    max_strain: float | None = quantity(
+        None, unit="-", gt=0, le=1,
+        description="largest strain the line may take (a limit checked on results); None: "
+                    "from the material: the last strain of an elastic_law table (beyond it "
+                    "the law is extrapolated), else 0.1 (DEFAULT_MAX_STRAIN)")
+    added_mass_tangential: float = quantity(
+        0.0, unit="kg/m", ge=0,
+        description="added mass per length for accelerations along the line (MoorDyn's "
+                    "CaAx times rho pi d^2 / 4)")
 
     @property
     def area(self) -> float:
@@ -120,80 +144,54 @@ class LineType(KanatModel):
             return self.weight_in_water
         return self.mass * gravity - water_density * gravity * self.area
 
+    def strain_limit(self) -> float:
+        """The effective strain limit [-].
 
-class SurfaceBuoy(KanatModel):
-    """Hydrostatics of a surface-piercing buoy (vertical cylinder; SPEC §5, lumped model).
-
-    The body's node is the buoy's keel. Its immersion ``d = clip(eta(x, y, t) - z, 0,
-    height)`` adds the buoyancy ``rho g waterplane_area d`` to the body's constant
-    ``net_buoyancy`` (which then holds minus its weight): restoring from the waterplane,
-    lost when the buoy leaves the water.
-
-    Attributes
-    ----------
-    waterplane_area : float
-        [m^2].
-    height : float
-        Keel to deck [m]; immersion beyond it adds no buoyancy.
-    """
-
-    waterplane_area: float = quantity(unit="m^2", gt=0)
-    height: float = quantity(2.0, unit="m", gt=0)
-
-
-class Body(KanatModel):
-    """A rigid body treated as a point: towed vehicle, buoy, depressor, otter board.
-
-    Attributes
-    ----------
-    mass : float
-        [kg].
-    net_buoyancy : float
-        Buoyancy minus weight [N]; negative sinks.
-    drag_area : float
-        C_D S [m^2].
-    added_mass : float
-        [kg].
-    force : tuple of 3 float
-        Constant external force in the global frame [N].
-    spreading_force : float
-        Otter-board force ``F0`` [N], horizontal, perpendicular to the vessel heading,
-        positive to port (lumped model, SPEC §5).
-    surface_buoy : SurfaceBuoy or None
-        Waterplane hydrostatics of a surface buoy (lumped model).
-    position : tuple of 3 float or None
-        Initial guess for the network equilibrium [m] (lumped model).
-    """
-
-    mass: float = quantity(unit="kg", gt=0)
-    net_buoyancy: float = quantity(unit="N")
-    drag_area: float = quantity(0.0, unit="m^2", ge=0)
-    added_mass: float = quantity(0.0, unit="kg", ge=0)
-    force: Vector3 = quantity(ZERO3, unit="N")
-    spreading_force: float = quantity(
-        0.0, unit="N", description="otter board force F0, horizontal and perpendicular to the "
-                                   "vessel heading, positive to port (lumped model)")
-    surface_buoy: SurfaceBuoy | None = Field(
-        None, description="a buoy riding the wave surface (lumped model)")
-    position: Vector3 | None = quantity(
-        None, unit="m", description="initial guess of the position for the network "
-                                    "equilibrium (lumped model); None: guessed")
-
-    def submerged_weight(self) -> float:
-        """Downward pull in still water, ``-net_buoyancy`` [N] (negative: it floats up)."""
-        return -self.net_buoyancy
+        ``max_strain`` when given; else the last strain of an ``elastic_law`` table (the
+        measured range; beyond it the law is extrapolated); else :data:`DEFAULT_MAX_STRAIN`
+        (a linear ``axial_stiffness`` law or a polynomial: steel wire and chain break below
+        2 %, synthetic ropes work below 10 %).
+        """
+        if self.max_strain is not None:
+            return self.max_strain
+        if self.elastic_law is not None and self.elastic_law.table is not None:
+            return self.elastic_law.table[-1][0]
+        return DEFAULT_MAX_STRAIN
 
 
 class Point(KanatModel):
-    """A named junction of cables in a network (lumped model).
+    """A named junction of cables in a network (lumped model), as MoorDyn's free point:
+    a clump weight, a float, or a plain connection.
 
     Attributes
     ----------
     position : tuple of 3 float or None
         Initial position [m]; None: found by the statics.
     mass : float
-        Lumped mass at the junction [kg].
+        Lumped mass at the junction [kg]; its weight acts down.
+    volume : float
+        Displaced volume [m^3]; its buoyancy ``rho g volume`` acts up.
+    drag_area : float
+        C_D A [m^2], the same in every direction.
+    added_mass : float
+        [kg], the same in every direction (MoorDyn's Ca rho V).
+    force : tuple of 3 float
+        Constant external force in the global frame [N].
     """
 
-    position: Vector3 | None = quantity(None, unit="m")
-    mass: float = quantity(0.0, unit="kg", ge=0)
+    position: Vector3 | None = quantity(None, unit="m", description="initial position; None: "
+                                        "found by the statics")
+    mass: float = quantity(0.0, unit="kg", ge=0, description="lumped mass at the junction "
+                           "(a clump weight); its weight acts down")
+    volume: float = quantity(0.0, unit="m^3", ge=0, description="displaced volume (a float); "
+                             "its buoyancy rho g volume acts up")
+    drag_area: float = quantity(0.0, unit="m^2", ge=0, description="drag coefficient times "
+                                "projected area C_D A, the same in every direction")
+    added_mass: float = quantity(0.0, unit="kg", ge=0, description="added mass, the same in "
+                                 "every direction (MoorDyn's Ca times rho volume)")
+    force: Vector3 = quantity(ZERO3, unit="N", description="constant external force in the "
+                              "global frame")
+
+    def net_buoyancy(self, water_density: float, gravity: float) -> float:
+        """Buoyancy minus weight, ``(rho volume - mass) g`` [N] (negative sinks)."""
+        return (water_density * self.volume - self.mass) * gravity

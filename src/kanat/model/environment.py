@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
-from pydantic import BeforeValidator, Field, field_validator, model_validator
+from pydantic import BeforeValidator, Field, ValidationInfo, field_validator, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
 
@@ -43,7 +43,7 @@ class Current(KanatModel):
             raise ValueError("needs at least one row [z, ux, uy, uz]")
         ordered = tuple(sorted(rows, key=lambda r: -r[0]))
         z = [r[0] for r in ordered]
-        repeated = sorted({v for v in z if z.count(v) > 1})
+        repeated = sorted({a for a, b in zip(z, z[1:]) if a == b})  # sorted: O(n), not O(n^2)
         if repeated:
             raise ValueError(f"depth z = {fmt(repeated[0])} m appears in two rows; "
                              "each z may appear once")
@@ -97,10 +97,43 @@ class JonswapWaves(KanatModel):
     tp: float = quantity(unit="s", gt=0, description="peak period")
     gamma: float = quantity(3.3, unit="-", ge=1, description="peak enhancement factor")
     heading_deg: float = quantity(0.0, unit="deg")
-    seed: int = Field(0, description="random seed of the phases")
+    seed: int = Field(0, ge=0, description="random seed of the phases (numpy takes no negative seed)")
 
 
 Waves = Annotated[Union[RegularWaves, JonswapWaves], Field(discriminator="type")]
+
+
+MAX_SLOPE_DEG = 45.0
+"""Steepest seabed slope accepted [deg]: beyond it a line does not rest on the seabed."""
+
+
+class Seabed(KanatModel):
+    """Contact of the lines with the seabed (``environment.seabed``; needs ``depth``).
+
+    The seabed is the plane ``z = -depth + x tan(slope_deg)`` (:mod:`kanat.physics.seabed`
+    holds its geometry). A line node below it feels a normal pressure ``stiffness *
+    penetration + damping * penetration rate`` on its contact area ``diameter x length``,
+    as MoorDyn's ``kbot`` and ``cbot``, and Coulomb friction along and across the line.
+    """
+
+    stiffness: float = quantity(
+        3.0e6, unit="Pa/m", gt=0,
+        description="normal pressure per metre of penetration on the contact area "
+                    "(diameter x length), as MoorDyn's kbot")
+    damping: float = quantity(
+        3.0e5, unit="Pa s/m", ge=0,
+        description="normal pressure per m/s of penetration rate on the contact area, "
+                    "as MoorDyn's cbot")
+    friction: float = quantity(
+        0.0, unit="-", ge=0,
+        description="Coulomb friction coefficient along the line (MoorPy's CB): friction "
+                    "force per unit normal contact force")
+    lateral_friction: float = quantity(
+        0.0, unit="-", ge=0,
+        description="Coulomb friction coefficient across the line")
+    slope_deg: float = quantity(
+        0.0, unit="deg", ge=-MAX_SLOPE_DEG, le=MAX_SLOPE_DEG,
+        description="slope of the seabed plane, rising towards +x: z = -depth + x tan(slope)")
 
 
 class Environment(KanatModel):
@@ -110,5 +143,17 @@ class Environment(KanatModel):
     gravity: float = quantity(9.81, unit="m/s^2", gt=0)
     depth: float | None = quantity(None, unit="m", gt=0,
                                    description="seabed at z = -depth; None: no seabed")
+    seabed: Seabed | None = Field(
+        None, description="contact of the lines with the seabed (stiffness, damping, friction, "
+                          "slope); needs depth. None: the models' own treatment of the "
+                          "seabed at z = -depth (see kanat.model.support)")
     current: Current = Field(default_factory=Current)
     waves: Waves | None = None
+
+    @field_validator("seabed")
+    @classmethod
+    def _seabed_needs_depth(cls, seabed: Seabed | None, info: ValidationInfo) -> Seabed | None:
+        if seabed is not None and info.data.get("depth", 0) is None:
+            raise ValueError("a seabed needs environment.depth [m] (the seabed is at "
+                             "z = -depth at x = 0)")
+        return seabed

@@ -9,9 +9,10 @@ from __future__ import annotations
 
 from typing import Annotated, Any, ClassVar, Union
 
-from pydantic import Discriminator, Tag, computed_field, model_validator
+from pydantic import Discriminator, Field, Tag, computed_field, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+from .operations import VesselMotion
 from .problems import PitchModel
 
 KNOT = 0.514444
@@ -193,7 +194,7 @@ class VesselPitch(PitchModel):
     at ``t + phase_deg / 360 * wave_period`` of the period that :func:`kanat.vessel.solve_pitch`
     solves (whose ``t = 0`` has the wave moment ``-M_m sin(omega t)`` at zero, falling).
     ``modes`` is refused: a tow runs one mode (compare them with
-    :func:`kanat.vessel.coupled.compare_modes`).
+    :func:`kanat.studies.pitch_tow.compare_modes`).
     """
 
     phase_deg: float = quantity(0.0, unit="deg", description="wave phase at t = 0 of the run")
@@ -203,7 +204,7 @@ class VesselPitch(PitchModel):
         if self.modes is not None:
             raise ValueError("'modes' is for model: pitch; the vessel pitches with one mode, "
                              "'stabilizer.mode' (to compare the modes on a tow, use "
-                             "python -m kanat.vessel.coupled CASE -o DIR)")
+                             "kanat study pitch-tow CASE -o DIR)")
         return self
 
 
@@ -221,12 +222,19 @@ class Vessel(KanatModel):
     pitch : VesselPitch or None
         The vessel's own pitch (SPEC §6.2): the steady periodic pitch of its stabilizer
         mode turns the tow point's lever arm about the pitch centre
-        (:func:`kanat.vessel.pitch_motion.pitch_motion`). ``None``: no pitch.
+        (:func:`kanat.vessel.pitch.motion.pitch_motion`). ``None``: no pitch.
+    motion : VesselMotion
+        Prescribed motion about the track (:mod:`kanat.model.operations`).
     """
 
     tow_point: Vector3 = quantity(ZERO3, unit="m")
     track: tuple[AnySegment, ...] = ()
     pitch: VesselPitch | None = None
+    motion: VesselMotion = Field(
+        default_factory=VesselMotion,
+        description="prescribed motion about the track, in vessel axes: a list of harmonics "
+                    "[{dof, amplitude, period, phase_deg}] or {table: FILE} (see "
+                    "kanat.model.operations)")
 
     @property
     def initial_speed(self) -> float:

@@ -1,0 +1,245 @@
+"""Bodies (case section ``bodies``): point bodies (3 degrees of freedom) and rigid bodies
+with 6 degrees of freedom (``dof: 6``).
+
+A 3-DOF body is a point: towed vehicle, buoy, depressor, otter board, clump. A 6-DOF body
+is a rigid body with a reference point (its ``position``), body axes turned by
+``orientation_deg`` (roll, pitch, yaw about the global x, y, z axes, applied in the order
+yaw, pitch, roll: ``R = Rz(yaw) Ry(pitch) Rx(roll)``), a centre of gravity and a centre of
+buoyancy in body axes, an inertia, hydrostatics, damping, added mass and drag per degree
+of freedom (surge, sway, heave, roll, pitch, yaw, about the reference point). Lines attach
+to it at fairleads given in body axes (a cable end ``{body: NAME, offset: [x, y, z]}``).
+
+The 6x6 matrices may be written as 6 numbers (the diagonal) or 6 rows of 6; they are
+stored as 6 rows. Units of a 6x6 matrix follow its blocks: translation-translation
+(N/m, N s/m, kg), translation-rotation (N/rad, N, kg m ...), rotation-rotation
+(N m/rad, N m s/rad, kg m^2).
+"""
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from ._base import ZERO3, KanatModel, Matrix3, Matrix6, Vector3, Vector6, fmt, quantity
+
+SYMMETRY_RTOL = 1e-9
+"""Relative asymmetry tolerated in matrices that must be symmetric (inertia, added mass)."""
+
+SIX_DOF_ONLY = ("inertia", "center_of_gravity", "center_of_buoyancy", "orientation_deg",
+                "waterplane_area", "metacentric_heights", "hydrostatic_stiffness",
+                "linear_damping", "quadratic_damping", "added_mass_matrix", "drag_areas")
+"""Keys that describe a rigid body and need ``dof: 6``."""
+
+
+class SurfaceBuoy(KanatModel):
+    """Hydrostatics of a surface-piercing buoy (vertical cylinder; SPEC §5, lumped model).
+
+    The body's node is the buoy's keel. Its immersion ``d = clip(eta(x, y, t) - z, 0,
+    height)`` adds the buoyancy ``rho g waterplane_area d`` to the body's constant
+    ``net_buoyancy`` (which then holds minus its weight): restoring from the waterplane,
+    lost when the buoy leaves the water.
+
+    Attributes
+    ----------
+    waterplane_area : float
+        [m^2].
+    height : float
+        Keel to deck [m]; immersion beyond it adds no buoyancy.
+    """
+
+    waterplane_area: float = quantity(unit="m^2", gt=0)
+    height: float = quantity(2.0, unit="m", gt=0)
+
+
+def _skew(c) -> np.ndarray:
+    """Cross-product matrix ``S(c)``: ``S(c) x = c x x``."""
+    x, y, z = c
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
+def _symmetric(matrix, name: str) -> None:
+    a = np.asarray(matrix, dtype=float)
+    scale = max(float(np.max(np.abs(a))), 1e-300)
+    if np.max(np.abs(a - a.T)) > SYMMETRY_RTOL * scale:
+        raise ValueError(f"{name} must be symmetric (row i, column j equal to row j, column i)")
+
+
+class Body(KanatModel):
+    """A body: a point with 3 degrees of freedom (default) or a rigid body with 6.
+
+    Attributes
+    ----------
+    mass : float
+        [kg].
+    net_buoyancy : float
+        Buoyancy minus weight [N]; negative sinks.
+    drag_area : float
+        C_D S [m^2] (3-DOF bodies; 6-DOF bodies use ``drag_areas``).
+    added_mass : float
+        [kg] (3-DOF bodies; 6-DOF bodies use ``added_mass_matrix``).
+    force : tuple of 3 float
+        Constant external force in the global frame [N].
+    spreading_force : float
+        Otter-board force ``F0`` [N], horizontal, perpendicular to the vessel heading,
+        positive to port (lumped model, SPEC §5).
+    surface_buoy : SurfaceBuoy or None
+        Waterplane hydrostatics of a surface buoy (lumped model, 3-DOF bodies).
+    position : tuple of 3 float or None
+        Initial position [m] (a guess for the equilibrium); the reference point of a
+        6-DOF body.
+    dof : {3, 6}
+        Degrees of freedom.
+    inertia, center_of_gravity, center_of_buoyancy, orientation_deg, waterplane_area,
+    metacentric_heights, hydrostatic_stiffness, linear_damping, quadratic_damping,
+    added_mass_matrix, drag_areas
+        The rigid body (``dof: 6``); see the field descriptions and the module docstring.
+    """
+
+    mass: float = quantity(unit="kg", gt=0)
+    net_buoyancy: float = quantity(unit="N")
+    drag_area: float = quantity(0.0, unit="m^2", ge=0)
+    added_mass: float = quantity(0.0, unit="kg", ge=0)
+    force: Vector3 = quantity(ZERO3, unit="N")
+    spreading_force: float = quantity(
+        0.0, unit="N", description="otter board force F0, horizontal and perpendicular to the "
+                                   "vessel heading, positive to port (lumped model)")
+    surface_buoy: SurfaceBuoy | None = Field(
+        None, description="a buoy riding the wave surface (lumped model)")
+    position: Vector3 | None = quantity(
+        None, unit="m", description="initial guess of the position for the network "
+                                    "equilibrium (lumped model); None: guessed. For dof: 6, "
+                                    "the reference point, about which the 6x6 matrices are given")
+    dof: Literal[3, 6] = Field(
+        3, description="degrees of freedom: 3, a point body; 6, a rigid body that also turns "
+                       "(needs inertia)")
+    inertia: Matrix3 | None = quantity(
+        None, unit="kg m^2",
+        description="dof 6: moments of inertia about the centre of gravity in body axes, "
+                    "[Ixx, Iyy, Izz] or a symmetric 3x3 matrix")
+    center_of_gravity: Vector3 = quantity(
+        ZERO3, unit="m", description="dof 6: centre of gravity in body axes, from the "
+                                     "reference point; the weight mass * g acts there")
+    center_of_buoyancy: Vector3 = quantity(
+        ZERO3, unit="m", description="dof 6: centre of buoyancy in body axes, from the "
+                                     "reference point; the buoyancy net_buoyancy + mass * g "
+                                     "acts there")
+    orientation_deg: Vector3 = quantity(
+        ZERO3, unit="deg", description="dof 6: initial roll, pitch, yaw of the body axes "
+                                       "about the global x, y, z axes (R = Rz(yaw) Ry(pitch) "
+                                       "Rx(roll)); a guess for the equilibrium")
+    waterplane_area: float | None = quantity(
+        None, unit="m^2", gt=0,
+        description="dof 6, surface-piercing: waterplane area A_w; heave stiffness rho g A_w "
+                    "(give metacentric_heights with it)")
+    metacentric_heights: tuple[float, float] | None = quantity(
+        None, unit="m",
+        description="dof 6, surface-piercing: [GM_roll, GM_pitch]; roll and pitch stiffness "
+                    "(net_buoyancy + mass * g) * GM (give waterplane_area with it)")
+    hydrostatic_stiffness: Matrix6 | None = quantity(
+        None, unit="N/m, N/rad, N m/rad",
+        description="dof 6: hydrostatic restoring stiffness about the reference point, 6 "
+                    "numbers (diagonal) or 6x6; instead of waterplane_area and "
+                    "metacentric_heights")
+    linear_damping: Matrix6 | None = quantity(
+        None, unit="N s/m, N m s/rad",
+        description="dof 6: linear damping on the body velocity, force -B v, 6 numbers "
+                    "(diagonal) or 6x6")
+    quadratic_damping: Matrix6 | None = quantity(
+        None, unit="N s^2/m^2, N m s^2/rad^2",
+        description="dof 6: quadratic damping on the body velocity, force -B_q (|v| v) "
+                    "per degree of freedom, 6 numbers (diagonal) or 6x6")
+    added_mass_matrix: Matrix6 | None = quantity(
+        None, unit="kg, kg m, kg m^2",
+        description="dof 6: added mass and inertia about the reference point, 6 numbers "
+                    "(diagonal) or a symmetric 6x6 (replaces added_mass)")
+    drag_areas: Vector6 | None = quantity(
+        None, unit="m^2, m^5",
+        description="dof 6: drag per degree of freedom in the relative flow, force "
+                    "0.5 rho C_D A |u| u: [C_D A] in surge, sway, heave [m^2] and roll, "
+                    "pitch, yaw [m^5], in body axes (replaces drag_area)")
+
+    @model_validator(mode="after")
+    def _rigid_body(self) -> Body:
+        if self.dof == 3:
+            used = [k for k in SIX_DOF_ONLY if getattr(self, k) not in (None, ZERO3)]
+            if used:
+                verb = "is" if len(used) == 1 else "are"
+                raise ValueError(f"{', '.join(used)} {verb} for rigid bodies: add dof: 6 "
+                                 "(a 3-DOF body is a point)")
+            return self
+        self._check_rigid()
+        return self
+
+    def _check_rigid(self) -> None:
+        if self.inertia is None:
+            raise ValueError("a dof: 6 body needs its inertia [Ixx, Iyy, Izz] (kg m^2) about "
+                             "the centre of gravity")
+        _symmetric(self.inertia, "inertia")
+        low = float(np.min(np.linalg.eigvalsh(np.asarray(self.inertia))))
+        if low <= 0:
+            raise ValueError(f"inertia must be positive definite (its smallest principal "
+                             f"moment is {fmt(low)} kg m^2)")
+        if self.drag_area or self.added_mass:
+            raise ValueError("a dof: 6 body takes drag_areas (6 values) and added_mass_matrix "
+                             "(6 or 6x6) instead of drag_area and added_mass")
+        if self.surface_buoy is not None:
+            raise ValueError("surface_buoy is for point bodies; a dof: 6 body takes "
+                             "waterplane_area and metacentric_heights (or hydrostatic_stiffness)")
+        pair = (self.waterplane_area is None, self.metacentric_heights is None)
+        if pair[0] != pair[1]:
+            raise ValueError("give waterplane_area (m^2) and metacentric_heights [GM_roll, "
+                             "GM_pitch] (m) together")
+        if not pair[0] and self.hydrostatic_stiffness is not None:
+            raise ValueError("give either waterplane_area with metacentric_heights or "
+                             "hydrostatic_stiffness, not both")
+        if self.added_mass_matrix is not None:
+            _symmetric(self.added_mass_matrix, "added_mass_matrix")
+        for key in ("linear_damping", "quadratic_damping"):
+            matrix = getattr(self, key)
+            if matrix is not None and min(np.diag(np.asarray(matrix))) < 0:
+                raise ValueError(f"{key} must not be negative on its diagonal (it would feed "
+                                 "energy into the body)")
+
+    def submerged_weight(self) -> float:
+        """Downward pull in still water, ``-net_buoyancy`` [N] (negative: it floats up)."""
+        return -self.net_buoyancy
+
+    def buoyancy(self, gravity: float) -> float:
+        """Buoyancy force ``net_buoyancy + mass g`` [N] (the weight of the displaced water)."""
+        return self.net_buoyancy + self.mass * gravity
+
+    def rigid_body_mass_matrix(self) -> np.ndarray:
+        """6x6 mass matrix about the reference point, in body axes [kg, kg m, kg m^2].
+
+        ``M = [[m I, -m S(c)], [m S(c), I_c - m S(c) S(c)]]`` with ``c`` the centre of
+        gravity and ``S(c) x = c x x`` (kinetic energy ``1/2 m |v + w x c|^2 + 1/2 w.I_c w``).
+        A 3-DOF body: ``m`` on the translations, zeros elsewhere.
+        """
+        m = self.mass
+        out = np.zeros((6, 6))
+        out[:3, :3] = m * np.eye(3)
+        if self.dof == 3:
+            return out
+        s = _skew(self.center_of_gravity)
+        out[:3, 3:] = -m * s
+        out[3:, :3] = m * s
+        out[3:, 3:] = np.asarray(self.inertia, dtype=float) - m * s @ s
+        return out
+
+    def hydrostatic_stiffness_matrix(self, water_density: float, gravity: float) -> np.ndarray:
+        """6x6 hydrostatic stiffness about the reference point [N/m, N m/rad].
+
+        ``hydrostatic_stiffness`` as given; or, from the waterplane, ``C33 = rho g A_w``,
+        ``C44 = B GM_roll``, ``C55 = B GM_pitch`` with ``B = net_buoyancy + mass g`` the
+        buoyancy (small-angle hydrostatics of a wall-sided body); zero otherwise.
+        """
+        if self.hydrostatic_stiffness is not None:
+            return np.asarray(self.hydrostatic_stiffness, dtype=float)
+        out = np.zeros((6, 6))
+        if self.waterplane_area is not None:
+            buoyancy = self.buoyancy(gravity)
+            out[2, 2] = water_density * gravity * self.waterplane_area
+            out[3, 3] = buoyancy * self.metacentric_heights[0]
+            out[4, 4] = buoyancy * self.metacentric_heights[1]
+        return out
