@@ -29,6 +29,7 @@ from ..model import Case
 from ..model._base import field_keys, fmt, suggest, unit_of
 from ..model.checks import physical_checks
 from ..model.paths import Path, key_path, line_of
+from .case_source import read_document
 from .yaml_loader import load_yaml
 
 _COMPARISONS = {"greater_than": ("gt", "greater than"),
@@ -305,7 +306,7 @@ def _misspelt(errors: list[dict[str, Any]]) -> set[tuple[Any, ...]]:
 # --- public entry points ----------------------------------------------------------
 
 def _check(text: str, file: str | None) -> tuple[Case | None, list[Problem]]:
-    doc = load_yaml(text, file)
+    doc = read_document(text, file)  # YAML (its tables read), or a MoorDyn file mapped
     problems = list(doc.problems)
     if doc.data is None and problems:
         return None, problems
