@@ -46,6 +46,7 @@ from kanat.lumped.snap import SnapTracker
 from kanat.lumped.stepping import step_info
 from kanat.lumped.system import LumpedSystem
 from kanat.model import Case
+from kanat.lumped.integrators import SCHEMES
 from kanat.schemes import get_scheme
 
 DURATION = 20.0       # s simulated
@@ -132,7 +133,7 @@ def run_kanat(p, scheme_name, h):
     net = build_network(case)
     system = LumpedSystem(net, case)
     x = equilibrium(net, case)[0]
-    scheme = get_scheme(scheme_name, "lumped", lambda_inf=-0.5)
+    scheme = get_scheme(scheme_name, SCHEMES, lambda_inf=-0.5)
     h = SAMPLE / math.ceil(SAMPLE / h - 1e-9)       # a whole number of steps per sample
     free = system.free_index
     state = scheme.start(system, 0.0, x[free], np.zeros((len(free), 3)), h)
@@ -255,7 +256,7 @@ def benchmark(name, repeats) -> list[dict]:
     path = moordyn_file(p, folder)
     net = build_network(kanat_case(p))
     info = step_info(net, net.x_guess)
-    safe = info.safe_step(get_scheme("rk4", "lumped"))
+    safe = info.safe_step(get_scheme("rk4", SCHEMES))
     references = {"kanat": run_kanat(p, "rk4", safe / 4)[0], "MoorDyn": run_moordyn(path, "RK4", safe / 4)[0]}
     run_kanat(p, "generalized-alpha-lumped", SAMPLE)               # compile before timing
     rows = []

@@ -1,13 +1,12 @@
-"""The generalized-α family (SPEC §2.4, §7 case 2): amplification at infinite frequency and
-the order of accuracy in time measured on the cable itself."""
+"""The generalized-α family (SPEC §2.4, §7 case 2): amplification at infinite frequency, and the
+scheme registry (the order of accuracy of every scheme: test_scheme_order.py)."""
 import numpy as np
 import pytest
 
-from kanat.continuum.schemes import BackwardEuler, Box, GeneralizedAlpha, GeneralizedTrapezoidal
-from kanat.continuum.stepper import step
-from kanat.schemes import get_scheme, scheme_classes
-
-from kanat.validation.checks_dynamics import straight_cable
+from kanat import api
+from kanat.continuum.schemes import SCHEMES, BackwardEuler, Box, GeneralizedAlpha, GeneralizedTrapezoidal
+from kanat.lumped.integrators import SCHEMES as LUMPED
+from kanat.schemes import get_scheme
 
 
 def amplification(coefficients, kappa_h):
@@ -32,50 +31,12 @@ def test_amplification_at_infinite_frequency(scheme, expected):
 
 
 def test_registry_names_and_errors():
-    names = set(scheme_classes("continuum"))
+    names = set(SCHEMES)
     assert {"generalized-alpha", "box", "backward-euler", "generalized-trapezoidal", "factorized",
-            "factorized-4", "wave-factorized", "wave-factorized-2", "wave-factorized-3"} <= names
-    assert not names & set(scheme_classes("lumped"))                      # one registry, no clashes
-    assert get_scheme("generalized-alpha", "continuum", lambda_inf=-0.7).lambda_inf == -0.7
+            "factorized-4", "wave-factorized", "wave-factorized-2", "wave-factorized-3"} == names
+    assert not names & set(LUMPED)                                       # one registry, no clashes
+    assert set(api.SCHEMES) == names | set(LUMPED)
+    assert get_scheme("generalized-alpha", SCHEMES, lambda_inf=-0.7).lambda_inf == -0.7
     with pytest.raises(Exception, match="unknown continuum scheme 'runge-kutta'; valid: backward-euler, box, "
                                         "factorized"):
-        get_scheme("runge-kutta", "continuum")
-
-
-class SmoothDrive:
-    """First end pulled and swung from rest with velocity ``A (1 - cos(2 pi t / tau)) / 2``."""
-
-    def velocities(self, t):
-        ramp = 0.5 * (1.0 - np.cos(2 * np.pi * t / 1.5))
-        return (-0.05 * ramp, 0.1 * ramp), (0.0, 0.0)
-
-    def origin(self, t):
-        return np.zeros(2)
-
-
-def driven(scheme, dt, t_end=0.6):
-    """A taut cable at rest driven smoothly from t = 0 (zero initial rate is exact); state at ``t_end``.
-
-    Soft (EA = 1e4 N) and coarse (10 segments) so that the step sizes of the test are in the
-    asymptotic range for every resolved wave.
-    """
-    cable, state = straight_cable(50.0, 10, 1000.0, 1e4, 1.0, 0.5)
-    coefficients, drive = scheme.coefficients(), SmoothDrive()
-    for _ in range(int(round(t_end / dt))):
-        state, _ = step(cable, state, dt, coefficients, drive)
-    return state.y
-
-
-SCHEMES = [GeneralizedAlpha(-1.0), GeneralizedAlpha(-0.7), GeneralizedAlpha(-0.5), GeneralizedAlpha(-0.3),
-           Box(), BackwardEuler(), GeneralizedTrapezoidal(0.5), GeneralizedTrapezoidal(0.6)]
-
-
-@pytest.mark.parametrize("scheme", SCHEMES, ids=str)
-def test_observed_order_in_time(scheme):
-    expected = 2 if isinstance(scheme, GeneralizedTrapezoidal) and scheme.gamma == 0.5 else scheme.order
-    steps = np.array([0.004, 0.002, 0.001, 0.0005])
-    reference = driven(scheme, 0.0005 / 8)
-    scale = np.array([1000.0, 0.1, 0.1, 1e-3])
-    errors = [np.max(np.abs(driven(scheme, dt) - reference) / scale) for dt in steps]
-    slope = np.polyfit(np.log(steps), np.log(errors), 1)[0]
-    assert slope == pytest.approx(expected, abs=0.15)
+        get_scheme("runge-kutta", SCHEMES)

@@ -13,12 +13,10 @@
   converge to each other as the grid is refined.
 """
 from pathlib import Path
-from types import SimpleNamespace
-
 import numpy as np
 import pytest
 
-from kanat.continuum.models import model_for
+from kanat.continuum.models import PlanarModel, model_for
 from kanat.continuum.schemes import Factorized, Factorized4, GeneralizedAlpha, WaveFactorized
 from kanat.io import parse_case
 from kanat.io.results import read_result
@@ -61,7 +59,7 @@ def ramp_error(scheme, segments, kind, sigma=0.8):
     c, axis, column = speed(kind), (0 if kind == "longitudinal" else 1), (1 if kind == "longitudinal" else 2)
     cable, state = straight_cable(LENGTH, segments, T0, EA, MASS, ADDED)
     drive = Ramp(0.6 * LENGTH / c, axis)
-    model = SimpleNamespace(cable=cable, drive=drive)
+    model = PlanarModel(cable, drive)
     dt = sigma * cable.ds / c
     for _ in range(round(0.8 * LENGTH / c / dt)):
         state, _ = scheme.step(model, state, dt)
@@ -91,7 +89,7 @@ def step_profiles(scheme, kind, steps=60):
     c = speed(kind)
     cable, state = straight_cable(LENGTH, 100, T0, EA, MASS, ADDED)
     velocity = (-AMPLITUDE, 0.0) if kind == "longitudinal" else (0.0, AMPLITUDE)
-    model = SimpleNamespace(cable=cable, drive=StepDrive(velocity))
+    model = PlanarModel(cable, StepDrive(velocity))
     dt = 0.5 * cable.ds / c
     profiles = []
     for _ in range(steps):
@@ -121,7 +119,7 @@ def test_crank_nicolson_blocks_are_not_monotone():
 def test_longitudinal_step_speed_and_jump(scheme):
     ea, m, t0, dv = 1e6, 1.0, 1000.0, 0.1
     cable, state = straight_cable(1000.0, 200, t0, ea, m)
-    model = SimpleNamespace(cable=cable, drive=StepDrive((-dv, 0.0)))
+    model = PlanarModel(cable, StepDrive((-dv, 0.0)))
     for _ in range(200):
         state, _ = scheme.step(model, state, 0.0025)
     jump = np.sqrt(ea * m) * dv
@@ -134,7 +132,7 @@ def test_longitudinal_step_speed_and_jump(scheme):
 def test_transverse_kink_speed(scheme):
     t0, m, ma, dv = 1000.0, 1.0, 0.6, 0.05
     cable, state = straight_cable(1000.0, 250, t0, 1e7, m, ma)
-    model = SimpleNamespace(cable=cable, drive=StepDrive((0.0, dv)))
+    model = PlanarModel(cable, StepDrive((0.0, dv)))
     for _ in range(200):
         state, _ = scheme.step(model, state, 0.05)
     assert front(cable.s, state.y[:, 2], 0.5 * dv) / state.t == pytest.approx(np.sqrt(t0 / (m + ma)), rel=0.03)

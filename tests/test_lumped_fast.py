@@ -17,6 +17,7 @@ from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
 from kanat.model import Case
+from kanat.lumped.integrators import SCHEMES
 from kanat.schemes import get_scheme
 
 WAVES = {"regular": {"type": "regular", "height": 3.0, "period": 6.0, "heading_deg": 150.0},
@@ -88,7 +89,7 @@ def test_track_samples_match_the_vessel_track():
 def test_fused_steps_match_python_steps_and_record_the_same_snaps(name):
     case = network_case("regular")
     net, system, x, v = start(case)
-    scheme = get_scheme(name, "lumped")
+    scheme = get_scheme(name, SCHEMES)
     assert supports(system, scheme)
     free, h, steps = system.free_index, 0.002, 600
     state0 = scheme.start(system, 0.0, x[free], v[free], h)
@@ -115,15 +116,15 @@ def test_fused_steps_match_python_steps_and_record_the_same_snaps(name):
 def test_fused_path_is_not_used_for_the_consistent_mass():
     case = network_case()
     net = build_network(case)
-    assert not supports(LumpedSystem(net, case, "consistent"), get_scheme("rk4", "lumped"))
-    assert supports(LumpedSystem(net, case), get_scheme("generalized-alpha-lumped", "lumped"))
+    assert not supports(LumpedSystem(net, case, "consistent"), get_scheme("rk4", SCHEMES))
+    assert supports(LumpedSystem(net, case), get_scheme("generalized-alpha-lumped", SCHEMES))
 
 
 def test_fused_implicit_steps_match_the_python_scheme():
     """The compiled generalized-α (band LU in RCM order) against implicit.py's (SuperLU)."""
     case = network_case("regular")
     net, system, x, v = start(case)
-    scheme = get_scheme("generalized-alpha-lumped", "lumped", lambda_inf=-0.3)
+    scheme = get_scheme("generalized-alpha-lumped", SCHEMES, lambda_inf=-0.3)
     free, h, steps = system.free_index, 0.01, 60
     state0 = scheme.start(system, 0.0, x[free], v[free], h)
     T = np.zeros(net.n_elements)

@@ -23,9 +23,12 @@ from typing import Any, Callable, Mapping
 
 from kanat import __version__, dynamics
 from kanat.continuum.adapter import ContinuumModel
+from kanat.continuum.schemes import SCHEMES as CONTINUUM_SCHEMES
 from kanat.errors import CaseError, KanatError
 from kanat.lumped.adapter import LumpedModel
+from kanat.lumped.integrators import SCHEMES as LUMPED_SCHEMES
 from kanat.model import Case
+from kanat.schemes import registry
 
 
 class RunFailedWarning(UserWarning):
@@ -107,6 +110,8 @@ MODELS: dict[str, Steady | Dynamic] = {
     "lumped": Dynamic(LumpedModel),
 }
 """Every model by its case-file name (``model:``)."""
+SCHEMES = registry(*CONTINUUM_SCHEMES.values(), *LUMPED_SCHEMES.values())
+"""Every time scheme of every dynamic model, by its case-file name (``simulation.scheme``)."""
 
 
 # --- the front door ---------------------------------------------------------------------
@@ -247,7 +252,7 @@ def simulate(case: Case, scheme=None, output=None, resume: bool = False, progres
         Any model: ``continuum`` and ``lumped`` run in time; ``statics`` and ``pitch``
         solve their steady state.
     scheme : str or kanat.schemes.Scheme, optional
-        Overrides ``simulation.scheme`` (a name of :func:`kanat.schemes.scheme_classes`, or
+        Overrides ``simulation.scheme`` (a name of :data:`SCHEMES`, or
         a scheme object such as ``GeneralizedAlpha(lambda_inf=-0.3)``).
     output : path-like, optional
         None: the result stays in memory and no file is written. A path: the run streams

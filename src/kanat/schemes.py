@@ -1,12 +1,14 @@
-"""One registry of time schemes for every dynamic model (STYLE rule 2).
+"""The time schemes' common ground: the base class, the registry builder and the lookup (STYLE rule 2).
 
-Each model's scheme module lists its scheme classes in a tuple ``SCHEMES``; this
-module gathers them by name. A scheme is a small frozen dataclass whose fields are its
-parameters, and whose class attributes say what it is:
+Each dynamic model keeps its own registry, built by plain imports in its scheme module
+(:data:`kanat.continuum.schemes.SCHEMES`, :data:`kanat.lumped.integrators.SCHEMES`), and
+:data:`kanat.api.SCHEMES` joins them. A scheme is a small frozen dataclass whose fields are
+its parameters, and whose class attributes say what it is:
 
 1. ``name`` — the name used in case files (``simulation.scheme``);
 2. ``model`` — ``"continuum"`` or ``"lumped"``;
-3. ``order`` — its order of accuracy in time, measured by one parametrized test;
+3. ``order`` — its order of accuracy in time, measured by one parametrized test
+   (``tests/test_scheme_order.py``) for every registered scheme;
 4. ``explicit`` — whether its step is bounded by a stability limit.
 
 A user's own scheme object works wherever a name does: :func:`get_scheme` passes
@@ -15,12 +17,9 @@ instances through.
 from __future__ import annotations
 
 import dataclasses
-import importlib
 from typing import ClassVar
 
 from kanat.errors import KanatError
-
-SCHEME_MODULES = ("kanat.continuum.schemes", "kanat.lumped.integrators")
 
 
 class Scheme:
@@ -36,37 +35,38 @@ class Scheme:
         return dataclasses.asdict(self) if dataclasses.is_dataclass(self) else {}
 
 
-def scheme_classes(model: str | None = None) -> dict[str, type[Scheme]]:
-    """Every registered scheme class by name, optionally only those of ``model``."""
+def registry(*classes: type[Scheme]) -> dict[str, type[Scheme]]:
+    """Scheme classes by name; two classes with one name are an error."""
     found: dict[str, type[Scheme]] = {}
-    for module_name in SCHEME_MODULES:
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as error:
-            if error.name and module_name.startswith(error.name):
-                continue                                    # that model is not part of this build
-            raise
-        for cls in module.SCHEMES:
-            if model is None or cls.model == model:
-                found[cls.name] = cls
+    for cls in classes:
+        if cls.name in found:
+            raise KanatError(f"two schemes are named '{cls.name}': {found[cls.name].__name__} and {cls.__name__}")
+        found[cls.name] = cls
     return found
 
 
-def get_scheme(spec, model: str, **parameters) -> Scheme:
+def get_scheme(spec, schemes: dict[str, type[Scheme]], **parameters) -> Scheme:
     """A scheme object from a name (with its parameters) or a scheme object.
+
+    Parameters
+    ----------
+    spec : str or Scheme
+    schemes : dict of str to Scheme class
+        The model's registry.
+    **parameters
+        Passed to the class when it has a field of that name and the value is not None.
 
     Raises
     ------
     KanatError
-        For an unknown name, listing the valid names for ``model``.
+        For an unknown name, listing the valid ones.
     """
     if isinstance(spec, Scheme):
         return spec
-    classes = scheme_classes(model)
-    if spec not in classes:
-        valid = ", ".join(sorted(classes)) or "none in this build"
-        raise KanatError(f"unknown {model} scheme '{spec}'; valid: {valid}")
-    cls = classes[spec]
+    if spec not in schemes:
+        model = next(iter(schemes.values())).model if schemes else "this"
+        raise KanatError(f"unknown {model} scheme '{spec}'; valid: {', '.join(sorted(schemes))}")
+    cls = schemes[spec]
     fields = {f.name for f in dataclasses.fields(cls)} if dataclasses.is_dataclass(cls) else set()
     return cls(**{k: v for k, v in parameters.items() if k in fields and v is not None})
 

@@ -15,7 +15,7 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum.models import model_for
 from kanat.continuum.model2d import strain_of
-from kanat.continuum.schemes import ContinuumScheme
+from kanat.continuum.schemes import SCHEMES, ContinuumScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.dynamics import StepFailure, Steps
 from kanat.errors import CaseError, Problem
@@ -48,7 +48,7 @@ class ContinuumModel:
         if sim.dt is None:
             raise CaseError([Problem("simulation.dt", "the continuum model needs a time step dt [s]")])
         self.case = case
-        self.scheme: ContinuumScheme = get_scheme(scheme or sim.scheme or "generalized-alpha", "continuum",
+        self.scheme: ContinuumScheme = get_scheme(scheme or sim.scheme or "generalized-alpha", SCHEMES,
                                                   lambda_inf=sim.lambda_inf, gamma=sim.gamma)
         self.cable_model = model_for(case)
         self.dt, self.output_interval, self.duration = sim.dt, sim.output_interval, sim.duration

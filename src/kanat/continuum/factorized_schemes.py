@@ -21,7 +21,6 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from kanat.continuum.factorized import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
-from kanat.continuum.factorized_system import finish, prepare
 from kanat.continuum.schemes import ContinuumScheme
 from kanat.continuum.wave_factorized import wave_factorized_step
 from kanat.errors import KanatError
@@ -52,9 +51,9 @@ class Factorized(ContinuumScheme):
 
     def step(self, model, state, dt: float):
         """One step: ``(new_state, 1)``; raises NewtonFailure when an end cannot be solved."""
-        world, y, chart = prepare(model, state, dt)
+        world, y, chart = model.world(state, dt)
         new = factorized_step(world, y, dt, self.sweeps, self.implicit_source, self.compiled, self.delta)
-        return finish(model, state, y, new, chart, dt), 1
+        return model.advanced(state, y, new, chart, dt), 1
 
 
 @dataclass(frozen=True)
@@ -82,12 +81,16 @@ class WaveFactorized(ContinuumScheme):
     """
 
     name: ClassVar[str] = "wave-factorized"
-    order: ClassVar[int] = 2
     explicit: ClassVar[bool] = False
     blocks: ClassVar[int] = 2
     gamma: float = 0.6
     iterations: int = 1
     compiled: bool = True
+
+    @property
+    def order(self) -> int:
+        """2 at ``gamma = 1/2`` (Crank–Nicolson blocks), else 1."""
+        return 2 if self.gamma == 0.5 else 1
 
     def __post_init__(self):
         if not 0.5 <= self.gamma <= 1.0:
@@ -98,10 +101,10 @@ class WaveFactorized(ContinuumScheme):
 
     def step(self, model, state, dt: float):
         """One step: ``(new_state, iterations)``."""
-        world, y, chart = prepare(model, state, dt)
+        world, y, chart = model.world(state, dt)
         count = self.blocks if world.system.dim == 3 else 2
         new = wave_factorized_step(world, y, dt, count, self.gamma, self.iterations, self.compiled)
-        return finish(model, state, y, new, chart, dt), self.iterations
+        return model.advanced(state, y, new, chart, dt), self.iterations
 
 
 @dataclass(frozen=True)
@@ -118,5 +121,3 @@ class WaveFactorized3(WaveFactorized):
     name: ClassVar[str] = "wave-factorized-3"
     blocks: ClassVar[int] = 3
 
-
-SCHEMES = (Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)

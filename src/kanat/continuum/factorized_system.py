@@ -15,7 +15,10 @@ end conditions by complex step. The spatial matrices are the rows of
 :mod:`kanat.continuum.kernels3d` written as arrays; tests compare the two.
 
 :class:`World` is what one step needs of the outside: the parameters, the current and the
-vertical in the frame's coordinates, and both ends' physical data at the new time level.
+vertical in the frame's coordinates, and both ends' physical data at the new time level. The
+planar and the spatial models give it (``model.world(state, dt)``) and turn the new unknowns
+back into a state (``model.advanced(state, start, y, chart, dt)``), so the schemes never ask
+which model they step.
 """
 from __future__ import annotations
 
@@ -24,10 +27,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
-from kanat.continuum.model2d import positions
-from kanat.continuum.spatial import UP, SpatialState, positions3
-from kanat.continuum.stepper import State
 
 STEP = 1e-30                      # complex-step size
 LONGITUDINAL = (0, 1)
@@ -262,44 +261,6 @@ class World:
     ds: float
 
 
-def prepare(model, state, dt: float):
-    """``(world, Y, chart)`` for a step of ``dt`` from ``state`` (re-charting a spatial state first).
-
-    ``model`` is a planar adapter (``.cable``, ``.drive``) or a spatial one (``.cable``,
-    ``.velocities(t)``, ``.origin(t)``); ``chart`` is None for a planar state.
-    """
-    cable, t1 = model.cable, state.t + dt
-    rho = cable.params[k.RHO]
-    if isinstance(state, SpatialState):
-        y, chart = state.y, state.chart
-        if needs_rechart(y):
-            new = choose_chart(frames(y, chart)[0])
-            y, _ = rechart(y, state.rate, chart, new)
-            chart = new
-        v0, v1 = (np.asarray(v, dtype=float) @ chart for v in model.velocities(t1))
-        current = cable.current_at(state.xyz[:, 2]) @ chart
-        up = chart.T @ UP
-        ends = [_end_data(e, v, rho, np.asarray(e.force, dtype=float) @ chart) for e, v in
-                ((cable.start, v0), (cable.end, v1))]
-        return World(CableSystem(cable.params, 3), current, up, ends[0], ends[1], cable.ds), y, chart
-    v0, v1 = (np.asarray(v, dtype=float) for v in model.drive.velocities(t1))
-    current = cable.current_at(state.xz[:, 1])
-    ends = [_end_data(e, v, rho, np.asarray(e.force, dtype=float)) for e, v in ((cable.start, v0), (cable.end, v1))]
-    return World(CableSystem(cable.params, 2), current, np.array([0.0, 1.0]), ends[0], ends[1], cable.ds), \
-        state.y, None
-
-
-def finish(model, state, start, y, chart, dt: float):
-    """The new planar or spatial state holding ``y`` at ``t + dt``; its rate is ``(y - start) / dt``.
-
-    ``start`` is the step's initial state in the step's chart (as :func:`prepare` gave it).
-    """
-    t1 = state.t + dt
-    if chart is not None:
-        xyz = positions3(model.cable, y, chart, model.origin(t1))
-        return SpatialState(t1, y, (y - start) / dt, xyz, chart)
-    return State(t1, y, (y - start) / dt, positions(model.cable, y, model.drive.origin(t1)))
-
-
-def _end_data(end, velocity, rho, force) -> EndData:
+def end_data(end, velocity, rho, force) -> EndData:
+    """An end condition's data at the new time level (vectors in the frame's coordinates)."""
     return EndData(end.kind, velocity, end.mass, end.net_buoyancy, 0.5 * rho * end.drag_area, force)

@@ -12,6 +12,7 @@ import numpy as np
 
 from kanat.continuum import kernels2d as k
 from kanat.errors import CaseError, Problem
+from kanat.model.plane import out_of_plane
 
 
 @dataclass(frozen=True)
@@ -171,27 +172,9 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
     z, rows = current_table(case)
-    if check_plane:
-        _planar_or_refuse(case, rows)
+    if check_plane and out_of_plane(case):
+        raise CaseError(out_of_plane(case))
     return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])
-
-
-def _planar_or_refuse(case, current_rows) -> None:
-    """Refuse, naming each key, anything that leaves the x–z plane (the planar model would drop it)."""
-    problems = []
-    if np.any(np.abs(current_rows[:, 1]) > 0):
-        problems.append(Problem("environment.current", "the current has a y component, which leaves the x–z plane"))
-    for name, body in case.bodies.items():
-        if body.force[1]:
-            problems.append(Problem(f"bodies.{name}.force", "the force has a y component, which leaves the x–z plane"))
-    for index, cable in enumerate(case.cables):
-        for key, end in (("from", cable.from_), ("to", cable.to)):
-            if end.kind == "anchor" and end.position[1]:
-                problems.append(Problem(f"cables[{index}].{key}", "the anchor is off y = 0, outside the x–z plane"))
-    if case.vessel.tow_point[1]:
-        problems.append(Problem("vessel.tow_point", "the tow point is off y = 0, outside the x–z plane"))
-    if problems:
-        raise CaseError([Problem(p.key, p.message + "; set simulation.dimensions: 3") for p in problems])
 
 
 def _end(case, end, key: str, first: bool) -> EndCondition:

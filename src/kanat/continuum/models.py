@@ -1,21 +1,30 @@
-"""The planar and spatial continuum models behind one small interface, for the run loop.
+"""The planar and spatial continuum models behind one interface, for the run loop and the schemes.
 
-Each adapter knows how to build its cable and drive from a case, find the initial state,
-take a step, report the output variables of case-format.md, and save and restore its
-state in a checkpoint. ``dimensions: auto`` picks the planar model when the case stays in
-the x–z plane (no turns, nothing out of the plane) and the spatial one otherwise.
+Both adapters have the same methods, so nothing above them asks which one it holds:
+
+* ``initial()``, ``step(state, dt, coefficients)`` (the generalized-α family), ``outputs(state)``,
+  ``save(state)`` / ``restore(t, saved)``;
+* ``velocities(t)`` (both ends, global frame) and ``origin(t)`` (the first end's position);
+* ``tangents(state)`` (global unit tangents) and ``tension(state)``;
+* ``world(state, dt)`` and ``advanced(state, start, y, chart, dt)`` for seed 000's schemes
+  (:mod:`kanat.continuum.factorized_system`).
+
+``dimensions: auto`` picks the planar model when the case stays in the x–z plane
+(:func:`kanat.model.plane.out_of_plane` finds nothing) and the spatial one otherwise.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from kanat.continuum.chart import angles, choose_chart, frames
+from kanat.continuum import kernels2d as k
+from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.drive import Drive
+from kanat.continuum.factorized_system import CableSystem, World, end_data
 from kanat.continuum.model2d import _end as planar_end
 from kanat.continuum.model2d import current_table, planar_cable, positions
-from kanat.continuum.spatial import SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
+from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.stepper import State, steady, step
-from kanat.errors import CaseError
+from kanat.model.plane import out_of_plane
 from kanat.statics import CableSolution, solve_cable
 from kanat.statics.setup import cable_problems
 from kanat.vessel.track import VesselTrack
@@ -54,15 +63,29 @@ def free_tail_guess(case, s) -> CableSolution:
 
 
 class PlanarModel:
-    """Adapter of the planar model (:mod:`model2d`, :mod:`stepper`)."""
+    """Adapter of the planar model (:mod:`model2d`, :mod:`stepper`).
+
+    Parameters
+    ----------
+    cable : PlanarCable
+    drive : Drive
+        Or any object with ``velocities(t)`` and ``origin(t)`` in the x–z plane (tests drive
+        straight cables this way).
+    case : kanat.model.Case, optional
+        The case the cable comes from (its statics give the initial state).
+    """
 
     dimensions = 2
 
-    def __init__(self, case):
-        self.case = case
-        self.cable = planar_cable(case)
-        self.drive = Drive.planar(self.cable, case.vessel)
-        self.track = self.drive.track
+    def __init__(self, cable, drive, case=None):
+        self.case, self.cable, self.drive = case, cable, drive
+        self.track = getattr(drive, "track", None)
+
+    @classmethod
+    def from_case(cls, case) -> PlanarModel:
+        """The planar model of a case's single cable (refusing what leaves the x–z plane)."""
+        cable = planar_cable(case)
+        return cls(cable, Drive(cable, VesselTrack.from_model(case.vessel)), case)
 
     def initial(self) -> State:
         cable, drive = self.cable, self.drive
@@ -75,6 +98,33 @@ class PlanarModel:
 
     def step(self, state, dt, coefficients):
         return step(self.cable, state, dt, coefficients, self.drive)
+
+    def velocities(self, t):
+        """End velocities ``(v0, v1)`` (3,) in the global frame [m/s]."""
+        return tuple(np.array([v[0], 0.0, v[1]]) for v in self.drive.velocities(t))
+
+    def origin(self, t):
+        """Position (3,) of the first end [m]."""
+        x, z = self.drive.origin(t)
+        return np.array([x, 0.0, z])
+
+    def tangents(self, state) -> np.ndarray:
+        """Global unit tangents (N+1, 3)."""
+        phi = state.y[:, 3]
+        return np.column_stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
+
+    def world(self, state, dt):
+        """``(World, y, None)`` of a step of ``dt`` from ``state`` (seed 000's schemes)."""
+        cable, rho = self.cable, self.cable.params[k.RHO]
+        v0, v1 = (np.asarray(v, dtype=float) for v in self.drive.velocities(state.t + dt))
+        ends = [end_data(e, v, rho, np.asarray(e.force, dtype=float)) for e, v in ((cable.start, v0), (cable.end, v1))]
+        return World(CableSystem(cable.params, 2), cable.current_at(state.xz[:, 1]), np.array([0.0, 1.0]),
+                     ends[0], ends[1], cable.ds), state.y, None
+
+    def advanced(self, state, start, y, chart, dt) -> State:
+        """The state holding ``y`` at ``t + dt``, its rate ``(y - start) / dt``."""
+        t1 = state.t + dt
+        return State(t1, y, (y - start) / dt, positions(self.cable, y, self.drive.origin(t1)))
 
     def outputs(self, state) -> dict:
         y, xz = state.y, state.xz
@@ -127,6 +177,30 @@ class SpatialModel:
     def step(self, state, dt, coefficients):
         return step3(self.cable, state, dt, coefficients, self)
 
+    def tangents(self, state) -> np.ndarray:
+        """Global unit tangents (N+1, 3)."""
+        return frames(state.y, state.chart)[0]
+
+    def world(self, state, dt):
+        """``(World, y, chart)`` of a step of ``dt`` from ``state``, re-charted first when a tangent
+        nears the pole (seed 000's schemes)."""
+        cable, rho = self.cable, self.cable.params[k.RHO]
+        y, chart = state.y, state.chart
+        if needs_rechart(y):
+            new = choose_chart(frames(y, chart)[0])
+            y, _ = rechart(y, state.rate, chart, new)
+            chart = new
+        v0, v1 = (np.asarray(v, dtype=float) @ chart for v in self.velocities(state.t + dt))
+        ends = [end_data(e, v, rho, np.asarray(e.force, dtype=float) @ chart) for e, v in
+                ((cable.start, v0), (cable.end, v1))]
+        return World(CableSystem(cable.params, 3), cable.current_at(state.xyz[:, 2]) @ chart, chart.T @ UP,
+                     ends[0], ends[1], cable.ds), y, chart
+
+    def advanced(self, state, start, y, chart, dt) -> SpatialState:
+        """The state holding ``y`` (in ``chart``) at ``t + dt``, its rate ``(y - start) / dt``."""
+        t1 = state.t + dt
+        return SpatialState(t1, y, (y - start) / dt, positions3(self.cable, y, chart, self.origin(t1)), chart)
+
     def outputs(self, state) -> dict:
         t, n, b = frames(state.y, state.chart)
         u, v, w = state.y[:, 1:2], state.y[:, 2:3], state.y[:, 3:4]
@@ -164,14 +238,7 @@ def spatial_cable(case) -> SpatialCable:
 def model_for(case):
     """The planar or the spatial adapter, by ``simulation.dimensions`` (``auto``: planar if it fits)."""
     wanted = case.simulation.dimensions
-    if wanted == 2:
-        return PlanarModel(case)
-    if wanted == 3:
+    if wanted == 3 or (wanted == "auto" and out_of_plane(case)):
         return SpatialModel(case)
-    try:
-        return PlanarModel(case)
-    except CaseError as error:
-        if all("x–z plane" in p.message for p in error.problems):
-            return SpatialModel(case)
-        raise
+    return PlanarModel.from_case(case)
 

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from kanat.errors import KanatError
-from kanat.schemes import Scheme
+from kanat.schemes import Scheme, registry
 
 
 @dataclass(frozen=True)
@@ -96,8 +96,12 @@ class GeneralizedTrapezoidal(FamilyScheme):
     """Generalized trapezoidal (Sun et al.): ``am = ak = 0``, ``gamma`` in [1/2, 1]; order 1 (2 at 1/2)."""
 
     name: ClassVar[str] = "generalized-trapezoidal"
-    order: ClassVar[int] = 1
     gamma: float = 0.6
+
+    @property
+    def order(self) -> int:
+        """2 at ``gamma = 1/2`` (the trapezoidal rule), else 1."""
+        return 2 if self.gamma == 0.5 else 1
 
     def __post_init__(self):
         if not 0.5 <= self.gamma <= 1.0:
@@ -109,5 +113,6 @@ class GeneralizedTrapezoidal(FamilyScheme):
 
 from kanat.continuum.factorized_schemes import Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3  # noqa: E402,E501  seed 000
 
-SCHEMES = (GeneralizedAlpha, Box, BackwardEuler, GeneralizedTrapezoidal,
-           Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)
+SCHEMES = registry(GeneralizedAlpha, Box, BackwardEuler, GeneralizedTrapezoidal,
+                   Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)
+"""Every continuum scheme by name."""

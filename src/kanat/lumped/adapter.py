@@ -21,12 +21,12 @@ from kanat.io.schema import Layout
 from kanat.lumped import kernels, stepping
 from kanat.lumped.advance import advance
 from kanat.lumped.equilibrium import equilibrium
-from kanat.lumped.integrators import state_positions
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
-from kanat.schemes import get_scheme, scheme_classes
+from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.schemes import get_scheme
 
 DEFAULT_MAX_STRAIN = 0.5
 """An element stretched beyond this (when the line type sets no ``max_strain``) stops the run."""
@@ -76,10 +76,10 @@ class LumpedModel:
         sim = self.case.simulation
         spec = scheme if scheme is not None else sim.scheme
         if spec is None:
-            chosen = stepping.choose_scheme(self.info, sim.step_or_default, scheme_classes("lumped"))
+            chosen = stepping.choose_scheme(self.info, sim.step_or_default, SCHEMES)
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
-        return get_scheme(spec, "lumped", lambda_inf=sim.lambda_inf)
+        return get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
 
     def _step_size(self) -> float:
         sim, info, scheme = self.case.simulation, self.info, self.scheme

@@ -28,7 +28,7 @@ from typing import ClassVar
 import numpy as np
 
 from kanat.lumped.implicit import generalized_alpha_step
-from kanat.schemes import Scheme
+from kanat.schemes import Scheme, registry
 
 
 def _pack(xf, vf):
@@ -143,7 +143,8 @@ class GeneralizedAlphaLumped(Scheme):
         return generalized_alpha_step(self, system, state, h)
 
 
-SCHEMES = (RK4, ABM4, GeneralizedAlphaLumped)
+SCHEMES = registry(RK4, ABM4, GeneralizedAlphaLumped)
+"""Every lumped scheme by name."""
 
 
 def state_positions(state) -> tuple[np.ndarray, np.ndarray]:

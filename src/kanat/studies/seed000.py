@@ -22,7 +22,6 @@ import numpy as np
 import pandas as pd
 
 from kanat import api, dynamics
-from kanat.continuum.chart import frames
 from kanat.continuum.models import model_for
 from kanat.io import parse_case
 
@@ -45,6 +44,8 @@ class Trace:
         The run's solver time (compiling excluded) [s].
     steps : int
     status : str
+    model : object
+        The continuum model (planar or spatial adapter) the states belong to.
     """
 
     scheme: str
@@ -53,6 +54,7 @@ class Trace:
     wall_time_s: float
     steps: int
     status: str = "ok"
+    model: object = None
 
 
 def case_text(name: str, path=None) -> str:
@@ -103,33 +105,22 @@ def simulate(case, scheme, times, dt=None) -> Trace:
     summary = dynamics.run(build, [keep])
     status = summary.status.removeprefix("failed: ")
     return Trace(models[0].scheme.name, np.asarray(keep.times), keep.states, summary.solver_time_s,
-                 summary.steps, status)
+                 summary.steps, status, models[0].cable_model)
 
 
-def tangents(state) -> np.ndarray:
-    """Global unit tangents (n, 3) of a planar or spatial state."""
-    if hasattr(state, "chart"):
-        return frames(state.y, state.chart)[0]
-    phi = state.y[:, 3]
-    return np.column_stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
-
-
-def profile(state, s, stations) -> dict:
+def profile(model, state, s, stations) -> dict:
     """Tension, inclination and azimuth at arclengths ``stations`` (interpolated between nodes)."""
-    t = tangents(state)
+    t = model.tangents(state)
     inclination = np.arctan2(-t[:, 2], np.hypot(t[:, 0], t[:, 1]))
     azimuth = np.unwrap(np.arctan2(t[:, 1], -t[:, 0]))
     at = lambda v: np.interp(stations, s, v)
-    return {"tension": at(state.y[:, 0]), "inclination": at(inclination), "azimuth": at(azimuth)}
+    return {"tension": at(model.outputs(state)["tension"]), "inclination": at(inclination), "azimuth": at(azimuth)}
 
 
 def body_relative(state, model) -> np.ndarray:
     """Body position relative to the tow point (x, z) [m]: distance astern ``-x`` and depth ``-z``."""
-    if hasattr(state, "chart"):
-        xyz = state.xyz[-1] - model.origin(state.t)
-        return np.array([-xyz[0], -xyz[2]])
-    xz = state.xz[-1] - model.drive.origin(state.t)
-    return np.array([-xz[0], -xz[1]])
+    xyz = model.outputs(state)["position"][-1] - model.origin(state.t)
+    return np.array([-xyz[0], -xyz[2]])
 
 
 def accel(segments: int = 24, dt: float = 0.002, schemes=(FULL, "factorized", "factorized-4", "wave-factorized"),
@@ -172,7 +163,7 @@ def planar80(segment_counts=(5, 10), dt: float = 0.01, times=(0.0, 10.0, 24.0), 
         walls[(segments, FULL)], walls[(segments, scheme)] = full.wall_time_s, fact.wall_time_s
         speedup[segments] = full.wall_time_s / fact.wall_time_s
         for t, a, b in zip(full.times, full.states, fact.states):
-            pa, pb = profile(a, s, stations), profile(b, s, stations)
+            pa, pb = profile(full.model, a, s, stations), profile(fact.model, b, s, stations)
             for i, station in enumerate(stations):
                 rows.append({"segments": segments, "time": t, "s": station,
                              "tension_full": pa["tension"][i], f"tension_{scheme}": pb["tension"][i],
@@ -207,7 +198,7 @@ def spatial100(dt: float = 0.05, times=(0.0, 10.0, 60.0), schemes=(FULL, "wave-f
         for name, trace in traces.items():
             if i >= len(trace.states):
                 continue
-            values = profile(trace.states[i], s, stations)
+            values = profile(trace.model, trace.states[i], s, stations)
             for j, station in enumerate(stations):
                 for key in ("tension", "inclination", "azimuth"):
                     row[f"{key}_{int(station)}_{name}"] = values[key][j]
@@ -217,8 +208,8 @@ def spatial100(dt: float = 0.05, times=(0.0, 10.0, 60.0), schemes=(FULL, "wave-f
     for trace in runs[1:]:
         name = trace.scheme
         for t, a, b in zip(grid, full.states, trace.states):
-            wa, wb = _binormal_speed(a), _binormal_speed(b)
-            za, zb = profile(a, s, s)["azimuth"], profile(b, s, s)["azimuth"]
+            wa, wb = _binormal_speed(full.model, a), _binormal_speed(trace.model, b)
+            za, zb = profile(full.model, a, s, s)["azimuth"], profile(trace.model, b, s, s)["azimuth"]
             history.append({"time": t, "scheme": name, "w_error": np.max(np.abs(wb - wa)),
                             "azimuth_error": np.max(np.abs(zb - za)),
                             "tension_error_pct": 100 * np.max(np.abs(b.y[:, 0] / a.y[:, 0] - 1))})
@@ -228,10 +219,9 @@ def spatial100(dt: float = 0.05, times=(0.0, 10.0, 60.0), schemes=(FULL, "wave-f
     return table, pd.DataFrame(history)
 
 
-def _binormal_speed(state) -> np.ndarray:
+def _binormal_speed(model, state) -> np.ndarray:
     """The velocity's component out of the cable's local vertical plane (chart-free ``w``) [m/s]."""
-    t, n, b = frames(state.y, state.chart)
-    velocity = state.y[:, 1:2] * t + state.y[:, 2:3] * n + state.y[:, 3:4] * b
+    t, velocity = model.tangents(state), model.outputs(state)["velocity"]
     horizontal = np.cross(t, np.array([0.0, 0.0, 1.0]))
     norm = np.linalg.norm(horizontal, axis=1, keepdims=True)
     return np.sum(velocity * horizontal / np.where(norm > 0, norm, 1.0), axis=1)

@@ -23,6 +23,7 @@ from kanat import api, dynamics
 from kanat.continuum import kernels2d as k
 from kanat.continuum.models import model_for
 from kanat.errors import SolverError
+from kanat.continuum.schemes import SCHEMES
 from kanat.schemes import get_scheme
 
 BOUND_FACTOR = 10.0           # tension beyond this multiple of the reference's largest tension is unbounded
@@ -103,8 +104,8 @@ def stability_sweep(case, scheme, dts, duration: float | None = None, reference=
         (:func:`stable_range`).
     """
     sim = case.simulation
-    chosen = get_scheme(scheme, "continuum", lambda_inf=sim.lambda_inf, gamma=sim.gamma)
-    ref_scheme = get_scheme(reference or REFERENCE, "continuum", lambda_inf=sim.lambda_inf, gamma=sim.gamma)
+    chosen = get_scheme(scheme, SCHEMES, lambda_inf=sim.lambda_inf, gamma=sim.gamma)
+    ref_scheme = get_scheme(reference or REFERENCE, SCHEMES, lambda_inf=sim.lambda_inf, gamma=sim.gamma)
     dts = np.sort(np.asarray(dts, dtype=float))
     duration = duration if duration is not None else sim.duration
     ref_dt = reference_dt or dts[0]

@@ -1,0 +1,50 @@
+"""Whether a case stays in the x–z plane: one place that says what leaves it.
+
+The planar continuum model holds a case exactly only when nothing in it acts or moves out
+of the x–z plane; ``simulation.dimensions: auto`` picks it then, and refuses it (naming each
+key) when ``dimensions: 2`` is asked of a case that leaves the plane.
+"""
+from __future__ import annotations
+
+from ..errors import Problem
+from .vessel import Heading, Turn
+
+OUT_OF_PLANE_DOFS = ("sway", "roll", "yaw")
+"""Degrees of freedom of a prescribed vessel motion that leave the x–z plane."""
+
+
+def out_of_plane(case) -> list[Problem]:
+    """One problem per key of ``case`` that leaves the x–z plane (empty: the case is planar).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+
+    Returns
+    -------
+    list of kanat.errors.Problem
+        Key path and what leaves the plane; the messages end with the remedy
+        (``simulation.dimensions: 3``).
+    """
+    found = []
+    current = case.environment.current
+    rows = current.profile if current.profile is not None else [(0.0, *(current.velocity or (0.0, 0.0, 0.0)))]
+    if any(row[2] for row in rows):
+        found.append(("environment.current", "the current has a y component"))
+    for name, body in case.bodies.items():
+        if body.force[1]:
+            found.append((f"bodies.{name}.force", "the force has a y component"))
+    for index, cable in enumerate(case.cables):
+        for key, end in (("from", cable.from_), ("to", cable.to)):
+            if end.kind == "anchor" and end.position[1]:
+                found.append((f"cables[{index}].{key}", "the anchor is off y = 0"))
+    if case.vessel.tow_point[1]:
+        found.append(("vessel.tow_point", "the tow point is off y = 0"))
+    for index, segment in enumerate(case.vessel.track):
+        if isinstance(segment, (Turn, Heading)):
+            found.append((f"vessel.track[{index}]", f"the vessel turns ({segment.KEY})"))
+    for index, motion in enumerate(getattr(case.vessel, "motion", None) or ()):
+        dof = getattr(motion, "dof", None)
+        if dof in OUT_OF_PLANE_DOFS:
+            found.append((f"vessel.motion[{index}]", f"the vessel's {dof} moves the tow point out of the plane"))
+    return [Problem(key, f"{what}, which leaves the x–z plane; set simulation.dimensions: 3") for key, what in found]
