@@ -11,7 +11,8 @@ import pytest
 from typer.testing import CliRunner
 
 from kanat.errors import KanatError
-from kanat.validation import REGISTRY, Tolerance, check, run_suite, write_validation_report
+from kanat.report.html_validation import validation_report as write_validation_report
+from kanat.validation import REGISTRY, Tolerance, check, run_suite
 
 EXPECTED = {                                   # independent oracles (SPEC §7)
     "seed001-alpha0": (46.9, 0.1),

@@ -15,12 +15,7 @@ read_result(path) -> xarray.Dataset
 
 The names are loaded on first use, so ``import kanat`` stays light.
 """
-from importlib.metadata import PackageNotFoundError, version
-
-try:
-    __version__ = version("kanat")
-except PackageNotFoundError:  # running from a source tree that was never installed
-    __version__ = "0+unknown"
+from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
 __all__ = ["__version__", *_API]

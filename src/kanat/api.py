@@ -21,7 +21,7 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from kanat import __version__, dynamics
+from kanat import dynamics
 from kanat.continuum.adapter import ContinuumModel
 from kanat.continuum.schemes import SCHEMES as CONTINUUM_SCHEMES
 from kanat.errors import CaseError, KanatError
@@ -29,6 +29,7 @@ from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.integrators import SCHEMES as LUMPED_SCHEMES
 from kanat.model import Case
 from kanat.schemes import registry
+from kanat.version import __version__
 
 
 class RunFailedWarning(UserWarning):

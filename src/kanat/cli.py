@@ -13,7 +13,6 @@ from typing import Optional
 
 import typer
 
-import kanat
 from kanat.cli_common import CONTEXT, console, fail, load, out, print_problems, setup_logging
 
 log = logging.getLogger("kanat")
@@ -25,7 +24,9 @@ app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_
 
 def _version(value: bool):
     if value:
-        print(f"kanat {kanat.__version__}")
+        from kanat.version import __version__
+
+        print(f"kanat {__version__}")
         raise typer.Exit()
 
 

@@ -106,7 +106,8 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
                    only: Optional[List[str]] = typer.Option(None, "--only", help="Run only these check ids."),
                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run the fast validation cases of SPEC §7 and write their report (exit 1 if any fails)."""
-    from kanat.validation import run_suite, write_validation_report
+    from kanat.report.html_validation import validation_report as write_validation_report
+    from kanat.validation import run_suite
 
     try:
         with console.status("running the validation suite ..."):

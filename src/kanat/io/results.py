@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-import kanat
+from kanat.version import __version__
 
 UNITS = {
     "s": ("m", "unstretched arclength within its cable"),
@@ -51,7 +51,7 @@ def case_sha256(case) -> str:
 def provenance(case, *, model: str, scheme: str, wall_time_s: float = 0.0, status: str = "running", **extra) -> dict:
     """Global attributes every result file carries (case-format.md)."""
     attrs = {
-        "kanat_version": kanat.__version__,
+        "kanat_version": __version__,
         "case_name": case.name or "",
         "case_sha256": case_sha256(case),
         "model": model,

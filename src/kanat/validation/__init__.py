@@ -4,8 +4,6 @@ Public API
 ----------
 run_suite(only=None) -> list of CheckResult
     Run every registered check (or those named); a check that raises fails with its message.
-write_validation_report(results, output) -> Path
-    The HTML page (``kanat validate-suite -o validation.html``).
 REGISTRY
     The checks by id (:mod:`.checks_statics`, :mod:`.checks_dynamics`).
 NOT_IN_SUITE
@@ -15,12 +13,4 @@ from kanat.validation import checks_dynamics, checks_statics  # noqa: F401 - reg
 from kanat.validation.core import NOT_IN_SUITE, REGISTRY, Check, CheckResult, Tolerance, check, run_suite
 
 
-def write_validation_report(results, output):
-    """Write the validation report page (:mod:`kanat.report.html_validation`)."""
-    from kanat.report.html_validation import validation_report
-
-    return validation_report(results, output)
-
-
-__all__ = ["NOT_IN_SUITE", "REGISTRY", "Check", "CheckResult", "Tolerance", "check", "run_suite",
-           "write_validation_report"]
+__all__ = ["NOT_IN_SUITE", "REGISTRY", "Check", "CheckResult", "Tolerance", "check", "run_suite"]
