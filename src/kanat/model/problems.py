@@ -56,7 +56,12 @@ class SphereTwoCables(KanatModel):
 
 
 STABILIZER_MODES = ("off", "sinusoidal", "rectangular", "feedback", "optimal")
-"""Control modes of the reactive stabilizer (SPEC §6.2, :mod:`kanat.vessel.pitch_laws`)."""
+"""Control modes of the reactive stabilizer (SPEC §6.2, :mod:`kanat.vessel.pitch.laws`)."""
+RESONANCE_RTOL = 1e-3
+"""Relative detuning ``|n omega - omega_0| / omega_0`` below which an undamped pitch case is
+refused (the case checks and the pitch solver share it). Within 0.1 % of resonance the undamped
+amplification ``1/|1 - (n omega/omega_0)^2|`` exceeds ~500, and any real damping ratio above
+0.001 would change the answer by more than half: the undamped steady state says nothing there."""
 
 
 def _off_not_false(value):
