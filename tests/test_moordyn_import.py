@@ -385,12 +385,15 @@ class Captured:
         self.file.close()
 
 
-def moordyn_system(name: str, case):
-    """MoorDyn's system of a file, initialised without its equilibrium search; its log."""
+def moordyn_system(name: str, case, folder: Path):
+    """MoorDyn's system of a file (a copy in ``folder``: MoorDyn writes its output files
+    beside its input), initialised without its equilibrium search; its log."""
     coupled = [e.offset for c in case.cables for e in c.ends if e.kind == "vessel"]
     x = np.array([v for point in coupled for v in point], dtype=float)
+    copy = folder / name
+    copy.write_text((FOLDER / name).read_text())
     with Captured() as log:
-        system = moordyn.Create(str(FOLDER / name))
+        system = moordyn.Create(str(copy))
         moordyn.Init_NoIC(system, x, np.zeros_like(x))
     return system, log.text, x
 
@@ -413,10 +416,10 @@ def end_position(case, end):
 
 
 @pytest.mark.parametrize("name", MOORDYN_V2)
-def test_moordyn_reads_the_same_lines(name):
+def test_moordyn_reads_the_same_lines(name, tmp_path):
     """Node counts, lengths, end positions, weights per node and converted dampings."""
     case, _ = case_of((FOLDER / name).read_text(), name)
-    system, log, x = moordyn_system(name, case)
+    system, log, x = moordyn_system(name, case, tmp_path)
     try:
         env = case.environment
         assert moordyn.GetNumberLines(system) == len(case.cables)
@@ -444,9 +447,9 @@ def test_moordyn_reads_the_same_lines(name):
         moordyn.Close(system)
 
 
-def test_moordyn_masses_of_points_and_bodies():
+def test_moordyn_masses_of_points_and_bodies(tmp_path):
     case, _ = case_of((FOLDER / "clump_and_float.dat").read_text())
-    system, _, x = moordyn_system("clump_and_float.dat", case)
+    system, _, x = moordyn_system("clump_and_float.dat", case, tmp_path)
     step(system, x)
     try:
         lines = [moordyn.GetLine(system, i) for i in (1, 2, 3)]
@@ -459,7 +462,7 @@ def test_moordyn_masses_of_points_and_bodies():
     finally:
         moordyn.Close(system)
     case, _ = case_of((FOLDER / "buoy_spread_mooring.dat").read_text())
-    system, _, x = moordyn_system("buoy_spread_mooring.dat", case)
+    system, _, x = moordyn_system("buoy_spread_mooring.dat", case, tmp_path)
     step(system, x)
     try:
         total = np.array(moordyn.GetBodyM(moordyn.GetBody(system, 1)))[:3, :3]

@@ -7,7 +7,6 @@ which models can run it).
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import typer
@@ -30,30 +29,6 @@ def _print_problems(problems) -> None:
     console.print(table)
 
 
-def _target(source: Path, output: Path) -> Path | None:
-    """The output path, or None (and a message) when it cannot be written."""
-    target = output.expanduser().resolve()
-    problem = None
-    if target == source.expanduser().resolve():
-        problem = "is the MoorDyn file itself; give another name"
-    elif target.is_dir():
-        problem = f"is a directory; give a file name, e.g. {target / 'case.yaml'}"
-    elif not target.parent.is_dir():
-        problem = f"cannot be written: there is no directory {target.parent}"
-    if problem:
-        console.print(Text(f"-o {output} {problem}", style="red"))
-        return None
-    return target
-
-
-def _write(target: Path, text: str) -> None:
-    """Write ``text`` to a temporary file beside ``target``, then rename it over ``target``
-    (a reader sees the old file or the new one, never half of one)."""
-    part = target.with_name(f".{target.name}.part")
-    part.write_text(text, encoding="utf-8")
-    os.replace(part, target)
-
-
 def import_file(source: Path, output: Path) -> int:
     """Convert ``source`` to the YAML case ``output``; print what happened; exit status.
 
@@ -62,18 +37,21 @@ def import_file(source: Path, output: Path) -> int:
     int
         0 when written, 1 when the file cannot be imported (its problems are printed).
     """
+    from kanat.errors import KanatError
     from kanat.io.case_file import validate_data
     from kanat.io.moordyn import case_yaml, looks_like_moordyn, read_moordyn
+    from kanat.io.outputs import check_output_file, write_text_atomic
     from kanat.model.support import unsupported
 
     try:
         text = source.read_text(encoding="utf-8")
+        target = check_output_file(output, inputs=[source], example="case.yaml")
     except (OSError, UnicodeDecodeError) as error:
         console.print(Text(f"{source}: cannot read it ({getattr(error, 'strerror', None) or error})",
                            style="red"))
         return 1
-    target = _target(source, output)
-    if target is None:
+    except KanatError as error:
+        console.print(Text(str(error), style="red"))
         return 1
     if not looks_like_moordyn(text):
         console.print(Text(f"{source} is not a MoorDyn input file (it has no '--- LINE TYPES ---' "
@@ -87,7 +65,7 @@ def import_file(source: Path, output: Path) -> int:
         _print_problems(sorted(imported.problems + problems, key=lambda p: p.line or 0))
         console.print(f"[red]{source}: not imported ({len(errors)} error(s))[/red]")
         return 1
-    _write(target, case_yaml(imported, source.name))
+    write_text_atomic(target, case_yaml(imported, source.name))
     notes = [p for p in imported.problems if p.severity == "warning"]
     out.print(f"wrote {target}: MoorDyn v{imported.version}, {len(case.cables)} line(s), "
               f"{len(case.points)} point(s), {len(case.bodies)} bod{'y' if len(case.bodies) == 1 else 'ies'}"
