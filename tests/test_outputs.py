@@ -17,7 +17,7 @@ import pytest
 
 from kanat.errors import KanatError
 from kanat.io.outputs import (OutputLock, atomic_path, check_output_directory, check_output_file, lock_path,
-                              same_path, write_text_atomic)
+                              remove_temporaries, same_path, write_text_atomic)
 
 
 def test_output_that_is_an_input_is_refused(tmp_path):
@@ -183,3 +183,13 @@ def test_atomic_writes_replace_whole_or_not_at_all(tmp_path):
     os.umask(umask)
     assert target.stat().st_mode & 0o777 == 0o666 & ~umask         # an ordinary file, not a private temp
 
+
+
+def test_temporaries_of_a_killed_writer_are_removed_and_nothing_else(tmp_path):
+    names = [".summary.nc.0123abcd.part", ".summary.nc.0123abcd.part.part", "run.nc.part", ".hidden",
+             ".summary.nc.lock", "summary.nc"]
+    for name in names:
+        (tmp_path / name).write_text("x")
+    removed = remove_temporaries(tmp_path)
+    assert sorted(p.name for p in removed) == names[:2]
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(names[2:])

@@ -32,6 +32,7 @@ import datetime as _dt
 import errno
 import fcntl
 import os
+import re
 import secrets
 import socket
 import sys
@@ -281,8 +282,26 @@ def _read_owner(fd: int) -> str:
         time.sleep(0.02)
 
 
+_TEMPORARY = re.compile(r"\..+\.[0-9a-f]{8}\.part(\.part)?")
+"""Names made by :func:`_temporary_name` (and a writer's own ``.part`` of one)."""
+
+
 def _temporary_name(target: Path) -> Path:
     return target.with_name(f".{target.name}.{secrets.token_hex(4)}{PART_SUFFIX}")
+
+
+def remove_temporaries(folder) -> list[Path]:
+    """Remove the temporary files of :func:`atomic_path` left in ``folder`` by a killed writer.
+
+    Only call this while holding the :class:`OutputLock` of what ``folder`` belongs to:
+    then no other writer can be using them. Returns the files removed.
+    """
+    removed = []
+    for path in Path(folder).glob(".*.part*"):
+        if _TEMPORARY.fullmatch(path.name) and path.is_file():
+            path.unlink(missing_ok=True)
+            removed.append(path)
+    return removed
 
 
 @contextlib.contextmanager

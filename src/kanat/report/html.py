@@ -2,52 +2,88 @@
 
 The page carries plotly.js itself (from the installed ``plotly`` package, no CDN), one
 plot template, the figures as JSON (NumPy arrays as base64 typed arrays, plotly's own
-encoding) and any extra script, so it opens offline in any browser. Every figure is a
+encoding) and the page's scripts, so it opens offline in any browser. Every figure is a
 ``<div class="plot" id="...">`` drawn by ``Plotly.newPlot`` when the page loads.
+
+All markup lives in Jinja2 templates (``kanat/report/templates``) rendered with
+autoescaping: any text that comes from a user — file names, case and cable names, varied
+keys and values, attributes, failure messages — is escaped where it lands, whatever it
+contains. JSON embedded in ``<script>`` elements has ``<``, ``>``, ``&`` and ``'`` written
+as ``\\u003c``-style escapes (:func:`script_json`), and text handed to plotly, which reads
+a few HTML tags in labels, passes through :func:`plot_text`. Only kanat's own static
+files (CSS, scripts) and plotly.js are inserted unescaped.
 """
 from __future__ import annotations
 
 import datetime as _dt
-import html
+import functools
 import json
-import os
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from markupsafe import Markup
 
 import kanat
 
-STYLE = """
-body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:0;color:#1d2733;background:#f6f7f9}
-header{background:#0b3954;color:#fff;padding:18px 32px}header h1{margin:0;font-size:1.5em}
-header p{margin:4px 0 0;opacity:.85}nav{padding:6px 32px;background:#e6ecf1;font-size:.9em}
-nav a{margin-right:14px;color:#0b3954;text-decoration:none}main{padding:0 32px 40px}
-section{background:#fff;margin:18px 0;padding:12px 20px;border-radius:6px;box-shadow:0 1px 3px rgba(0,0,0,.08)}
-h2{font-size:1.15em;color:#0b3954;margin:6px 0 10px}.plot{width:100%;min-height:380px}
-table{border-collapse:collapse;font-size:.86em;margin:6px 0}th,td{border:1px solid #d5dde5;padding:3px 8px;
-text-align:right}th{background:#eef2f6}td.text,th.text{text-align:left}.ok{color:#137333;font-weight:600}
-.failed{color:#b3261e;font-weight:600}.note{color:#556;font-size:.88em}.scroll{max-height:420px;overflow:auto}
-.controls{margin:6px 0;font-size:.9em}.controls label{margin-right:14px}button{font-size:.9em}
-"""
-
-BOOT = """
-(function(){
-  var figures = JSON.parse(document.getElementById('kanat-figures').textContent);
-  var template = JSON.parse(document.getElementById('kanat-template').textContent);
-  window.KANAT = {figures: figures, template: template, drawn: []};
-  Object.keys(figures).forEach(function(id){
-    var fig = figures[id]; fig.layout = fig.layout || {}; fig.layout.template = template;
-    Plotly.newPlot(id, fig.data, fig.layout, {responsive: true, displaylogo: false});
-    window.KANAT.drawn.push(id);
-  });
-})();
-"""
+STATUS_CELLS = {"ok": "ok", "pass": "ok", "failed": "failed", "FAIL": "failed", "pass (not run)": "failed"}
+"""Cells with these texts are coloured (class ``ok`` or ``failed``)."""
 
 
-def _template_json() -> str:
-    import plotly.io as pio
+@functools.lru_cache(maxsize=1)
+def environment():
+    """The Jinja2 environment of the report templates (autoescaping on, undefined names an error)."""
+    import jinja2
 
-    return json.dumps(pio.templates["plotly_white"].to_plotly_json())
+    return jinja2.Environment(loader=jinja2.PackageLoader("kanat.report", "templates"), autoescape=True,
+                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
+
+
+def template(name: str):
+    """A report template; its macros are attributes of ``template(name).module``."""
+    return environment().get_template(name)
+
+
+def macros(name: str):
+    """The macros of template ``name`` as callables returning escaped markup."""
+    return template(name).module
+
+
+def static(name: str) -> Markup:
+    """A static file of the templates directory (CSS, a script), inserted as it is."""
+    source, _, _ = environment().loader.get_source(environment(), name)
+    return Markup(source)
+
+
+def script_json(value) -> Markup:
+    """JSON for a ``<script type="application/json">`` element, safe whatever its strings hold.
+
+    ``<``, ``>``, ``&`` and ``'`` are written as ``\\u003c``, ``\\u003e``, ``\\u0026``,
+    ``\\u0027`` (valid JSON, read back unchanged by ``JSON.parse``), so no text inside can
+    close the element or open a comment; NaN is refused (``allow_nan=False``).
+    """
+    text = json.dumps(value, separators=(",", ":"), allow_nan=False, default=_default)
+    for char, code in (("<", "\\u003c"), (">", "\\u003e"), ("&", "\\u0026"), ("'", "\\u0027")):
+        text = text.replace(char, code)
+    return Markup(text)
+
+
+def plot_text(value) -> str:
+    """User text for a plotly label or trace name, shown as written.
+
+    Plotly reads ``<b>``, ``<br>``, ``<a href>`` ... in labels as formatting; its own
+    entity decoding turns ``&lt;`` back into ``<`` on screen, so escaping ``&``, ``<``
+    and ``>`` shows the text exactly (and makes no tag of it).
+    """
+    return str(value).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def _default(value):
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"cannot write {type(value).__name__} to JSON")
 
 
 def figure_json(fig) -> dict:
@@ -59,112 +95,148 @@ def figure_json(fig) -> dict:
     return data
 
 
-def script_json(value) -> str:
-    """JSON safe inside ``<script>`` (no ``</`` sequence)."""
-    return json.dumps(value, separators=(",", ":"), allow_nan=False, default=_default).replace("</", "<\\/")
-
-
-def _default(value):
-    if isinstance(value, np.generic):
-        return value.item()
-    if isinstance(value, np.ndarray):
-        return value.tolist()
-    raise TypeError(f"cannot write {type(value).__name__} to JSON")
-
-
 def fmt(value, digits: int = 5) -> str:
-    """A cell: numbers with ``digits`` significant figures, NaN as a dash, text escaped."""
+    """A cell's text: numbers with ``digits`` significant figures, NaN as a dash, anything else ``str``.
+
+    The text is escaped by the template that shows it, never here.
+    """
     if isinstance(value, (bool, np.bool_)):
         return str(bool(value)).lower()
     if isinstance(value, (int, np.integer)):
         return str(int(value))
     if isinstance(value, (float, np.floating)):
         return "–" if not np.isfinite(value) else f"{float(value):.{digits}g}"
-    return html.escape(str(value))
+    return str(value)
 
 
-def table_html(header: list, rows: list, text_columns=(), row_classes=None, cls: str = "") -> str:
-    """An HTML table; cells are formatted by :func:`fmt`, columns named in ``text_columns`` left-aligned."""
-    head = "".join(f'<th class="{"text" if h in text_columns else ""}">{html.escape(str(h))}</th>' for h in header)
+@dataclass(frozen=True)
+class Cell:
+    """One table cell: its text (escaped when shown) and CSS classes."""
+
+    text: str
+    css: str = ""
+
+
+@dataclass(frozen=True)
+class Table:
+    """A table for the ``table`` macro of ``macros.html.j2``.
+
+    Attributes
+    ----------
+    header : list of Cell
+    rows : list of list of Cell
+    css : str
+        Classes of the ``<table>``.
+    shown, total : int
+        Rows shown and rows in the source (a note is added when fewer are shown).
+    """
+
+    header: list
+    rows: list
+    css: str = ""
+    shown: int = 0
+    total: int = 0
+
+    def __html__(self) -> str:
+        """Rendered by the ``table`` macro (so a Table can be placed in a template as it is)."""
+        return str(macros("macros.html.j2").table(self))
+
+
+def table(header: list, rows, text_columns=(), css: str = "", total: int | None = None) -> Table:
+    """A table; cells are formatted by :func:`fmt`, columns named in ``text_columns`` left-aligned."""
+    head = [Cell(str(h), "text" if h in text_columns else "") for h in header]
     body = []
-    for k, row in enumerate(rows):
+    for row in rows:
         cells = []
         for h, value in zip(header, row):
             klass = "text" if h in text_columns else ""
-            if isinstance(value, str) and value in ("ok", "failed", "pass", "FAIL", "pass (not run)"):
-                klass += " ok" if value in ("ok", "pass") else " failed"
-            cells.append(f'<td class="{klass.strip()}">{fmt(value)}</td>')
-        rc = f' class="{row_classes[k]}"' if row_classes else ""
-        body.append(f"<tr{rc}>{''.join(cells)}</tr>")
-    return f'<table class="{cls}"><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table>'
+            if isinstance(value, str) and value in STATUS_CELLS:
+                klass += " " + STATUS_CELLS[value]
+            cells.append(Cell(fmt(value), klass.strip()))
+        body.append(cells)
+    return Table(head, body, css, len(body), len(body) if total is None else total)
 
 
-def frame_table(frame, text_columns=(), limit: int | None = None) -> str:
-    """A pandas DataFrame (its index a column) as an HTML table, at most ``limit`` rows."""
+def frame_table(frame, text_columns=(), limit: int | None = None) -> Table:
+    """A pandas DataFrame (its index a column) as a table, at most ``limit`` rows."""
     frame = frame.reset_index()
     shown = frame if limit is None else frame.head(limit)
-    note = (f'<p class="note">first {limit} of {len(frame)} rows</p>' if limit is not None and len(frame) > limit
-            else "")
-    return table_html(list(shown.columns), shown.itertuples(index=False, name=None), text_columns) + note
+    return table([str(c) for c in shown.columns], shown.itertuples(index=False, name=None), text_columns,
+                 total=len(frame))
 
 
+@dataclass(frozen=True)
+class Plot:
+    """A figure's place in the page: ``<div class="plot" id=...>`` (``plot`` macro)."""
+
+    id: str
+    height: int | None = None
+    attributes: tuple = ()
+
+    def __html__(self) -> str:
+        return str(macros("macros.html.j2").plot(self))
+
+
+@dataclass
+class Section:
+    id: str
+    title: str
+    body: Markup
+
+
+@dataclass
 class Page:
     """An HTML report under construction: add sections and figures, then :meth:`render`.
 
-    Parameters
+    Attributes
     ----------
-    title : str
-    subtitle : str
+    title, subtitle : str
+        Shown in the header (escaped).
+    sections : list of Section
+    figures : dict
+        Plot id -> figure JSON (:func:`figure_json`).
+    scripts : list of str
+        Names of static scripts (``templates/*.js``) run after the figures are drawn.
+    data : dict
+        Element id -> value, embedded as JSON for the scripts.
     """
 
-    def __init__(self, title: str, subtitle: str = ""):
-        self.title, self.subtitle = title, subtitle
-        self.sections: list[tuple[str, str, str]] = []
-        self.figures: dict[str, dict] = {}
-        self.scripts: list[str] = []
-        self.data: dict[str, object] = {}
+    title: str
+    subtitle: str = ""
+    sections: list = field(default_factory=list)
+    figures: dict = field(default_factory=dict)
+    scripts: list = field(default_factory=list)
+    data: dict = field(default_factory=dict)
 
-    def figure(self, fig, plot_id: str, height: int | None = None) -> str:
-        """Register a plotly figure; return its ``<div>``."""
+    def figure(self, fig, plot_id: str, height: int | None = None, attributes: tuple = ()) -> Plot:
+        """Register a plotly figure; return its place in the page."""
         self.figures[plot_id] = figure_json(fig)
-        style = f' style="height:{height}px"' if height else ""
-        return f'<div class="plot" id="{plot_id}"{style}></div>'
+        return Plot(plot_id, height, attributes)
 
-    def section(self, section_id: str, title: str, body: str) -> None:
-        self.sections.append((section_id, title, body))
+    def section(self, section_id: str, title: str, body) -> None:
+        """Add a section; ``body`` is markup from a template (plain text is escaped)."""
+        self.sections.append(Section(section_id, title, Markup("").join([body]) if body is not None else Markup("")))
 
-    def script(self, js: str) -> None:
-        self.scripts.append(js)
+    def script(self, name: str) -> None:
+        """Run the static script ``templates/NAME`` after the figures are drawn (once)."""
+        if name not in self.scripts:
+            self.scripts.append(name)
 
     def render(self) -> str:
         """The complete page (plotly.js embedded)."""
+        import plotly.io as pio
         from plotly.offline import get_plotlyjs
 
-        nav = "".join(f'<a href="#{sid}">{html.escape(title)}</a>' for sid, title, _ in self.sections)
-        body = "".join(f'<section id="{sid}"><h2>{html.escape(title)}</h2>{content}</section>'
-                       for sid, title, content in self.sections)
-        data = "".join(f'<script type="application/json" id="{html.escape(k)}">{script_json(v)}</script>'
-                       for k, v in self.data.items())
-        stamp = _dt.datetime.now().strftime("%Y-%m-%d %H:%M")
-        template = _template_json().replace("</", "<\\/")
-        scripts = "".join(f"<script>{s}</script>" for s in self.scripts)
-        return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8">'
-                f'<meta name="viewport" content="width=device-width, initial-scale=1">'
-                f"<title>{html.escape(self.title)}</title><style>{STYLE}</style>"
-                f"<script>{get_plotlyjs()}</script></head><body>"
-                f"<header><h1>{html.escape(self.title)}</h1><p>{html.escape(self.subtitle)}</p>"
-                f'<p class="note" style="color:#cfe">kanat {kanat.__version__}, {stamp}</p></header>'
-                f"<nav>{nav}</nav><main>{body}</main>"
-                f'<script type="application/json" id="kanat-template">{template}'
-                f'</script><script type="application/json" id="kanat-figures">{script_json(self.figures)}</script>'
-                f"{data}<script>{BOOT}</script>{scripts}"
-                f"</body></html>")
+        return template("page.html.j2").render(
+            title=self.title, subtitle=self.subtitle, version=kanat.__version__,
+            stamp=_dt.datetime.now().strftime("%Y-%m-%d %H:%M"), style=static("style.css"),
+            plotly_js=Markup(get_plotlyjs()), sections=self.sections,
+            template_json=script_json(pio.templates["plotly_white"].to_plotly_json()),
+            figures_json=script_json(self.figures), data=[(k, script_json(v)) for k, v in self.data.items()],
+            boot=static("boot.js"), scripts=[static(name) for name in self.scripts])
 
     def write(self, path) -> Path:
-        """Write the page atomically; return its path."""
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(path.name + ".part")
-        tmp.write_text(self.render(), encoding="utf-8")
-        os.replace(tmp, path)
-        return path
+        """Write the page atomically (temporary file in the same directory, then renamed); return its path."""
+        from kanat.io.outputs import write_text_atomic
+
+        return write_text_atomic(path, self.render())

@@ -2,9 +2,9 @@
 
 The page gets at most :data:`MAX_FRAMES` evenly spaced output times and at most
 :data:`MAX_NODES` nodes per frame (every cable keeps its two ends; interior nodes are
-thinned evenly), as float32 arrays in base64. A small script (:data:`PLAYER`) replaces the
-traces' coordinates with ``Plotly.restyle`` on play and on the slider, and keeps the
-frame shown in the plot's ``data-frame`` attribute.
+thinned evenly), as float32 arrays in base64. A small script (``templates/player.js``)
+replaces the traces' coordinates with ``Plotly.restyle`` on play and on the slider, and
+keeps the frame shown in the plot's ``data-frame`` attribute.
 """
 from __future__ import annotations
 
@@ -14,57 +14,13 @@ import numpy as np
 import xarray as xr
 
 from kanat.analysis.select import cable_names
+from kanat.report.html import macros, plot_text
 
 MAX_FRAMES = 200
 MAX_NODES = 3000
 MAX_TRACK = 2000
 FRAME_MS = 100
 """Frames per second of playback: 1000 / FRAME_MS."""
-
-PLAYER = """
-(function(){
-  var A = JSON.parse(document.getElementById('kanat-animation').textContent);
-  function f32(b64){var s = atob(b64), u = new Uint8Array(s.length);
-    for (var i = 0; i < s.length; i++) u[i] = s.charCodeAt(i); return new Float32Array(u.buffer);}
-  var P = f32(A.positions), B = A.n_bodies ? f32(A.bodies) : null, V = f32(A.vessel), T = f32(A.track);
-  var gd = document.getElementById(A.plot), slider = document.getElementById(A.plot + '-slider');
-  var label = document.getElementById(A.plot + '-time'), button = document.getElementById(A.plot + '-play');
-  var follow = document.getElementById(A.plot + '-follow');
-  var nf = A.times.length, nn = A.nodes, timer = null;
-  function pick(arr, start, count, o){var x = [], y = [], z = [];
-    for (var i = 0; i < count; i++){var p = (start + i) * 3; x.push(arr[p] - o[0]); y.push(arr[p+1] - o[1]);
-      z.push(arr[p+2]);}
-    return [x, y, z];}
-  function show(k){
-    var o = follow.checked ? [V[3 * k], V[3 * k + 1]] : [0, 0];
-    var xs = [], ys = [], zs = [], off = k * nn;
-    function add(q){xs.push(q[0]); ys.push(q[1]); zs.push(q[2]);}
-    A.cables.forEach(function(c){add(pick(P, off, c.count, o)); off += c.count;});
-    if (A.n_bodies) add(pick(B, k * A.n_bodies, A.n_bodies, o));
-    add(pick(V, k, 1, o)); add(pick(T, 0, T.length / 3, o));
-    Plotly.restyle(gd, {x: xs, y: ys, z: zs}, A.traces);
-    gd.setAttribute('data-frame', String(k)); slider.value = k;
-    label.textContent = 't = ' + A.times[k].toFixed(1) + ' s';
-  }
-  function frame(){
-    var r = follow.checked ? A.follow_ranges : A.earth_ranges;
-    Plotly.relayout(gd, {'scene.xaxis.range': r[0], 'scene.yaxis.range': r[1], 'scene.aspectratio': r[2],
-      'scene.xaxis.title.text': follow.checked ? 'x from the vessel [m]' : 'x [m]',
-      'scene.yaxis.title.text': follow.checked ? 'y from the vessel [m]' : 'y [m]'});
-    show(+gd.getAttribute('data-frame'));
-  }
-  function stop(){clearInterval(timer); timer = null; button.textContent = '\\u25B6 play';}
-  button.addEventListener('click', function(){
-    if (timer){stop(); return;}
-    button.textContent = '\\u275A\\u275A pause';
-    timer = setInterval(function(){show((+gd.getAttribute('data-frame') + 1) % nf);}, A.interval_ms);
-  });
-  slider.addEventListener('input', function(){if (timer) stop(); show(+slider.value);});
-  follow.addEventListener('change', frame);
-  if (follow.checked) frame();
-  window.KANAT.animation = {show: show, frames: nf, frame: frame};
-})();
-"""
 
 
 def _b64(array: np.ndarray) -> str:
@@ -151,12 +107,12 @@ def animation_figure(ds: xr.Dataset):
     cable_of, x = ds["cable"].values, ds["position"].values[0]
     for k, name in enumerate(cable_names(ds)):
         p = x[cable_of == name]
-        fig.add_trace(go.Scatter3d(x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="lines", name=f"cable {name}",
+        fig.add_trace(go.Scatter3d(x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="lines", name=plot_text(f"cable {name}"),
                                    line={"width": 5, "color": f"hsl({(210 + 67 * k) % 360},60%,35%)"}))
     if ds.sizes.get("body", 0):
         b = ds["body_position"].values[0]
         fig.add_trace(go.Scatter3d(x=b[:, 0], y=b[:, 1], z=b[:, 2], mode="markers+text", name="bodies",
-                                   text=[str(n) for n in ds["body"].values], marker={"size": 5, "color": "#d95f02"}))
+                                   text=[plot_text(n) for n in ds["body"].values], marker={"size": 5, "color": "#d95f02"}))
     v = ds["vessel_position"].values
     fig.add_trace(go.Scatter3d(x=v[:1, 0], y=v[:1, 1], z=v[:1, 2], mode="markers", name="vessel (tow point)",
                                marker={"size": 6, "symbol": "diamond", "color": "#1b9e77"}))
@@ -168,19 +124,13 @@ def animation_figure(ds: xr.Dataset):
     return fig
 
 
-def animation_section(page, ds: xr.Dataset, plot_id: str = "plot-animation") -> str:
-    """Add the animated view to ``page`` (figure, data, player); return its HTML."""
+def animation_section(page, ds: xr.Dataset, plot_id: str = "plot-animation"):
+    """Add the animated view to ``page`` (figure, data, player); return its markup."""
     data = animation_data(ds, plot_id)
     page.data["kanat-animation"] = data
-    page.script(PLAYER)
-    div = page.figure(animation_figure(ds), plot_id, height=620)
-    last = len(data["times"]) - 1
-    checked = " checked" if follows_by_default(ds) else ""
-    controls = (f'<div class="controls"><button id="{plot_id}-play">&#9654; play</button> '
-                f'<input type="range" id="{plot_id}-slider" min="0" max="{last}" value="0" step="1" '
-                f'style="width:60%;vertical-align:middle"> <span id="{plot_id}-time">t = '
-                f'{data["times"][0]:.1f} s</span> <label><input type="checkbox" id="{plot_id}-follow"{checked}> '
-                f'follow the vessel</label></div>')
-    note = (f'<p class="note">{len(data["times"])} of {ds.sizes["time"]} output times, {data["nodes"]} of '
-            f'{ds.sizes["node"]} nodes shown (cable ends always kept). Drag to rotate, scroll to zoom.</p>')
-    return controls + div.replace('class="plot"', 'class="plot" data-frame="0"') + note
+    page.script("player.js")
+    plot = page.figure(animation_figure(ds), plot_id, height=620, attributes=(("data-frame", "0"),))
+    controls = {"last": len(data["times"]) - 1, "first_time": f"{data['times'][0]:.1f}", "follow": follows_by_default(ds),
+                "frames": len(data["times"]), "times": ds.sizes["time"], "shown_nodes": data["nodes"],
+                "nodes": ds.sizes["node"]}
+    return macros("result.html.j2").animation(plot, controls)

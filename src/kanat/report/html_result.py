@@ -17,7 +17,7 @@ from kanat.analysis import (body_depth_excursions, body_statistics, cable_names,
                             node_statistics, range_graph, select_nodes, snap_events, snap_summary,
                             statistic_units, summary_statistics, tension_spectrum, time_window)
 from kanat.errors import KanatError
-from kanat.report.html import Page, fmt, frame_table, table_html
+from kanat.report.html import Page, frame_table, macros, plot_text, table
 from kanat.report.html_animation import animation_section, thin
 
 MAX_HISTORY_POINTS = 5000
@@ -36,40 +36,33 @@ def _label(ds: xr.Dataset, i: int) -> str:
     return f"node {i} ({ds['cable'].values[i]}, s = {ds['s'].values[i]:.4g} m)"
 
 
-def _provenance(ds: xr.Dataset, source: str) -> str:
+def _provenance(ds: xr.Dataset, source: str):
     rows = [("file", source)] + [(k, v) for k, v in ds.attrs.items()]
     dims = ", ".join(f"{d} = {n}" for d, n in ds.sizes.items())
-    status = str(ds.attrs.get("status", ""))
-    badge = "ok" if status == "ok" else "failed"
-    return (f'<p>status: <span class="{badge}">{fmt(status)}</span>; dimensions: {dims}</p>'
-            + table_html(["attribute", "value"], rows, text_columns=("attribute", "value")))
+    return macros("result.html.j2").provenance(
+        str(ds.attrs.get("status", "")), dims, table(["attribute", "value"], rows, text_columns=("attribute", "value")))
 
 
-def _summary_table(ds: xr.Dataset, window) -> str:
+def _statistics(ds: xr.Dataset, chosen: xr.Dataset, nodes, window):
+    """The summary statistics, the chosen nodes' tension and the bodies' depth statistics."""
     stats = summary_statistics(ds, window)
-    rows = [(name, value, statistic_units(name)) for name, value in stats.items()]
-    return table_html(["statistic", "value", "units"], rows, text_columns=("statistic", "units"))
-
-
-def _statistics_tables(ds: xr.Dataset, nodes, window) -> str:
-    stats = node_statistics(ds, "tension", nodes, window)
-    rows = [(_label(ds, int(i)), *(stats[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
+    summary = table(["statistic", "value", "units"], [(name, value, statistic_units(name)) for name, value in
+                                                      stats.items()], text_columns=("statistic", "units"))
+    stats = node_statistics(chosen, "tension", nodes, window)
+    rows = [(_label(chosen, int(i)), *(stats[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
             for j, i in enumerate(stats["node"].values)]
-    out = "<h3>tension at the chosen nodes [N]</h3>" + table_html(
-        ["node", "min", "max", "mean", "std", "MPM"], rows, text_columns=("node",))
-    bodies = body_statistics(ds, window)
+    node_table = table(["node", "min", "max", "mean", "std", "MPM"], rows, text_columns=("node",))
+    bodies = body_statistics(chosen, window)
+    body_table = None
     if "body" in bodies.coords:
         rows = [(str(b), *(bodies[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
                 for j, b in enumerate(bodies["body"].values)]
-        out += "<h3>body depth [m]</h3>" + table_html(["body", "min", "max", "mean", "std", "MPM"], rows,
-                                                       text_columns=("body",))
+        body_table = table(["body", "min", "max", "mean", "std", "MPM"], rows, text_columns=("body",))
     span = stats.attrs["window"]
-    return out + (f'<p class="note">window {span[0]:g} to {span[1]:g} s. MPM: Rayleigh most-probable maximum '
-                  "of a narrow-band process, mean + std &middot; sqrt(2 ln N), N the zero up-crossings in the "
-                  "window (kanat.analysis.statistics).</p>")
+    return macros("result.html.j2").statistics(summary, node_table, body_table, (f"{span[0]:g}", f"{span[1]:g}"))
 
 
-def _histories(page: Page, ds: xr.Dataset, nodes) -> str:
+def _histories(page: Page, ds: xr.Dataset, nodes):
     import plotly.graph_objects as go
     from plotly.subplots import make_subplots
 
@@ -77,83 +70,83 @@ def _histories(page: Page, ds: xr.Dataset, nodes) -> str:
     t = ds["time"].values[keep]
     tension = go.Figure()
     for i in nodes:
-        tension.add_trace(go.Scatter(x=t, y=ds["tension"].values[keep, i] / 1e3, name=_label(ds, int(i)),
+        tension.add_trace(go.Scatter(x=t, y=ds["tension"].values[keep, i] / 1e3, name=plot_text(_label(ds, int(i))),
                                      mode="lines"))
     tension.update_layout(title={"text": "tension at the chosen nodes"}, xaxis_title="time [s]",
                           yaxis_title="tension [kN]", height=400)
-    html = page.figure(tension, "plot-tension-history")
+    first = page.figure(tension, "plot-tension-history")
     motion = make_subplots(rows=1, cols=2, subplot_titles=("body depth [m]", "vessel speed over ground [m/s]"))
     for k, name in enumerate(ds["body"].values if ds.sizes.get("body", 0) else []):
-        motion.add_trace(go.Scatter(x=t, y=-ds["body_position"].values[keep, k, 2], name=f"{name} depth"), 1, 1)
+        motion.add_trace(go.Scatter(x=t, y=-ds["body_position"].values[keep, k, 2], name=plot_text(f"{name} depth")),
+                         1, 1)
     v = ds["vessel_position"].values
     speed = np.hypot(*np.gradient(v[:, :2], ds["time"].values, axis=0).T) if len(v) > 1 else np.zeros(len(v))
     motion.add_trace(go.Scatter(x=t, y=speed[keep], name="vessel speed"), 1, 2)
     motion.update_yaxes(autorange="reversed", row=1, col=1)
     motion.update_xaxes(title_text="time [s]")
     motion.update_layout(height=380)
-    return html + page.figure(motion, "plot-body-history")
+    return macros("result.html.j2").plots([first, page.figure(motion, "plot-body-history")])
 
 
-def _range_graphs(page: Page, ds: xr.Dataset, window) -> str:
+def _range_graphs(page: Page, ds: xr.Dataset, window):
     import plotly.graph_objects as go
 
     rg = range_graph(ds, "tension", window)
     fig = go.Figure()
     for k, name in enumerate(cable_names(ds)):
         sel = rg["cable"].values == name
-        s, color = rg["s"].values[sel], f"hsl({(210 + 67 * k) % 360},60%,40%)"
-        fig.add_trace(go.Scatter(x=s, y=rg["max"].values[sel] / 1e3, name=f"{name} max", line={"color": color},
-                                 legendgroup=name))
-        fig.add_trace(go.Scatter(x=s, y=rg["min"].values[sel] / 1e3, name=f"{name} min", fill="tonexty",
-                                 line={"color": color, "dash": "dot"}, legendgroup=name))
-        fig.add_trace(go.Scatter(x=s, y=rg["mean"].values[sel] / 1e3, name=f"{name} mean",
-                                 line={"color": color, "width": 1}, legendgroup=name))
+        s, color, label = rg["s"].values[sel], f"hsl({(210 + 67 * k) % 360},60%,40%)", plot_text(name)
+        fig.add_trace(go.Scatter(x=s, y=rg["max"].values[sel] / 1e3, name=f"{label} max", line={"color": color},
+                                 legendgroup=label))
+        fig.add_trace(go.Scatter(x=s, y=rg["min"].values[sel] / 1e3, name=f"{label} min", fill="tonexty",
+                                 line={"color": color, "dash": "dot"}, legendgroup=label))
+        fig.add_trace(go.Scatter(x=s, y=rg["mean"].values[sel] / 1e3, name=f"{label} mean",
+                                 line={"color": color, "width": 1}, legendgroup=label))
     fig.update_layout(title={"text": "tension range along the cables"}, xaxis_title="s, arclength in its cable [m]",
                       yaxis_title="tension [kN]", height=420)
     return page.figure(fig, "plot-range-graph")
 
 
-def _events(page: Page, ds: xr.Dataset, window) -> str:
+def _events(page: Page, ds: xr.Dataset, window):
     import plotly.graph_objects as go
 
+    parts = macros("result.html.j2")
     if not has_events(ds):
-        return '<p class="note">This result records no snap events (the continuum model keeps its cables taut; ' \
-               "snap loads are the lumped model's).</p>"
+        return parts.events(False)
     events = snap_events(ds, window)
     if not len(events):
-        return "<p>No snap event (slack &rarr; taut) in the window.</p>"
+        return parts.events(True)
+    marker = {"size": 7, "color": events["segment"], "colorscale": "Viridis", "showscale": True,
+              "colorbar": {"title": {"text": "segment"}}}
     fig = go.Figure(go.Scatter(x=events["time"], y=events["peak_tension"] / 1e3, mode="markers",
-                               text=events["cable"], marker={"size": 7, "color": events["segment"],
-                                                             "colorscale": "Viridis", "showscale": True,
-                                                             "colorbar": {"title": {"text": "segment"}}}))
+                               text=[plot_text(c) for c in events["cable"]], marker=marker))
     fig.update_layout(title={"text": f"{len(events)} snap events"}, xaxis_title="time [s]",
                       yaxis_title="peak tension [kN]", height=380)
-    return (page.figure(fig, "plot-snap-events") + "<h3>per cable</h3>"
-            + frame_table(snap_summary(ds, window).set_index("cable"), text_columns=("cable",))
-            + "<h3>events</h3>" + frame_table(events, text_columns=("cable",), limit=EVENT_ROWS))
+    return parts.events(True, page.figure(fig, "plot-snap-events"),
+                        frame_table(snap_summary(ds, window).set_index("cable"), text_columns=("cable",)),
+                        frame_table(events, text_columns=("cable",), limit=EVENT_ROWS))
 
 
-def _spectra(page: Page, ds: xr.Dataset, nodes, window) -> str:
+def _spectra(page: Page, ds: xr.Dataset, nodes, window):
     import plotly.graph_objects as go
 
     spectrum = tension_spectrum(ds, nodes, window)
     fig = go.Figure()
     for j, i in enumerate(spectrum["node"].values):
         fig.add_trace(go.Scatter(x=spectrum["frequency"].values[1:], y=spectrum["psd"].values[1:, j],
-                                 name=_label(ds, int(i))))
+                                 name=plot_text(_label(ds, int(i)))))
     fig.update_layout(title={"text": "tension spectra (Welch)"}, xaxis_title="frequency [Hz]",
                       yaxis_title="PSD [N²/Hz]", yaxis_type="log", height=380)
-    return page.figure(fig, "plot-spectra") + (f'<p class="note">Hann segments of {spectrum.attrs["segment_s"]:g} s, '
-                                               "half overlap, mean removed (kanat.analysis.spectra).</p>")
+    return macros("result.html.j2").spectra(page.figure(fig, "plot-spectra"), f"{spectrum.attrs['segment_s']:g}")
 
 
-def _excursions(ds: xr.Dataset, window) -> str:
+def _excursions(ds: xr.Dataset, window):
     ex = body_depth_excursions(ds, window)
     if not ex.sizes.get("body", 0):
-        return "<p>No bodies.</p>"
+        return macros("result.html.j2").excursions(None)
     frame = ex.to_dataframe()
     frame.index = frame.index.astype(str)
-    return frame_table(frame, text_columns=("body",)) + '<p class="note">depths in m, times in s.</p>'
+    return macros("result.html.j2").excursions(frame_table(frame, text_columns=("body",)))
 
 
 def select_bodies(ds: xr.Dataset, bodies) -> xr.Dataset:
@@ -178,7 +171,7 @@ def dynamic_page(ds: xr.Dataset, source: str, nodes=None, window=None, bodies=No
                 f"{ds.attrs.get('model', '')} model, scheme {ds.attrs.get('scheme', '')}, "
                 f"{float(ds['time'].values[-1]):g} s simulated")
     page.section("summary", "Case summary and provenance", _provenance(ds, source))
-    page.section("statistics", "Statistics", _summary_table(ds, window) + _statistics_tables(chosen, index, window))
+    page.section("statistics", "Statistics", _statistics(ds, chosen, index, window))
     page.section("histories", "Time histories", _histories(page, part, index))
     page.section("range", "Range graphs", _range_graphs(page, ds, window))
     page.section("events", "Snap events", _events(page, ds, window))
@@ -196,7 +189,7 @@ def static_page(ds: xr.Dataset, source: str) -> Page:
     page = Page(f"kanat report: {ds.attrs.get('case_name', '') or Path(source).stem}", f"{ds.attrs.get('model', '')}")
     page.section("summary", "Case summary and provenance", _provenance(ds, source))
     if "pitch" in ds and "mode" in ds.dims:
-        fig = go.Figure([go.Scatter(x=ds["time"].values, y=ds["pitch"].values[k], name=str(m))
+        fig = go.Figure([go.Scatter(x=ds["time"].values, y=ds["pitch"].values[k], name=plot_text(m))
                          for k, m in enumerate(ds["mode"].values)])
         fig.update_layout(title={"text": "steady pitch over one wave period"}, xaxis_title="time [s]",
                           yaxis_title="pitch [rad]")
@@ -206,7 +199,7 @@ def static_page(ds: xr.Dataset, source: str) -> Page:
         for name in cable_names(ds):
             sel = ds["cable"].values == name
             fig.add_trace(go.Scatter(x=ds["position"].values[sel, 0], y=ds["position"].values[sel, 2],
-                                     name=f"{name}", text=[f"T = {t:.4g} N" for t in ds["tension"].values[sel]]))
+                                     name=plot_text(name), text=[f"T = {t:.4g} N" for t in ds["tension"].values[sel]]))
         fig.update_layout(title={"text": "shape (hover: tension)"}, xaxis_title="x [m]", yaxis_title="z [m]",
                           yaxis_scaleanchor="x")
         page.section("shape", "Shape and tension", page.figure(fig, "plot-shape"))

@@ -4,6 +4,10 @@ Sections: the study (base case, varied keys and values, failed cases with their 
 the summary table; any statistic against any varied parameter, one line per value of a
 third (chosen in the page); a map of a statistic over two parameters; and the tension at
 the first node of every case against time.
+
+Result files are found through the study's own case table (``study.json``: index ->
+case name, checked by :meth:`kanat.sweep.store.StudyStore.result_file`), never through a
+name or value read from the summary, so a varied ``name`` cannot point the report at a file.
 """
 from __future__ import annotations
 
@@ -15,62 +19,11 @@ import xarray as xr
 
 from kanat.analysis import first_nodes, statistic_units
 from kanat.io.results import read_result
-from kanat.report.html import Page, frame_table, table_html
+from kanat.report.html import Page, frame_table, macros, plot_text, table
 from kanat.report.html_animation import thin
 
 MAX_OVERLAY_CASES = 60
 OVERLAY_POINTS = 1000
-
-EXPLORER = """
-(function(){
-  var S = JSON.parse(document.getElementById('kanat-study').textContent), T = window.KANAT.template;
-  function sel(id){return document.getElementById(id);}
-  function fill(id, names, extra){var e = sel(id); if (!e) return;
-    (extra || []).concat(names).forEach(function(n){var o = document.createElement('option'); o.value = n;
-      o.textContent = n + (S.units[n] ? ' [' + S.units[n] + ']' : ''); e.appendChild(o);});}
-  fill('study-x', S.keys); fill('study-y', S.stats); fill('study-group', S.keys, ['(none)']);
-  fill('map-z', S.stats); fill('map-x', S.keys); fill('map-y', S.keys);
-  if (S.keys.length > 1){ sel('study-group').value = S.keys[1]; if (sel('map-y')) sel('map-y').value = S.keys[1]; }
-  if (S.stats.indexOf(S.preferred) >= 0){
-    sel('study-y').value = S.preferred; if (sel('map-z')) sel('map-z').value = S.preferred;}
-  function col(n){return S.columns[n];}
-  function ok(i){return S.columns.status[i] === 'ok';}
-  function uniq(a){var seen = {}, out = []; a.forEach(function(v){var k = String(v);
-    if (!(k in seen)){seen[k] = 1; out.push(v);}});
-    return out.sort(function(p, q){return p < q ? -1 : p > q ? 1 : 0;});}
-  function axis(n){return {title: {text: n + (S.units[n] ? ' [' + S.units[n] + ']' : '')}};}
-  function drawLines(){
-    var x = sel('study-x').value, y = sel('study-y').value, g = sel('study-group').value, n = col('name').length;
-    var groups = g === '(none)' ? [null] : uniq(col(g)), traces = [];
-    groups.forEach(function(v){
-      var idx = []; for (var i = 0; i < n; i++) if (ok(i) && (v === null || col(g)[i] === v)) idx.push(i);
-      idx.sort(function(a, b){return col(x)[a] < col(x)[b] ? -1 : col(x)[a] > col(x)[b] ? 1 : 0;});
-      traces.push({x: idx.map(function(i){return col(x)[i];}), y: idx.map(function(i){return col(y)[i];}),
-        text: idx.map(function(i){return col('name')[i];}), mode: 'lines+markers', type: 'scatter',
-        name: v === null ? y : g + ' = ' + v});
-    });
-    Plotly.react('plot-study', traces, {template: T, xaxis: axis(x), yaxis: axis(y), height: 440,
-      title: {text: y + ' against ' + x}});
-  }
-  function drawMap(){
-    if (!sel('map-z')) return;
-    var z = sel('map-z').value, x = sel('map-x').value, y = sel('map-y').value, n = col('name').length;
-    var xs = uniq(col(x)), ys = uniq(col(y)), sum = ys.map(function(){return xs.map(function(){return 0;});});
-    var cnt = ys.map(function(){return xs.map(function(){return 0;});});
-    for (var i = 0; i < n; i++) if (ok(i) && col(z)[i] !== null){
-      var a = ys.indexOf(col(y)[i]), b = xs.indexOf(col(x)[i]); sum[a][b] += col(z)[i]; cnt[a][b] += 1;}
-    var grid = sum.map(function(r, a){return r.map(function(v, b){return cnt[a][b] ? v / cnt[a][b] : null;});});
-    Plotly.react('plot-map', [{type: 'heatmap', x: xs.map(String), y: ys.map(String), z: grid, colorscale: 'Viridis',
-      colorbar: {title: {text: z}}, texttemplate: '%{z:.4~g}'}],
-      {template: T, xaxis: axis(x), yaxis: axis(y), height: 440, title: {text: z + ' (mean over other parameters)'}});
-  }
-  ['study-x', 'study-y', 'study-group'].forEach(function(id){sel(id).addEventListener('change', drawLines);});
-  ['map-z', 'map-x', 'map-y'].forEach(function(id){if (sel(id)) sel(id).addEventListener('change', drawMap);});
-  drawLines(); drawMap();
-  window.KANAT.study = {drawLines: drawLines, drawMap: drawMap};
-})();
-"""
-
 
 def _json_column(values: np.ndarray) -> list:
     if values.dtype.kind in "fiu":
@@ -80,57 +33,60 @@ def _json_column(values: np.ndarray) -> list:
 
 def study_data(summary: xr.Dataset, keys: list, stats: list) -> dict:
     """The summary as columns for the page's explorer script."""
-    numeric = [s for s in stats if summary[s].dtype.kind in "fiu" and np.isfinite(summary[s].values).any()]
+    keys = [k for k in keys if k in summary]
+    numeric = [s for s in stats if s in summary and summary[s].dtype.kind in "fiu"
+               and np.isfinite(summary[s].values).any()]
     columns = {name: _json_column(summary[name].values) for name in ["name", "status", *keys, *numeric]}
     preferred = next((s for s in ("top_tension_max", "tension_max") if s in numeric), numeric[0] if numeric else "")
     units = {s: statistic_units(s) for s in numeric}
     return {"keys": keys, "stats": numeric, "columns": columns, "units": units, "preferred": preferred}
 
 
-def _definition(summary: xr.Dataset, study_dir: Path) -> str:
-    manifest = json.loads((study_dir / "study.json").read_text()) if (study_dir / "study.json").exists() else {}
-    vary = manifest.get("vary", {})
+def _manifest(study_dir: Path) -> dict:
+    path = study_dir / "study.json"
+    try:
+        manifest = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
+    except (OSError, ValueError):
+        manifest = {}
+    return manifest if isinstance(manifest, dict) else {}
+
+
+def _definition(summary: xr.Dataset, manifest: dict):
+    vary = manifest.get("vary", {}) if isinstance(manifest.get("vary"), dict) else {}
     rows = [(k, len(v), ", ".join(f"{x:.6g}" if isinstance(x, float) else str(x) for x in v)) for k, v in vary.items()]
     status = summary["status"].values
     total = len(manifest.get("cases", [])) or summary.sizes["case"]
-    out = (f"<p>base case: <code>{manifest.get('base_case', summary.attrs.get('base_case', ''))}</code>; "
-           f"{total} cases: <span class='ok'>{int(np.sum(status == 'ok'))} ok</span>, "
-           f"<span class='failed'>{int(np.sum(status != 'ok'))} failed</span>, "
-           f"{total - summary.sizes['case']} not finished</p>")
-    out += table_html(["key", "values", "list"], rows, text_columns=("key", "list"))
     failed = [(str(n), str(m)) for n, s, m in zip(summary["name"].values, status, summary["message"].values)
               if s != "ok"]
-    if failed:
-        out += "<h3>failed cases</h3>" + table_html(["case", "message"], failed, text_columns=("case", "message"))
-    return out
+    return macros("study.html.j2").definition(
+        manifest.get("base_case", summary.attrs.get("base_case", "")), total, int(np.sum(status == "ok")),
+        int(np.sum(status != "ok")), total - summary.sizes["case"],
+        table(["key", "values", "list"], rows, text_columns=("key", "list")),
+        table(["case", "message"], failed, text_columns=("case", "message")) if failed else None)
 
 
-def _controls(keys: list) -> str:
-    lines = ("<div class='controls'><label>x <select id='study-x'></select></label>"
-             "<label>statistic <select id='study-y'></select></label>"
-             "<label>one line per <select id='study-group'></select></label></div>"
-             "<div class='plot' id='plot-study'></div>")
-    if len(keys) < 2:
-        return lines
-    return lines + ("<h3>over two parameters</h3><div class='controls'><label>statistic <select id='map-z'></select>"
-                    "</label><label>x <select id='map-x'></select></label><label>y <select id='map-y'></select>"
-                    "</label></div><div class='plot' id='plot-map'></div>")
-
-
-def _overlay(page: Page, summary: xr.Dataset, study_dir: Path) -> str | None:
+def _overlay(page: Page, summary: xr.Dataset, study_dir: Path):
+    """Tension at the first node against time for the ok cases, read through the study's case table."""
     import plotly.graph_objects as go
 
+    from kanat.sweep.store import StudyStore
+
+    store = StudyStore(study_dir)
+    names = store.case_table()
     fig, count = go.Figure(), 0
-    for name, status in zip(summary["name"].values, summary["status"].values):
-        path = study_dir / "results" / f"{name}.nc"
-        if status != "ok" or not path.exists() or count >= MAX_OVERLAY_CASES:
+    for index, status in zip(summary["case"].values, summary["status"].values):
+        if status != "ok" or int(index) not in names or count >= MAX_OVERLAY_CASES:
+            continue
+        name = names[int(index)]
+        path = store.result_file(name)
+        if not path.is_file():
             continue
         ds = read_result(path)
         if "time" not in ds.dims or "tension" not in ds:
             return None
         keep = thin(ds.sizes["time"], OVERLAY_POINTS)
         fig.add_trace(go.Scatter(x=ds["time"].values[keep], y=ds["tension"].values[keep, first_nodes(ds)[0]] / 1e3,
-                                 name=str(name), mode="lines", line={"width": 1.2}))
+                                 name=plot_text(name), mode="lines", line={"width": 1.2}))
         count += 1
     if not count:
         return None
@@ -153,15 +109,15 @@ def study_report(study_dir, output) -> Path:
 
     study_dir = Path(study_dir)
     summary, keys, stats = read_summary(study_dir)
+    parts = macros("study.html.j2")
     page = Page(f"kanat study: {study_dir.resolve().name}", f"{summary.sizes['case']} cases, varying {', '.join(keys)}")
     page.data["kanat-study"] = study_data(summary, keys, stats)
-    page.section("study", "Study", _definition(summary, study_dir))
-    page.section("explorer", "Statistics against the varied parameters", _controls(keys))
+    page.section("study", "Study", _definition(summary, _manifest(study_dir)))
+    page.section("explorer", "Statistics against the varied parameters", parts.explorer(len(keys) >= 2))
     frame = summary.to_dataframe().drop(columns=["message"])
-    page.section("table", "Summary table", "<div class='scroll'>" + frame_table(
-        frame, text_columns=("name", "status")) + "</div>")
+    page.section("table", "Summary table", parts.scroll(frame_table(frame, text_columns=("name", "status"))))
     overlay = _overlay(page, summary, study_dir)
     if overlay:
         page.section("histories", "Time histories of every case", overlay)
-    page.script(EXPLORER)
+    page.script("explorer.js")
     return page.write(output)

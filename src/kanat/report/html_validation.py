@@ -6,11 +6,9 @@ check's error as a fraction of its tolerance; the §7 cases left out of the fast
 """
 from __future__ import annotations
 
-import html
-
 import numpy as np
 
-from kanat.report.html import Page, table_html
+from kanat.report.html import Page, macros, table
 
 
 def _spec_key(result) -> tuple:
@@ -40,21 +38,20 @@ def validation_report(results, output):
              r.seconds) for r in results]
     header = ["SPEC", "check", "what", "oracle (source)", "tolerance", "units", "measured", "expected", "result",
               "time [s]"]
-    page.section("checks", "Checks", table_html(header, rows, text_columns=("SPEC", "check", "what",
-                                                                           "oracle (source)", "tolerance", "units")))
+    page.section("checks", "Checks", table(header, rows, text_columns=("SPEC", "check", "what", "oracle (source)",
+                                                                      "tolerance", "units")))
     usage = [_usage(r) for r in results]
     fig = go.Figure(go.Bar(x=[r.check_id for r in results], y=[u if np.isfinite(u) else None for u in usage],
                            marker={"color": ["#137333" if r.passed else "#b3261e" for r in results]}))
     fig.add_hline(y=1.0, line_dash="dash", annotation_text="tolerance")
     fig.update_layout(title={"text": "deviation from the oracle as a fraction of the tolerance"},
                       yaxis_type="log", yaxis_title="|measured - expected| / allowed", height=420)
-    page.section("margins", "Margins", page.figure(fig, "plot-validation-margins")
-                 + '<p class="note">Bars at zero deviation are not drawn on the log axis.</p>')
-    failures = [r for r in results if r.error]
+    parts = macros("validation.html.j2")
+    page.section("margins", "Margins", parts.margins(page.figure(fig, "plot-validation-margins")))
+    failures = [(r.check_id, r.error) for r in results if r.error]
     if failures:
-        page.section("errors", "Checks that could not run", "".join(
-            f"<h3>{html.escape(r.check_id)}</h3><pre>{html.escape(r.error)}</pre>" for r in failures))
+        page.section("errors", "Checks that could not run", parts.errors(failures))
     page.section("not-run", "SPEC §7 cases not in the fast suite",
-                 table_html(["SPEC", "case", "checked by"], [(f"§{a}", b, c) for a, b, c in NOT_IN_SUITE],
-                            text_columns=("SPEC", "case", "checked by")))
+                 table(["SPEC", "case", "checked by"], [(f"§{a}", b, c) for a, b, c in NOT_IN_SUITE],
+                       text_columns=("SPEC", "case", "checked by")))
     return page.write(output)

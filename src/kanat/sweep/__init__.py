@@ -3,7 +3,8 @@
 Public API
 ----------
 sweep(case, vary, out_dir, scheduler=None, workers=None, progress=None, window=None) -> StudyResult
-    Run a study (cartesian product of the values) on Dask distributed; resume a killed one.
+    Run a study (cartesian product of the values), serially or on Dask distributed as
+    pays best (:mod:`.execution`); resume a killed one.
 plan_study(case, vary) -> StudyPlan
     The cases of a study, validated, without running them.
 parse_values(spec, key="") -> list
@@ -23,17 +24,19 @@ Example
 from __future__ import annotations
 
 from dataclasses import dataclass
+from os import PathLike
 
 import xarray as xr
 
-from kanat.sweep.engine import run_case, run_dask, run_serial
+from kanat.sweep.engine import run_case
+from kanat.sweep.execution import cluster_pays, execute
 from kanat.sweep.plan import CaseSpec, StudyPlan, plan_study
 from kanat.sweep.progress import StudyProgress, rich_progress
 from kanat.sweep.store import StudyStore, read_summary, summary_dataset
 from kanat.sweep.values import parse_values
 
-__all__ = ["CaseSpec", "StudyPlan", "StudyProgress", "StudyResult", "parse_values", "plan_study", "read_summary",
-           "run_case", "summary_dataset", "sweep"]
+__all__ = ["CaseSpec", "StudyPlan", "StudyProgress", "StudyResult", "cluster_pays", "parse_values", "plan_study",
+           "read_summary", "run_case", "summary_dataset", "sweep"]
 
 
 @dataclass
@@ -47,6 +50,8 @@ class StudyResult:
         One row per case (:mod:`kanat.sweep.store`).
     ran, skipped, failed : int
         Cases run now, cases already finished before (resume), and failed cases (in all).
+    engine : str
+        Where the cases ran and why (:func:`kanat.sweep.execution.execute`).
     """
 
     out_dir: object
@@ -54,6 +59,7 @@ class StudyResult:
     ran: int
     skipped: int
     failed: int
+    engine: str = ""
 
     @property
     def total(self) -> int:
@@ -72,13 +78,17 @@ def sweep(case, vary: dict, out_dir, scheduler=None, workers: int | None = None,
         Key path -> list of values, or text in the syntax of :mod:`kanat.sweep.values`.
         Every combination is a case (the first key varies slowest).
     out_dir : path-like
-        Study directory (created; an existing one of the same study is resumed: finished
-        cases are skipped).
+        Study directory (created in an existing directory; an existing one of the same
+        study is resumed: finished cases are skipped). It is locked for the study's
+        duration (:class:`kanat.io.outputs.OutputLock`): a second study on it is refused.
     scheduler : None, "serial", str or distributed.Client
-        None: an in-process Dask ``LocalCluster``; ``"serial"``: no Dask, one case after
-        another here; an address: that Dask cluster; a Client: use it.
+        None: chosen by the rule of :mod:`kanat.sweep.execution` (a running cluster in
+        Dask's configuration, else serially in a child process or on a local cluster,
+        whichever pays); ``"serial"``: no Dask, one case after another in this process;
+        an address or a scheduler file (``.json``): that running Dask cluster; a Client:
+        use it.
     workers : int, optional
-        Worker processes of the local cluster (default: every core).
+        Start a local cluster of this many worker processes (always, whatever the rule).
     progress : callable, True or None
         ``progress(StudyProgress)`` after each finished case; True draws a rich bar.
     window : (float or None, float or None), optional
@@ -92,10 +102,20 @@ def sweep(case, vary: dict, out_dir, scheduler=None, workers: int | None = None,
     ------
     KanatError or CaseError
         For a study that cannot start (bad key path or values, no valid case, another
-        study in ``out_dir``). A case that fails never raises: it is recorded.
+        study in ``out_dir`` or one running on it, an output that is not a writable
+        directory). A case that fails never raises: it is recorded.
     """
+    from kanat.io.outputs import OutputLock, check_output_directory
+
     plan = plan_study(case, vary)
-    store = StudyStore(out_dir)
+    inputs = [case] if isinstance(case, (str, PathLike)) else []
+    root = check_output_directory(out_dir, inputs=inputs)
+    with OutputLock(root):
+        return _run(plan, StudyStore(root), scheduler, workers, progress, window)
+
+
+def _run(plan: StudyPlan, store: StudyStore, scheduler, workers, progress, window) -> StudyResult:
+    """Prepare the study directory, run the unfinished cases, write the summary."""
     store.prepare(plan)
     done = store.finished()
     todo = [c for c in plan.cases if c.name not in done]
@@ -124,11 +144,9 @@ def sweep(case, vary: dict, out_dir, scheduler=None, workers: int | None = None,
     try:
         if reporter is not None:
             reporter.start()
-        if jobs:
-            (run_serial(jobs, on_done) if scheduler == "serial" else
-             run_dask(jobs, on_done, scheduler=scheduler, workers=workers))
+        engine = execute(jobs, on_done, scheduler=scheduler, workers=workers)
     finally:
         if reporter is not None:
             reporter.stop()
     summary = store.write_summary(plan)
-    return StudyResult(store.root, summary, ran=len(todo), skipped=len(done), failed=state.failed)
+    return StudyResult(store.root, summary, ran=len(todo), skipped=len(done), failed=state.failed, engine=engine)

@@ -2,7 +2,10 @@
 
 Cases are numbered in the order of the product, the first key varying slowest
 (``itertools.product``), and named ``case003_to_speed_kn=8_period=5.6`` (index, then each
-varied key's short label and value), a name that is safe as a file name.
+varied key's short label and value), a name that is safe as a file name: every character
+outside ``[A-Za-z0-9._=+-]`` becomes ``-`` (so ``--vary name=../../x`` gives
+``case000_name=..-..-x``, one file name in the study's folders), the label is cut at
+:data:`MAX_LABEL` characters, and the index keeps names unique.
 """
 from __future__ import annotations
 
@@ -18,6 +21,9 @@ from kanat.sweep.variants import base_data, parse_key, short_labels, validate_va
 
 MAX_CASES = 100_000
 """Largest study (a guard against typos in ranges)."""
+
+MAX_LABEL = 120
+"""Longest label after the index in a case name (file names stay far below 255 bytes)."""
 
 _UNSAFE = re.compile(r"[^A-Za-z0-9._=+-]+")
 
@@ -77,8 +83,8 @@ class StudyPlan:
 
 def case_name(index: int, parameters: dict, labels: dict, width: int) -> str:
     """``case003_to_speed_kn=8_period=5.6``: index and every varied value, file-name safe."""
-    parts = [f"case{index:0{width}d}"] + [f"{labels[k]}={format_value(v)}" for k, v in parameters.items()]
-    return _UNSAFE.sub("-", "_".join(parts))
+    label = _UNSAFE.sub("-", "_".join(f"{labels[k]}={format_value(v)}" for k, v in parameters.items()))
+    return f"case{index:0{width}d}_{label[:MAX_LABEL]}"
 
 
 def plan_study(case, vary: dict) -> StudyPlan:
@@ -112,12 +118,17 @@ def plan_study(case, vary: dict) -> StudyPlan:
         count *= len(v)
     if count > MAX_CASES:
         raise KanatError(f"{count} cases; a study holds at most {MAX_CASES}: vary fewer values")
+    variant_text(data, {key: v[0] for key, v in values.items()})    # a key path that cannot be reached stops here
     labels, width = short_labels(list(values)), max(3, len(str(count - 1)))
     cases = []
     for index, combination in enumerate(itertools.product(*values.values())):
         parameters = dict(zip(values, combination))
         name = case_name(index, parameters, labels, width)
-        text = variant_text(data, parameters)
+        try:
+            text = variant_text(data, parameters)
+        except KanatError as problem:                # a value that breaks the path of another key
+            cases.append(CaseSpec(index, name, parameters, "", f"{base} [{name}]: {problem}"))
+            continue
         _, error = validate_variant(text, f"{base} [{name}]")
         cases.append(CaseSpec(index, name, parameters, text, error))
     if all(c.error for c in cases):

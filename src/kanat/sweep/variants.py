@@ -132,7 +132,8 @@ def validate_variant(text: str, label: str):
     Returns
     -------
     (Case or None, str or None)
-        The case, or None and the validation message naming the key.
+        The case, or None and the validation message naming the key. Any other exception
+        from validation is a message too (naming its type): one variant never stops a study.
     """
     from kanat.io import parse_case
 
@@ -140,8 +141,10 @@ def validate_variant(text: str, label: str):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             return parse_case(text, file=label), None
-    except CaseError as error:
+    except KanatError as error:
         return None, str(error)
+    except Exception as error:  # noqa: BLE001 - recorded as the variant's failure, never raised
+        return None, f"{label}: the case could not be validated ({type(error).__name__}: {error})"
 
 
 def short_labels(keys: list[str]) -> dict[str, str]:
