@@ -28,6 +28,7 @@ from kanat.errors import CaseError, KanatError
 from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.integrators import SCHEMES as LUMPED_SCHEMES
 from kanat.model import Case
+from kanat.model.support import require_supported
 from kanat.schemes import registry
 from kanat.version import __version__
 
@@ -173,15 +174,23 @@ def solve_statics(case: Case, method: str = "auto"):
     kanat.errors.SolverError
         When no steady state is found (the message says what was tried).
     """
+    require_supported(case, "statics")
     return _statics_dataset(case, method)[0]
 
 
 def dynamic_model(case: Case, scheme=None):
-    """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme``."""
+    """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme``.
+
+    Raises
+    ------
+    kanat.errors.CaseError
+        When the case uses a key the model does not support (:mod:`kanat.model.support`).
+    """
     entry = MODELS.get(case.model)
     if not isinstance(entry, Dynamic):
         dynamic = ", ".join(k for k, v in MODELS.items() if isinstance(v, Dynamic))
         raise KanatError(f"model '{case.model}' is not a dynamic model; dynamic models: {dynamic}")
+    require_supported(case, case.model)
     return entry.build(case, scheme)
 
 
@@ -222,6 +231,7 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
                 if "statics" in MODELS else "")
         raise KanatError(f"model '{name}' is not available in kanat {__version__} (available: "
                          f"{', '.join(MODELS)}).{hint}")
+    require_supported(case, name)
     if isinstance(entry, Steady):
         return _steady(entry, case, name, output, method)
     if resume and output is None:
@@ -282,6 +292,31 @@ def read_result(path):
     from kanat.io.results import read_result as read
 
     return read(path)
+
+
+def case_of(result) -> Case:
+    """The case a result was computed from (its ``case_yaml`` attribute), validated again.
+
+    Parameters
+    ----------
+    result : xarray.Dataset or path-like
+        A result, or its file.
+
+    Raises
+    ------
+    kanat.errors.KanatError
+        When the result does not carry its case (written before kanat embedded it).
+    """
+    from kanat.io.results import case_sha256
+
+    attrs = result.attrs if hasattr(result, "attrs") else read_result(result).attrs
+    text = attrs.get("case_yaml")
+    if not text:
+        raise KanatError("this result does not carry its case (no case_yaml attribute); run its case file instead")
+    case = load_case(text)
+    if attrs.get("case_sha256") not in (None, case_sha256(case)):
+        raise KanatError("the case embedded in this result does not match its case_sha256: the file was edited")
+    return case
 
 
 # --- helpers ----------------------------------------------------------------------------

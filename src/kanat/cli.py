@@ -14,6 +14,7 @@ from typing import Optional
 import typer
 
 from kanat.cli_common import CONTEXT, console, fail, load, out, print_problems, setup_logging
+from kanat.errors import KanatError
 
 log = logging.getLogger("kanat")
 
@@ -71,8 +72,10 @@ def statics(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
 
 
 @app.command()
-def run(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)."),
+def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or MoorDyn input)."),
         output: Path = typer.Option(..., "-o", "--output", help="Result file (netCDF)."),
+        from_result: Optional[Path] = typer.Option(None, "--from-result",
+                                                   help="Run again the case embedded in this result file."),
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
         scheme: Optional[str] = typer.Option(None, "--scheme", help="Override simulation.scheme."),
         resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
@@ -82,7 +85,15 @@ def run(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)
     """Run any case with the model its file names, writing the result to OUTPUT as it goes."""
     from kanat import api
 
-    loaded = load(case, debug)
+    if (case is None) == (from_result is None):
+        fail(KanatError("give a case file, or --from-result RESULT.nc (not both)"), debug, "nothing to run")
+    if from_result is not None:
+        try:
+            loaded, case = api.case_of(from_result), from_result
+        except Exception as error:  # noqa: BLE001 - reported by fail
+            fail(error, debug, "cannot read the case of the result")
+    else:
+        loaded = load(case, debug)
     if isinstance(api.MODELS.get(loaded.model), api.Steady):
         _steady(loaded, case, output, plot, debug, model=loaded.model)
         return
@@ -98,8 +109,6 @@ def run(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "run failed")
     if not outcome.ok:
-        from kanat.errors import KanatError
-
         fail(KanatError(f"{outcome.status}\n\nThe results up to the failure are in {output}."), debug,
              "run stopped")
     out.print(outcome.text)
@@ -171,9 +180,11 @@ def _draw(model: str, solution, plot: Path) -> None:
         plot_statics(solution, plot)
 
 
+from kanat.cli_import import register as register_import  # noqa: E402 - kanat import
 from kanat.cli_study import register  # noqa: E402 - the study verbs: study, sweep, report, validate-suite
 
 register(app)
+register_import(app)
 
 
 if __name__ == "__main__":  # python -m kanat.cli

@@ -13,47 +13,29 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from kanat.io.schema import COORDINATE_NAMES, VARIABLES, netcdf_attr
 from kanat.version import __version__
-
-UNITS = {
-    "s": ("m", "unstretched arclength within its cable"),
-    "cable": ("1", "cable name of each node"),
-    "position": ("m", "node positions"),
-    "velocity": ("m/s", "node velocities"),
-    "tension": ("N", "effective tension at nodes"),
-    "angle": ("rad", "angle of the cable tangent above the horizontal"),
-    "segment_tension": ("N", "element tension"),
-    "body_position": ("m", "body positions"),
-    "vessel_position": ("m", "tow point position"),
-    "vessel_heading": ("rad", "vessel heading"),
-    "vessel_pitch": ("rad", "vessel pitch"),
-    "alpha": ("rad", "local cable angle of seed 001 (dX/ds = cos alpha)"),
-    "tau": ("1", "dimensionless tension T / (k1 L)"),
-    "x": ("1", "dimensionless abscissa X / L"),
-    "y": ("1", "dimensionless height Y / L"),
-    "pitch": ("rad", "steady pitch angle over one period, bow up positive"),
-    "stabilizer_moment": ("N m", "stabilizer moment, 0 <= f <= M0"),
-    "wave_moment": ("N m", "wave moment M_m sin(omega t + pi)"),
-    "amplitude": ("rad", "pitch amplitude, half the peak-to-peak"),
-    "max_abs": ("rad", "largest absolute pitch"),
-    "mean_pitch": ("rad", "period mean of the pitch (trim)"),
-    "amplitude_reduction": ("1", "amplitude without stabilizer / amplitude of the mode"),
-    "max_abs_reduction": ("1", "largest |pitch| without stabilizer / that of the mode"),
-    "fourier_vs_shooting": ("1", "max |pitch_fourier - pitch_shooting| / amplitude"),
-}
-
 
 def case_sha256(case) -> str:
     """SHA-256 of the case's canonical JSON form (insensitive to YAML layout and comments)."""
     return hashlib.sha256(case.model_dump_json(by_alias=True).encode()).hexdigest()
 
 
+def case_yaml(case) -> str:
+    """The case as YAML text that loads back to the same case (same :func:`case_sha256`)."""
+    import yaml
+
+    return yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_unset=True), sort_keys=False)
+
+
 def provenance(case, *, model: str, scheme: str, wall_time_s: float = 0.0, status: str = "running", **extra) -> dict:
-    """Global attributes every result file carries (case-format.md)."""
+    """Global attributes every result file carries (case-format.md), the case itself included
+    (``case_yaml``), so that a result alone reproduces its run."""
     attrs = {
         "kanat_version": __version__,
         "case_name": case.name or "",
         "case_sha256": case_sha256(case),
+        "case_yaml": case_yaml(case),
         "model": model,
         "scheme": scheme,
         "wall_time_s": float(wall_time_s),
@@ -65,25 +47,16 @@ def provenance(case, *, model: str, scheme: str, wall_time_s: float = 0.0, statu
 
 
 def annotate(ds: xr.Dataset) -> xr.Dataset:
-    """Attach units and long names to every known variable, and the xyz coordinate."""
+    """Attach units and long names (:data:`kanat.io.schema.VARIABLES`) to every known variable,
+    make ``s``, ``cable`` and ``segment_cable`` coordinates, and label ``xyz``."""
     for name, var in ds.variables.items():
-        if name in UNITS:
-            var.attrs.setdefault("units", UNITS[name][0])
-            var.attrs.setdefault("long_name", UNITS[name][1])
+        if name in VARIABLES:
+            for key, value in VARIABLES[name].attrs().items():
+                var.attrs.setdefault(key, value)
+    ds = ds.set_coords([name for name in COORDINATE_NAMES if name in ds.data_vars])
     if "xyz" in ds.dims and "xyz" not in ds.coords:
         ds = ds.assign_coords(xyz=["x", "y", "z"])
     return ds
-
-
-def _netcdf_attr(value):
-    """netCDF attributes hold numbers and strings only."""
-    if isinstance(value, bool):
-        return int(value)
-    if value is None:
-        return ""
-    if isinstance(value, (np.floating, np.integer)):
-        return value.item()
-    return value
 
 
 def write_result(ds: xr.Dataset, path) -> Path:
@@ -95,7 +68,7 @@ def write_result(ds: xr.Dataset, path) -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     ds = ds.copy()
-    ds.attrs = {k: _netcdf_attr(v) for k, v in ds.attrs.items()}
+    ds.attrs = {k: netcdf_attr(v) for k, v in ds.attrs.items()}
     tmp = path.with_name(path.name + ".part")
     ds.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=False)
     os.replace(tmp, path)

@@ -31,18 +31,23 @@ class Variable:
     long_name : str
     standard_name : str or None
         CF standard name where one exists.
+    positive : str or None
+        ``"up"`` for positions and velocities, whose z axis points up (z = 0 at the mean surface).
     """
 
     dims: tuple[str, ...]
     units: str
     long_name: str
     standard_name: str | None = None
+    positive: str | None = None
 
     def attrs(self) -> dict:
         """The variable's netCDF attributes."""
         out = {"units": self.units, "long_name": self.long_name}
         if self.standard_name:
             out["standard_name"] = self.standard_name
+        if self.positive:
+            out["positive"] = self.positive
         return out
 
 
@@ -53,13 +58,14 @@ VARIABLES: dict[str, Variable] = {
     "segment_cable": Variable(("segment",), "1", "cable name of each segment"),
     "segment_length": Variable(("segment",), "m", "unstretched segment length"),
     # the time series of the dynamic models (and statics without time)
-    "position": Variable(("node", "xyz"), "m", "node positions (z up, z = 0 at the mean free surface)"),
-    "velocity": Variable(("node", "xyz"), "m/s", "node velocities"),
+    "position": Variable(("node", "xyz"), "m", "node positions (z up, z = 0 at the mean free surface)",
+                         positive="up"),
+    "velocity": Variable(("node", "xyz"), "m/s", "node velocities", positive="up"),
     "tension": Variable(("node",), "N", "effective tension at nodes"),
     "angle": Variable(("node",), "rad", "angle of the cable tangent above the horizontal"),
     "segment_tension": Variable(("segment",), "N", "element tension"),
-    "body_position": Variable(("body", "xyz"), "m", "body positions"),
-    "vessel_position": Variable(("xyz",), "m", "tow point position"),
+    "body_position": Variable(("body", "xyz"), "m", "body positions", positive="up"),
+    "vessel_position": Variable(("xyz",), "m", "tow point position", positive="up"),
     "vessel_heading": Variable((), "rad", "vessel heading, counter-clockwise from +x"),
     "vessel_pitch": Variable((), "rad", "vessel pitch, bow up positive"),
     "newton_iterations": Variable((), "1", "Newton iterations of the steps since the previous output"),
@@ -87,7 +93,7 @@ VARIABLES: dict[str, Variable] = {
 }
 """Every result variable by name."""
 
-TIME_COORD = Variable(("time",), "s", "simulated time")
+TIME_COORD = Variable(("time",), "s", "simulated time", standard_name="time")
 NODE_COORDS = ("s", "cable")
 """Non-index coordinates along ``node`` (CF ``coordinates`` attribute of node variables)."""
 SEGMENT_COORDS = ("segment_cable",)
