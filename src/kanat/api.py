@@ -48,7 +48,7 @@ class Outcome:
     text : str
         A few lines for the terminal: the run summary, or the statics or pitch table.
     dataset : xarray.Dataset
-        The result (read back from ``output`` when one was written).
+        The result (read back from ``output`` on first use when it was written there).
     output : Path or None
     summary : kanat.dynamics.RunSummary or None
         Dynamic models only.
@@ -59,7 +59,7 @@ class Outcome:
 
     status: str
     text: str
-    dataset: Any
+    held: Any
     output: Path | None = None
     summary: dynamics.RunSummary | None = None
     solution: Any = None
@@ -67,6 +67,11 @@ class Outcome:
     @property
     def ok(self) -> bool:
         return self.status == "ok"
+
+    @property
+    def dataset(self):
+        """The result: held in memory, or read from ``output``."""
+        return self.held if self.held is not None else read_result(self.output)
 
 
 # --- the steady models ------------------------------------------------------------------
@@ -236,7 +241,7 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         return _steady(entry, case, name, output, method)
     if resume and output is None:
         raise KanatError("resume needs the result file of the run to continue (output)")
-    from kanat.io.results import case_sha256, read_result
+    from kanat.io.results import case_sha256
     from kanat.io.stream import ResultStream
 
     recorder = dynamics.Recorder() if output is None else None
@@ -248,7 +253,7 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     if progress is not None:
         sinks.append(dynamics.Progress(progress))
     summary = dynamics.run(lambda: entry.build(case, scheme), [*sinks, *observers], resume=checkpointer if resume else None, output=output)
-    dataset = recorder.dataset() if recorder is not None else read_result(output)
+    dataset = recorder.dataset() if recorder is not None else None
     if not summary.ok:
         warnings.warn(f"the run stopped: {summary.status}", RunFailedWarning, stacklevel=2)
     return Outcome(summary.status, summary.summary(), dataset, None if output is None else Path(output), summary)
