@@ -123,3 +123,35 @@ def test_slowing_array_sinks_and_unloads(tmp_path):
     assert summary.ok
     assert ds.position.values[-1, -1, 2] < ds.position.values[0, -1, 2] - 5.0        # tail sinks
     assert ds.tension.values[-1, 0] < 0.5 * ds.tension.values[0, 0]                   # (5/8)^2 of the drag
+
+
+def test_a_buoyant_towed_body_starts_from_its_statics(tmp_path):
+    """The cable leaves the tow point downwards and reaches the body upwards: its angle passes
+    through 180 deg, which the start must carry continuously."""
+    text = case_text(duration=20).replace("net_buoyancy: -6686", "net_buoyancy: 3000")
+    summary = run(parse_case(text), tmp_path / "b.nc")
+    ds = read_result(tmp_path / "b.nc")
+    static = solve_statics(parse_case(text))
+    assert summary.ok, summary.status
+    np.testing.assert_allclose(ds.body_position.values[0, 0], static.bodies["sled"], atol=0.5)
+
+
+def test_no_initial_state_writes_a_result_that_says_why_and_what_to_do(tmp_path):
+    text = case_text(duration=20).replace("net_buoyancy: -6686", "net_buoyancy: 0").replace(
+        "drag_area: 0.3276", "drag_area: 0").replace("speed_kn: 6", "speed_kn: 0")
+    summary = run(parse_case(text), tmp_path / "s.nc")
+    ds = read_result(tmp_path / "s.nc")
+    assert ds.attrs["status"] == summary.status and ds.sizes["time"] == 0
+    assert summary.status.startswith("failed: no initial state") and "model: lumped" in summary.status
+
+
+def test_a_result_marked_ok_with_a_nan_is_refused(tmp_path):
+    import h5netcdf
+
+    from kanat.errors import KanatError
+
+    run(parse_case(case_text(duration=5)), tmp_path / "r.nc")
+    with h5netcdf.File(tmp_path / "r.nc", "a") as f:
+        f.variables["tension"][2, 3] = np.nan
+    with pytest.raises(KanatError, match="status ok but its tension holds non-finite"):
+        read_result(tmp_path / "r.nc")

@@ -18,7 +18,7 @@ from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.dynamics import StepFailure, Steps
-from kanat.errors import CaseError, Problem
+from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.results import provenance
 from kanat.io.schema import Layout
 from kanat.schemes import get_scheme
@@ -69,7 +69,13 @@ class ContinuumModel:
 
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
-        return self.cable_model.initial()
+        try:
+            return self.cable_model.initial()
+        except SolverError as error:
+            raise SolverError(
+                f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
+                "continuum model needs a taut cable from the start; a slack, grounded or compressed line runs "
+                "with model: lumped, which carries slack (kanat statics CASE shows the steady shape)") from None
 
     def save(self, state) -> dict:
         return {"t": np.array(state.t), **self.cable_model.save(state)}

@@ -90,7 +90,7 @@ class PlanarModel:
     def initial(self) -> State:
         cable, drive = self.cable, self.drive
         static = _static_shape(self.case, cable.name, cable.s)
-        v0, phi = drive.velocities(0.0)[0], static.angle
+        v0, phi = drive.velocities(0.0)[0], np.unwrap(static.angle)     # continuous through +-pi
         guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
                                  -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
         y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))

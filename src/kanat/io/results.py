@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from kanat.errors import KanatError
 from kanat.io.schema import COORDINATE_NAMES, VARIABLES, netcdf_attr
 from kanat.version import __version__
 
@@ -75,10 +76,34 @@ def write_result(ds: xr.Dataset, path) -> Path:
     return path
 
 
+SOUND_VARIABLES = ("time", "position", "velocity", "tension", "segment_tension", "body_position")
+"""Variables that are finite in every sound result (others may hold NaN by design: "not computed")."""
+
+
 def read_result(path) -> xr.Dataset:
-    """Read a result file written by :func:`write_result` (fully loaded, file closed)."""
-    with xr.open_dataset(path, engine="h5netcdf") as ds:
-        return ds.load()
+    """Read a result file (fully loaded, file closed).
+
+    Raises
+    ------
+    kanat.errors.KanatError
+        For a missing or unreadable file, and for a file whose ``status`` is ``ok`` although
+        one of :data:`SOUND_VARIABLES` holds a non-finite value: such a file cannot be a
+        sound result (``xarray.open_dataset`` still opens it for inspection).
+    """
+    path = Path(path)
+    try:
+        with xr.open_dataset(path, engine="h5netcdf") as ds:
+            ds = ds.load()
+    except FileNotFoundError:
+        raise KanatError(f"{path}: no such result file") from None
+    except OSError as error:
+        raise KanatError(f"{path}: not a readable result file ({error})") from None
+    if ds.attrs.get("status") == "ok":
+        for name in SOUND_VARIABLES:
+            if name in ds and ds[name].size and not np.all(np.isfinite(ds[name].values)):
+                raise KanatError(f"{path} says status ok but its {name} holds non-finite values: it is not a "
+                                 "sound result (the file was altered, or written by a faulty tool)")
+    return ds
 
 
 def statics_dataset(result, wall_time_s: float = 0.0) -> xr.Dataset:

@@ -115,7 +115,12 @@ class LumpedModel:
     def initial(self) -> LumpedState:
         sim, system = self.case.simulation, self.system
         if sim.initial_state == "equilibrium":
-            x = equilibrium(self.net, self.case)[0]
+            try:
+                x = equilibrium(self.net, self.case)[0]
+            except SolverError as error:
+                raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed (SPEC §4). "
+                                  "Give bodies and points a position near where they settle (a guess), or start "
+                                  "from the given geometry with simulation.initial_state: as_given") from None
         else:
             x = self.net.x_guess.copy()
         free = system.free_index
