@@ -19,6 +19,7 @@ from ._base import fmt
 from .cable import Cable, CableEnd
 from .case import Case
 from .environment import JonswapWaves, RegularWaves
+from . import limits
 from .paths import Path, key_path, line_of
 from .support import check_support
 from .vessel import Heading, Turn
@@ -35,9 +36,11 @@ TIME_TOL = 1e-6             # relative tolerance on "multiple of dt"
 class Findings:
     """Collects problems with their key paths and lines."""
 
-    def __init__(self, file: str | None, lines: Mapping[Path, int] | None):
+    def __init__(self, file: str | None, lines: Mapping[Path, int] | None,
+                 max_output_bytes: float | str | None = None):
         self.file = file
         self.lines = lines
+        self.max_output_bytes = max_output_bytes
         self.problems: list[Problem] = []
 
     def add(self, path: Path, message: str, severity: str) -> None:
@@ -170,9 +173,12 @@ def check_hanging_loads(case: Case, out: Findings) -> None:
 
 def check_mooring_buoys(case: Case, out: Findings) -> None:
     """A buoy held only by anchored lines must lift their weight in water."""
+    by_body: dict[str, list[Cable]] = {}
+    for cable in case.cables:
+        for name in dict.fromkeys(e.name for e in cable.ends if e.kind == "body"):
+            by_body.setdefault(name, []).append(cable)
     for name, body in case.bodies.items():
-        attached = [c for c in case.cables if any(e.kind == "body" and e.name == name
-                                                  for e in c.ends)]
+        attached = by_body.get(name, [])
         if not attached or not all(any(e.kind == "anchor" for e in c.ends) for c in attached):
             continue
         weight = sum(_line_weight(case, c) for c in attached)
@@ -339,7 +345,7 @@ def check_pitch(case: Case, out: Findings) -> None:
 
 
 def _check_one_pitch(where: tuple, pitch, out: Findings) -> None:
-    from kanat.vessel.pitch_system import RESONANCE_RTOL      # the solver's own guard
+    from .problems import RESONANCE_RTOL      # the solver's own guard
 
     key = "natural_frequency" if pitch.natural_frequency is not None else "restoring"
     omega, omega0, zeta = pitch.wave_frequency, pitch.omega0, pitch.damping_ratio
@@ -386,6 +392,109 @@ def check_ignored_sections(case: Case, out: Findings) -> None:
         out.warning(("cables",), "ignored by model 'pitch'")
 
 
+# --- limits: run first; the sanity checks below assume numbers in range -----------------
+
+def check_magnitudes(case: Case, out: Findings) -> None:
+    """Every number within the sane range of its unit (:data:`limits.UNIT_RANGES`)."""
+    for q in limits.iter_quantities(case):
+        sane = limits.unit_range(q.unit)
+        unit = f" {q.unit}" if q.unit and q.unit != "-" else ""
+        if abs(q.value) > sane.high:
+            out.error(q.path, f"must be at most {sane.high:g}{unit} in magnitude (got "
+                      f"{fmt(q.value)}{unit}; {sane.what})")
+        elif q.positive and q.value < sane.low:
+            out.error(q.path, f"must be at least {sane.low:g}{unit} (got {fmt(q.value)}{unit}, "
+                      f"too small to compute with; {sane.what})")
+
+
+def check_discretization(case: Case, out: Findings) -> None:
+    """Segments per cable and in all (:data:`limits.MAX_SEGMENTS_PER_CABLE`, ``_TOTAL``)."""
+    counts = [cable.segments for cable in case.cables]
+    for i, n in enumerate(counts):
+        if n > limits.MAX_SEGMENTS_PER_CABLE:
+            out.error(("cables", i, "segments"), f"{n:,} segments is more than the limit of "
+                      f"{limits.MAX_SEGMENTS_PER_CABLE:,} a cable (10 cm elements over 10 km; "
+                      "the continuum model converges by 1000); use fewer segments")
+    if sum(counts) > limits.MAX_SEGMENTS_TOTAL and max(counts) <= limits.MAX_SEGMENTS_PER_CABLE:
+        out.error(("cables",), f"{sum(counts):,} segments in all cables is more than the limit "
+                  f"of {limits.MAX_SEGMENTS_TOTAL:,} (about 1 kB of solver memory a node); "
+                  "use fewer segments")
+    sphere = case.sphere_two_cables
+    if sphere is not None and sphere.n_nodes > limits.MAX_SEGMENTS_PER_CABLE + 1:
+        out.error(("sphere_two_cables", "n_nodes"), f"{sphere.n_nodes:,} nodes is more than "
+                  f"the limit of {limits.MAX_SEGMENTS_PER_CABLE + 1:,}; 101 (the default) "
+                  "resolves the published profiles")
+
+
+def _size(n_bytes: float) -> str:
+    for unit, scale in (("TiB", 1024**4), ("GiB", 1024**3), ("MiB", 1024**2), ("kiB", 1024)):
+        if n_bytes >= scale:
+            return f"{n_bytes / scale:.3g} {unit}"
+    return f"{n_bytes:.0f} bytes"
+
+
+def check_run_size(case: Case, out: Findings) -> None:
+    """Time steps, node-steps and the estimated result size of a dynamic run."""
+    sim = case.simulation
+    if sim is None or case.model not in ("continuum", "lumped"):
+        return
+    step = sim.step_or_default
+    steps = sim.duration / step
+    nodes = sum(c.segments + 1 for c in case.cables)
+    if nodes > limits.MAX_SEGMENTS_TOTAL + len(case.cables):
+        return  # check_discretization says so
+    where = ("simulation", "dt") if sim.dt is not None else ("simulation", "duration")
+    span = f"duration {fmt(sim.duration)} s / dt {fmt(step)} s = {steps:.4g} time steps"
+    if steps > limits.MAX_TIME_STEPS:
+        out.error(where, f"{span}, more than the limit of {limits.MAX_TIME_STEPS:.3g}; use a "
+                  "larger dt or a shorter duration")
+    elif nodes * steps > limits.MAX_NODE_STEPS:
+        out.error(where, f"{span} x {nodes:,} nodes = {nodes * steps:.3g} node-steps, more than "
+                  f"the limit of {limits.MAX_NODE_STEPS:.3g} (hours to days of computing); use "
+                  "a larger dt, fewer segments or a shorter duration")
+    try:
+        limit = limits.max_output_bytes(out.max_output_bytes)
+    except ValueError as exc:
+        out.error(("simulation",), str(exc))
+        return
+    outputs = math.floor(sim.duration / sim.output_interval * (1 + TIME_TOL)) + 1
+    per_output = (limits.OUTPUT_VALUES_PER_NODE * nodes + limits.OUTPUT_VALUES_PER_STEP
+                  + limits.OUTPUT_VALUES_PER_BODY * len(case.bodies))
+    size = 8.0 * outputs * per_output
+    if size > limit:
+        key = "output_dt" if sim.output_dt is not None else "duration"
+        out.error(("simulation", key), f"the result would hold about {_size(size)} ({outputs:,} "
+                  f"outputs x {nodes:,} nodes x {limits.OUTPUT_VALUES_PER_NODE} values x 8 bytes), "
+                  f"more than the limit of {_size(limit)}; store less often (output_dt), shorten "
+                  f"the duration or use fewer segments, or raise the limit "
+                  f"({limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=)")
+
+
+def check_pitch_size(case: Case, out: Findings) -> None:
+    """Harmonics and samples of the pitch problem's Fourier series."""
+    for where, pitch in ((("pitch",), case.pitch), (("vessel", "pitch"), case.vessel.pitch)):
+        if pitch is None:
+            continue
+        if pitch.harmonics > limits.MAX_HARMONICS:
+            out.error((*where, "harmonics"), f"{pitch.harmonics:,} harmonics is more than the "
+                      f"limit of {limits.MAX_HARMONICS:,}; 50 (the default) give the pitch to 1e-3")
+        elif pitch.time_points > limits.MAX_TIME_POINTS:
+            out.error((*where, "time_points"), f"{pitch.time_points:,} samples of the period is "
+                      f"more than the limit of {limits.MAX_TIME_POINTS:,}")
+        elif pitch.harmonics * pitch.time_points > limits.MAX_PITCH_SAMPLES:
+            out.error((*where, "time_points"), f"harmonics x time_points = {pitch.harmonics:,} x "
+                      f"{pitch.time_points:,} is more than the limit of "
+                      f"{limits.MAX_PITCH_SAMPLES:,} values; use fewer of either")
+
+
+LIMIT_CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
+    check_magnitudes, check_discretization, check_run_size, check_pitch_size,
+)
+"""Bounds on numbers and work (:mod:`kanat.model.limits`), in order: each assumes the
+bounds of the ones before it, so the first that finds an error is the last to run, and the
+sanity checks of :data:`CHECKS` (which assume numbers in range) are skipped."""
+
+
 CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
     check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
@@ -395,8 +504,9 @@ CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
 
 
 def physical_checks(case: Case, file: str | None = None,
-                    lines: Mapping[Path, int] | None = None) -> list[Problem]:
-    """Run every sanity check on a validated case.
+                    lines: Mapping[Path, int] | None = None,
+                    max_output_bytes: float | str | None = None) -> list[Problem]:
+    """Run every limit and sanity check on a validated case.
 
     Parameters
     ----------
@@ -406,13 +516,22 @@ def physical_checks(case: Case, file: str | None = None,
         Case file name for the problems.
     lines : mapping of key path to int, optional
         Lines of the case file's keys (:func:`kanat.io.yaml_loader.load_yaml`).
+    max_output_bytes : float, str or None
+        Largest estimated result of a dynamic run [bytes] (``"8G"`` works too); None:
+        the environment variable ``KANAT_MAX_OUTPUT_BYTES``, else 2 GiB
+        (:func:`kanat.model.limits.max_output_bytes`).
 
     Returns
     -------
     list of Problem
-        Errors and warnings, in the order of :data:`CHECKS`.
+        Errors and warnings, in the order of :data:`LIMIT_CHECKS` then :data:`CHECKS`;
+        only the first failing limit check's errors when one fails.
     """
-    out = Findings(file, lines)
+    out = Findings(file, lines, max_output_bytes)
+    for check in LIMIT_CHECKS:
+        check(case, out)
+        if out.problems:  # the limit checks report errors only; later ones assume them met
+            return out.problems
     for check in CHECKS:
         check(case, out)
     return out.problems
