@@ -8,18 +8,23 @@ load_case(path)
 parse_case(text, file=None)
     The same for YAML text.
 check_case(path), check_text(text, file=None)
-    Every error and warning as a list of :class:`~kanat.errors.Problem`; never raise
-    for the content of the case.
+    Every error and warning as a list of :class:`~kanat.errors.Problem`; never raise,
+    not even for a file that cannot be read (a missing file, a directory, a binary file
+    are problems too).
 
 Each problem names the file, the line, the key path (``cables[0].line_type``) and what
 would be valid, with units where the model declares them.
+
+Every function takes ``max_output_bytes``: the largest estimated result of a dynamic
+run (bytes, or a string such as ``"8G"``); by default the environment variable
+``KANAT_MAX_OUTPUT_BYTES``, else 2 GiB (:mod:`kanat.model.limits`, where every limit on
+a case's size and numbers is named with its reason).
 """
 from __future__ import annotations
 
 import types
 import warnings
 from os import PathLike
-from pathlib import Path as FilePath
 from typing import Annotated, Any, Literal, Union, get_args, get_origin
 
 from pydantic import BaseModel, ValidationError
@@ -30,7 +35,7 @@ from ..model._base import field_keys, fmt, suggest, unit_of
 from ..model.checks import physical_checks
 from ..model.paths import Path, key_path, line_of
 from .case_source import read_document
-from .yaml_loader import load_yaml
+from .case_read import read_case_text
 
 _COMPARISONS = {"greater_than": ("gt", "greater than"),
                 "greater_than_equal": ("ge", "at least"),
@@ -303,49 +308,75 @@ def _misspelt(errors: list[dict[str, Any]]) -> set[tuple[Any, ...]]:
     return found
 
 
+# --- numbers written as true/false ---------------------------------------------------
+
+def _is_number_type(tp: Any) -> bool:
+    tp = _unwrap(tp)
+    return isinstance(tp, type) and issubclass(tp, (int, float)) and tp is not bool
+
+
+def _bool_problems(data: Any, lines: dict[Path, int], file: str | None,
+                   path: Path = ()) -> list[Problem]:
+    """``diameter: yes``: YAML reads yes/no/on/off/true/false as booleans, which pydantic
+    would take as the numbers 1 and 0. A boolean where the case wants a number is an error."""
+    if isinstance(data, bool):
+        if path and _is_number_type(field_at(path)[3]):
+            written = "true (or yes/on)" if data else "false (or no/off)"
+            return [Problem(key_path(path), f"must be a number, not {written}", file,
+                            line_of(lines, path))]
+        return []
+    items = (data.items() if isinstance(data, dict)
+             else enumerate(data) if isinstance(data, list) else ())
+    found: list[Problem] = []
+    for key, value in items:
+        found += _bool_problems(value, lines, file, path + (key,))
+    return found
+
+
 # --- public entry points ----------------------------------------------------------
 
-def _check(text: str, file: str | None) -> tuple[Case | None, list[Problem]]:
+def _check(text: str, file: str | None,
+           max_output_bytes: float | str | None = None) -> tuple[Case | None, list[Problem]]:
     doc = read_document(text, file)  # YAML (its tables read), or a MoorDyn file mapped
     problems = list(doc.problems)
     if doc.data is None and problems:
         return None, problems
+    problems += _bool_problems(doc.data, doc.lines, file)
     case, found = validate_data(doc.data, file, doc.lines)
     problems += found
     if case is not None:
-        problems += physical_checks(case, file, doc.lines)
+        problems += physical_checks(case, file, doc.lines, max_output_bytes)
     return case, sorted(problems, key=lambda p: p.line or 0)
 
 
-def _read(path: str | PathLike[str]) -> tuple[str | None, list[Problem]]:
-    try:
-        return FilePath(path).read_text(encoding="utf-8"), []
-    except UnicodeDecodeError as exc:
-        return None, [Problem("", f"not a UTF-8 text file ({exc.reason} at byte {exc.start})",
-                              str(path), None)]
-
-
-def check_text(text: str, file: str | None = None) -> list[Problem]:
+def check_text(text: str, file: str | None = None, *,
+               max_output_bytes: float | str | None = None) -> list[Problem]:
     """Every error and warning of a case given as YAML text (never raises for content)."""
-    return _check(text, file)[1]
+    return _check(text, file, max_output_bytes)[1]
 
 
-def check_case(path: str | PathLike[str]) -> list[Problem]:
+def check_case(path: str | PathLike[str], *,
+               max_output_bytes: float | str | None = None) -> list[Problem]:
     """Every error and warning of a case file, sorted by line.
 
     Parameters
     ----------
     path : str or path-like
+    max_output_bytes : float, str or None
+        Largest estimated result of a dynamic run (module docstring).
 
     Returns
     -------
     list of Problem
-        Syntax errors, validation errors and the physical sanity checks
-        (:func:`kanat.model.checks.physical_checks`). Raises only if the file cannot
-        be read (``OSError``).
+        Problems reading the file (missing, a directory, unreadable, too large, not UTF-8
+        text), syntax errors, validation errors and the limit and sanity checks
+        (:func:`kanat.model.checks.physical_checks`). Never raises for the file or its
+        content.
     """
-    text, problems = _read(path)
-    return problems if text is None else check_text(text, str(path))
+    text, problems = read_case_text(path)
+    if text is None:
+        return problems
+    return check_text(text, str(path), max_output_bytes=max_output_bytes)
 
 
 def _accept(case: Case | None, problems: list[Problem]) -> Case:
@@ -357,7 +388,8 @@ def _accept(case: Case | None, problems: list[Problem]) -> Case:
     return case
 
 
-def parse_case(text: str, file: str | None = None) -> Case:
+def parse_case(text: str, file: str | None = None, *,
+               max_output_bytes: float | str | None = None) -> Case:
     """Validate a case given as YAML text.
 
     Parameters
@@ -366,6 +398,8 @@ def parse_case(text: str, file: str | None = None) -> Case:
         The case in YAML.
     file : str or None
         Name used in messages.
+    max_output_bytes : float, str or None
+        Largest estimated result of a dynamic run (module docstring).
 
     Returns
     -------
@@ -381,12 +415,14 @@ def parse_case(text: str, file: str | None = None) -> Case:
     CaseWarning
         One per sanity warning, when there is no error.
     """
-    return _accept(*_check(text, file))
+    return _accept(*_check(text, file, max_output_bytes))
 
 
-def load_case(path: str | PathLike[str]) -> Case:
-    """Read and validate a case file (see :func:`parse_case`)."""
-    text, problems = _read(path)
+def load_case(path: str | PathLike[str], *,
+              max_output_bytes: float | str | None = None) -> Case:
+    """Read and validate a case file (see :func:`parse_case`); a file that cannot be read
+    raises :class:`~kanat.errors.CaseError` too."""
+    text, problems = read_case_text(path)
     if text is None:
         raise CaseError(problems)
-    return _accept(*_check(text, str(path)))
+    return _accept(*_check(text, str(path), max_output_bytes))

@@ -45,6 +45,8 @@ def read_document(text: str, file: str | None = None) -> YamlDocument:
     if looks_like_moordyn(text):
         return moordyn_document(text, file)
     doc = load_yaml(text, file)
+    if doc.refused:  # too large, binary, too deep, billion laughs: its own message says why
+        return doc
     broken = doc.problems and doc.data is None
     if (broken or isinstance(doc.data, str)) and not _mentions_case_keys(text):
         return YamlDocument(None, {(): 1}, [Problem("", neither_sentence(file), file, None)])
