@@ -3,8 +3,13 @@
 The same algorithm as the readable NumPy path (:func:`kanat.continuum.factorized.factorized_step`
 with :mod:`characteristics` and :class:`~kanat.continuum.factorized_system.CableSystem`), one
 compiled call per step so that the "running count" costs what the paper says it costs; the
-tests check the two agree to round-off. Nodal loads come from the full model's kernels
-(:func:`kernels2d.node_load`, :func:`kernels3d.node_load3`).
+tests check the two agree to round-off. Nodal loads and their derivatives come from the full
+model's kernels (:func:`kernels2d.node_load_jacobian`, :func:`kernels3d.node_load3_jacobian`);
+the end conditions are solved by Newton with complex-step derivatives.
+
+A planar cable passes ``up = None``: numba then compiles the planar branches only (a branch
+on ``is None`` is pruned by type), so a planar run does not compile the spatial kernels.
+Scalar loops throughout (no array expressions, ``@`` or ``np.linalg``; :mod:`kanat.jit`).
 
 End parameters (``ENDPAR`` floats): ``[kind, V1, V2, V3, mass, net_buoyancy, half_rho_cds, F1, F2, F3]``
 in the frame's coordinates (planar: the first two of each vector).
@@ -12,11 +17,11 @@ in the frame's coordinates (planar: the first two of each vector).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from kanat.jit import kernel
 
 from kanat.continuum import kernels2d as k2
 from kanat.continuum import kernels3d as k3
-from kanat.continuum.factorized_kernels import lu_factor, lu_solve, sweep
+from kanat.continuum.factorized_kernels import lu_factor, lu_solve, sweep_into
 
 STEP = 1e-30
 ENDPAR = 10
@@ -25,10 +30,10 @@ END_TOLERANCE = 1e-11
 OK, COMPRESSION, SINGULAR, DIVERGED, NONFINITE = 0, 1, 2, 3, 4
 
 
-@njit(cache=True)
-def mass_stiffness(y, p, dim, M, K):
-    """``M(y)``, ``K(y)`` (d, d) of one node (SPEC §2.1, §2.2)."""
-    if dim == 3:
+@kernel
+def mass_stiffness(y, p, up, M, K):
+    """``M(y)``, ``K(y)`` (d, d) of one node (SPEC §2.1, §2.2); ``up`` None for a planar cable."""
+    if up is not None:
         k3.mass_matrix(y, p, M)
         k3.stiffness_matrix(y, K)
         return
@@ -45,11 +50,11 @@ def mass_stiffness(y, p, dim, M, K):
     K[3, 2], K[3, 3] = -1.0, -y[1]
 
 
-@njit(cache=True)
-def load(y, cur, up, p, dim, out):
+@kernel
+def load(y, cur, up, p, out):
     """``F(y)`` (d,) of one node, complex-capable (zero on the compatibility rows)."""
     out[:] = 0.0
-    if dim == 3:
+    if up is not None:
         f = k3.node_load3(y[0], y[1], y[2], y[3], y[4], y[5], cur, up, p)
         out[0], out[1], out[2] = f[0], f[1], f[2]
     else:
@@ -57,11 +62,26 @@ def load(y, cur, up, p, dim, out):
         out[0], out[1] = ft, fn
 
 
-@njit(cache=True)
-def axes(y, dim):
+@kernel
+def load_jacobian(y, cur, up, p, F, J):
+    """``F(y)`` (d,) and ``J = dF/dy`` (d, d) of one node, real (zero on the compatibility rows)."""
+    d = y.shape[0]
+    for a in range(d):
+        F[a] = 0.0
+        for b in range(d):
+            J[a, b] = 0.0
+    if up is not None:
+        f0, f1, f2 = k3.node_load3_jacobian(y, cur, up, p, J[:3])
+        F[0], F[1], F[2] = f0, f1, f2
+    else:
+        F[0], F[1] = k2.node_load_jacobian(y[0], y[1], y[2], y[3], cur[0], cur[1], p, J[:2])
+
+
+@kernel
+def axes(y, up):
     """Frame ``(t, n, b)`` rows (3, 3) of one node (planar: 2 x 2 used), complex-capable."""
     a = np.zeros((3, 3), dtype=y.dtype)
-    if dim == 3:
+    if up is not None:
         t, n, b = k3.frame(y[4], y[5])
         for i in range(3):
             a[0, i], a[1, i], a[2, i] = t[i], n[i], b[i]
@@ -71,43 +91,38 @@ def axes(y, dim):
     return a
 
 
-@njit(cache=True)
-def node_forms(Y, cur, up, p, dim, with_jacobian):
+@kernel
+def node_forms(Y, cur, up, p, with_jacobian):
     """``B = M^-1 K``, ``D = M^-1 F``, ``J = M^-1 dF/dY`` (zeros unless asked) and ``M`` at every node."""
     n, d = Y.shape
     B, J, Ms = np.empty((n, d, d)), np.zeros((n, d, d)), np.empty((n, d, d))
     D = np.empty((n, d))
-    M, K, F, LU = np.empty((d, d)), np.empty((d, d)), np.empty(d), np.empty((d, d))
+    M, K, F, LU, dF = np.empty((d, d)), np.empty((d, d)), np.empty(d), np.empty((d, d)), np.empty((d, d))
     piv = np.empty(d, dtype=np.int64)
     col, sol = np.empty(d), np.empty(d)
-    z, fz = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
     for i in range(n):
-        mass_stiffness(Y[i], p, dim, M, K)
-        load(Y[i], cur[i], up, p, dim, F)
+        mass_stiffness(Y[i], p, up, M, K)
+        load_jacobian(Y[i], cur[i], up, p, F, dF)
         lu_factor(M, LU, piv)
         for q in range(d):
             for r in range(d):
                 col[r] = K[r, q]
+                Ms[i, q, r] = M[q, r]
             lu_solve(LU, piv, col, sol)
             for r in range(d):
                 B[i, r, q] = sol[r]
         lu_solve(LU, piv, F, D[i])
-        Ms[i] = M
         if with_jacobian:
             for q in range(d):
                 for r in range(d):
-                    z[r] = Y[i, r]
-                z[q] += 1j * STEP
-                load(z, cur[i], up, p, dim, fz)
-                for r in range(d):
-                    col[r] = fz[r].imag / STEP
+                    col[r] = dF[r, q]
                 lu_solve(LU, piv, col, sol)
                 for r in range(d):
                     J[i, r, q] = sol[r]
     return B, D, J, Ms
 
 
-@njit(cache=True)
+@kernel
 def split_node(B, c_l, c_t2, parts):
     """``parts[0..3] = B_1+, B_1-, B_2+, B_2-`` of one node (closed form, :mod:`characteristics`).
 
@@ -137,11 +152,11 @@ def split_node(B, c_l, c_t2, parts):
             parts[3, i, j] = 0.5 * (qb - c_t * q)
 
 
-@njit(cache=True)
+@kernel
 def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
     """The ``dim`` physical end conditions (``CableSystem.end_residual``) for one candidate ``x``."""
     kind = int(par[0])
-    a = axes(x, dim)
+    a = axes(x, up)
     if kind == k2.VELOCITY:
         for i in range(dim):
             acc = x[1 + i]
@@ -149,7 +164,10 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
                 acc -= par[1 + c] * a[i, c]
             out[i] = acc
         return
-    ao = axes(old.astype(np.complex128), dim)
+    zold = np.empty(old.shape[0], dtype=np.complex128)
+    for q in range(old.shape[0]):
+        zold[q] = old[q]
+    ao = axes(zold, up)
     V = np.zeros(3, dtype=np.complex128)
     Vo = np.zeros(3, dtype=np.complex128)
     for i in range(dim):
@@ -160,8 +178,8 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
     if kind == k2.FREE:
         d = 2 * dim
         f, fo = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
-        load(x, cur, up, p, dim, f)
-        load(old.astype(np.complex128), cur, up, p, dim, fo)
+        load(x, cur, up, p, f)
+        load(zold, cur, up, p, fo)
         mn = p[k2.M] + p[k2.MA]
         for c in range(dim):
             balance[c] = mn * (V[c] - Vo[c]) / dt
@@ -180,8 +198,9 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
     speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
     speedo = np.sqrt(relo[0] * relo[0] + relo[1] * relo[1] + relo[2] * relo[2])
     for c in range(dim):
-        g = -side * x[0] * a[0, c] + par[5] * up[c] + par[6] * speed * rel[c] + par[7 + c]
-        go = -side * old[0] * ao[0, c] + par[5] * up[c] + par[6] * speedo * relo[c] + par[7 + c]
+        lift = par[5] * (up[c] if up is not None else (1.0 if c == 1 else 0.0))
+        g = -side * x[0] * a[0, c] + lift + par[6] * speed * rel[c] + par[7 + c]
+        go = -side * old[0] * ao[0, c] + lift + par[6] * speedo * relo[c] + par[7 + c]
         balance[c] = par[4] * (V[c] - Vo[c]) / dt - gamma * g - (1.0 - gamma) * go
     for i in range(dim):
         acc = 0.0 * x[0]
@@ -190,16 +209,25 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
         out[i] = acc
 
 
-@njit(cache=True)
+@kernel
 def _end_residual(x, old, nbr, par, side, dt, cur, up, p, dim, ds, rows, B, Minv, M, K, free, out):
+    """Physical conditions, outgoing compatibility rows (and, at a free end, the kinematic
+    relations of its transverse components) for one complex candidate ``x`` (d,)."""
     d = 2 * dim
     phys = np.empty(dim, dtype=np.complex128)
     physical(x, old, par, side, dt, 1.0, cur, up, p, dim, phys)
     F = np.empty(d, dtype=np.complex128)
-    load(x, cur, up, p, dim, F)
-    grad = side * (x - nbr) / ds
-    res = (x - old) / dt + B.astype(np.complex128) @ grad - Minv.astype(np.complex128) @ F
-    out[:dim] = phys
+    load(x, cur, up, p, F)
+    grad, res = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
+    for q in range(d):
+        grad[q] = side * (x[q] - nbr[q]) / ds
+    for a in range(d):
+        acc = (x[a] - old[a]) / dt
+        for b in range(d):
+            acc += B[a, b] * grad[b] - Minv[a, b] * F[b]
+        res[a] = acc
+    for i in range(dim):
+        out[i] = phys[i]
     m = rows.shape[0]
     for r in range(m):
         acc = 0.0 * x[0]
@@ -207,45 +235,90 @@ def _end_residual(x, old, nbr, par, side, dt, cur, up, p, dim, ds, rows, B, Minv
             acc += rows[r, q] * res[q]
         out[dim + r] = acc
     if free:
-        kin = M.astype(np.complex128) @ (x - old) / dt + K.astype(np.complex128) @ grad - F
         for r in range(dim - 1):
-            out[dim + m + r] = kin[dim + 1 + r]
+            a = dim + 1 + r
+            acc = -F[a]
+            for b in range(d):
+                acc += M[a, b] * (x[b] - old[b]) / dt + K[a, b] * grad[b]
+            out[dim + m + r] = acc
 
 
-@njit(cache=True)
-def end_solve(Y, e, side, nbr, par, dt, cur, up, p, dim, ds):
-    """One end node from its physical conditions and outgoing characteristics (:func:`characteristics.end_state`).
+@kernel
+def row_basis(A, count, rows):
+    """An orthonormal basis of the row space of ``A`` (d, d) of rank ``count`` into ``rows``
+    (count, d): Gram–Schmidt with pivoting on the largest remaining row (twice, for round-off)."""
+    d = A.shape[0]
+    W = A.copy()
+    for k in range(count):
+        best, norm = 0, -1.0
+        for i in range(d):
+            s = 0.0
+            for j in range(d):
+                s += W[i, j] * W[i, j]
+            if s > norm:
+                best, norm = i, s
+        norm = np.sqrt(norm)
+        for j in range(d):
+            rows[k, j] = W[best, j] / norm
+        for _ in range(2):
+            for i in range(d):
+                dot = 0.0
+                for j in range(d):
+                    dot += W[i, j] * rows[k, j]
+                for j in range(d):
+                    W[i, j] -= dot * rows[k, j]
 
-    Returns ``(x, status)``.
-    """
+
+@kernel
+def end_solve(Y, e, side, nbr, par, dt, cur, up, p, dim, ds, x):
+    """One end node from its physical conditions and outgoing characteristics (:func:`characteristics.end_state`)
+    into ``x`` (d,); returns the status."""
     d = 2 * dim
-    old = Y[e].copy()
-    M, K = np.empty((d, d)), np.empty((d, d))
-    mass_stiffness(old, p, dim, M, K)
-    Minv = np.linalg.inv(M)
-    B = Minv @ K
+    old = np.empty(d)
+    for q in range(d):
+        old[q] = Y[e, q]
+    M, K, Minv, B, LU = np.empty((d, d)), np.empty((d, d)), np.empty((d, d)), np.empty((d, d)), np.empty((d, d))
+    piv = np.empty(d, dtype=np.int64)
+    col, sol = np.empty(d), np.empty(d)
+    mass_stiffness(old, p, up, M, K)
+    lu_factor(M, LU, piv)
+    for q in range(d):
+        for r in range(d):
+            col[r] = 1.0 if r == q else 0.0
+        lu_solve(LU, piv, col, sol)
+        for r in range(d):
+            Minv[r, q] = sol[r]
+    for a in range(d):
+        for b in range(d):
+            acc = 0.0
+            for m in range(d):
+                acc += Minv[a, m] * K[m, b]
+            B[a, b] = acc
     c_l = np.sqrt(p[k2.EA] / p[k2.M])
     c_t2 = max(old[0] / ((p[k2.M] + p[k2.MA]) * (1.0 + old[0] / p[k2.EA])), 0.0)
     parts = np.empty((4, d, d))
     split_node(B, c_l, c_t2, parts)
     free = int(par[0]) == k2.FREE
-    if side > 0:
-        projector = parts[0] / c_l
-        if not free:
-            projector = projector + parts[2] / np.sqrt(c_t2)
-    else:
-        projector = -parts[1] / c_l
-        if not free:
-            projector = projector - parts[3] / np.sqrt(c_t2)
+    projector = np.empty((d, d))
+    for a in range(d):
+        for b in range(d):
+            if side > 0:
+                projector[a, b] = parts[0, a, b] / c_l + (0.0 if free else parts[2, a, b] / np.sqrt(c_t2))
+            else:
+                projector[a, b] = -parts[1, a, b] / c_l - (0.0 if free else parts[3, a, b] / np.sqrt(c_t2))
     count = 1 if free else dim
-    _, _, vt = np.linalg.svd(projector)
-    rows = vt[:count].copy()
-    tension = max(np.max(np.abs(Y[:, 0])), 1.0)
-    speed = max(np.max(np.abs(Y[:, 1:1 + dim])), 1.0)
-    x = old.copy()
+    rows = np.empty((count, d))
+    row_basis(projector, count, rows)
+    tension, speed = 1.0, 1.0
+    for i in range(Y.shape[0]):
+        tension = max(tension, abs(Y[i, 0]))
+        for c in range(1, 1 + dim):
+            speed = max(speed, abs(Y[i, c]))
+    for q in range(d):
+        x[q] = old[q]
     z = np.empty(d, dtype=np.complex128)
     out = np.empty(d, dtype=np.complex128)
-    res, jac = np.empty(d), np.empty((d, d))
+    res, jac, dx = np.empty(d), np.empty((d, d)), np.empty(d)
     for _ in range(END_ITERATIONS):
         for q in range(-1, d):
             for r in range(d):
@@ -253,46 +326,74 @@ def end_solve(Y, e, side, nbr, par, dt, cur, up, p, dim, ds):
             if q >= 0:
                 z[q] += 1j * STEP
             _end_residual(z, old, nbr, par, side, dt, cur, up, p, dim, ds, rows, B, Minv, M, K, free, out)
-            if q < 0:
-                for r in range(d):
-                    res[r] = out[r].real
-            else:
-                for r in range(d):
+            for r in range(d):
+                if q < 0:
+                    res[r] = -out[r].real
+                else:
                     jac[r, q] = out[r].imag / STEP
-        if np.abs(np.linalg.det(jac)) == 0.0:
-            return x, SINGULAR
-        dx = np.linalg.solve(jac, -res)
-        x += dx
-        if not np.all(np.isfinite(x)):
-            return x, NONFINITE
-        worst = np.abs(dx[0]) / tension
-        for r in range(1, d):
-            worst = max(worst, np.abs(dx[r]) / (speed if r <= dim else 1.0))
+        lu_factor(jac, LU, piv)
+        for r in range(d):
+            if LU[r, r] == 0.0:
+                return SINGULAR
+        lu_solve(LU, piv, res, dx)
+        worst = 0.0
+        for r in range(d):
+            x[r] += dx[r]
+            if not np.isfinite(x[r]):
+                return NONFINITE
+            worst = max(worst, abs(dx[r]) / (tension if r == 0 else (speed if r <= dim else 1.0)))
         if worst < END_TOLERANCE:
-            return x, OK
-    return x, DIVERGED
+            return OK
+    return DIVERGED
 
 
-@njit(cache=True)
 def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, slack, delta):
-    """One factorized step (two or four sweeps, states or increments); returns ``(X, status, node)``."""
-    n, d = Y.shape
-    B, D, J, _Ms = node_forms(Y, cur, up, p, dim, implicit)
+    """One factorized step (two or four sweeps, states or increments); returns ``(X, status, node)``.
+
+    ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
+    planar branches only.
+    """
+    X = np.empty_like(Y)
+    status, node = _factorized_step(Y, cur, up if dim == 3 else None, p, dim, ds, dt, four, implicit, par0, par1,
+                                    slack, delta, X)
+    return X, status, node
+
+
+@kernel
+def _split_all(Y, B, p, slack, parts):
+    """The split of every node into ``parts`` (n, 4, d, d); returns the first node in compression
+    beyond ``slack`` (or -1)."""
     c_l = np.sqrt(p[k2.EA] / p[k2.M])
-    parts = np.empty((n, 4, d, d))
-    for i in range(n):
+    for i in range(Y.shape[0]):
         c_t2 = Y[i, 0] / ((p[k2.M] + p[k2.MA]) * (1.0 + Y[i, 0] / p[k2.EA]))
         if c_t2 < 0.0:
             if c_t2 > -slack:
                 c_t2 = 0.0
             else:
-                return Y.copy(), COMPRESSION, i
+                return i
         split_node(B[i], c_l, c_t2, parts[i])
+    return -1
+
+
+@kernel
+def _factorized_step(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, slack, delta, X):
+    """:func:`factorized_step_compiled` into ``X`` (n, d); returns ``(status, node)``."""
+    n, d = Y.shape
+    B, D, J, _Ms = node_forms(Y, cur, up, p, implicit)
+    parts = np.empty((n, 4, d, d))
+    bad = _split_all(Y, B, p, slack, parts)
+    if bad >= 0:
+        for i in range(n):
+            for a in range(d):
+                X[i, a] = Y[i, a]
+        return COMPRESSION, bad
     sigma = dt / ds
-    eye = np.eye(d)
-    offset = Y.copy() if delta else np.zeros((n, d))
-    X = Y - offset
-    residual = np.zeros((n, d))
+    offset, residual = np.zeros((n, d)), np.zeros((n, d))
+    for i in range(n):
+        for a in range(d):
+            if delta:
+                offset[i, a] = Y[i, a]
+            X[i, a] = Y[i, a] - offset[i, a]
     if delta:
         for i in range(1, n - 1):
             for a in range(d):
@@ -304,6 +405,7 @@ def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, p
     count = 4 if four else 2
     A, C = np.empty((n, d, d)), np.empty((n, d, d))
     r = np.empty((n, d))
+    end, nbr = np.empty(d), np.empty(d)
     for index in range(count):
         forward = index % 2 == 0
         sign = 1.0 if forward else -1.0
@@ -314,7 +416,7 @@ def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, p
                 for b in range(d):
                     P = parts[i, first, a, b] + (parts[i, second, a, b] if second >= 0 else 0.0)
                     C[i, a, b] = sign * sigma * P
-                    A[i, a, b] = eye[a, b] + sign * sigma * P
+                    A[i, a, b] = (1.0 if a == b else 0.0) + sign * sigma * P
                 if index == 0:
                     r[i, a] = -dt * residual[i, a] if delta else r[i, a] + dt * D[i, a]
                     if implicit:
@@ -322,30 +424,35 @@ def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, p
                             A[i, a, b] -= dt * J[i, a, b]
                             if not delta:
                                 r[i, a] -= dt * J[i, a, b] * Y[i, b]
-        if forward:
-            X[0], status = end_solve(Y, 0, -1.0, X[1] + offset[1], par0, dt, cur[0], up, p, dim, ds)
-            X[0] -= offset[0]
-            node = 0
-        else:
-            X[n - 1], status = end_solve(Y, n - 1, 1.0, X[n - 2] + offset[n - 2], par1, dt, cur[n - 1], up, p,
-                                         dim, ds)
-            X[n - 1] -= offset[n - 1]
-            node = n - 1
+        e, e_nbr = (0, 1) if forward else (n - 1, n - 2)
+        for a in range(d):
+            nbr[a] = X[e_nbr, a] + offset[e_nbr, a]
+        status = end_solve(Y, e, -sign, nbr, par0 if forward else par1, dt, cur[e], up, p, dim, ds, end)
+        for a in range(d):
+            X[e, a] = end[a] - offset[e, a]
         if status != OK:
-            return X + offset, status, node
-        X = sweep(A, C, r, X, forward)
-    X = X + offset
-    X[n - 1], status = end_solve(Y, n - 1, 1.0, X[n - 2], par1, dt, cur[n - 1], up, p, dim, ds)
-    if status != OK:
-        return X, status, n - 1
-    X[0], status = end_solve(Y, 0, -1.0, X[1], par0, dt, cur[0], up, p, dim, ds)
-    if status != OK:
-        return X, status, 0
+            _add(X, offset)
+            return status, e
+        sweep_into(A, C, r, X, forward)
+    _add(X, offset)
+    for e, e_nbr, par in ((n - 1, n - 2, par1), (0, 1, par0)):
+        status = end_solve(Y, e, 1.0 if e > 0 else -1.0, X[e_nbr], par, dt, cur[e], up, p, dim, ds, end)
+        for a in range(d):
+            X[e, a] = end[a]
+        if status != OK:
+            return status, e
     for i in range(n):
         for q in range(d):
             if not np.isfinite(X[i, q]):
-                return X, NONFINITE, i
-    return X, OK, 0
+                return NONFINITE, i
+    return OK, 0
+
+
+@kernel
+def _add(X, offset):
+    for i in range(X.shape[0]):
+        for a in range(X.shape[1]):
+            X[i, a] += offset[i, a]
 
 
 def end_parameters(end) -> np.ndarray:

@@ -12,10 +12,10 @@ so it is compiled (:func:`sweep`), and :func:`sweep_numpy` is its plain twin for
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from kanat.jit import kernel
 
 
-@njit(cache=True)
+@kernel
 def sweep(A, C, r, X0, forward):
     """Solve one sweep (module docstring) over the interior nodes.
 
@@ -33,8 +33,15 @@ def sweep(A, C, r, X0, forward):
     -------
     ndarray, shape (n, d)
     """
-    n, d = r.shape
     X = X0.copy()
+    sweep_into(A, C, r, X, forward)
+    return X
+
+
+@kernel
+def sweep_into(A, C, r, X, forward):
+    """:func:`sweep` in place: ``X`` holds the inflow value on entry and the solution on exit."""
+    n, d = r.shape
     rhs = np.empty(d)
     if forward:
         start, stop, step = 1, n - 1, 1
@@ -43,22 +50,21 @@ def sweep(A, C, r, X0, forward):
     work = np.empty((d, d))
     piv = np.empty(d, dtype=np.int64)
     for i in range(start, stop, step):
-        prev = X[i - step]
         for a in range(d):
             acc = r[i, a]
             for b in range(d):
-                acc += C[i, a, b] * prev[b]
+                acc += C[i, a, b] * X[i - step, b]
             rhs[a] = acc
         lu_factor(A[i], work, piv)
         lu_solve(work, piv, rhs, X[i])
-    return X
 
 
-@njit(cache=True)
+@kernel
 def lu_factor(A, LU, piv):
     """In-place LU with partial pivoting of a small ``A`` (d, d) into ``LU``, row order ``piv``.
 
-    Hand-written for d <= 6: cheaper than a LAPACK call per node inside a compiled sweep.
+    Hand-written for d <= 6: cheaper than a LAPACK call per node inside a compiled sweep. A zero
+    pivot is left in place (the matrix is singular; callers test ``LU[i, i] == 0``).
     """
     d = A.shape[0]
     for i in range(d):
@@ -74,6 +80,8 @@ def lu_factor(A, LU, piv):
             for j in range(d):
                 LU[col, j], LU[pivot, j] = LU[pivot, j], LU[col, j]
             piv[col], piv[pivot] = piv[pivot], piv[col]
+        if LU[col, col] == 0.0:                # singular: the caller tests the diagonal
+            continue
         inv = 1.0 / LU[col, col]
         for i in range(col + 1, d):
             LU[i, col] *= inv
@@ -83,7 +91,7 @@ def lu_factor(A, LU, piv):
                     LU[i, j] -= f * LU[col, j]
 
 
-@njit(cache=True)
+@kernel
 def lu_solve(LU, piv, b, out):
     """``out = A^-1 b`` from :func:`lu_factor`."""
     d = b.shape[0]

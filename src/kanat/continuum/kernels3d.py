@@ -20,30 +20,33 @@ the same system symbolically and the tests compare. ``M`` is singular where ``co
 
 Box method and generalized-α exactly as the planar kernels (:mod:`kernels2d`), with the
 two-node averages of ``M``, ``K`` and ``F``; rows are ``[start (3); interval 1 (6); ...;
-far end (3)]``, a band of 8 sub- and super-diagonals. Derivatives of ``M(m) r`` and
-``K(k) g`` are written out; the nodal loads are differentiated by complex step.
+far end (3)]``, a band of 8 sub- and super-diagonals. All derivatives are written out —
+``M(m) r`` and ``K(k) g`` (:func:`d_mass_times`, :func:`d_stiffness_times`), the nodal loads
+(:func:`node_load3_jacobian`) and the ends (:func:`end_jacobian3`) — so a run compiles real
+kernels only; the complex-step oracle :func:`jacobian_complex_step3` is compiled by the tests.
+As in :mod:`kernels2d`, scalar loops only (no array expressions, slice copies or ``@``).
 """
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from kanat.jit import inner, kernel
 
 from kanat.continuum.kernels2d import (AK, AM, CN, CT, DIAM, DS, DT, EA, FREE, GAMMA, INERTIA, MA, RHO,
-                                       STEP, VELOCITY, W0, M, compliance, strain)
+                                       STEP, VELOCITY, W0, M, _law_segment, compliance, strain)
 
 LOWER = UPPER = 8
 # End parameters: [kind, Vt1, Vt2, Vp (velocity, chart), mass, net_buoyancy, half_rho_cds, F1, F2, Fp]
 NBPAR3 = 10
 
 
-@njit(cache=True)
+@kernel
 def frame(phi, theta):
     """Chart components of ``(t, n, b)`` (each a 3-tuple) at angles ``phi, theta``."""
     cp, sp, ct, st = np.cos(phi), np.sin(phi), np.cos(theta), np.sin(theta)
     return (cp * ct, cp * st, sp), (-sp * ct, -sp * st, cp), (st, -ct, 0.0 * st)
 
 
-@njit(cache=True)
+@kernel
 def node_load3(T, u, v, w, phi, theta, cur, up, p):
     """``(f_t, f_n, f_b)``: weight in water and drag of the relative flow per unstretched length."""
     t, n, b = frame(phi, theta)
@@ -60,7 +63,60 @@ def node_load3(T, u, v, w, phi, theta, cur, up, p):
     return ft, fn, fb
 
 
-@njit(cache=True)
+@kernel
+def node_load3_jacobian(y, cur, up, p, jac):
+    """:func:`node_load3` (real) at the state ``y`` (6,) and ``jac[i, q] = d f_i / d y_q`` (3, 6).
+
+    Frame derivatives ``t_phi = n``, ``n_phi = -t``, ``b_phi = 0``, ``t_theta = -cos(phi) b``,
+    ``n_theta = sin(phi) b``, ``b_theta = cos(phi) t - sin(phi) n`` (module docstring);
+    ``d(x|x|)/dx = 2|x|``; the normal drag ``c |w| w`` of ``w = (v_r, w_r)`` has the
+    derivative ``c (|w| I + w w^T / |w|)``; ``d sqrt(1 + e)/dT = e'(T) / (2 sqrt(1 + e))``.
+    """
+    T, phi, theta = y[0], y[4], y[5]
+    cp, sp, ct, st = np.cos(phi), np.sin(phi), np.cos(theta), np.sin(theta)
+    t0, t1, t2 = cp * ct, cp * st, sp
+    n0, n1, n2 = -sp * ct, -sp * st, cp
+    b0, b1 = st, -ct
+    ct_, cn_, cb_ = cur[0] * t0 + cur[1] * t1 + cur[2] * t2, cur[0] * n0 + cur[1] * n1 + cur[2] * n2, \
+        cur[0] * b0 + cur[1] * b1
+    ut, un, ub = up[0] * t0 + up[1] * t1 + up[2] * t2, up[0] * n0 + up[1] * n1 + up[2] * n2, up[0] * b0 + up[1] * b1
+    knot, e0, slope = _law_segment(T, p)
+    root = np.sqrt(1.0 + e0 + slope * (T - knot))
+    droot = 0.5 * slope / root
+    ur, vr, wr = y[1] - ct_, y[2] - cn_, y[3] - cb_
+    g = -p[W0]
+    a = 0.5 * p[RHO] * np.pi * p[DIAM] * p[CT]
+    c = 0.5 * p[RHO] * p[DIAM] * p[CN]
+    q = np.sqrt(vr * vr + wr * wr)
+    j00, j01, j11 = 0.0, 0.0, 0.0                  # d(q w)/dw, symmetric 2 x 2
+    if q > 0.0:
+        j00, j01, j11 = q + vr * vr / q, vr * wr / q, q + wr * wr / q
+    # d(ur, vr, wr)/d(phi) and /d(theta); d(ut, un, ub) likewise
+    dur_p, dvr_p, dwr_p = -cn_, ct_, 0.0
+    dur_t, dvr_t, dwr_t = cp * cb_, -sp * cb_, -(cp * ct_ - sp * cn_)
+    dut_p, dun_p, dub_p = un, -ut, 0.0
+    dut_t, dun_t, dub_t = -cp * ub, sp * ub, cp * ut - sp * un
+    for i in range(3):
+        for k in range(6):
+            jac[i, k] = 0.0
+    tangential = a * ur * abs(ur)
+    jac[0, 0] = -tangential * droot
+    jac[0, 1] = -2.0 * a * abs(ur) * root
+    jac[0, 4] = g * dut_p - 2.0 * a * abs(ur) * root * dur_p
+    jac[0, 5] = g * dut_t - 2.0 * a * abs(ur) * root * dur_t
+    jac[1, 0] = -c * q * vr * droot
+    jac[2, 0] = -c * q * wr * droot
+    jac[1, 2], jac[1, 3] = -c * root * j00, -c * root * j01
+    jac[2, 2], jac[2, 3] = -c * root * j01, -c * root * j11
+    jac[1, 4] = g * dun_p - c * root * (j00 * dvr_p + j01 * dwr_p)
+    jac[1, 5] = g * dun_t - c * root * (j00 * dvr_t + j01 * dwr_t)
+    jac[2, 4] = g * dub_p - c * root * (j01 * dvr_p + j11 * dwr_p)
+    jac[2, 5] = g * dub_t - c * root * (j01 * dvr_t + j11 * dwr_t)
+    normal = c * q * root
+    return g * ut - tangential * root, g * un - normal * vr, g * ub - normal * wr
+
+
+@kernel
 def mass_times(y, r, p, out):
     """``out = M(y) r`` (rows of the module docstring)."""
     m, mn = p[M], p[M] + p[MA]
@@ -74,7 +130,7 @@ def mass_times(y, r, p, out):
     out[5] = -stretch * cp * r[5]
 
 
-@njit(cache=True)
+@kernel
 def stiffness_times(y, g, out):
     """``out = K(y) g``."""
     cp, sp = np.cos(y[4]), np.sin(y[4])
@@ -86,22 +142,23 @@ def stiffness_times(y, g, out):
     out[5] = -g[3] + (y[1] * cp - y[2] * sp) * g[5]
 
 
-@njit(cache=True)
+@kernel
 def mass_matrix(y, p, out):
     """``out = M(y)`` (6, 6), the rows of :func:`mass_times` written out (one law lookup)."""
     m, mn = p[M], p[M] + p[MA]
     cp, sp = np.cos(y[4]), np.sin(y[4])
-    stretch = 1.0 + strain(y[0], p)
+    knot, e0, flex = _law_segment(y[0], p)
+    stretch = 1.0 + e0 + flex * (y[0] - knot)
     out[:, :] = 0.0
     out[0, 1], out[0, 4], out[0, 5] = m, -m * y[2], m * y[3] * cp
     out[1, 2], out[1, 4], out[1, 5] = mn, mn * y[1], -mn * y[3] * sp
     out[2, 3], out[2, 5] = mn, mn * (-y[1] * cp + y[2] * sp)
-    out[3, 0] = compliance(y[0], p)
+    out[3, 0] = flex
     out[4, 4] = stretch
     out[5, 5] = -stretch * cp
 
 
-@njit(cache=True)
+@kernel
 def stiffness_matrix(y, out):
     """``out = K(y)`` (6, 6), the rows of :func:`stiffness_times` written out."""
     cp, sp = np.cos(y[4]), np.sin(y[4])
@@ -114,12 +171,13 @@ def stiffness_matrix(y, out):
     out[5, 3], out[5, 5] = -1.0, y[1] * cp - y[2] * sp
 
 
-@njit(cache=True)
+@kernel
 def d_mass_times(y, r, p, out):
     """``out[i, q] = d(M(y) r)_i / d y_q`` for fixed ``r``."""
     m, mn = p[M], p[M] + p[MA]
     cp, sp = np.cos(y[4]), np.sin(y[4])
-    flex, stretch = compliance(y[0], p), 1.0 + strain(y[0], p)
+    knot, e0, flex = _law_segment(y[0], p)
+    stretch = 1.0 + e0 + flex * (y[0] - knot)
     out[:, :] = 0.0
     out[0, 2], out[0, 3], out[0, 4] = -m * r[4], m * cp * r[5], -m * y[3] * sp * r[5]
     out[1, 1], out[1, 3], out[1, 4] = mn * r[4], -mn * sp * r[5], -mn * y[3] * cp * r[5]
@@ -128,7 +186,7 @@ def d_mass_times(y, r, p, out):
     out[5, 0], out[5, 4] = -cp * r[5] * flex, stretch * sp * r[5]
 
 
-@njit(cache=True)
+@kernel
 def d_stiffness_times(y, g, out):
     """``out[i, q] = d(K(y) g)_i / d y_q`` for fixed ``g``."""
     cp, sp = np.cos(y[4]), np.sin(y[4])
@@ -140,27 +198,23 @@ def d_stiffness_times(y, g, out):
     out[5, 1], out[5, 2], out[5, 4] = cp * g[5], -sp * g[5], (-y[1] * sp - y[2] * cp) * g[5]
 
 
-@njit(cache=True)
+@inner
 def _node_loads(wk, cur, up, p):
-    """Loads (n, 3) at the ``[ak]`` states and their derivatives (n, 3, 6) by complex step."""
+    """Loads (n, 3) at the ``[ak]`` states and their derivatives (n, 3, 6) (:func:`node_load3_jacobian`)."""
     n_nodes = wk.shape[0]
     load = np.empty((n_nodes, 3))
     dload = np.empty((n_nodes, 3, 6))
-    z = np.empty(6, dtype=np.complex128)
+    jac = np.empty((3, 6))
     for j in range(n_nodes):
-        f = node_load3(wk[j, 0], wk[j, 1], wk[j, 2], wk[j, 3], wk[j, 4], wk[j, 5], cur[j], up, p)
-        load[j, 0], load[j, 1], load[j, 2] = f[0], f[1], f[2]
-        for i in range(6):
+        f0, f1, f2 = node_load3_jacobian(wk[j], cur[j], up, p, jac)
+        load[j, 0], load[j, 1], load[j, 2] = f0, f1, f2
+        for i in range(3):
             for q in range(6):
-                z[q] = wk[j, q]
-            z[i] += 1j * STEP
-            g = node_load3(z[0], z[1], z[2], z[3], z[4], z[5], cur[j], up, p)
-            for row in range(3):
-                dload[j, row, i] = g[row].imag / STEP
+                dload[j, i, q] = jac[i, q]
     return load, dload
 
 
-@njit(cache=True)
+@kernel
 def assemble3(x, y, d, cur, up, p, b0, b1, res, band):
     """Residual (6(N+1),) and banded Jacobian (17, 6(N+1)) of one step at unknowns ``x`` (N+1, 6).
 
@@ -170,45 +224,61 @@ def assemble3(x, y, d, cur, up, p, b0, b1, res, band):
     n_nodes = x.shape[0]
     band[:, :] = 0.0
     am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
-    wm = (1.0 - am) * x + am * y
-    wk = (1.0 - ak) * x + ak * y
-    wr = (1.0 - am) * ((x - y) / (gamma * dt) - (1.0 - gamma) / gamma * d) + am * d
+    wm, wk, wr = np.empty((n_nodes, 6)), np.empty((n_nodes, 6)), np.empty((n_nodes, 6))
+    for j in range(n_nodes):
+        for i in range(6):
+            wm[j, i] = (1.0 - am) * x[j, i] + am * y[j, i]
+            wk[j, i] = (1.0 - ak) * x[j, i] + ak * y[j, i]
+            wr[j, i] = (1.0 - am) * ((x[j, i] - y[j, i]) / (gamma * dt) - (1.0 - gamma) / gamma * d[j, i]) \
+                + am * d[j, i]
     load, dload = _node_loads(wk, cur, up, p)
+    scratch, vectors = np.empty((6, 6, 6)), np.empty((2, 6))
+    for j in range(1, n_nodes):
+        _interval_rows3(j, wm, wk, wr, load, dload, p, scratch, vectors, res, band)
+    _end_rows3(x, y, d, cur, up, p, b0, b1, res, band)
+
+
+@inner
+def _interval_rows3(j, wm, wk, wr, load, dload, p, scratch, vectors, res, band):
+    """The six rows of interval ``j`` and their derivatives by the states of its two nodes
+    (``scratch`` (6, 6, 6) and ``vectors`` (2, 6) are work space)."""
+    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
     cm, ck, cr = 1.0 - am, 1.0 - ak, (1.0 - am) / (gamma * dt)
     c, ds = p[INERTIA], p[DS]
-    ml, mr, kl, kr = np.empty((6, 6)), np.empty((6, 6)), np.empty((6, 6)), np.empty((6, 6))
-    dm, dk = np.empty((6, 6)), np.empty((6, 6))
-    rate, grad, out = np.empty(6), np.empty(6), np.empty(6)
-    for j in range(1, n_nodes):
-        l, r = j - 1, j
-        rate[:] = 0.5 * (wr[l] + wr[r])
-        grad[:] = (wk[r] - wk[l]) / ds
-        mass_matrix(wm[l], p, ml)
-        mass_matrix(wm[r], p, mr)
-        stiffness_matrix(wk[l], kl)
-        stiffness_matrix(wk[r], kr)
-        row = 3 + 6 * (j - 1)
-        out[:] = c * 0.5 * (ml + mr) @ rate + 0.5 * (kl + kr) @ grad
-        out[0:3] -= 0.5 * (load[l] + load[r])
-        res[row:row + 6] = out
-        for side in range(2):
-            node = l if side == 0 else r
-            sign = -1.0 if side == 0 else 1.0
-            d_mass_times(wm[node], rate, p, dm)
-            d_stiffness_times(wk[node], grad, dk)
-            for q in range(6):
-                col = 6 * node + q
-                for i in range(6):
-                    value = (c * (0.5 * dm[i, q] * cm + 0.25 * (ml[i, q] + mr[i, q]) * cr)
-                             + 0.5 * dk[i, q] * ck + 0.5 * (kl[i, q] + kr[i, q]) * sign / ds * ck)
-                    if i < 3:
-                        value -= 0.5 * dload[node, i, q] * ck
-                    band[UPPER + row + i - col, col] = value
-    _end_rows3(x[0], y[0], d[0], cur[0], up, p, b0, -1.0, 0, 0, res, band)
-    _end_rows3(x[-1], y[-1], d[-1], cur[-1], up, p, b1, 1.0, 6 * n_nodes - 3, 6 * (n_nodes - 1), res, band)
+    l, r = j - 1, j
+    ml, mr, kl, kr, dm, dk = scratch[0], scratch[1], scratch[2], scratch[3], scratch[4], scratch[5]
+    rate, grad = vectors[0], vectors[1]
+    for i in range(6):
+        rate[i] = 0.5 * (wr[l, i] + wr[r, i])
+        grad[i] = (wk[r, i] - wk[l, i]) / ds
+    mass_matrix(wm[l], p, ml)
+    mass_matrix(wm[r], p, mr)
+    stiffness_matrix(wk[l], kl)
+    stiffness_matrix(wk[r], kr)
+    row = 3 + 6 * (j - 1)
+    for i in range(6):
+        acc = 0.0
+        for q in range(6):
+            acc += c * 0.5 * (ml[i, q] + mr[i, q]) * rate[q] + 0.5 * (kl[i, q] + kr[i, q]) * grad[q]
+        if i < 3:
+            acc -= 0.5 * (load[l, i] + load[r, i])
+        res[row + i] = acc
+    for side in range(2):
+        node = l if side == 0 else r
+        sign = -1.0 if side == 0 else 1.0
+        d_mass_times(wm[node], rate, p, dm)
+        d_stiffness_times(wk[node], grad, dk)
+        for q in range(6):
+            col = 6 * node + q
+            for i in range(6):
+                value = (c * (0.5 * dm[i, q] * cm + 0.25 * (ml[i, q] + mr[i, q]) * cr)
+                         + 0.5 * dk[i, q] * ck + 0.5 * (kl[i, q] + kr[i, q]) * sign / ds * ck)
+                if i < 3:
+                    value -= 0.5 * dload[node, i, q] * ck
+                band[UPPER + row + i - col, col] = value
 
 
-@njit(cache=True)
+@kernel
 def end_residual3(x, y, d, cur, up, p, b, side, out):
     """The three conditions of one end (SPEC §2.3), as :func:`kernels2d.end_residual` in 3-D."""
     kind = int(b[0].real)
@@ -245,8 +315,124 @@ def end_residual3(x, y, d, cur, up, p, b, side, out):
     out[2] = mass * ab - (drag * rel_b + lift[0] * bb[0] + lift[1] * bb[1] + lift[2] * bb[2])
 
 
-@njit(cache=True)
-def _end_rows3(x, y, d, cur, up, p, b, side, row, col0, res, band):
+@kernel
+def end_jacobian3(x, y, d, cur, up, p, b, side, out, jac):
+    """:func:`end_residual3` (real) into ``out`` (3,) and its derivatives by ``x`` into ``jac`` (3, 6).
+
+    The same equations written out (the tests compare): weighted states as in
+    :func:`kernels2d.end_jacobian`, frame derivatives as in :func:`node_load3_jacobian`, the
+    body's drag ``b6 |w| w`` with derivative ``b6 (|w| I + w w^T / |w|)``.
+    """
+    for i in range(3):
+        for q in range(6):
+            jac[i, q] = 0.0
+    kind = int(b[0])
+    if kind == VELOCITY:
+        cp, sp, ct, st = np.cos(x[4]), np.sin(x[4]), np.cos(x[5]), np.sin(x[5])
+        vt = b[1] * cp * ct + b[2] * cp * st + b[3] * sp
+        vn = -b[1] * sp * ct - b[2] * sp * st + b[3] * cp
+        vb = b[1] * st - b[2] * ct
+        out[0], out[1], out[2] = x[1] - vt, x[2] - vn, x[3] - vb
+        jac[0, 1], jac[1, 2], jac[2, 3] = 1.0, 1.0, 1.0
+        jac[0, 4], jac[0, 5] = -vn, cp * vb
+        jac[1, 4], jac[1, 5] = vt, -sp * vb
+        jac[2, 5] = -(cp * vt - sp * vn)
+        return
+    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
+    cm, ck, cr = 1.0 - am, 1.0 - ak, (1.0 - am) / (gamma * dt)
+    m, k, r = np.empty(6), np.empty(6), np.empty(6)
+    for i in range(6):
+        m[i] = cm * x[i] + am * y[i]
+        k[i] = ck * x[i] + ak * y[i]
+        r[i] = cm * ((x[i] - y[i]) / (gamma * dt) - (1.0 - gamma) / gamma * d[i]) + am * d[i]
+    cp, sp = np.cos(m[4]), np.sin(m[4])
+    acc = np.empty(3)                                   # acceleration in (t, n, b)
+    acc[0] = r[1] - m[2] * r[4] + m[3] * cp * r[5]
+    acc[1] = r[2] + m[1] * r[4] - m[3] * sp * r[5]
+    acc[2] = r[3] + (-m[1] * cp + m[2] * sp) * r[5]
+    dacc_m, dacc_r = np.zeros((3, 6)), np.zeros((3, 6))
+    dacc_r[0, 1], dacc_r[0, 4], dacc_r[0, 5] = 1.0, -m[2], m[3] * cp
+    dacc_m[0, 2], dacc_m[0, 3], dacc_m[0, 4] = -r[4], cp * r[5], -m[3] * sp * r[5]
+    dacc_r[1, 2], dacc_r[1, 4], dacc_r[1, 5] = 1.0, m[1], -m[3] * sp
+    dacc_m[1, 1], dacc_m[1, 3], dacc_m[1, 4] = r[4], -sp * r[5], -m[3] * cp * r[5]
+    dacc_r[2, 3], dacc_r[2, 5] = 1.0, -m[1] * cp + m[2] * sp
+    dacc_m[2, 1], dacc_m[2, 2], dacc_m[2, 4] = -cp * r[5], sp * r[5], (m[1] * sp + m[2] * cp) * r[5]
+    force, dforce = np.empty(3), np.zeros((3, 6))     # external force on the node in (t, n, b), d/dk
+    if kind == FREE:
+        mass = p[INERTIA] * (p[M] + p[MA])
+        f0, f1, f2 = node_load3_jacobian(k, cur, up, p, dforce)
+        force[0], force[1], force[2] = f0, f1, f2
+    else:
+        mass = p[INERTIA] * b[4]
+        _body_force3(k, cur, up, b, side, force, dforce)
+    first = 1 if kind == FREE else 0
+    if kind == FREE:
+        out[0] = x[0] / p[EA]
+        jac[0, 0] = 1.0 / p[EA]
+    for i in range(first, 3):
+        out[i] = mass * acc[i] - force[i]
+        for q in range(6):
+            jac[i, q] = mass * (dacc_m[i, q] * cm + dacc_r[i, q] * cr) - dforce[i, q] * ck
+
+
+@inner
+def _body_force3(k, cur, up, b, side, force, dforce):
+    """Force on an end body in (t, n, b) at the weighted state ``k`` and its derivative by ``k``:
+    the cable's tension ``-side T t``, drag of the relative water, buoyancy and constant force."""
+    cp, sp, ct, st = np.cos(k[4]), np.sin(k[4]), np.cos(k[5]), np.sin(k[5])
+    e = np.empty((3, 3))                                # rows t, n, b in chart coordinates
+    e[0, 0], e[0, 1], e[0, 2] = cp * ct, cp * st, sp
+    e[1, 0], e[1, 1], e[1, 2] = -sp * ct, -sp * st, cp
+    e[2, 0], e[2, 1], e[2, 2] = st, -ct, 0.0
+    rel, lift = np.empty(3), np.empty(3)
+    for i in range(3):
+        rel[i] = cur[0] * e[i, 0] + cur[1] * e[i, 1] + cur[2] * e[i, 2] - k[1 + i]
+        lift[i] = (b[5] * up[0] + b[7]) * e[i, 0] + (b[5] * up[1] + b[8]) * e[i, 1] + (b[5] * up[2] + b[9]) * e[i, 2]
+    speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
+    # d(component along t, n, b)/d(phi), d/d(theta) of a fixed chart vector with components a = (a_t, a_n, a_b)
+    drel = np.zeros((3, 6))
+    for i in range(3):
+        drel[i, 1 + i] = -1.0
+    cw = np.empty(3)
+    for i in range(3):
+        cw[i] = rel[i] + k[1 + i]                      # the current's components
+    drel[0, 4], drel[0, 5] = cw[1], -cp * cw[2]
+    drel[1, 4], drel[1, 5] = -cw[0], sp * cw[2]
+    drel[2, 5] = cp * cw[0] - sp * cw[1]
+    for i in range(3):
+        force[i] = b[6] * speed * rel[i] + lift[i]
+        for q in range(6):
+            acc = 0.0
+            for j in range(3):
+                g = b[6] * ((speed if i == j else 0.0) + (rel[i] * rel[j] / speed if speed > 0.0 else 0.0))
+                acc += g * drel[j, q]
+            dforce[i, q] = acc
+    force[0] -= side * k[0]
+    dforce[0, 0] = -side
+    dforce[0, 4] += lift[1]
+    dforce[0, 5] -= cp * lift[2]
+    dforce[1, 4] -= lift[0]
+    dforce[1, 5] += sp * lift[2]
+    dforce[2, 5] += cp * lift[0] - sp * lift[1]
+
+
+@inner
+def _end_rows3(x, y, d, cur, up, p, b0, b1, res, band):
+    """The three rows of each end and their derivatives (:func:`end_jacobian3`) into ``res``, ``band``."""
+    out, jac = np.empty(3), np.empty((3, 6))
+    last = x.shape[0] - 1
+    for end in range(2):
+        node, side, row = (0, -1.0, 0) if end == 0 else (last, 1.0, 6 * last + 3)
+        end_jacobian3(x[node], y[node], d[node], cur[node], up, p, b0 if end == 0 else b1, side, out, jac)
+        for i in range(3):
+            res[row + i] = out[i]
+            for q in range(6):
+                band[UPPER + row + i - (6 * node + q), 6 * node + q] = jac[i, q]
+
+
+@kernel
+def _end_rows3_complex_step(x, y, d, cur, up, p, b, side, row, col0, res, band):
+    """One end's rows by complex step (the tests' oracle)."""
     out = np.empty(3)
     zout = np.empty(3, dtype=np.complex128)
     z = np.empty(6, dtype=np.complex128)
@@ -260,7 +446,7 @@ def _end_rows3(x, y, d, cur, up, p, b, side, row, col0, res, band):
             band[UPPER + row + i - (col0 + k), col0 + k] = zout[i].imag / STEP
 
 
-@njit(cache=True)
+@kernel
 def interval_residual3(xl, xr, yl, yr, dl, dr, cl, cr, up, p, out):
     """The six rows of one interval, directly from the nodal M, K, F (complex-capable)."""
     am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
@@ -284,7 +470,7 @@ def interval_residual3(xl, xr, yl, yr, dl, dr, cl, cr, up, p, out):
         out[i] -= 0.5 * (fl[i] + fr[i])
 
 
-@njit(cache=True)
+@kernel
 def jacobian_complex_step3(x, y, d, cur, up, p, b0, b1, res, band):
     """The residual and Jacobian of :func:`assemble3`, every entry by complex step (test oracle)."""
     n_nodes = x.shape[0]
@@ -309,5 +495,6 @@ def jacobian_complex_step3(x, y, d, cur, up, p, b0, b1, res, band):
                 col = 6 * (j - 1 + side) + k
                 for i in range(6):
                     band[UPPER + row + i - col, col] = zout[i].imag / STEP
-    _end_rows3(x[0], y[0], d[0], cur[0], up, p, b0, -1.0, 0, 0, res, band)
-    _end_rows3(x[-1], y[-1], d[-1], cur[-1], up, p, b1, 1.0, 6 * n_nodes - 3, 6 * (n_nodes - 1), res, band)
+    _end_rows3_complex_step(x[0], y[0], d[0], cur[0], up, p, b0, -1.0, 0, 0, res, band)
+    _end_rows3_complex_step(x[-1], y[-1], d[-1], cur[-1], up, p, b1, 1.0, 6 * n_nodes - 3, 6 * (n_nodes - 1),
+                            res, band)

@@ -8,16 +8,26 @@ for :func:`scipy.linalg.solve_banded`.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from kanat.jit import kernel
 
-from kanat.continuum.factorized_compiled import load, lu_factor, lu_solve, mass_stiffness, physical
+from kanat.continuum.factorized_compiled import load_jacobian, lu_factor, lu_solve, mass_stiffness, physical
 
 STEP = 1e-30
 
 
-@njit(cache=True)
 def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, par0, par1):
-    """Band (lower + upper + 1, n nb), right-hand side (n nb,) and bandwidths of one block."""
+    """Band (lower + upper + 1, n nb), right-hand side (n nb,) and bandwidths of one block.
+
+    ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
+    planar branches only (:mod:`factorized_compiled`).
+    """
+    return _assemble_block(Yn, latest, Fn, cur, up if dim == 3 else None, p, dim, ds, dt, gamma, own, comps,
+                           par0, par1)
+
+
+@kernel
+def _assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, par0, par1):
+    """:func:`assemble_block` compiled; nodal load derivatives written out, the ends' by complex step."""
     n, d = Yn.shape
     nb, h = own.shape[0], comps.shape[0]
     lower, upper = h + nb - 1, 2 * nb - 1 - h
@@ -30,22 +40,17 @@ def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, p
     Ms, Ks = np.empty((n, d, d)), np.empty((n, d, d))
     Fg = np.empty((n, d))
     J = np.empty((n, d, nb))
-    ya, f = np.empty(d), np.empty(d)
-    z, fz = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
+    ya, f, df = np.empty(d), np.empty(d), np.empty((d, d))
+    z = np.empty(d, dtype=np.complex128)
     for i in range(n):
         for q in range(d):
             ya[q] = gamma * latest[i, q] + (1.0 - gamma) * Yn[i, q]
-        mass_stiffness(ya, p, dim, Ms[i], Ks[i])
-        load(latest[i], cur[i], up, p, dim, f)
+        mass_stiffness(ya, p, up, Ms[i], Ks[i])
+        load_jacobian(latest[i], cur[i], up, p, f, df)
         for q in range(d):
             Fg[i, q] = gamma * f[q] + (1.0 - gamma) * Fn[i, q]
-        for c in range(nb):
-            for q in range(d):
-                z[q] = latest[i, q]
-            z[own[c]] += 1j * STEP
-            load(z, cur[i], up, p, dim, fz)
-            for q in range(d):
-                J[i, q, c] = fz[q].imag / STEP
+            for c in range(nb):
+                J[i, q, c] = df[q, own[c]]
     Mbar, LU = np.empty((d, d)), np.empty((d, d))
     piv = np.empty(d, dtype=np.int64)
     col, sol = np.empty(d), np.empty(d)

@@ -4,7 +4,7 @@ The Python path (:class:`kanat.lumped.system.LumpedSystem` ``rhs`` driven step b
 :mod:`kanat.lumped.integrators`) costs some 50-200 us of interpreter and NumPy overhead per
 force evaluation; explicit schemes take thousands of small steps per simulated second, so
 that overhead dominates. Here the whole right-hand side — prescribed nodes, current
-profile, wave kinematics, element forces (:func:`kernels.forces`), body loads, surface
+profile, wave kinematics, element forces (:func:`kernels.element_forces`), body loads, surface
 buoys, the lumped-mass solve — and the per-step tension and snap-event bookkeeping run
 inside numba. The equations are those of :mod:`kanat.lumped.system` (eqs. 1-2) and
 :mod:`kanat.physics.waves` (eqs. 2-5); the Python path is this module's twin, and the
@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from kanat.jit import inner, kernel
 
 from kanat.lumped import kernels
 
@@ -27,7 +27,7 @@ EVENT_BUFFER_MIN = 1024     # closed snap events held before the kernel hands th
 
 
 # --- environment --------------------------------------------------------------------------
-@njit(cache=True, inline="always")
+@inner
 def current_at(z, cz, cu, u, p):
     """Set ``u[p]`` to the current at height ``z`` from a piecewise-linear profile (``cz``
     ascending, ``cu`` (k, 3)); constant beyond the ends (as ``np.interp``)."""
@@ -43,7 +43,7 @@ def current_at(z, cz, cu, u, p):
         u[p, r] = cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0)
 
 
-@njit(cache=True, inline="always")
+@inner
 def sea_add(x, y, z, t, sea, u, a, p):
     """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5)."""
     amp, omega, k, cosd, sind, phase, depth, inv = sea
@@ -67,7 +67,7 @@ def sea_add(x, y, z, t, sea, u, a, p):
         a[p, 2] -= s * ct * aw2
 
 
-@njit(cache=True, inline="always")
+@inner
 def sea_elevation(x, y, t, sea):
     """Surface elevation at ``(x, y)`` (waves eq. 2)."""
     amp, omega, k, cosd, sind, phase = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5]
@@ -77,7 +77,7 @@ def sea_elevation(x, y, t, sea):
     return eta
 
 
-@njit(cache=True)
+@inner
 def water(points, t, cz, cu, sea, u, a):
     """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current + waves."""
     for p in range(points.shape[0]):
@@ -88,7 +88,7 @@ def water(points, t, cz, cu, sea, u, a):
 
 
 # --- vessel ----------------------------------------------------------------------------------
-@njit(cache=True)
+@kernel
 def track_states(times, phases, arm, position, velocity, heading):
     """Tow point kinematics at ``times`` (ascending or not) from the track's phases (rows start,
     duration, x, y, heading, speed, acceleration, yaw rate; :mod:`kanat.vessel.track`): closed
@@ -126,7 +126,7 @@ def track_states(times, phases, arm, position, velocity, heading):
 
 
 # --- right-hand side ------------------------------------------------------------------------
-@njit(cache=True, inline="always")
+@inner
 def place(y, vpos, vvel, nodes, x, v):
     """All nodes' positions and velocities from ``y = (q, q_dot)`` (flat, free nodes) and the
     prescribed motion."""
@@ -146,69 +146,16 @@ def place(y, vpos, vvel, nodes, x, v):
             v[anchor_nodes[k], r] = 0.0
 
 
-PACKED = ((0, 3, 4), (3, 1, 5), (4, 5, 2))   # packed symmetric 3 x 3: xx, yy, zz, xy, xz, yz
+PACKED = kernels.PACKED      # packed symmetric 3 x 3 mass blocks: xx, yy, zz, xy, xz, yz
 
 
-@njit(cache=True)
-def forces_packed(x, v, uw, aw, node_force, node_mass, el, F, M, T):
-    """Nodal forces ``F`` (n, 3), packed symmetric mass blocks ``M`` (n, 6) (:data:`PACKED`) and
-    element tensions ``T`` — the equations of :func:`kernels.forces` (its eqs. 1-8) written for
-    the fused path: scalars only, the mass block stored once per node."""
-    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el
-    for a in range(x.shape[0]):
-        for r in range(3):
-            F[a, r] = node_force[a, r]
-            M[a, r] = node_mass[a]
-            M[a, r + 3] = 0.0
-    for k in range(el_i.shape[0]):
-        i, j = el_i[k], el_j[k]
-        d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
-        length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-        inv = 1.0 / length
-        t0, t1, t2 = d0 * inv, d1 * inv, d2 * inv
-        e = length / L0[k] - 1.0
-        tension = 0.0
-        if e > 0.0:
-            edot = (t0 * (v[j, 0] - v[i, 0]) + t1 * (v[j, 1] - v[i, 1]) + t2 * (v[j, 2] - v[i, 2])) / L0[k]
-            f, _ = kernels.elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
-            tension = max(0.0, f + c[k] * edot)
-        T[k] = tension
-        vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
-        vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
-        vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
-        vts = vr0 * t0 + vr1 * t1 + vr2 * t2
-        vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
-        half = 0.5 * L0[k]
-        s = half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
-        normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
-        axial = s * ct[k] * abs(vts) * vts
-        ats = aw[k, 0] * t0 + aw[k, 1] * t1 + aw[k, 2] * t2
-        fi = half * (disp[k] + ma[k])
-        l0 = normal * vn0 + axial * t0 + fi * (aw[k, 0] - ats * t0)
-        l1 = normal * vn1 + axial * t1 + fi * (aw[k, 1] - ats * t1)
-        l2 = normal * vn2 + axial * t2 + fi * (aw[k, 2] - ats * t2) - w[k] * half
-        F[i, 0] += l0 + tension * t0
-        F[i, 1] += l1 + tension * t1
-        F[i, 2] += l2 + tension * t2
-        F[j, 0] += l0 - tension * t0
-        F[j, 1] += l1 - tension * t1
-        F[j, 2] += l2 - tension * t2
-        mass, added = half * (m[k] + ma[k]), half * ma[k]
-        for node in (i, j):
-            M[node, 0] += mass - added * t0 * t0
-            M[node, 1] += mass - added * t1 * t1
-            M[node, 2] += mass - added * t2 * t2
-            M[node, 3] -= added * t0 * t1
-            M[node, 4] -= added * t0 * t2
-            M[node, 5] -= added * t1 * t2
-
-
-@njit(cache=True, inline="always")
+@inner
 def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
     — system eqs. (1)-(2)."""
     node_force, node_mass = nodes[4], nodes[5]
-    x, v, F, M, T, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[6], work[7], work[8]
+    x, v, F, M, T, strain, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7], \
+        work[8]
     bx, bu, ba = work[9], work[10], work[11]
     rho, g, cz, cu, sea, still = env
     body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height = bodies
@@ -219,7 +166,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
             for r in range(3):
                 mid[k, r] = 0.5 * (x[el_i[k], r] + x[el_j[k], r])
         water(mid, t, cz, cu, sea, uw, aw)
-    forces_packed(x, v, uw, aw, node_force, node_mass, el, F, M, T)
+    kernels.element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain)
     if body_node.shape[0] > 0:
         if not still:
             for b in range(body_node.shape[0]):
@@ -234,7 +181,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
             F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
 
 
-@njit(cache=True, inline="always")
+@inner
 def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
     """``dy/dt`` of ``y = (q, q_dot)`` (flat) with the vessel at sample ``s`` — system eq. (1),
     lumped mass; leaves the element tensions at ``y`` in ``work[4]``."""
@@ -255,8 +202,14 @@ def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
         dy[3 * nf + 3 * k + 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
 
 
+@kernel
+def derivative_at(t, y, s, samples, nodes, el, bodies, env, work, dy):
+    """:func:`derivative` called from Python (the tests'; runs call it from the compiled steps)."""
+    derivative(t, y, s, samples, nodes, el, bodies, env, work, dy)
+
+
 # --- bookkeeping after each step --------------------------------------------------------------
-@njit(cache=True)
+@kernel
 def snap_update(t, T, snap, events, count):
     """One step of :meth:`kanat.lumped.snap.SnapTracker.update` on its arrays; closed events are
     appended to ``events`` (time, element, peak, rate) from row ``count``; returns the new count."""
@@ -282,7 +235,7 @@ def snap_update(t, T, snap, events, count):
     return count
 
 
-@njit(cache=True)
+@kernel
 def tensions_at(y, s, samples, nodes, el, work):
     """Element tensions at ``y`` into ``work[4]`` (vessel at sample ``s``)."""
     x, v, T = work[0], work[1], work[4]
@@ -290,7 +243,7 @@ def tensions_at(y, s, samples, nodes, el, work):
     kernels.tensions(x, v, el[0], el[1], el[2], el[10], el[11], el[12], el[13], el[14], el[15], T)
 
 
-@njit(cache=True)
+@kernel
 def finite(y):
     """Whether every entry of ``y`` is finite."""
     for i in range(y.shape[0]):
@@ -300,7 +253,7 @@ def finite(y):
 
 
 # --- schemes ----------------------------------------------------------------------------------
-@njit(cache=True)
+@kernel
 def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, events):
     """Classical RK4 steps from ``(t0, y)``; vessel samples at ``t0 + h j / 2``. The snap update of
     each new state uses the tensions of the next step's first evaluation (at that very state).
@@ -308,7 +261,7 @@ def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, even
     (steps done, events)."""
     n = y.shape[0]
     k1, k2, k3, k4, tmp = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-    count, T = 0, work[4]
+    count, T = np.int64(0), work[4]            # not a literal 0: see kanat.jit
     for step in range(steps):
         t = t0 + step * h
         derivative(t, y, 2 * step, samples, nodes, el, bodies, env, work, k1)
@@ -333,12 +286,12 @@ def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, even
     return steps, snap_update(t0 + steps * h, T, snap, events, count)
 
 
-@njit(cache=True)
+@kernel
 def abm4_steps(t0, h, steps, y, history, samples, nodes, el, bodies, env, work, snap, events):
     """ABM4 PECE steps (``history`` (4, n): ``f_n .. f_n-3``, updated in place); as :func:`rk4_steps`."""
     n = y.shape[0]
     fp, yp = np.empty(n), np.empty(n)
-    count = 0
+    count = np.int64(0)                       # not a literal 0: see kanat.jit
     for step in range(steps):
         if count + work[4].shape[0] > events.shape[0]:
             return step, count

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
-from numba import njit
+from kanat.jit import inner, kernel
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 from kanat.lumped import fast, kernels
@@ -43,7 +43,7 @@ def band_order(net, free_index) -> tuple[np.ndarray, int]:
     return position, 3 * spread + 2
 
 
-@njit(cache=True)
+@inner
 def band_add_packed(A, bw, p, packed, scale):
     """Add ``scale`` times a packed symmetric block (fast.PACKED order) on the diagonal at node ``p``."""
     for r in range(3):
@@ -52,7 +52,7 @@ def band_add_packed(A, bw, p, packed, scale):
             A[row, 3 * p + q - row + bw] += scale * packed[fast.PACKED[r][q]]
 
 
-@njit(cache=True)
+@inner
 def band_add(A, bw, pi, pj, block, scale):
     """Add ``scale * block`` (3 x 3) at node rows ``pi``, columns ``pj`` of band matrix ``A``."""
     for r in range(3):
@@ -61,7 +61,7 @@ def band_add(A, bw, pi, pj, block, scale):
             A[row, 3 * pj + q - row + bw] += scale * block[r, q]
 
 
-@njit(cache=True)
+@kernel
 def band_solve(A, bw, b):
     """Solve ``A x = b`` in place (``A`` band storage (n, 2 bw + 1), overwritten by its LU
     factors without pivoting; ``b`` by ``x``). Returns False on a zero pivot."""
@@ -86,7 +86,7 @@ def band_solve(A, bw, b):
     return True
 
 
-@njit(cache=True)
+@inner
 def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
     """Tangent ``c_mass M + c_damp (C + D + D_body) + c_stiff K`` in band storage (kernels
     eq. tangent_blocks; body drag ``-dF/dv``), at the state in ``work``."""
@@ -122,7 +122,7 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
         band_add(A, bw, position[node], position[node], block, c_damp)
 
 
-@njit(cache=True)
+@inner
 def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_pos, vm_vel, vm_head,
                 position, bw, nodes, el, bodies, env, work, blocks, A, out_x, out_v, out_a):
     """One generalized-α step (implicit.py eqs. 1-3); returns the Newton iterations used, or
@@ -133,7 +133,9 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
     F, M = work[2], work[3]
     a1 = out_a
-    a1[:, :] = a0
+    for f in range(nf):
+        for r in range(3):
+            a1[f, r] = a0[f, r]
     tm = t + (1.0 - af) * h
     for iteration in range(1, max_iterations + 1):
         for f in range(nf):
@@ -151,7 +153,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
                 for q in range(3):
                     s += M[node, fast.PACKED[r][q]] * ((1.0 - am) * a1[f, q] + am * a0[f, q])
                 rhs[3 * p + r] = -s
-        if not np.all(np.isfinite(rhs)):
+        if not fast.finite(rhs):
             return -iteration
         assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
                  (1.0 - af) * beta * h * h)
@@ -173,7 +175,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     return -max_iterations
 
 
-@njit(cache=True)
+@kernel
 def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
           position, bw, nodes, el, bodies, env, work, blocks, A, snap, events):
     """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
@@ -182,7 +184,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
     y = np.empty(6 * nf)
-    iterations, n_events = 0, 0
+    iterations, n_events = 0, np.int64(0)      # not a literal 0: see kanat.jit
     for step in range(count):
         if n_events + work[4].shape[0] > events.shape[0]:
             return step, iterations, n_events, False
@@ -192,8 +194,10 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
-        x[:, :], v[:, :], a[:, :] = nx, nv, na
-        y[: 3 * nf], y[3 * nf:] = x.ravel(), v.ravel()
+        for f in range(nf):
+            for r in range(3):
+                x[f, r], v[f, r], a[f, r] = nx[f, r], nv[f, r], na[f, r]
+                y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
         fast.tensions_at(y, step, end_samples, nodes, el, work)
         n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
         if not fast.finite(y):

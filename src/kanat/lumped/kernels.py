@@ -16,17 +16,22 @@ Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - 
 The added-mass matrix is taken at the current tangent (its ``dM/dq`` terms in Lagrange's
 equations are neglected, as in MoorDyn). Each kernel has a plain NumPy twin in
 :mod:`kanat.lumped.twins` that the tests compare it with.
+
+One element loop, :func:`element_forces`, serves both the step-by-step Python path
+(:func:`forces`) and the fused compiled paths (:mod:`kanat.lumped.fast`), so a run compiles it
+once. Kernels use scalar loops only, and none is inlined at the numba level (LLVM still
+inlines what pays), which keeps a run's compile short (docs/performance.md).
 """
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from kanat.jit import kernel
 
 PCG_TOLERANCE = 1e-13      # relative residual of the consistent-mass solve (round-off level)
 PCG_MAX_ITERATIONS = 200   # the preconditioned mass matrix has condition number < 4: ~20 suffice
 
 
-@njit(cache=True, inline="always")
+@kernel
 def elastic_row(kinds, ns, xs, ys, row, e):
     """Elastic tension ``f(e)`` and its slope ``df/de`` of law ``row`` of the law arrays
     (network.law_arrays): a polynomial ``sum y_k e^k`` or a table through ``(0, 0)``."""
@@ -45,16 +50,18 @@ def elastic_row(kinds, ns, xs, ys, row, e):
     return 0.0, 0.0
 
 
-@njit(cache=True)
+@kernel
 def elastic(kind, n, xs, ys, e):
     """Elastic tension ``f(e)`` and its slope ``df/de`` of one law given as its own arrays."""
     return elastic_row(np.array([kind]), np.array([n]), xs.reshape((1, -1)), ys.reshape((1, -1)), 0, e)
 
 
-@njit(cache=True, inline="always")
-def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
-           law, law_kind, law_n, law_x, law_y, F, M, T, strain):
-    """Nodal forces, lumped mass blocks and element tensions, eqs. (1)-(8).
+PACKED = ((0, 3, 4), (3, 1, 5), (4, 5, 2))   # packed symmetric 3 x 3: xx, yy, zz, xy, xz, yz
+
+
+@kernel
+def element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain):
+    """Nodal forces, packed lumped mass blocks and element tensions and strains, eqs. (1)-(8).
 
     Parameters
     ----------
@@ -66,27 +73,29 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
         Constant nodal loads [N].
     node_mass : ndarray, shape (n,)
         Nodal (body) mass including body added mass [kg].
-    el_i ... law_y
-        Element and law arrays of :class:`kanat.lumped.network.Network`.
-    F, M, T, strain : ndarray, shapes (n, 3), (n, 3, 3), (m,), (m,)
-        Outputs, overwritten.
+    el : tuple
+        ``(el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x,
+        law_y)``, the element and law arrays of :class:`kanat.lumped.network.Network`.
+    F, M, T, strain : ndarray, shapes (n, 3), (n, 6), (m,), (m,)
+        Outputs, overwritten; ``M`` holds each node's symmetric mass block packed as
+        :data:`PACKED` (xx, yy, zz, xy, xz, yz).
     """
-    n = x.shape[0]
-    for a in range(n):
+    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el
+    for a in range(x.shape[0]):
         for r in range(3):
             F[a, r] = node_force[a, r]
-            for q in range(3):
-                M[a, r, q] = node_mass[a] if r == q else 0.0
-    t = np.empty(3)
+            M[a, r] = node_mass[a]
+            M[a, r + 3] = 0.0
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
         d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
         length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-        t[0], t[1], t[2] = d0 / length, d1 / length, d2 / length
+        inv = 1.0 / length
+        t0, t1, t2 = d0 * inv, d1 * inv, d2 * inv
         e = length / L0[k] - 1.0
-        edot = (t[0] * (v[j, 0] - v[i, 0]) + t[1] * (v[j, 1] - v[i, 1]) + t[2] * (v[j, 2] - v[i, 2])) / L0[k]
         tension = 0.0
         if e > 0.0:
+            edot = (t0 * (v[j, 0] - v[i, 0]) + t1 * (v[j, 1] - v[i, 1]) + t2 * (v[j, 2] - v[i, 2])) / L0[k]
             f, _ = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             tension = max(0.0, f + c[k] * edot)
         T[k] = tension
@@ -94,29 +103,47 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
         vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
         vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
         vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
-        vts = vr0 * t[0] + vr1 * t[1] + vr2 * t[2]
-        vn0, vn1, vn2 = vr0 - vts * t[0], vr1 - vts * t[1], vr2 - vts * t[2]
-        s = np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0
-        cn_speed = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
-        ct_speed = s * ct[k] * abs(vts) * vts
-        ats = aw[k, 0] * t[0] + aw[k, 1] * t[1] + aw[k, 2] * t[2]
-        inertia = disp[k] + ma[k]
+        vts = vr0 * t0 + vr1 * t1 + vr2 * t2
+        vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
         half = 0.5 * L0[k]
-        mass = m[k] + ma[k]
-        for r in range(3):
-            vn = vn0 if r == 0 else (vn1 if r == 1 else vn2)
-            load = (cn_speed * vn + ct_speed * t[r] + inertia * (aw[k, r] - ats * t[r])) * half
-            F[i, r] += tension * t[r] + load
-            F[j, r] += -tension * t[r] + load
-            for q in range(3):
-                blk = half * (mass * (1.0 if r == q else 0.0) - ma[k] * t[r] * t[q])
-                M[i, r, q] += blk
-                M[j, r, q] += blk
-        F[i, 2] -= w[k] * half
-        F[j, 2] -= w[k] * half
+        s = half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
+        normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
+        axial = s * ct[k] * abs(vts) * vts
+        ats = aw[k, 0] * t0 + aw[k, 1] * t1 + aw[k, 2] * t2
+        fi = half * (disp[k] + ma[k])
+        l0 = normal * vn0 + axial * t0 + fi * (aw[k, 0] - ats * t0)
+        l1 = normal * vn1 + axial * t1 + fi * (aw[k, 1] - ats * t1)
+        l2 = normal * vn2 + axial * t2 + fi * (aw[k, 2] - ats * t2) - w[k] * half
+        F[i, 0] += l0 + tension * t0
+        F[i, 1] += l1 + tension * t1
+        F[i, 2] += l2 + tension * t2
+        F[j, 0] += l0 - tension * t0
+        F[j, 1] += l1 - tension * t1
+        F[j, 2] += l2 - tension * t2
+        mass, added = half * (m[k] + ma[k]), half * ma[k]
+        for node in (i, j):
+            M[node, 0] += mass - added * t0 * t0
+            M[node, 1] += mass - added * t1 * t1
+            M[node, 2] += mass - added * t2 * t2
+            M[node, 3] -= added * t0 * t1
+            M[node, 4] -= added * t0 * t2
+            M[node, 5] -= added * t1 * t2
 
 
-@njit(cache=True)
+def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
+           law, law_kind, law_n, law_x, law_y, F, M, T, strain):
+    """:func:`element_forces` with the mass blocks unpacked to ``M`` (n, 3, 3) (the Python path).
+
+    The arguments are those of :func:`element_forces` with ``el`` spread out; ``F, M, T,
+    strain`` (shapes (n, 3), (n, 3, 3), (m,), (m,)) are overwritten.
+    """
+    el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y)
+    packed = np.empty((x.shape[0], 6))
+    element_forces(x, v, uw, aw, node_force, node_mass, el, F, packed, T, strain)
+    M[:] = packed[:, np.array(PACKED)]
+
+
+@kernel
 def solve3(A, b):
     """Solution of one 3 x 3 system by cofactors (A symmetric positive definite)."""
     c00 = A[1, 1] * A[2, 2] - A[1, 2] * A[2, 1]
@@ -136,7 +163,7 @@ def solve3(A, b):
     return out
 
 
-@njit(cache=True, inline="always")
+@kernel
 def lumped_solve(M, F, free, a):
     """``a_n = M_n^-1 F_n`` on free nodes (lumped mass, eq. 8) by cofactors of each symmetric
     3 x 3 block; ``a`` of the other nodes untouched."""
@@ -159,7 +186,7 @@ def lumped_solve(M, F, free, a):
         a[n, 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
 
 
-@njit(cache=True)
+@kernel
 def consistent_blocks(x, el_i, el_j, L0, m, ma, B):
     """Element blocks ``B`` of the consistent mass matrix, eq. (9); shape (m, 3, 3)."""
     for k in range(el_i.shape[0]):
@@ -170,7 +197,7 @@ def consistent_blocks(x, el_i, el_j, L0, m, ma, B):
                 B[k, r, q] = L0[k] / 6.0 * ((m[k] + ma[k]) * (1.0 if r == q else 0.0) - ma[k] * t[r] * t[q])
 
 
-@njit(cache=True)
+@kernel
 def consistent_matvec(B, el_i, el_j, node_mass, a, y):
     """``y = M a`` for the consistent mass matrix (eq. 9) plus nodal masses."""
     for node in range(a.shape[0]):
@@ -181,7 +208,7 @@ def consistent_matvec(B, el_i, el_j, node_mass, a, y):
         y[j] += B[k] @ (a[i] + 2.0 * a[j])
 
 
-@njit(cache=True)
+@kernel
 def consistent_solve(B, el_i, el_j, node_mass, F, free, a):
     """Solve ``(M a)_free = F_free`` with ``a`` given on prescribed nodes (eq. 9).
 
@@ -232,7 +259,7 @@ def consistent_solve(B, el_i, el_j, node_mass, F, free, a):
     return PCG_MAX_ITERATIONS
 
 
-@njit(cache=True)
+@kernel
 def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
                    K, C, D):
     """Element Jacobian blocks for the implicit scheme.
@@ -242,22 +269,26 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
     each shape (m, 3, 3). Assembly: ``-dF/dx`` has ``+K`` on the diagonal blocks ``ii, jj``
     and ``-K`` off it; the same pattern for ``C``; ``+D`` on all four blocks of ``-dF/dv``.
     """
+    t, dv, vn = np.empty(3), np.empty(3), np.empty(3)
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
-        d = x[j] - x[i]
-        length = np.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
-        t = d / length
+        d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
+        length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        t[0], t[1], t[2] = d0 / length, d1 / length, d2 / length
         e = length / L0[k] - 1.0
-        dv = v[j] - v[i]
+        for r in range(3):
+            dv[r] = v[j, r] - v[i, r]
         tdv = t[0] * dv[0] + t[1] * dv[1] + t[2] * dv[2]
         tension, slope = 0.0, 0.0
         if e > 0.0:
             f, df = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             tension = f + c[k] * tdv / L0[k]
             slope = df
-        vr = uw[k] - 0.5 * (v[i] + v[j])
-        vts = vr[0] * t[0] + vr[1] * t[1] + vr[2] * t[2]
-        vn = vr - vts * t
+        vts = 0.0
+        for r in range(3):
+            vts += (uw[k, r] - 0.5 * (v[i, r] + v[j, r])) * t[r]
+        for r in range(3):
+            vn[r] = uw[k, r] - 0.5 * (v[i, r] + v[j, r]) - vts * t[r]
         speed_n = np.sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2])
         s = np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0
         for r in range(3):
@@ -274,7 +305,7 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
                 D[k, r, q] = 0.25 * L0[k] * s * (dn + 2.0 * ct[k] * abs(vts) * t[r] * t[q])
 
 
-@njit(cache=True)
+@kernel
 def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
     """Element tensions only, eqs. (1)-(2) (for outputs and snap detection)."""
     for k in range(el_i.shape[0]):
@@ -289,7 +320,7 @@ def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
             T[k] = max(0.0, f + c[k] * edot)
 
 
-@njit(cache=True)
+@kernel
 def body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
     """Body drag, spreading force and fluid inertia added to ``F`` (system eq. 2).
 
@@ -298,9 +329,10 @@ def body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, h
     sn, cs = np.sin(heading), np.cos(heading)
     for b in range(body_node.shape[0]):
         node = body_node[b]
-        ur = uw[b] - v[node]
-        speed = np.sqrt(ur[0] * ur[0] + ur[1] * ur[1] + ur[2] * ur[2])
-        for r in range(3):
-            F[node, r] += 0.5 * rho * drag_area[b] * speed * ur[r] + added_mass[node] * aw[b, r]
+        ur0, ur1, ur2 = uw[b, 0] - v[node, 0], uw[b, 1] - v[node, 1], uw[b, 2] - v[node, 2]
+        drag = 0.5 * rho * drag_area[b] * np.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
+        F[node, 0] += drag * ur0 + added_mass[node] * aw[b, 0]
+        F[node, 1] += drag * ur1 + added_mass[node] * aw[b, 1]
+        F[node, 2] += drag * ur2 + added_mass[node] * aw[b, 2]
         F[node, 0] -= spreading[b] * sn
         F[node, 1] += spreading[b] * cs

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kanat.lumped.kernels import elastic
+from kanat.lumped.kernels import elastic_row
 
 SAFETY = 0.8                 # margin below the stability limit
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
@@ -68,7 +68,7 @@ def step_info(net, x, consistent: bool = False) -> StepInfo:
         if not np.any(sel):
             continue
         top = max(STRAIN_REFERENCE, 2.0 * float(np.max(strain[sel])))
-        slope[sel] = max(elastic(net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row], e)[1]
+        slope[sel] = max(elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, float(e))[1]
                          for e in np.linspace(0.0, top, 17))
     pair = inv[net.el_i] + inv[net.el_j]
     omega = np.sqrt(2.0 * slope / net.el_length * pair)

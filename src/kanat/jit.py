@@ -1,0 +1,76 @@
+"""How kanat compiles its kernels (numba), and whether a run is about to compile.
+
+Every compiled kernel is declared with one of two decorators, so that the options live in
+one place:
+
+- :data:`kernel` — a kernel called from Python (and from other kernels);
+- :data:`inner` — a helper called only from other kernels: numba builds no Python entry
+  for it, which saves compile time on functions whose arguments are large tuples.
+
+Both cache the machine code on disk (``__pycache__`` beside the source, or
+``NUMBA_CACHE_DIR``), so a kernel compiles once per machine and source version. What a run
+compiles is grouped in families (:class:`Family`: the top-level kernels of one model and
+scheme, with the compile time measured on the reference machine); :func:`pending` tells,
+without compiling, whether a family still has to be compiled, so a run can say
+"compiling kernels once, ~N s" first. ``kanat.warmup`` compiles every family ahead of use.
+
+Rules that keep compiling short (docs/performance.md has the measurements): scalar loops,
+no array expressions, slice copies (``a[:] = b``), ``@`` or ``np.linalg`` in kernels a run
+uses; no complex variants in a run (complex-step oracles are compiled by the tests only);
+no ``inline="always"``; no integer constant passed straight to another kernel (numba
+compiles a separate version for the literal) — pass a variable or restructure.
+"""
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+
+from numba import njit
+
+# error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
+# non-finite results) instead of a check and an exception on every division, which costs
+# compile time and stops vectorization.
+kernel = njit(cache=True, error_model="numpy")
+inner = njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+
+
+@dataclass(frozen=True)
+class Family:
+    """The kernels one kind of run compiles.
+
+    Attributes
+    ----------
+    name : str
+        ``continuum-2d``, ``lumped-rk4``, ...
+    entries : tuple
+        The top-level kernels (numba dispatchers) the run calls from Python; compiling them
+        compiles everything they call.
+    compile_s : float
+        Measured compile time of the family on a cold cache (2-core x86_64 reference
+        machine, benchmarks/RESULTS.md) [s].
+    """
+
+    name: str
+    entries: tuple
+    compile_s: float
+
+
+def is_cached(dispatcher) -> bool:
+    """Whether ``dispatcher`` runs without compiling: compiled in this process already, or its
+    disk cache holds a version for this machine and this source."""
+    if dispatcher.signatures:
+        return True
+    try:
+        cache = dispatcher._cache
+        index = cache._cache_file._load_index()
+        magic = dispatcher.targetctx.codegen().magic_tuple()
+        code = hashlib.sha256(dispatcher.py_func.__code__.co_code).hexdigest()
+    except (AttributeError, OSError, EOFError, ValueError):      # numba internals moved: assume not cached
+        return False
+    return any(key[1] == magic and key[2][0] == code for key in index)
+
+
+def pending(family: Family) -> float | None:
+    """Seconds of compiling ``family`` would cost now (its measured ``compile_s``), or None if
+    every kernel of it is cached."""
+    return None if all(is_cached(entry) for entry in family.entries) else family.compile_s
