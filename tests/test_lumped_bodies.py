@@ -95,9 +95,10 @@ def test_otter_boards_spread_across_the_heading_after_a_turn(tmp_path):
 # --- surface buoy ------------------------------------------------------------------------------
 def buoy_case(mass, area, z0, waves=None, duration=10.0, dt=0.005, height=5.0, output_dt=0.1):
     """A surface buoy (keel at ``z0``, at rest) with a slack, massless-in-effect tether to a
-    free end: the buoy feels only gravity and its waterplane buoyancy."""
+    free end: the buoy feels only gravity and its waterplane buoyancy (the tether is a nominal,
+    very soft line; its free end may stretch it freely)."""
     tether = dict(diameter=0.001, mass=1e-3, weight_in_water=0.0, axial_stiffness=1.0,
-                  drag_normal=0.0, drag_tangential=0.0)
+                  drag_normal=0.0, drag_tangential=0.0, max_strain=1.0)
     return lumped_case(
         environment={"waves": waves} if waves else {},
         line_types={"tether": tether},

@@ -13,6 +13,7 @@ import textwrap
 import numpy as np
 import pytest
 import yaml
+from helpers import EXAMPLES
 
 from kanat.errors import CaseError
 from kanat.io import check_text
@@ -70,7 +71,7 @@ def same(a, b) -> bool:
 
 
 NEW_KEYS = ("seabed", "seabed_friction", "seabed_lateral_friction", "seabed_slope",
-            "bending_stiffness", "max_strain", "sections", "attachments", "vessel_motion", "winch",
+            "bending_stiffness", "sections", "attachments", "vessel_motion", "winch",
             "six_dof_bodies", "body_fairleads", "vessel_fairleads", "point_properties")
 
 
@@ -91,6 +92,25 @@ def test_table_is_complete_and_consistent():
 @pytest.mark.parametrize("name", NEW_KEYS)
 def test_no_solver_has_the_new_keys_yet(name):
     assert feature(name).supported_by() == []
+
+
+@pytest.mark.parametrize("model", ["continuum", "lumped"])
+def test_the_dynamic_models_stop_at_the_strain_limit(model):
+    """max_strain is used: a limit below the run's strain stops it, and says so."""
+    import warnings
+
+    import kanat
+
+    text = (EXAMPLES / "speed_step_2d.yaml").read_text().replace("duration: 600", "duration: 5").replace(
+        "    drag_tangential: 0.01\n", "    drag_tangential: 0.01\n    max_strain: 0.0001\n", 1)
+    if model == "lumped":
+        text = text.replace("model: continuum", "model: lumped").replace("segments: 100", "segments: 10").replace(
+            "scheme: generalized-alpha", "scheme: generalized-alpha-lumped")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(kanat.load_case(text))
+    assert ds.attrs["status"].startswith("failed:") and ("strain" in ds.attrs["status"]
+                                                         or "stretched" in ds.attrs["status"])
 
 
 # --- the table against the solvers ---------------------------------------------------------------

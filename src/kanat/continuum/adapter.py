@@ -25,8 +25,6 @@ from kanat.schemes import get_scheme
 
 COMPRESSION_TOLERANCE = 1e-3
 """Compression beyond this fraction of the largest tension (or of the cable's weight) fails a run."""
-DEFAULT_MAX_STRAIN = 0.5
-"""Strain that fails a run when the line type sets no ``max_strain``."""
 TIME_VARIABLES = ("position", "velocity", "tension", "body_position", "vessel_position", "vessel_heading",
                   "vessel_pitch", "newton_iterations")
 
@@ -53,8 +51,7 @@ class ContinuumModel:
         self.cable_model = model_for(case)
         self.dt, self.output_interval, self.duration = sim.dt, sim.output_interval, sim.duration
         self.notes: list[str] = []
-        line = case.line_types[case.cables[0].line_type]
-        self.max_strain = getattr(line, "max_strain", None) or DEFAULT_MAX_STRAIN
+        self.max_strain = case.line_types[case.cables[0].line_type].strain_limit()
         self.body = case.cables[0].to.kind == "body"
 
     # 1. set up ------------------------------------------------------------------------

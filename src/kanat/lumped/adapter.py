@@ -28,8 +28,6 @@ from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, state_positions
 from kanat.schemes import get_scheme
 
-DEFAULT_MAX_STRAIN = 0.5
-"""An element stretched beyond this (when the line type sets no ``max_strain``) stops the run."""
 TIME_VARIABLES = ("position", "velocity", "tension", "segment_tension", "body_position", "vessel_position",
                   "vessel_heading", "vessel_pitch")
 
@@ -64,8 +62,7 @@ class LumpedModel:
         self.dt = self._step_size()
         self.output_interval, self.duration = sim.output_interval, sim.duration
         self.node_tension = NodeTension(self.net)
-        self.max_strain = np.array([getattr(case.line_types.get(str(c)), "max_strain", None) or DEFAULT_MAX_STRAIN
-                                    for c in self._segment_line_types()])
+        self.max_strain = np.array([case.line_types[name].strain_limit() for name in self._segment_line_types()])
         self._T = np.zeros(self.net.n_elements)
 
     def _segment_line_types(self):
