@@ -94,3 +94,19 @@ def test_a_result_carries_its_case_and_runs_again_from_it(tmp_path):
     again = kanat.read_result(tmp_path / "b.nc")
     np.testing.assert_array_equal(first.tension.values, again.tension.values)
     assert first.position.attrs["positive"] == "up" and first.time.attrs["standard_name"] == "time"
+
+
+def test_case_replace_gives_a_validated_variant():
+    case = kanat.load_case(EXAMPLES / "speed_step_2d.yaml")
+    longer = case.replace({"cables[0].length": 1200, "vessel.track[1].to_speed_kn": 8,
+                           "line_types.towcable.drag_normal": 1.6})
+    assert longer.cables[0].length == 1200 and case.cables[0].length == 1000          # a new case
+    assert longer.vessel.track[1].to_speed_kn == 8 and longer.line_types["towcable"].drag_normal == 1.6
+    with pytest.raises(CaseError) as error:
+        case.replace({"line_types.towcable.diameter": -0.01, "cables[0].segments": 2.5})
+    keys = {p.key for p in error.value.problems}
+    assert {"line_types.towcable.diameter", "cables[0].segments"} <= keys
+    with pytest.raises(CaseError, match="cables\\[3\\]"):
+        case.replace({"cables[3].length": 10})
+    with pytest.raises(CaseError, match="drag_nromal"):
+        case.replace({"line_types.towcable.drag_nromal": 1.0})        # an unknown key is named

@@ -329,7 +329,7 @@ def test_motion_table_is_read_next_to_the_case(tmp_path):
                 if "does not support" not in p.message and p.severity == "error"]
     assert problems == []
     from kanat.io.case_source import read_document
-    from kanat.io.case_file import validate_data
+    from kanat.model.validation import validate_data
 
     doc = read_document(case_file.read_text(), str(case_file))
     case, found = validate_data(doc.data, str(case_file), doc.lines)

@@ -22,7 +22,7 @@ from typer.testing import CliRunner
 
 from kanat.cli_import import register
 from kanat.io import check_case, check_text
-from kanat.io.case_file import validate_data
+from kanat.model.validation import validate_data
 from kanat.io.moordyn import case_yaml, looks_like_moordyn, read_moordyn
 from kanat.io.yaml_loader import load_yaml
 from kanat.physics.motion import rotation_matrix

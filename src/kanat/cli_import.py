@@ -38,7 +38,7 @@ def import_file(source: Path, output: Path) -> int:
         0 when written, 1 when the file cannot be imported (its problems are printed).
     """
     from kanat.errors import KanatError
-    from kanat.io.case_file import validate_data
+    from kanat.model.validation import validate_data
     from kanat.io.moordyn import case_yaml, looks_like_moordyn, read_moordyn
     from kanat.io.outputs import check_output_file, write_text_atomic
     from kanat.model.support import unsupported

@@ -39,6 +39,10 @@ class Problem:
         return f"{where}: {self.severity}:{key} {self.message}"
 
 
+class CaseWarning(UserWarning):
+    """A case that can run but probably not as meant (a physical sanity warning)."""
+
+
 class KanatError(Exception):
     """Base class of every error kanat raises on purpose."""
 

@@ -8,6 +8,7 @@ case is built.
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
@@ -174,6 +175,35 @@ class Case(KanatModel):
                 raise ValueError(f"the winch hauls in {fmt(-lowest)} m of cable "
                                  f"'{cables[0].name}', which is only {fmt(length)} m long")
         return steps
+
+    def replace(self, changes: Mapping[str, Any]) -> Case:
+        """A validated copy of the case with some keys set.
+
+        Parameters
+        ----------
+        changes : mapping of str to object
+            Key paths as written in the case file and in ``kanat sweep --vary``
+            (``"cables[0].length"``, ``"vessel.track[1].to_speed_kn"``,
+            ``"line_types.towcable.drag_normal"``) and their new values, in case-file units.
+
+        Returns
+        -------
+        Case
+
+        Raises
+        ------
+        kanat.errors.CaseError
+            Every problem at its key path, as for a case file (values out of range, unknown
+            keys, failed sanity checks).
+
+        Warns
+        -----
+        kanat.errors.CaseWarning
+            For a case that runs but probably not as meant.
+        """
+        from .validation import replaced
+
+        return replaced(self, changes)
 
     @model_validator(mode="after")
     def _cross_references(self) -> Case:

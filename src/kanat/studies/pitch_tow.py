@@ -128,10 +128,7 @@ def with_stabilizer_mode(case, mode: str):
 
     if mode not in STABILIZER_MODES:
         raise KanatError(f"unknown stabilizer mode '{mode}'; known: {', '.join(STABILIZER_MODES)}")
-    pitch = case.vessel.pitch
-    stabilizer = pitch.stabilizer.model_copy(update={"mode": mode})
-    vessel = case.vessel.model_copy(update={"pitch": pitch.model_copy(update={"stabilizer": stabilizer})})
-    return case.model_copy(update={"vessel": vessel, "name": f"{case.name}-{mode}" if case.name else mode})
+    return case.replace({"vessel.pitch.stabilizer.mode": mode, "name": f"{case.name}-{mode}" if case.name else mode})
 
 
 def rest_phase_deg(block) -> float:
@@ -159,8 +156,7 @@ def rest_phase_deg(block) -> float:
 
 def with_phase(case, phase_deg: float):
     """A copy of ``case`` whose vessel pitch starts at wave phase ``phase_deg``."""
-    pitch = case.vessel.pitch.model_copy(update={"phase_deg": phase_deg})
-    return case.model_copy(update={"vessel": case.vessel.model_copy(update={"pitch": pitch})})
+    return case.replace({"vessel.pitch.phase_deg": phase_deg})
 
 
 @dataclass(frozen=True)

@@ -94,8 +94,8 @@ def simulate(case, scheme, times, dt=None) -> Trace:
     dt = dt or case.simulation.dt
     counts = np.round(np.asarray(times, float) / dt).astype(int)
     every = int(np.gcd.reduce(counts[counts > 0])) if np.any(counts > 0) else 1
-    sim = case.simulation.model_copy(update={"dt": dt, "output_dt": every * dt, "duration": counts.max() * dt})
-    varied = case.model_copy(update={"simulation": sim})
+    varied = case.replace({"simulation.dt": dt, "simulation.output_dt": every * dt,
+                           "simulation.duration": counts.max() * dt})
     keep = KeepStates(np.asarray(times, float))
     models = []
 

@@ -24,7 +24,7 @@ def compare_schemes(case, out_dir, schemes=SCHEMES) -> list[dict]:
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     sim = case.simulation
-    fine = case.model_copy(update={"simulation": sim.model_copy(update={"dt": sim.dt / REFERENCE_REFINE})})
+    fine = case.replace({"simulation.dt": sim.dt / REFERENCE_REFINE, "simulation.output_dt": sim.output_interval})
     reference = api.run(fine, output=out_dir / "reference.nc", scheme=GeneralizedAlpha(-0.5)).dataset
     ref_depth = reference.body_position.values[:, 0, 2]
     rows = []

@@ -65,8 +65,8 @@ class PeakTension:
 def run_in_memory(case, scheme, dt: float, duration: float, bound: float = np.inf):
     """Run ``case`` with ``scheme`` and step ``dt`` for ``duration`` through the run loop, checking the
     tension after every step: ``(last_state, peak_tension, status)``."""
-    sim = case.simulation.model_copy(update={"dt": dt, "output_dt": dt, "duration": round(duration / dt) * dt})
-    varied = case.model_copy(update={"simulation": sim})
+    varied = case.replace({"simulation.dt": dt, "simulation.output_dt": dt,
+                           "simulation.duration": round(duration / dt) * dt})
     peak = PeakTension(bound)
     with np.errstate(all="ignore"):
         summary = dynamics.run(lambda: api.dynamic_model(varied, scheme), [peak])

@@ -1,93 +1,19 @@
 """Case variants: the base case's YAML data with some keys set, re-validated by :mod:`kanat.io`.
 
-Key paths are written as in the case file and in kanat's error messages:
-``environment.waves.period``, ``line_types.towcable.axial_stiffness``,
-``cables[0].length``, ``vessel.track[1].to_speed_kn``. A track segment written as a
-one-key mapping (``{speed_step: {to_speed_kn: 10}}``) is entered without naming its key,
-so ``vessel.track[1].to_speed_kn`` reaches ``to_speed_kn`` there; naming it
-(``vessel.track[1].speed_step.to_speed_kn``) works too. The last key of a path may be
-absent from the base case (it is added, and validation says whether it is a valid key);
-missing mappings on the way are added too.
+Key paths are those of :mod:`kanat.model.paths` (``cables[0].length``,
+``vessel.track[1].to_speed_kn``), the same as :meth:`kanat.model.Case.replace` takes.
 """
 from __future__ import annotations
 
 import copy
 import json
-import re
 import warnings
 from pathlib import Path as FilePath
 
 import yaml
 
 from kanat.errors import CaseError, KanatError
-from kanat.model.paths import key_path
-
-_TOKEN = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
-
-
-def parse_key(key: str) -> tuple:
-    """``"vessel.track[1].to_speed_kn"`` -> ``("vessel", "track", 1, "to_speed_kn")``.
-
-    Raises
-    ------
-    KanatError
-        For an empty key or one that does not read back as written.
-    """
-    path = tuple(int(index) if index else name for name, index in _TOKEN.findall(key.strip()))
-    if not path or key_path(path) != key.strip():
-        raise KanatError(f"'{key}' is not a key path; write it as in the case file, e.g. "
-                         "environment.waves.period or vessel.track[1].to_speed_kn")
-    return path
-
-
-def _child(node, elem, done: tuple, last: bool):
-    """The container holding ``elem`` below ``node`` (entering one-key wrappers), creating it if needed."""
-    where = key_path(done) or "the case"
-    if isinstance(elem, int):
-        if not isinstance(node, list):
-            raise KanatError(f"{where}: [{elem}] needs a list there, but it is {_kind(node)}")
-        if not 0 <= elem < len(node):
-            raise KanatError(f"{key_path(done + (elem,))}: {where} has {len(node)} item(s), "
-                             f"indices 0 to {len(node) - 1}")
-        return node
-    if not isinstance(node, dict):
-        raise KanatError(f"{where}: '{elem}' needs a mapping there, but it is {_kind(node)}")
-    if elem in node:
-        return node
-    if len(node) == 1:
-        (wrapped,) = node.values()
-        if isinstance(wrapped, dict) and (elem in wrapped or last):
-            return wrapped                              # {speed_step: {to_speed_kn: ...}}
-    if not last:
-        node[elem] = {}
-    return node
-
-
-def _kind(value) -> str:
-    if isinstance(value, list):
-        return "a list"
-    if isinstance(value, dict):
-        return "a mapping"
-    return f"the value {value!r}"
-
-
-def set_value(data: dict, key: str, value) -> None:
-    """Set ``key`` (a key path) to ``value`` in case data, in place.
-
-    Raises
-    ------
-    KanatError
-        Naming the key path when it cannot be reached in the data.
-    """
-    path = parse_key(key)
-    node = data
-    for i, elem in enumerate(path):
-        last = i == len(path) - 1
-        node = _child(node, elem, path[:i], last)
-        if last:
-            node[elem] = value
-        else:
-            node = node[elem]
+from kanat.model.paths import parse_key, set_value
 
 
 def base_data(case) -> tuple[dict, str]:
