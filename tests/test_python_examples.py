@@ -1,0 +1,33 @@
+"""The Python examples run as a user runs them, and print what the API computes."""
+import re
+import subprocess
+import sys
+
+import pytest
+
+import kanat
+
+from helpers import EXAMPLES
+
+SCRIPTS = sorted((EXAMPLES / "python").glob("*.py"))
+
+
+@pytest.mark.parametrize("script", SCRIPTS, ids=lambda p: p.name)
+def test_python_example_runs(script, tmp_path):
+    done = subprocess.run([sys.executable, str(script), str(tmp_path / "picture.png")], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert (tmp_path / "picture.png").stat().st_size > 20_000
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["picture.png"]      # nothing else written
+
+
+def test_vary_and_plot_prints_the_apis_numbers(tmp_path):
+    done = subprocess.run([sys.executable, str(EXAMPLES / "python" / "vary_and_plot.py"), str(tmp_path / "p.png")],
+                          capture_output=True, text=True, timeout=600)
+    printed = {float(cn): float(kn) for cn, kn in re.findall(r"C_n = ([\d.]+): top tension up to ([\d.]+) kN",
+                                                              done.stdout)}
+    base = kanat.load_case(EXAMPLES / "speed_step_2d.yaml").replace({"simulation.duration": 240})
+    ds = kanat.simulate(base.replace({"line_types.towcable.drag_normal": 1.8}))
+    assert printed[1.8] == pytest.approx(float(ds.tension.isel(node=0).max()) / 1e3, abs=5e-4)
+    depths = dict(re.findall(r"C_n = ([\d.]+): .*body from (-?[\d.]+) m", done.stdout))
+    assert float(depths["1.8"]) > float(depths["1.2"])     # more normal drag streams the cable: a shallower body
