@@ -72,15 +72,6 @@ class CableGrid:
         return np.column_stack([np.interp(z, self.current_z, column) for column in self.current_rows.T])
 
 
-def current_table(case):
-    """The case's current as ``(heights ascending (k,), rows (k, 3))`` [m, m/s] (one row if uniform)."""
-    current = case.environment.current
-    if current.profile is None:
-        return np.zeros(1), np.asarray(current.at(0.0), dtype=float)[None, :]
-    table = np.asarray(current.profile, dtype=float)[::-1]
-    return table[:, 0], table[:, 1:4]
-
-
 @dataclass(frozen=True)
 class PlanarCable(CableGrid):
     """A planar cable ready for the kernels.
@@ -171,7 +162,7 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                    cable.length / cable.segments, law)
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
-    z, rows = current_table(case)
+    z, rows = case.environment.current.table()
     if check_plane and out_of_plane(case):
         raise CaseError(out_of_plane(case))
     return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])

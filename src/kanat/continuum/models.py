@@ -21,7 +21,7 @@ from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, r
 from kanat.continuum.drive import Drive
 from kanat.continuum.factorized_system import CableSystem, World, end_data
 from kanat.continuum.model2d import _end as planar_end
-from kanat.continuum.model2d import current_table, planar_cable, positions
+from kanat.continuum.model2d import planar_cable, positions
 from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.stepper import State, steady, step
 from kanat.model.plane import out_of_plane
@@ -230,7 +230,7 @@ def spatial_cable(case) -> SpatialCable:
                               tuple(body.force))
         return SpatialEnd(kind)
 
-    z, rows = current_table(case)
+    z, rows = case.environment.current.table()
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows)
 

@@ -41,7 +41,7 @@ class FusedArrays:
         self.bodies = (net.body_node.astype(np.int64), net.body_drag_area.astype(float),
                        net.body_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
                        net.buoy_area.astype(float), net.buoy_height.astype(float))
-        cz, cu = current_table(system.current)
+        cz, cu = system.current.table()
         still = system.sea is None and len(cz) == 1                  # water kinematics constant in space and time
         self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still)
         self.work = (np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 6)), np.zeros(m),
@@ -53,14 +53,6 @@ class FusedArrays:
         self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)))
         self.band = np.zeros((3 * len(system.free_index), 2 * self.bandwidth + 1))
-
-
-def current_table(current) -> tuple[np.ndarray, np.ndarray]:
-    """The current as ascending heights ``(k,)`` and velocities ``(k, 3)`` (one row: uniform)."""
-    if current.profile is None:
-        return np.zeros(1), np.asarray(current.at(0.0), float).reshape(1, 3)
-    table = np.asarray(current.profile, dtype=float)[::-1]
-    return np.ascontiguousarray(table[:, 0]), np.ascontiguousarray(table[:, 1:4])
 
 
 def sea_arrays(sea) -> tuple:

@@ -56,6 +56,15 @@ class Current(KanatModel):
                              "not both")
         return self
 
+    def table(self) -> tuple[np.ndarray, np.ndarray]:
+        """The current as ascending heights ``(k,)`` [m] and velocities ``(k, 3)`` [m/s] (one row
+        when uniform): the form the kernels interpolate in, linear between rows and constant
+        beyond the ends."""
+        if self.profile is None:
+            return np.zeros(1), np.asarray(self.at(0.0), dtype=float).reshape(1, 3)
+        rows = np.asarray(self.profile, dtype=float)[::-1]
+        return np.ascontiguousarray(rows[:, 0]), np.ascontiguousarray(rows[:, 1:4])
+
     def at(self, z: float | np.ndarray) -> np.ndarray:
         """Current velocity at height ``z``.
 
