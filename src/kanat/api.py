@@ -123,7 +123,7 @@ SCHEMES = registry(*CONTINUUM_SCHEMES.values(), *LUMPED_SCHEMES.values())
 
 # --- the front door ---------------------------------------------------------------------
 
-def load_case(source: str | PathLike | Mapping) -> Case:
+def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str | None = None) -> Case:
     """A validated case from a file, YAML text or a mapping.
 
     Parameters
@@ -131,6 +131,9 @@ def load_case(source: str | PathLike | Mapping) -> Case:
     source : path-like, str or mapping
         A case file (YAML, or a MoorDyn input file), the YAML text of a case, or the case
         as nested dicts and lists (the YAML structure).
+    max_output_bytes : float or str, optional
+        The largest result a dynamic run may write (``"8G"``); default the environment
+        variable ``KANAT_MAX_OUTPUT_BYTES``, else 2 GiB (docs/limits.md).
 
     Returns
     -------
@@ -149,13 +152,14 @@ def load_case(source: str | PathLike | Mapping) -> Case:
     from kanat.io import parse_case
     from kanat.io import load_case as load_file
 
+    limit = {"max_output_bytes": max_output_bytes}
     if isinstance(source, Mapping):
         import yaml
 
-        return parse_case(yaml.safe_dump(dict(source), sort_keys=False), file="<dict>")
+        return parse_case(yaml.safe_dump(dict(source), sort_keys=False), file="<dict>", **limit)
     if isinstance(source, str) and ("\n" in source or ":" in source and not Path(source).suffix):
-        return parse_case(source, file="<text>")
-    return load_file(source)
+        return parse_case(source, file="<text>", **limit)
+    return load_file(source, **limit)
 
 
 def solve_statics(case: Case, method: str = "auto"):

@@ -13,7 +13,7 @@ from typing import Optional
 
 import typer
 
-from kanat.cli_common import CONTEXT, console, fail, load, out, print_problems, setup_logging
+from kanat.cli_common import MAX_OUTPUT_HELP, CONTEXT, console, fail, load, out, print_problems, setup_logging
 from kanat.errors import KanatError
 
 log = logging.getLogger("kanat")
@@ -42,13 +42,13 @@ def main(version: bool = typer.Option(False, "--version", callback=_version, is_
 
 
 @app.command()
-def validate(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input).")):
+def validate(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)."),
+             max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP)):
     """Check a case file and report every problem at once (exit 1 on errors)."""
-    from kanat.errors import KanatError
     from kanat.io import check_case
 
     try:
-        problems = check_case(case)
+        problems = check_case(case, max_output_bytes=max_output)
     except KanatError as error:
         fail(error, False, "cannot read the case")
     if problems:
@@ -81,6 +81,7 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
         resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
         checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every",
                                                        help="Checkpoint every N output steps."),
+        max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP),
         debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run any case with the model its file names, writing the result to OUTPUT as it goes."""
     from kanat import api
@@ -93,7 +94,7 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
         except Exception as error:  # noqa: BLE001 - reported by fail
             fail(error, debug, "cannot read the case of the result")
     else:
-        loaded = load(case, debug)
+        loaded = load(case, debug, max_output)
     if isinstance(api.MODELS.get(loaded.model), api.Steady):
         _steady(loaded, case, output, plot, debug, model=loaded.model)
         return

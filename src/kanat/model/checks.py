@@ -467,7 +467,7 @@ def check_run_size(case: Case, out: Findings) -> None:
                   f"outputs x {nodes:,} nodes x {limits.OUTPUT_VALUES_PER_NODE} values x 8 bytes), "
                   f"more than the limit of {_size(limit)}; store less often (output_dt), shorten "
                   f"the duration or use fewer segments, or raise the limit "
-                  f"({limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=)")
+                  f"(kanat --max-output 8G, {limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=\"8G\" in Python)")
 
 
 def check_pitch_size(case: Case, out: Findings) -> None:
