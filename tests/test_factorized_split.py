@@ -15,9 +15,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from kanat.continuum import kernels3d as k3
-from kanat.continuum.characteristics import direction_split, group_split, outgoing_rows, split_numerical
-from kanat.continuum.factorized_kernels import sweep, sweep_numpy
-from kanat.continuum.factorized_system import CableSystem
+from kanat.continuum.factorized.characteristics import direction_split, group_split, outgoing_rows, split_numerical
+from kanat.continuum.factorized.dense import sweep, sweep_numpy
+from kanat.continuum.factorized.system import CableSystem
 from kanat.continuum.model2d import parameters
 from kanat.continuum.models import model_for
 from kanat.continuum.reference2d import loads, mass_matrix, stiffness_matrix

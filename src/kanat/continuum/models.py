@@ -7,7 +7,7 @@ Both adapters have the same methods, so nothing above them asks which one it hol
 * ``velocities(t)`` (both ends, global frame) and ``origin(t)`` (the first end's position);
 * ``tangents(state)`` (global unit tangents) and ``tension(state)``;
 * ``world(state, dt)`` and ``advanced(state, start, y, chart, dt)`` for seed 000's schemes
-  (:mod:`kanat.continuum.factorized_system`).
+  (:mod:`kanat.continuum.factorized.system`).
 
 ``dimensions: auto`` picks the planar model when the case stays in the x–z plane
 (:func:`kanat.model.plane.out_of_plane` finds nothing) and the spatial one otherwise.
@@ -19,7 +19,7 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.drive import Drive
-from kanat.continuum.factorized_system import CableSystem, World, end_data
+from kanat.continuum.factorized.system import CableSystem, World, end_data
 from kanat.continuum.model2d import _end as planar_end
 from kanat.continuum.model2d import planar_cable, positions
 from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3

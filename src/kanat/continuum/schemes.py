@@ -111,7 +111,7 @@ class GeneralizedTrapezoidal(FamilyScheme):
         return 0.0, 0.0, self.gamma
 
 
-from kanat.continuum.factorized_schemes import Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3  # noqa: E402,E501  seed 000
+from kanat.continuum.factorized.schemes import Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3  # noqa: E402,E501  seed 000
 
 SCHEMES = registry(GeneralizedAlpha, Box, BackwardEuler, GeneralizedTrapezoidal,
                    Factorized, Factorized4, WaveFactorized, WaveFactorized2, WaveFactorized3)

@@ -7,7 +7,7 @@
 Each writes a CSV table and a PNG figure into ``DIR`` and prints the table. The cases are
 ``examples/seed000_*.yaml``; their comments list the published data and the unpublished
 data chosen here. "Full" is the generalized-α box scheme (SPEC §2.4) at the same grid and
-step; the other columns are seed 000's schemes (:mod:`factorized_schemes`).
+step; the other columns are seed 000's schemes (:mod:`kanat.continuum.factorized.schemes`).
 
 Angles are chart-free: ``inclination`` is the tangent's angle below the horizontal (the
 paper's ``phi`` for a cable trailing astern), ``azimuth`` the heading of its horizontal part

@@ -173,7 +173,7 @@ def end_state(world, Y, side: float, neighbour, dt: float):
 
     Parameters
     ----------
-    world : kanat.continuum.factorized_system.World
+    world : kanat.continuum.factorized.system.World
     Y : ndarray, shape (N+1, d)
         The old state (``Y^n``).
     side : float

@@ -20,9 +20,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from kanat.continuum.factorized import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
+from kanat.continuum.factorized.sweeps import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
 from kanat.continuum.schemes import ContinuumScheme
-from kanat.continuum.wave_factorized import wave_factorized_step
+from kanat.continuum.factorized.waves import wave_factorized_step
 from kanat.errors import KanatError
 
 

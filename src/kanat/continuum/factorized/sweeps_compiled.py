@@ -1,7 +1,7 @@
 """The factorized step compiled whole (numba): node forms, split, sweeps and characteristic ends.
 
-The same algorithm as the readable NumPy path (:func:`kanat.continuum.factorized.factorized_step`
-with :mod:`characteristics` and :class:`~kanat.continuum.factorized_system.CableSystem`), one
+The same algorithm as the readable NumPy path (:func:`kanat.continuum.factorized.sweeps.factorized_step`
+with :mod:`.characteristics` and :class:`~kanat.continuum.factorized.system.CableSystem`), one
 compiled call per step so that the "running count" costs what the paper says it costs; the
 tests check the two agree to round-off. Nodal loads and their derivatives come from the full
 model's kernels (:func:`kernels2d.node_load_jacobian`, :func:`kernels3d.node_load3_jacobian`);
@@ -21,7 +21,7 @@ from kanat.jit import kernel
 
 from kanat.continuum import kernels2d as k2
 from kanat.continuum import kernels3d as k3
-from kanat.continuum.factorized_kernels import lu_factor, lu_solve, sweep_into
+from kanat.continuum.factorized.dense import lu_factor, lu_solve, sweep_into
 
 STEP = 1e-30
 ENDPAR = 10
@@ -124,7 +124,7 @@ def node_forms(Y, cur, up, p, with_jacobian):
 
 @kernel
 def split_node(B, c_l, c_t2, parts):
-    """``parts[0..3] = B_1+, B_1-, B_2+, B_2-`` of one node (closed form, :mod:`characteristics`).
+    """``parts[0..3] = B_1+, B_1-, B_2+, B_2-`` of one node (closed form, :mod:`.characteristics`).
 
     ``R = (B^2 - c_t^2)/(c_l^2 - c_t^2)``, ``B_1+- = (R B +- c_l R)/2``, ``B_2+- = (Q B +- c_t Q)/2``
     with ``Q = I - R``; plain loops (no allocation).
@@ -456,7 +456,7 @@ def _add(X, offset):
 
 
 def end_parameters(end) -> np.ndarray:
-    """The ``ENDPAR`` vector of an :class:`~kanat.continuum.factorized_system.EndData`."""
+    """The ``ENDPAR`` vector of an :class:`~kanat.continuum.factorized.system.EndData`."""
     par = np.zeros(ENDPAR)
     par[0] = end.kind
     dim = len(end.velocity)

@@ -34,17 +34,17 @@ from __future__ import annotations
 import numpy as np
 from scipy.linalg import solve_banded
 
-from kanat.continuum.factorized_compiled import end_parameters
-from kanat.continuum.factorized_system import STEP
+from kanat.continuum.factorized.sweeps_compiled import end_parameters
+from kanat.continuum.factorized.system import STEP
 from kanat.continuum.stepper import NewtonFailure
-from kanat.continuum.wave_factorized_compiled import assemble_block
+from kanat.continuum.factorized.waves_compiled import assemble_block
 
 
 def wave_factorized_step(world, Y, dt: float, block_count: int, gamma: float = 0.5, iterations: int = 1,
                          compiled: bool = True):
     """The new nodal states (N+1, d) after one wave-factorized step of ``dt`` from ``Y``.
 
-    ``compiled`` assembles each block with :func:`wave_factorized_compiled.assemble_block`;
+    ``compiled`` assembles each block with :func:`.waves_compiled.assemble_block`;
     False uses the NumPy assembly here (the tests' twin).
     """
     system = world.system

@@ -1,7 +1,7 @@
 """Factorization by propagation direction (seed 000 section 1; SPEC §2.5): one step.
 
 Quasi-linearized on each step (``B = B(Y^n)``, ``D = D(Y^n)``), split by direction
-(:mod:`kanat.continuum.characteristics`), and advanced with implicit upwind sweeps — the
+(:mod:`kanat.continuum.factorized.characteristics`), and advanced with implicit upwind sweeps — the
 "running count" of the paper, eqs. 9–11:
 
     (I + dt L+) Y^{n+1/2} = dt D^n + Y^n,   L+ Y = B+ (Y_i - Y_{i-1}) / ds,   i = 1 .. N-1 forward
@@ -33,9 +33,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from kanat.continuum.characteristics import end_state, group_split
-from kanat.continuum.factorized_compiled import MESSAGES, OK, end_parameters, factorized_step_compiled
-from kanat.continuum.factorized_kernels import sweep_numpy
+from kanat.continuum.factorized.characteristics import end_state, group_split
+from kanat.continuum.factorized.sweeps_compiled import MESSAGES, OK, end_parameters, factorized_step_compiled
+from kanat.continuum.factorized.dense import sweep_numpy
 from kanat.continuum.stepper import NewtonFailure
 
 TWO_SWEEPS = ((("l+", "t+"), True), (("l-", "t-"), False))
@@ -49,7 +49,7 @@ def factorized_step(world, Y, dt: float, sweeps, implicit_source: bool = True, c
 
     Parameters
     ----------
-    world : kanat.continuum.factorized_system.World
+    world : kanat.continuum.factorized.system.World
     Y : ndarray, shape (N+1, d)
     sweeps : sequence of (tuple of str, bool)
         Parts of ``B`` (keys of :func:`characteristics.group_split`) and direction (True:
@@ -57,7 +57,7 @@ def factorized_step(world, Y, dt: float, sweeps, implicit_source: bool = True, c
     implicit_source : bool
         Linearize ``D`` in the first sweep (module docstring).
     compiled : bool
-        Run the whole step compiled (:mod:`factorized_compiled`); False runs this readable
+        Run the whole step compiled (:mod:`.sweeps_compiled`); False runs this readable
         NumPy path (with the NumPy sweep), the tests' twin.
     delta : bool
         Sweep the increments ``Y^{n+1} - Y^n`` driven by the upwind residual (module docstring)

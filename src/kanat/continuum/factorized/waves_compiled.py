@@ -1,6 +1,6 @@
 """The block assembly of the wave-factorized step, compiled (numba).
 
-The same banded system as :func:`kanat.continuum.wave_factorized._block_solve` builds with
+The same banded system as :func:`kanat.continuum.factorized.waves._block_solve` builds with
 NumPy (its readable twin; the tests compare the two): the gamma-weighted box rows of one
 wave block at every interval and its linearized end conditions, in LAPACK band storage
 for :func:`scipy.linalg.solve_banded`.
@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import kernel
 
-from kanat.continuum.factorized_compiled import load_jacobian, lu_factor, lu_solve, mass_stiffness, physical
+from kanat.continuum.factorized.sweeps_compiled import load_jacobian, lu_factor, lu_solve, mass_stiffness, physical
 
 STEP = 1e-30
 
@@ -19,7 +19,7 @@ def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, p
     """Band (lower + upper + 1, n nb), right-hand side (n nb,) and bandwidths of one block.
 
     ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
-    planar branches only (:mod:`factorized_compiled`).
+    planar branches only (:mod:`.sweeps_compiled`).
     """
     return _assemble_block(Yn, latest, Fn, cur, up if dim == 3 else None, p, dim, ds, dt, gamma, own, comps,
                            par0, par1)
