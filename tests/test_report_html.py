@@ -115,3 +115,16 @@ def test_sweep_and_report_verbs(tmp_path):
     assert bad.exit_code == 1 and "vessel.track[7]" in bad.output
     page = runner.invoke(app(), ["report", str(tmp_path / "st"), "-o", str(tmp_path / "again.html")])
     assert page.exit_code == 0 and (tmp_path / "again.html").exists()
+
+
+def test_report_never_overwrites_its_sources(result, tmp_path):
+    before = result.read_bytes()
+    with pytest.raises(KanatError, match="is also an input"):
+        write_report(result, result)
+    assert result.read_bytes() == before                                  # the result is intact
+    with pytest.raises(KanatError, match="is a directory; give a file name, e.g. .*report.html"):
+        write_report(result, tmp_path)
+    with pytest.raises(KanatError, match="does not exist. Create it first"):
+        write_report(result, tmp_path / "missing" / "r.html")
+    page = write_report(result, tmp_path / "r.html")
+    assert page.read_text().startswith("<!DOCTYPE html>") and not list(tmp_path.glob(".*"))   # no temporaries

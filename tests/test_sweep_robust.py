@@ -119,6 +119,9 @@ def test_names_and_values_never_steer_paths(base, tmp_path):
     assert len(traces) == len(names)
     first = read_result(study / "results" / f"{names[0]}.nc")
     assert traces[0]["name"] == names[0] and first.attrs["case_name"] == "../../x"
+    for target in (study / "summary.nc", study / "results" / f"{names[0]}.nc"):   # the report keeps off the study
+        with pytest.raises(KanatError, match="is also an input"):
+            write_report(study, target)
 
     table = json.loads((study / "study.json").read_text())
     table["cases"][0]["name"] = "../../../outside"                                 # an edited study
