@@ -25,7 +25,7 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass
 
-from numba import njit
+from numba import njit, types
 
 # error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
 # non-finite results) instead of a check and an exception on every division, which costs
@@ -41,10 +41,11 @@ class Family:
     Attributes
     ----------
     name : str
-        ``continuum-2d``, ``lumped-rk4``, ...
-    entries : tuple
-        The top-level kernels (numba dispatchers) the run calls from Python; compiling them
-        compiles everything they call.
+        ``continuum-2d``, ``lumped-rk4``, ... (``kanat.warmup.FAMILIES``).
+    entries : tuple of (dispatcher, accept)
+        The top-level kernels the run calls from Python (compiling them compiles everything
+        they call), each with ``accept(signature) -> bool`` choosing its version for this
+        family (:func:`planar`, :func:`spatial`) or None for any version.
     compile_s : float
         Measured compile time of the family on a cold cache (2-core x86_64 reference
         machine, benchmarks/RESULTS.md) [s].
@@ -55,22 +56,33 @@ class Family:
     compile_s: float
 
 
-def is_cached(dispatcher) -> bool:
-    """Whether ``dispatcher`` runs without compiling: compiled in this process already, or its
-    disk cache holds a version for this machine and this source."""
-    if dispatcher.signatures:
+def planar(signature) -> bool:
+    """The planar version of a kernel shared by planar and spatial runs (``up`` is None)."""
+    return any(isinstance(t, types.NoneType) for t in signature)
+
+
+def spatial(signature) -> bool:
+    """The spatial version of a kernel shared by planar and spatial runs."""
+    return not planar(signature)
+
+
+def is_cached(dispatcher, accept=None) -> bool:
+    """Whether ``dispatcher`` runs without compiling: a version (one that ``accept`` takes) is
+    compiled in this process already, or its disk cache holds one for this machine and source."""
+    accept = accept or (lambda signature: True)
+    if any(accept(signature) for signature in dispatcher.signatures):
         return True
     try:
-        cache = dispatcher._cache
-        index = cache._cache_file._load_index()
+        index = dispatcher._cache._cache_file._load_index()
         magic = dispatcher.targetctx.codegen().magic_tuple()
         code = hashlib.sha256(dispatcher.py_func.__code__.co_code).hexdigest()
     except (AttributeError, OSError, EOFError, ValueError):      # numba internals moved: assume not cached
         return False
-    return any(key[1] == magic and key[2][0] == code for key in index)
+    return any(key[1] == magic and key[2][0] == code and accept(key[0]) for key in index)
 
 
 def pending(family: Family) -> float | None:
     """Seconds of compiling ``family`` would cost now (its measured ``compile_s``), or None if
-    every kernel of it is cached."""
-    return None if all(is_cached(entry) for entry in family.entries) else family.compile_s
+    every kernel of it is cached. Cheap: reads the cache index, compiles nothing."""
+    cached = all(is_cached(dispatcher, accept) for dispatcher, accept in family.entries)
+    return None if cached else family.compile_s

@@ -173,7 +173,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
                 for r in range(3):
                     bx[b, r] = x[body_node[b], r]
             water(bx, t, cz, cu, sea, bu, ba)
-        kernels.body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
+        kernels.add_body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
         for b in range(buoy_node.shape[0]):
             keel = buoy_node[b]
             immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]

@@ -139,7 +139,7 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
     """
     el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y)
     packed = np.empty((x.shape[0], 6))
-    element_forces(x, v, uw, aw, node_force, node_mass, el, F, packed, T, strain)
+    element_forces(x, v, _writable(uw), _writable(aw), node_force, node_mass, el, F, packed, T, strain)
     M[:] = packed[:, np.array(PACKED)]
 
 
@@ -320,8 +320,19 @@ def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
             T[k] = max(0.0, f + c[k] * edot)
 
 
-@kernel
 def body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
+    """:func:`add_body_loads` from Python: the water kinematics as writable C arrays, whatever
+    array the environment gave (one compiled version for every run)."""
+    add_body_loads(x, v, _writable(uw), _writable(aw), body_node, drag_area, spreading, added_mass, float(rho),
+                   float(heading), F)
+
+
+def _writable(a) -> np.ndarray:
+    return np.require(a, np.float64, ("C", "W"))
+
+
+@kernel
+def add_body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
     """Body drag, spreading force and fluid inertia added to ``F`` (system eq. 2).
 
     ``uw, aw`` (n_body, 3) water velocity and acceleration at the bodies.

@@ -1,0 +1,103 @@
+"""kanat.jit and kanat.warmup: whether a run will compile, and that a warmup leaves a run
+nothing to compile. Oracles: numba's own dispatcher state and its compile events."""
+import numpy as np
+import pytest
+from numba import njit
+from numba.core import event
+
+from numba.core.registry import CPUDispatcher
+
+from kanat import jit, warmup
+from kanat.continuum import kernels2d, kernels3d
+from kanat.continuum.factorized import dense, sweeps_compiled, waves_compiled
+from kanat.lumped import fast, fast_implicit, kernels
+from kanat.api import SCHEMES, load_case, simulate
+from kanat.jit import Family
+from kanat.model import Case
+
+
+class Compiles(event.Listener):
+    """Counts numba compilations (cache loads are not compilations)."""
+
+    def __init__(self):
+        self.names = []
+
+    def on_start(self, ev):
+        self.names.append(ev.data["dispatcher"].py_func.__name__)
+
+    def on_end(self, ev):
+        pass
+
+
+def run_quietly(case):
+    ds = simulate(case if isinstance(case, Case) else load_case(case))
+    assert ds.attrs["status"] == "ok", ds.attrs["status"]
+    return ds
+
+
+def test_pending_follows_the_dispatcher():
+    @njit                                       # not cached on disk: only this process can know it
+    def twice(x):
+        return 2.0 * x
+
+    family = Family("test", ((twice, None),), 1.5)
+    assert not jit.is_cached(twice) and jit.pending(family) == 1.5
+    assert twice(2.0) == 4.0
+    assert jit.is_cached(twice) and jit.pending(family) is None
+    assert not jit.is_cached(twice, accept=jit.planar)           # its one version is not a planar one
+
+
+@pytest.mark.parametrize("name", sorted(SCHEMES))
+def test_every_registered_scheme_has_a_family(name):
+    for dimensions in (2, 3):
+        family = warmup.family_name(name, dimensions)
+        assert family in warmup.FAMILIES and family in warmup.CASES
+
+
+KERNEL_MODULES = (kernels2d, kernels3d, sweeps_compiled, waves_compiled, dense, kernels, fast, fast_implicit)
+
+
+def versions() -> dict:
+    """Every kernel's versions in this process (compiled or loaded from the disk cache)."""
+    return {(module.__name__, name): set(f.signatures) for module in KERNEL_MODULES
+            for name, f in vars(module).items() if isinstance(f, CPUDispatcher)}
+
+
+def _after_warmup_compiles_nothing(name, case):
+    """A run after the family's warmup neither compiles nor loads a kernel version the warmup
+    did not (a version loaded from an older disk cache would hide a missing one)."""
+    run_quietly(warmup.CASES[name])                  # what warmup() runs when the family is not cached
+    assert warmup.pending(name) is None
+    assert warmup.warmup(run_quietly, [name]) == {name: 0.0}          # and, cached, skips
+    warm = versions()
+    listener = Compiles()
+    with event.install_listener("numba:compile", listener):
+        run_quietly(case)
+    assert listener.names == []
+    assert versions() == warm
+
+
+def test_a_planar_run_after_warmup_compiles_nothing():
+    case = load_case("examples/speed_step_2d.yaml").replace({"simulation.duration": 5.0, "cables[0].segments": 20})
+    assert warmup.family_name(case.simulation.scheme, 2) == "continuum-2d"
+    _after_warmup_compiles_nothing("continuum-2d", case)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, example, changes", [
+    ("continuum-3d", "turn_360_3d.yaml", {"simulation.duration": 10.0}),
+    ("lumped-rk4", "seed004_head_5.6s_1to4.yaml", {"simulation.duration": 1.0}),
+    ("lumped-implicit", "seed004_head_5.6s_1to4.yaml",
+     {"simulation.duration": 1.0, "simulation.scheme": "generalized-alpha-lumped"}),
+    ("wave-factorized-2d", "seed000_planar80.yaml", {"simulation.duration": 0.1}),
+    ("factorized-2d", "seed000_accel.yaml", {"simulation.duration": 0.02}),
+])
+def test_a_run_after_warmup_compiles_nothing(name, example, changes):
+    _after_warmup_compiles_nothing(name, load_case(f"examples/{example}").replace(changes))
+
+
+def test_the_warmup_cases_are_tiny_and_valid():
+    for name, case in warmup.CASES.items():
+        parsed = load_case(case)
+        assert warmup.family_name(parsed.simulation.scheme, parsed.simulation.dimensions or 2) == name
+        assert sum(c.segments for c in parsed.cables) <= 5
