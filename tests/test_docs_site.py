@@ -8,7 +8,6 @@ the gallery); the repository (no page points to files outside it).
 import importlib.util
 import os
 import re
-import shutil
 import subprocess
 import sys
 from pathlib import Path

@@ -60,7 +60,7 @@ def _schemes() -> list[str]:
 def reference_page() -> str:
     """``docs/reference/case-format.md``: the case format and the result names, generated."""
     from kanat.io.schema import VARIABLES
-    from kanat.model.reference import case_format_markdown, results_markdown
+    from kanat.model.reference_markdown import case_format_markdown, results_markdown
 
     head = ("# Case and result reference\n\n"
             "Generated from the code by `python scripts/docs_reference.py` (the pydantic models of "
@@ -73,7 +73,7 @@ def reference_page() -> str:
 
 def support_page() -> str:
     """``docs/reference/support.md``: the support table, generated."""
-    from kanat.model.reference import support_markdown
+    from kanat.model.reference_markdown import support_markdown
 
     return ("# Which model supports which key\n\n"
             "Generated from `kanat.model.support` by `python scripts/docs_reference.py`. `kanat "
@@ -88,7 +88,8 @@ def schemes_page() -> str:
     import dataclasses
 
     from kanat.api import SCHEMES
-    from kanat.model.reference import _cell, plain_text
+    from kanat.model.reference import plain_text
+    from kanat.model.reference_markdown import _cell
 
     pages = {"continuum": "continuum.md", "lumped": "lumped.md"}
     lines = ["# Time schemes", "",
