@@ -21,9 +21,20 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from kanat.continuum.factorized.sweeps import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
-from kanat.continuum.schemes import ContinuumScheme
+from kanat.continuum.family import ContinuumScheme
 from kanat.continuum.factorized.waves import wave_factorized_step
 from kanat.errors import KanatError
+
+MAX_SIGMA_TR = {
+    ("factorized", 2): 1.0, ("factorized", 3): 1.0,
+    ("factorized-4", 2): 0.5, ("factorized-4", 3): 0.5,
+    ("wave-factorized", 3): 4.5, ("wave-factorized-2", 3): 4.5, ("wave-factorized-3", 3): 4.5,
+}
+"""Largest transverse Courant number ``sigma_tr`` (at the initial state's largest tension) at
+which each scheme stayed bounded on the examples, by scheme and dimensions (stability sweeps,
+docs/factorization.md): the sweeps on the 1000 m speed step (bounded at 0.94 / 0.47, not at
+1.42 / 0.94); the spatial wave blocks on the 360 deg turn (bounded at 4.7, not at 9.4). The
+planar wave split stayed bounded on every example swept, so it has no entry."""
 
 
 @dataclass(frozen=True)
@@ -39,6 +50,9 @@ class Factorized(ContinuumScheme):
     delta : bool
         Sweep increments driven by the upwind residual (Beam–Warming delta form), whose
         steady state does not depend on the step; False (default) is the paper's eq. 8.
+    check_stability : bool
+        Refuse, before the run, a step beyond the transverse Courant number the scheme is
+        known to take (:data:`MAX_SIGMA_TR`); False lets a stability study go past it.
     """
 
     name: ClassVar[str] = "factorized"
@@ -48,6 +62,11 @@ class Factorized(ContinuumScheme):
     implicit_source: bool = True
     compiled: bool = True
     delta: bool = False
+    check_stability: bool = True
+
+    def max_sigma_tr(self, dimensions: int) -> float | None:
+        """The largest ``sigma_tr`` this scheme is known to stay bounded at (:data:`MAX_SIGMA_TR`)."""
+        return MAX_SIGMA_TR.get((self.name, dimensions)) if self.check_stability else None
 
     def step(self, model, state, dt: float):
         """One step: ``(new_state, 1)``; raises NewtonFailure when an end cannot be solved."""
@@ -86,6 +105,11 @@ class WaveFactorized(ContinuumScheme):
     gamma: float = 0.6
     iterations: int = 1
     compiled: bool = True
+    check_stability: bool = True
+
+    def max_sigma_tr(self, dimensions: int) -> float | None:
+        """The largest ``sigma_tr`` this scheme is known to stay bounded at (:data:`MAX_SIGMA_TR`)."""
+        return MAX_SIGMA_TR.get((self.name, dimensions)) if self.check_stability else None
 
     @property
     def order(self) -> int:
