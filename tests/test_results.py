@@ -18,7 +18,8 @@ def test_statics_result_round_trip_keeps_names_units_and_provenance(tmp_path):
     result = solve_statics(case)
     path = write_result(statics_dataset(result, wall_time_s=0.5), tmp_path / "r.nc")
     ds = read_result(path)
-    assert set(ds.dims) == {"node", "xyz", "body"}
+    assert set(ds.dims) == {"node", "xyz", "body", "cable", "anchor"}      # cable, anchor: mooring results
+    assert ds.sizes["anchor"] == 0 and ds["seabed_contact_length"].values.tolist() == [0.0]
     expected_units = {"s": "m", "position": "m", "velocity": "m/s", "tension": "N",
                       "body_position": "m", "vessel_position": "m", "vessel_heading": "rad"}
     for name, unit in expected_units.items():

@@ -78,11 +78,30 @@ class Outcome:
 
 def _statics_dataset(case: Case, method: str = "auto"):
     from kanat.io.results import statics_dataset
+    from kanat.statics import NeedsDrag
     from kanat.statics import solve_statics as solve
 
     start = time.perf_counter()
-    result = solve(case, method=method)
+    try:
+        result = solve(case, method=method)
+    except NeedsDrag as reason:          # a network in a current: the catenary carries no drag
+        result = _lumped_statics(case, str(reason))
     return statics_dataset(result, wall_time_s=time.perf_counter() - start), result.summary(), result
+
+
+def _lumped_statics(case: Case, reason: str):
+    """Network statics by the lumped model's equilibrium (statics may not import the lumped model)."""
+    from kanat.lumped.equilibrium import equilibrium
+    from kanat.lumped.network import build_network
+    from kanat.statics.network_result import result_from_positions
+
+    net = build_network(case)
+    x, info = equilibrium(net, case)
+    cables = {name: x[net.node_index[net.node_cable == name]] for name in net.cable_names}
+    bodies = {name: x[node] for name, node in zip(net.body_names, net.body_node)}
+    points = {name: x[node] for name, node in net.names.items() if name in case.points}
+    return result_from_positions(case, cables, bodies, points, "lumped equilibrium", info["iterations"],
+                                 [f"solved by the lumped model's equilibrium: {reason}"])
 
 
 def _pitch_dataset(case: Case, method: str = "auto"):

@@ -131,8 +131,6 @@ def statics_dataset(result, wall_time_s: float = 0.0) -> xr.Dataset:
     bodies = list(result.bodies)
     ds = xr.Dataset(
         {
-            "s": ("node", np.concatenate(s)),
-            "cable": ("node", np.array(names, dtype=object)),
             "position": (("node", "xyz"), position),
             "velocity": (("node", "xyz"), np.tile(result.vessel_velocity, (len(position), 1))),
             "tension": ("node", np.concatenate(tension)),
@@ -141,10 +139,49 @@ def statics_dataset(result, wall_time_s: float = 0.0) -> xr.Dataset:
             "vessel_position": ("xyz", np.asarray(result.case.vessel.tow_point, dtype=float)),
             "vessel_heading": ((), 0.0),
         },
-        coords={"body": np.array(bodies, dtype=object)},
+        coords={"body": np.array(bodies, dtype=object), "s": ("node", np.concatenate(s)),
+                "cable": ("node", np.array(names, dtype=object))},       # along node, as in the dynamic results
         attrs=attrs,
     )
-    return annotate(ds)
+    return annotate(ds.assign(_mooring_variables(result, bodies)))
+
+
+def _mooring_variables(result, bodies: list) -> dict:
+    """Statics results of moorings (case-format.md): seabed contact, forces on anchors and
+    bodies, and, from network statics, body attitudes and moments, points and stiffness."""
+    from kanat.io.schema import VARIABLES
+
+    def var(name, dims, values, **coords):
+        return xr.DataArray(np.asarray(values, dtype=float).reshape([len(c) for c in coords.values()] or []),
+                            dims=dims, coords={k: np.array(v, dtype=object) for k, v in coords.items()},
+                            attrs=VARIABLES[name].attrs())
+    xyz = {"xyz": ["x", "y", "z"]}
+    cables = list(result.cables)
+    out = {"seabed_contact_length": xr.DataArray(        # dimension 'cable' in the cables' order
+        np.array([result.cables[c].grounded_length for c in cables], dtype=float), dims="cable",
+        attrs=VARIABLES["seabed_contact_length"].attrs())}
+    anchors = dict(getattr(result, "anchor_forces", {}))
+    out["anchor_force"] = var("anchor_force", ("anchor", "xyz"), [anchors[a] for a in anchors],
+                              anchor=list(anchors), **xyz)
+    forces = getattr(result, "body_forces", {})
+    out["body_force"] = var("body_force", ("body", "xyz"), [forces.get(b, np.zeros(3)) for b in bodies],
+                            body=bodies, **xyz)
+    if hasattr(result, "attitudes"):
+        out["body_moment"] = var("body_moment", ("body", "xyz"), [result.body_moments.get(b, np.zeros(3))
+                                                                 for b in bodies], body=bodies, **xyz)
+        out["body_attitude"] = var("body_attitude", ("body", "xyz"), [result.attitudes[b] for b in bodies],
+                                   body=bodies, **xyz)
+        points = list(result.points)
+        out["point_position"] = var("point_position", ("point", "xyz"), [result.points[p] for p in points],
+                                    point=points, **xyz)
+        if result.stiffness:                                  # the catenary network's, not the fallback's
+            dofs = ["surge", "sway", "heave", "roll", "pitch", "yaw"]
+            out["body_stiffness"] = var("body_stiffness", ("body", "dof", "dof_j"),
+                                        [result.stiffness[b] for b in bodies], body=bodies, dof=dofs, dof_j=dofs)
+            out["point_stiffness"] = var("point_stiffness", ("point", "xyz", "xyz_j"),
+                                         [result.stiffness[p] for p in points], point=points,
+                                         xyz_j=xyz["xyz"], **xyz)
+    return out
 
 
 def _sphere_dataset(sol, attrs: dict) -> xr.Dataset:

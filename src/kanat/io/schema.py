@@ -69,6 +69,20 @@ VARIABLES: dict[str, Variable] = {
     "vessel_heading": Variable((), "rad", "vessel heading, counter-clockwise from +x"),
     "vessel_pitch": Variable((), "rad", "vessel pitch, bow up positive"),
     "newton_iterations": Variable((), "1", "Newton iterations of the steps since the previous output"),
+    # moorings (statics; the dynamic models may add time)
+    "seabed_contact_length": Variable(("cable",), "m", "unstretched length of each cable resting on the seabed"),
+    "anchor_force": Variable(("anchor", "xyz"), "N", "force of the line on each anchor, named by cable end "
+                             "(uplift is its +z part)"),
+    "body_force": Variable(("body", "xyz"), "N", "resultant force of the lines on each body"),
+    "body_moment": Variable(("body", "xyz"), "N m", "moment of the lines' forces about each body's reference point"),
+    "body_attitude": Variable(("body", "xyz"), "rad", "roll, pitch, yaw of each body (R = Rz(yaw) Ry(pitch) Rx(roll))"),
+    "point_position": Variable(("point", "xyz"), "m", "network point positions"),
+    "body_stiffness": Variable(("body", "dof", "dof_j"), "N/m, N/rad, N m/m, N m/rad",
+                               "mooring stiffness at each body about its reference point, -dF/dq of the lines "
+                               "with the other free nodes in equilibrium (statics)"),
+    "point_stiffness": Variable(("point", "xyz", "xyz_j"), "N/m",
+                                "mooring stiffness at each network point, -dF/dx of the lines with the other "
+                                "free nodes in equilibrium (statics)"),
     # snap events (lumped model), written once at the end of a run
     "event_time": Variable(("event",), "s", "time at which a slack element became taut"),
     "event_segment": Variable(("event",), "1", "segment index of the snap event"),

@@ -280,6 +280,39 @@ def _point_extras(case: Case) -> list[Use]:
             for key in POINT_EXTRAS if getattr(point, key) not in (0.0, (0.0, 0.0, 0.0))]
 
 
+NETWORK_FEATURES = ("points", "shared_bodies", "current_y", "out_of_plane", "seabed_friction",
+                    "seabed_slope", "sections", "attachments", "six_dof_bodies", "body_fairleads",
+                    "vessel_fairleads", "point_properties")
+"""Rows that only network statics solves; a case using none of them is solved cable by cable
+in the x-z plane (shooting, collocation or the closed-form catenary, also in a current)."""
+
+
+def needs_network(case: Case) -> bool:
+    """True when statics must solve ``case`` as a 3-D network (:data:`NETWORK_FEATURES`)."""
+    return any(feature(name).uses(case) for name in NETWORK_FEATURES)
+
+
+def has_drag(case: Case) -> bool:
+    """True when a current or the vessel's initial speed drags on the lines."""
+    return bool(case.vessel.initial_speed or any(any(row[1:]) for row in _current_rows(case)))
+
+
+NO_STEADY_EFFECT = ("axial_damping", "tangential_added_mass", "consistent_mass",
+                    "initial_state_as_given", "frame_pole")
+"""Rows that do not change a steady state (damping, added mass, solver settings)."""
+
+
+def _drag_without_fallback(case: Case) -> list[Use]:
+    """A network in a current or under tow, where it uses what the lumped equilibrium lacks
+    (a row the lumped model does not support, or its missing seabed contact)."""
+    if not (has_drag(case) and needs_network(case)):
+        return []
+    return [(path, f" ({row.title}{detail})") for row in FEATURES
+            if row.statics == YES and row.name not in NO_STEADY_EFFECT
+            and (row.lumped == NO or (row.lumped == IGNORED and row.name == "seabed_contact"))
+            for path, detail in row.uses(case)]
+
+
 # --- the table ----------------------------------------------------------------------------
 
 _NOT_NONE = (lambda v: v is not None)
@@ -291,9 +324,9 @@ FEATURES: tuple[Feature, ...] = (
     Feature("several_cables", "several cables", _several_cables,
             statics=YES, continuum=NO, lumped=YES, note="the continuum model takes one cable"),
     Feature("points", "a cable end at a network point", _points,
-            statics=NO, continuum=NO, lumped=YES),
+            statics=YES, continuum=NO, lumped=YES),
     Feature("shared_bodies", "a body ending several cables", _shared_bodies,
-            statics=NO, continuum=NO, lumped=YES, note="statics solves one cable per body"),
+            statics=YES, continuum=NO, lumped=YES, note="the continuum model takes one cable"),
     Feature("free_end", "a free cable end", _free_ends, statics=NO, continuum=YES, lumped=YES,
             note="a free end's steady direction is undefined; end the cable at a small body"),
     Feature("loose_first_end", "a cable whose 'from' end is not the vessel or an anchor",
@@ -302,11 +335,10 @@ FEATURES: tuple[Feature, ...] = (
     Feature("waves", "waves", _waves, statics=IGNORED, continuum=NO, lumped=YES,
             note={"statics": STEADY, "continuum": "it has no wave kinematics"}),
     Feature("current_y", "a current with a y component", _current_y,
-            statics=NO, continuum=NO, lumped=YES,
-            note="statics is planar, and the continuum model starts from its statics"),
+            statics=YES, continuum=NO, lumped=YES, note="the continuum model is planar (x-z plane)"),
     Feature("out_of_plane", "a position or force off the x-z plane",
-            _out_of_plane, statics=NO, continuum=NO, lumped=YES,
-            note="statics is planar, and the continuum model starts from its statics"),
+            _out_of_plane, statics=YES, continuum=NO, lumped=YES,
+            note="the continuum model is planar (x-z plane)"),
     Feature("seabed_contact", "seabed contact", _seabed_reach,
             statics=YES, continuum=IGNORED, lumped=IGNORED,
             note="it has no seabed contact: nodes may pass below z = -depth"),
@@ -330,16 +362,18 @@ FEATURES: tuple[Feature, ...] = (
             lumped=YES, note="the continuum model starts from its steady state"),
     Feature("frame_pole", "a chosen frame pole", _simulation("frame_pole", "auto"),
             statics=YES, continuum=YES, lumped=IGNORED, note="a 3-D continuum setting"),
-    # the additions for moorings and real cable systems: no solver has them yet
+    # the additions for moorings and real cable systems
     Feature("seabed", "seabed contact properties", _seabed(bool),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("seabed_friction", "seabed friction", _seabed(lambda s: s.friction > 0, "friction"),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("seabed_lateral_friction", "lateral seabed friction",
             _seabed(lambda s: s.lateral_friction > 0, "lateral_friction"),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=IGNORED, continuum=NO, lumped=NO,
+            note={"statics": "statics lays each grounded line straight in its own vertical plane, so "
+                             "nothing pushes it sideways for lateral friction to resist"}),
     Feature("seabed_slope", "a sloping seabed", _seabed(lambda s: s.slope_deg != 0, "slope_deg"),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),
             statics=NO, continuum=NO, lumped=NO),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
@@ -347,21 +381,26 @@ FEATURES: tuple[Feature, ...] = (
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),
     Feature("tangential_added_mass", "tangential added mass",
             _line_type_key("added_mass_tangential", _NONZERO), statics=YES, continuum=NO, lumped=NO),
-    Feature("sections", "a cable of several sections", _sections, statics=NO, continuum=NO, lumped=NO),
+    Feature("sections", "a cable of several sections", _sections, statics=YES, continuum=NO, lumped=NO),
     Feature("attachments", "bodies attached along a cable", _attachments,
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("vessel_motion", "the vessel's prescribed motion", _vessel_motion,
             statics=IGNORED, continuum=NO, lumped=NO, note=STEADY),
     Feature("winch", "a winch", _winch, statics=IGNORED, continuum=NO, lumped=NO,
             note="its steady state is before the winch turns"),
     Feature("six_dof_bodies", "a body with 6 degrees of freedom", _body_key("dof", lambda v: v == 6),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("body_fairleads", "a cable end at a fairlead on a body", _fairleads("body"),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("vessel_fairleads", "a cable end at a fairlead on the vessel", _fairleads("vessel"),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
     Feature("point_properties", "a point's volume, drag, added mass or force", _point_extras,
-            statics=NO, continuum=NO, lumped=NO),
+            statics=YES, continuum=NO, lumped=NO),
+    # statics in a current: a network goes to the lumped model's equilibrium, which must take it
+    Feature("drag_on_network", "a current or tow speed on a network", _drag_without_fallback,
+            statics=NO, continuum=YES, lumped=YES, pitch=YES,
+            note="the catenary lines of network statics carry no drag, so statics hands a network "
+                 "in a current or under tow to the lumped model's equilibrium, which lacks this"),
 )
 """The support table (module docstring). The ``pitch`` model solves its own block only:
 everything else is ignored by it."""

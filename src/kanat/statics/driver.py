@@ -6,8 +6,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.model.support import has_drag, needs_network, require_supported
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
+from kanat.statics.network_setup import NeedsDrag
 from kanat.statics.problem import CableBVP, FixedEnd
 from kanat.statics.setup import cable_problems, vessel_velocity
 from kanat.statics.shooting import solve_shooting
@@ -74,6 +76,31 @@ class StaticsResult:
     vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     sphere: SphereSolution | None = None
 
+    @property
+    def anchor_forces(self) -> dict[str, np.ndarray]:
+        """Force of each cable on its anchors, named by cable end (``mooring.from``) [N], shape (3,)."""
+        return {f"{cable.name}.{label}": force for cable, label, force in self._end_forces()
+                if (cable.from_ if label == "from" else cable.to).kind == "anchor"}
+
+    @property
+    def body_forces(self) -> dict[str, np.ndarray]:
+        """Resultant force of the cables on each body [N], shape (3,)."""
+        out: dict[str, np.ndarray] = {}
+        for cable, label, force in self._end_forces():
+            end = cable.from_ if label == "from" else cable.to
+            if end.kind == "body":
+                out[end.name] = out.get(end.name, np.zeros(3)) + force
+        return out
+
+    def _end_forces(self):
+        """``(cable, "from" | "to", force of the cable on that end)``; ``F = T t`` pulls the
+        ``from`` end along ``+t`` and the ``to`` end along ``-t``."""
+        for cable in self.case.cables if self.sphere is None else ():
+            sol = self.cables[cable.name]
+            for label, row, sign in (("from", 0, 1.0), ("to", -1, -1.0)):
+                fx, fz = sign * sol.force[row]
+                yield cable, label, np.array([fx, 0.0, fz])
+
     def summary(self) -> str:
         """A few lines an engineer reads first: depths, layback, end tensions."""
         lines = []
@@ -113,6 +140,9 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
     """
     if case.sphere_two_cables is not None:
         return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
+    require_supported(case, "statics")
+    if needs_network(case):
+        return _solve_network(case, method)
     problems = cable_problems(case)
     solutions, bodies = {}, {}
     for cable in case.cables:
@@ -124,6 +154,21 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
             if end.kind == "body":
                 bodies[end.name] = solution.position[index]
     return StaticsResult(case, method, solutions, bodies, vessel_velocity(case))
+
+
+def _solve_network(case, method: str):
+    """Network statics (:mod:`kanat.statics.network`): still water only."""
+    from kanat.statics.network_result import solve_network_case
+
+    if has_drag(case):
+        raise NeedsDrag("network statics solves catenary lines, which carry no drag: "
+                        + ("the vessel's initial speed" if case.vessel.initial_speed else "the current")
+                        + " needs the lumped model's equilibrium (kanat.solve_statics and kanat statics "
+                        "use it for such a case)")
+    if method not in ("auto", "catenary"):
+        raise SolverError(f"method '{method}' solves single cables in the x-z plane; this case is a 3-D "
+                          "network (points, shared bodies, fairleads, sections, ...): use auto or catenary")
+    return solve_network_case(case, "catenary")
 
 
 def _solve_sphere_block(block, case, method: str) -> SphereSolution:

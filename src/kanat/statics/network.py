@@ -1,0 +1,357 @@
+"""Network statics: the equilibrium of free points and bodies held by catenary lines.
+
+The unknowns ``q`` are the free nodes' positions (and a rigid body's roll, pitch, yaw);
+each line is solved exactly in its own vertical plane (:mod:`kanat.statics.line_solve`)
+between its two ends, which gives the forces it puts on them and their derivatives. The
+residual is every free node's force (and a rigid body's moment about its reference point)::
+
+    (1)  R(q) = sum_lines f_end(q) + F_node(q) = 0
+    (2)  M(q) = sum_lines (R o) x f_end + (R c_G) x W + (R c_B) x B - C_rot (q - q_ref) = 0
+
+with ``o`` a fairlead in body axes, ``W = (0, 0, -m g)`` at the centre of gravity, ``B`` the
+buoyancy at the centre of buoyancy and ``C`` the hydrostatic stiffness about the reference
+``q_ref`` (the body's given position and attitude). When ``C`` has a roll or pitch restoring
+(a metacentric height), weight and buoyancy keep their reference-attitude levers, the
+restoring being in ``C`` already.
+
+A 3-D line of in-plane tensions ``(H, V_B)`` with unit horizontal direction ``e_h`` from A
+to B pulls B by ``f_B = -(H e_h + V_B e_z)`` and A by ``f_A = H_A e_h + V_A e_z``; with
+``K = d(H, V_B)/d(span, rise)`` (the inverse of the line's flexibility) and ``P`` the
+horizontal projection across the line, the end stiffness is (MoorPy's ``getStiffnessA``)::
+
+    (3)  -df_B/dr_B = K_hh e_h e_h^T + K_hv e_h e_z^T + K_vh e_z e_h^T + K_vv e_z e_z^T + H/span P
+
+Newton's method on (1)-(2) with this exact Jacobian, each step capped at a quarter of the
+shortest line at a node and 0.2 rad, is halved until the scaled residual falls. If that
+fails from the first guess, the loads are continued (a Newton homotopy): with ``R_0`` the
+residual at the guess, ``R(q) = (1 - lambda) R_0`` is solved for ``lambda`` rising from 0
+(the guess itself) to 1 in adaptive steps, each from the previous solution.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from kanat.errors import SolverError
+from kanat.statics.line_solve import LineSolution, solve_line
+from kanat.statics.network_setup import NetworkProblem, fairlead_rotation
+from kanat.statics.piecewise import Ground
+
+__all__ = ["LineState", "NetworkSolution", "solve_network"]
+
+MAX_ITERATIONS = 60           # Newton iterations from the first guess
+STAGE_ITERATIONS = 20         # per continuation stage
+MAX_HALVINGS = 10
+STEP_FRACTION = 0.25          # largest node move per iteration, in lengths of its shortest line
+MAX_TURN = 0.2                # largest body rotation per iteration [rad]
+FORCE_TOLERANCE = 1e-9        # of the network's load scale
+ROUNDOFF = 1e-12              # force round-off allowance, per newton of the stiffest EA
+FIRST_STAGE, MIN_STAGE = 0.25, 1e-4
+VERTICAL = 1e-9               # spans below this many line lengths: the line is vertical
+
+
+def skew(v) -> np.ndarray:
+    """``S(v)`` with ``S(v) x = v x x``."""
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+@dataclass(frozen=True, eq=False)
+class LineState:
+    """A line solved between its two ends.
+
+    Attributes
+    ----------
+    solution : LineSolution
+        In the line's plane, from end A.
+    reversed : bool
+        True when end A is the cable's ``to`` end.
+    origin : ndarray, shape (3,)
+        End A's position [m].
+    direction : ndarray, shape (3,)
+        ``e_h``, horizontal unit vector from A towards B.
+    ground : Ground or None
+    forces : ndarray, shape (2, 3)
+        Force of the line on its ``from`` and ``to`` ends [N].
+    blocks : ndarray, shape (2, 2, 3, 3)
+        ``blocks[i, j] = d forces[i] / d r_j`` (ends ``from``, ``to``) [N/m].
+    """
+
+    solution: LineSolution
+    reversed: bool
+    origin: np.ndarray
+    direction: np.ndarray
+    ground: Ground | None
+    forces: np.ndarray
+    blocks: np.ndarray
+
+
+def _spread(K, force_h, e_h, span, transverse) -> np.ndarray:
+    """The 3x3 derivative of an in-plane force ``(F_h, F_v)`` with ``d(F_h, F_v)/d(span, rise) = K``
+    with respect to end B's position, eq. (3)."""
+    ez = np.array([0.0, 0.0, 1.0])
+    across = np.diag([1.0, 1.0, 0.0]) - np.outer(e_h, e_h)
+    return (np.outer(e_h, K[0, 0] * e_h + K[0, 1] * ez) + np.outer(ez, K[1, 0] * e_h + K[1, 1] * ez)
+            + (force_h / span if span > 0.0 else transverse) * across)
+
+
+def evaluate_line(line, r_from, r_to, seabed, friction, start=None) -> LineState:
+    """Solve ``line`` between its ends at ``r_from``, ``r_to`` and return its end forces and
+    their derivatives (module eq. 3)."""
+    reverse = line.grounded_end == 1
+    r_A, r_B = (r_to, r_from) if reverse else (r_from, r_to)
+    pieces = line.pieces.reversed() if reverse else line.pieces
+    d = r_B - r_A
+    span, rise = math.hypot(d[0], d[1]), float(d[2])
+    e_h = np.array([d[0] / span, d[1] / span, 0.0]) if span > VERTICAL * pieces.total_length else np.array([1.0, 0.0, 0.0])
+    ground = None
+    if line.grounded_end is not None:
+        slope = seabed.gradient * e_h[0] if seabed is not None else 0.0
+        ground = Ground(slope, friction)
+    sol = solve_line(span, rise, pieces, ground, start)
+    H, VB = sol.horizontal_tension, sol.vertical_tension
+    H_A, V_A = sol.evaluation.anchor
+    f_B = -(H * e_h + np.array([0.0, 0.0, VB]))
+    f_A = H_A * e_h + np.array([0.0, 0.0, V_A])
+    K, G = sol.stiffness, sol.anchor_stiffness
+    span_ = span if span > VERTICAL * pieces.total_length else 0.0
+    dB = -_spread(K, H, e_h, span_, K[0, 0])                         # d f_B / d r_B
+    dA = _spread(G, H_A, e_h, span_, G[0, 0])                        # d f_A / d r_B
+    blocks = np.array([[-dA, dA], [-dB, dB]])                        # rows A, B; columns r_A, r_B
+    forces = np.array([f_A, f_B])
+    if reverse:
+        forces, blocks = forces[::-1], blocks[::-1, ::-1]
+    return LineState(sol, reverse, r_A, e_h, ground, forces, blocks)
+
+
+@dataclass(frozen=True, eq=False)
+class NetworkSolution:
+    """The equilibrium of a network.
+
+    Attributes
+    ----------
+    problem : NetworkProblem
+    q : ndarray
+        Unknowns at equilibrium (positions; roll, pitch, yaw of rigid bodies).
+    lines : list of LineState
+    residual : ndarray
+        ``R(q)`` (forces [N], moments [N m]).
+    jacobian : ndarray
+        ``dR/dq`` of lines and node loads.
+    line_jacobian : ndarray
+        ``dR/dq`` of the lines only (the mooring).
+    iterations : int
+        Newton iterations, over all continuation stages.
+    stages : int
+        Continuation stages (0: Newton converged from the first guess).
+    """
+
+    problem: NetworkProblem
+    q: np.ndarray
+    lines: list
+    residual: np.ndarray
+    jacobian: np.ndarray
+    line_jacobian: np.ndarray
+    iterations: int
+    stages: int
+
+
+# --------------------------------------------------------------------------- kinematics
+
+def fairlead(problem: NetworkProblem, q, end):
+    """Global position of a line end and its derivative with respect to its node's unknowns."""
+    if end.node < 0:
+        return end.point, None
+    node = problem.nodes[end.node]
+    start = problem.offsets[end.node]
+    r = q[start:start + 3]
+    if node.dof == 3:
+        return r + end.point, np.eye(3)
+    R, dR = fairlead_rotation(q[start + 3:start + 6])
+    lever = R @ end.point
+    return r + lever, np.hstack([np.eye(3), np.column_stack([m @ end.point for m in dR])])
+
+
+def _own_loads(problem: NetworkProblem, q, R, J) -> None:
+    """Add the nodes' own loads (weight, buoyancy, hydrostatics, constant forces) to R, J."""
+    up = np.array([0.0, 0.0, 1.0])
+    for n, node in enumerate(problem.nodes):
+        i = problem.offsets[n]
+        R[i:i + 3] += node.force
+        if node.dof == 3:
+            continue
+        ref = np.concatenate([np.zeros(3) if node.position is None else node.position, node.orientation])
+        R[i:i + 6] -= node.hydrostatic @ (q[i:i + 6] - ref)
+        J[i:i + 6, i:i + 6] -= node.hydrostatic
+        R[i + 2] += node.buoyancy - node.weight
+        weight, buoyancy = -node.weight * up, node.buoyancy * up
+        turned = node.orientation if node.fixed_levers else q[i + 3:i + 6]
+        rot, d_rot = fairlead_rotation(turned)
+        R[i + 3:i + 6] += np.cross(rot @ node.cog, weight) + np.cross(rot @ node.cob, buoyancy)
+        if not node.fixed_levers:
+            for k in range(3):
+                J[i + 3:i + 6, i + 3 + k] += (np.cross(d_rot[k] @ node.cog, weight)
+                                               + np.cross(d_rot[k] @ node.cob, buoyancy))
+
+
+def assemble(problem: NetworkProblem, q, starts=None):
+    """Residual eqs. (1)-(2) and its Jacobian at ``q``.
+
+    Returns
+    -------
+    R : ndarray, shape (n,)
+    J : ndarray, shape (n, n)
+        ``dR/dq`` (lines and node loads).
+    J_lines : ndarray, shape (n, n)
+        The lines' part of ``J``.
+    states : list of LineState
+    """
+    n = problem.offsets[-1]
+    R, J = np.zeros(n), np.zeros((n, n))
+    states = []
+    for k, line in enumerate(problem.lines):
+        kin = [fairlead(problem, q, end) for end in line.ends]
+        state = evaluate_line(line, kin[0][0], kin[1][0], problem.seabed, problem.friction,
+                              None if starts is None else starts[k])
+        states.append(state)
+        for i, end in enumerate(line.ends):
+            if end.node < 0:
+                continue
+            node, row = problem.nodes[end.node], problem.offsets[end.node]
+            f = state.forces[i] - np.array([0.0, 0.0, end.load])    # with an attachment at the end
+            R[row:row + 3] += f
+            lever = kin[i][0] - q[row:row + 3]
+            if node.dof == 6:
+                R[row + 3:row + 6] += np.cross(lever, f)
+            for j, other in enumerate(line.ends):
+                if other.node < 0:
+                    continue
+                col = problem.offsets[other.node]
+                block = state.blocks[i, j] @ kin[j][1]
+                J[row:row + 3, col:col + block.shape[1]] += block
+                if node.dof == 6:
+                    J[row + 3:row + 6, col:col + block.shape[1]] += skew(lever) @ block
+            if node.dof == 6:                                      # the fairlead turns with the body
+                J[row + 3:row + 6, row + 3:row + 6] -= skew(f) @ kin[i][1][:, 3:]
+    J_lines = J.copy()
+    _own_loads(problem, q, R, J)
+    return R, J, J_lines, states
+
+
+# --------------------------------------------------------------------------- Newton and continuation
+
+def _scales(problem: NetworkProblem):
+    """Residual scale per unknown (forces [N], moments [N m]) and the tolerance factor."""
+    loads = [1.0] + [abs(line.pieces.total_weight) for line in problem.lines]
+    loads += [float(np.max(np.abs(node.force))) for node in problem.nodes]
+    loads += [max(node.weight, node.buoyancy) for node in problem.nodes]
+    force = max(loads)
+    lever = max([1.0] + [float(np.linalg.norm(end.point)) for line in problem.lines for end in line.ends
+                         if end.node >= 0] + [float(np.linalg.norm(node.cog)) for node in problem.nodes])
+    scale = np.array([value for node in problem.nodes for value in [force] * 3 + [force * lever] * (node.dof - 3)])
+    stiffest = max(float(np.max(line.pieces.stiffness)) for line in problem.lines)
+    tolerance = max(FORCE_TOLERANCE, ROUNDOFF * stiffest / force)
+    return scale, tolerance
+
+
+def _caps(problem: NetworkProblem) -> np.ndarray:
+    """Largest change of each unknown per Newton step."""
+    shortest = np.full(len(problem.nodes), np.inf)
+    for line in problem.lines:
+        for end in line.ends:
+            if end.node >= 0:
+                shortest[end.node] = min(shortest[end.node], line.pieces.total_length)
+    return np.array([value for n, node in enumerate(problem.nodes)
+                     for value in [STEP_FRACTION * shortest[n]] * 3 + [MAX_TURN] * (node.dof - 3)])
+
+
+def _step(J, R):
+    try:
+        dq = np.linalg.solve(J, -R)
+        if np.all(np.isfinite(dq)):
+            return dq
+    except np.linalg.LinAlgError:
+        pass
+    return np.linalg.lstsq(J, -R, rcond=1e-12)[0]
+
+
+def _newton(problem, q, shift, scale, tolerance, caps, max_iterations, starts=None):
+    """Newton's method on ``R(q) = shift``; returns ``(q, iterations, converged, assembled)``."""
+    def merit(values):
+        return float(np.sum(((values[0] - shift) / scale) ** 2))
+    try:
+        current = assemble(problem, q, starts)
+    except SolverError:
+        return q, 0, False, None
+    for iteration in range(1, max_iterations + 1):
+        R = current[0] - shift
+        if np.max(np.abs(R) / scale, initial=0.0) <= tolerance:
+            return q, iteration - 1, True, current
+        dq = _step(current[1], R)
+        alpha = min(1.0, float(np.min(caps / np.maximum(np.abs(dq), 1e-300))))
+        base = merit(current)
+        for _ in range(MAX_HALVINGS):
+            trial_q = q + alpha * dq
+            try:
+                trial = assemble(problem, trial_q, warm_starts(current[3]))
+            except SolverError:
+                alpha *= 0.5
+                continue
+            if merit(trial) < base * (1.0 - 1e-4 * alpha):
+                break
+            alpha *= 0.5
+        else:
+            return q, iteration, False, current
+        q, current = trial_q, trial
+    R = current[0] - shift
+    return q, max_iterations, bool(np.max(np.abs(R) / scale, initial=0.0) <= tolerance), current
+
+
+def warm_starts(states) -> list[tuple[float, float]]:
+    """``(H, V_B)`` of every line, to start the next solve of the same lines from."""
+    return [(s.solution.horizontal_tension, s.solution.vertical_tension) for s in states]
+
+
+def solve_network(problem: NetworkProblem, q0: np.ndarray) -> NetworkSolution:
+    """The equilibrium of ``problem`` from the first guess ``q0`` (module docstring).
+
+    Raises
+    ------
+    SolverError
+        When neither Newton's method nor the load continuation converges.
+    """
+    scale, tolerance = _scales(problem)
+    caps = _caps(problem)
+    q, iterations, ok, done = _newton(problem, q0, 0.0, scale, tolerance, caps, MAX_ITERATIONS)
+    stages = 0
+    if not ok:
+        q, iterations, stages, done = _continuation(problem, q0, scale, tolerance, caps)
+    R, J, J_lines, states = done
+    return NetworkSolution(problem, q, states, R, J, J_lines, iterations, stages)
+
+
+def _continuation(problem, q0, scale, tolerance, caps):
+    """Load continuation from the guess, where ``R = R_0`` holds by construction."""
+    R0 = assemble(problem, q0)[0]
+    q, lam, step, total, stages = q0, 0.0, FIRST_STAGE, 0, 0
+    done = None
+    while lam < 1.0:
+        target = min(1.0, lam + step)
+        q_new, used, ok, assembled = _newton(problem, q, (1.0 - target) * R0, scale, tolerance, caps,
+                                             STAGE_ITERATIONS)
+        total += used
+        stages += 1
+        if ok:
+            q, lam, done = q_new, target, assembled
+            step *= 2.0
+        else:
+            step *= 0.25
+            if step < MIN_STAGE:
+                worst = int(np.argmax(np.abs(assemble(problem, q)[0]) / scale))
+                node = problem.nodes[int(np.searchsorted(problem.offsets, worst, side="right")) - 1]
+                raise SolverError(f"network statics did not converge: the load continuation stalled at "
+                                  f"{100 * lam:.3g} % of the loads (largest residual at {node.kind} "
+                                  f"'{node.name}'); give that {node.kind} a 'position' near its "
+                                  "equilibrium, or check that its lines can hold it")
+    return q, total, stages, done

@@ -1,0 +1,373 @@
+"""Network statics of a case: the first guess, the solve, and the result (positions and
+tensions at every node, forces on anchors and bodies, grounded lengths, stiffness).
+
+The first guess needs no ``position`` hints for ordinary moorings: unknown nodes start at
+the mean of their neighbours (fixed ends and other nodes, 100 sweeps), a buoyant node half
+its shortest line higher and a sinking one a tenth lower (kept between the seabed and the
+surface), and every line is then shortened to 95 % of its length where its chord is
+longer. Given positions and attitudes are kept.
+
+The mooring stiffness at a node is ``-dR_lines/dq`` of the lines on that node with every
+other free node re-balanced (static condensation of the full tangent, analytic, module
+eq. 3 of :mod:`kanat.statics.network`): 6x6 at a rigid body about its reference point, in
+its roll, pitch, yaw; 3x3 at a point and at a point body (MoorPy's ``getStiffnessA`` and
+``getCoupledStiffnessA``).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from kanat.errors import SolverError
+from kanat.statics.network import NetworkSolution, solve_network
+from kanat.statics.network_setup import NetworkProblem, network_problem
+from kanat.statics.piecewise import sample
+
+__all__ = ["NetworkCable", "NetworkResult", "first_guess", "solve_network_case"]
+
+SMOOTHING_SWEEPS = 100
+LIFT_FRACTION, SINK_FRACTION = 0.5, 0.1     # of the shortest line at the node
+CHORD_FRACTION = 0.95                        # longest first-guess chord, in line lengths
+CLEARANCE = 0.02                             # of the depth: guesses stay this far off seabed and surface
+SEABED_TOLERANCE = 1e-6                      # of the depth: deeper nodes are below the seabed
+
+
+@dataclass(frozen=True, eq=False)
+class NetworkCable:
+    """One cable at equilibrium, at its output nodes.
+
+    Attributes
+    ----------
+    s : ndarray, shape (n,)
+        Unstretched arclength from the ``from`` end [m].
+    position : ndarray, shape (n, 3)
+    tension : ndarray, shape (n,)
+    angle : ndarray, shape (n,)
+        Tangent (towards ``to``) above the horizontal [rad].
+    grounded_length : float
+        Unstretched length resting on the seabed [m].
+    method : str
+    """
+
+    s: np.ndarray
+    position: np.ndarray
+    tension: np.ndarray
+    angle: np.ndarray
+    grounded_length: float
+    method: str = "catenary"
+
+    @property
+    def x(self) -> np.ndarray:
+        return self.position[:, 0]
+
+    @property
+    def z(self) -> np.ndarray:
+        return self.position[:, 2]
+
+
+@dataclass(frozen=True, eq=False)
+class NetworkResult:
+    """The equilibrium of a case's network (the dataset of :func:`kanat.io.results.statics_dataset`).
+
+    Attributes
+    ----------
+    case : kanat.model.Case
+    method : str
+    cables : dict of str to NetworkCable
+    bodies : dict of str to ndarray, shape (3,)
+        Body positions (a rigid body's reference point) [m].
+    attitudes : dict of str to ndarray, shape (3,)
+        Roll, pitch, yaw of every body [rad] (0 for point bodies).
+    points : dict of str to ndarray, shape (3,)
+    body_forces, body_moments : dict of str to ndarray, shape (3,)
+        Resultant force of the lines on each body [N] and its moment about the body's
+        reference point [N m].
+    anchor_forces : dict of str to ndarray, shape (3,)
+        Force of the line on each anchor, named by cable end (``line1.from``) [N].
+    stiffness : dict of str to ndarray
+        Mooring stiffness, 6x6 at a body (3x3 block for a point body, the rest 0), 3x3 at a point.
+    iterations, stages : int
+    residual : float
+        Largest force residual at equilibrium [N].
+    notes : tuple of str
+    """
+
+    case: object
+    method: str
+    cables: dict
+    bodies: dict
+    attitudes: dict
+    points: dict
+    body_forces: dict
+    body_moments: dict
+    anchor_forces: dict
+    stiffness: dict
+    iterations: int = 0
+    stages: int = 0
+    residual: float = 0.0
+    notes: tuple = ()
+    vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    sphere: None = None
+
+    def summary(self) -> str:
+        """A few lines an engineer reads first: fairlead and anchor loads, offsets, uplift."""
+        lines = [f"network statics ({self.method}): {len(self.cables)} cables, "
+                 f"{self.iterations} Newton iterations" + (f" in {self.stages} load stages" if self.stages else "")]
+        for name, cable in self.cables.items():
+            lines.append(f"cable {name}: tension {cable.tension[0] / 1e3:.3f} kN at 'from', "
+                         f"{cable.tension[-1] / 1e3:.3f} kN at 'to'"
+                         + (f"; {cable.grounded_length:.2f} m on the seabed" if cable.grounded_length > 0 else ""))
+        for name, force in self.anchor_forces.items():
+            lines.append(f"anchor {name}: horizontal {math.hypot(force[0], force[1]) / 1e3:.3f} kN, "
+                         f"uplift {force[2] / 1e3:.3f} kN")
+        for name, r in {**self.bodies, **self.points}.items():
+            lines.append(f"{'body' if name in self.bodies else 'point'} {name}: x = {r[0]:.3f}, y = {r[1]:.3f}, "
+                         f"z = {r[2]:.3f} m")
+        lines += [f"note: {note}" for note in self.notes]
+        return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------- first guess
+
+def _neighbours(problem: NetworkProblem):
+    found = [[] for _ in problem.nodes]
+    for line in problem.lines:
+        a, b = line.ends
+        for mine, other in ((a, b), (b, a)):
+            if mine.node >= 0:
+                found[mine.node].append((other, line.pieces.total_length))
+    return found
+
+
+def first_guess(problem: NetworkProblem) -> np.ndarray:
+    """Unknowns to start Newton's method from (module docstring)."""
+    nodes = problem.nodes
+    fixed = [end.point for line in problem.lines for end in line.ends if end.node < 0]
+    centre = np.mean(fixed, axis=0) if fixed else np.zeros(3)
+    pos = [node.position.copy() if node.position is not None else centre.copy() for node in nodes]
+    free = [n for n, node in enumerate(nodes) if node.position is None]
+    near = _neighbours(problem)
+    for _ in range(SMOOTHING_SWEEPS if free else 0):
+        for n in free:
+            pos[n] = np.mean([other.point if other.node < 0 else pos[other.node] for other, _ in near[n]], axis=0)
+    depth = problem.seabed.depth if problem.seabed is not None else max(-c[2] for c in [centre, *fixed])
+    for n in free:
+        reach = min(length for _, length in near[n])
+        lift = nodes[n].force[2] + nodes[n].buoyancy - nodes[n].weight
+        z = pos[n][2] + (LIFT_FRACTION if lift > 0 else -SINK_FRACTION) * reach
+        floor = (problem.seabed.height(pos[n][0], pos[n][1]) if problem.seabed is not None else -np.inf)
+        pos[n][2] = min(max(z, floor + CLEARANCE * depth), -CLEARANCE * depth)
+    for _ in range(10):
+        for line in problem.lines:
+            _shorten(line, pos, free)
+    return np.concatenate([np.concatenate([pos[n], node.orientation]) if node.dof == 6 else pos[n]
+                           for n, node in enumerate(nodes)]) if nodes else np.zeros(0)
+
+
+def _shorten(line, pos, free) -> None:
+    """Pull a guessed end towards the other end until the chord is CHORD_FRACTION of the line."""
+    a, b = line.ends
+    for mine, other in ((b, a), (a, b)):
+        if mine.node in free:
+            far = other.point if other.node < 0 else pos[other.node]
+            chord = pos[mine.node] - far
+            length = np.linalg.norm(chord)
+            limit = CHORD_FRACTION * line.pieces.total_length
+            if length > limit:
+                pos[mine.node] = far + chord * (limit / length)
+            return
+
+
+# --------------------------------------------------------------------------- the result
+
+def solve_network_case(case, method: str = "catenary") -> NetworkResult:
+    """Network statics of ``case`` (module docstring; :mod:`kanat.statics.network`).
+
+    Raises
+    ------
+    kanat.statics.network_setup.NeedsDrag
+        For a case with a current or a tow speed.
+    CaseError
+        For what the catenary network cannot take, at its key.
+    SolverError
+        When no equilibrium is found, or it puts a line below the seabed.
+    """
+    problem = network_problem(case)
+    solution = solve_network(problem, first_guess(problem))
+    return _result(case, method, solution)
+
+
+def _cable(problem: NetworkProblem, line, state) -> NetworkCable:
+    sol = state.solution
+    pieces = line.pieces.reversed() if state.reversed else line.pieces
+    L = line.pieces.total_length
+    s_A = L - line.stations if state.reversed else line.stations
+    x, z, tension, vertical = sample(s_A, sol.horizontal_tension, sol.vertical_tension, pieces, state.ground)
+    if sol.slack:                                     # lying slack: bunched up to the touchdown point
+        span = sol.evaluation.x
+        grounded = s_A <= sol.evaluation.touchdown
+        x = np.minimum(x, span)
+        slope = state.ground.slope if state.ground is not None else 0.0
+        z = np.where(grounded, x * slope, z)
+    position = state.origin + np.outer(x, state.direction) + np.outer(z, [0.0, 0.0, 1.0])
+    horizontal = np.sqrt(np.maximum(tension**2 - vertical**2, 0.0))
+    angle = np.arctan2(-vertical if state.reversed else vertical, horizontal)
+    return NetworkCable(line.stations.copy(), position, tension, angle, float(sol.evaluation.touchdown))
+
+
+def _check_seabed(problem: NetworkProblem, cables: dict) -> None:
+    """No node may lie below the seabed (a line touching down between two suspended ends)."""
+    if problem.seabed is None:
+        return
+    for name, cable in cables.items():
+        below = problem.seabed.height(cable.position[:, 0], cable.position[:, 1]) - cable.position[:, 2]
+        worst = int(np.argmax(below))
+        if below[worst] > SEABED_TOLERANCE * problem.seabed.depth:
+            raise SolverError(f"cable '{name}' passes {below[worst]:.4g} m below the seabed at s = "
+                              f"{cable.s[worst]:.6g} m: it touches down between two suspended ends, which "
+                              "the catenary network statics does not model yet")
+
+
+def condensed_stiffness(solution: NetworkSolution) -> dict:
+    """Mooring stiffness at every node, the others re-balanced (module docstring)."""
+    problem = solution.problem
+    K_lines, K_all = -solution.line_jacobian, -solution.jacobian
+    out = {}
+    for n, node in enumerate(problem.nodes):
+        i = np.arange(problem.offsets[n], problem.offsets[n + 1])
+        o = np.setdiff1d(np.arange(problem.offsets[-1]), i)
+        K = K_lines[np.ix_(i, i)]
+        if len(o):
+            K = K - K_all[np.ix_(i, o)] @ np.linalg.pinv(K_all[np.ix_(o, o)]) @ K_all[np.ix_(o, i)]
+        if node.kind == "body" and node.dof == 3:
+            padded = np.zeros((6, 6))
+            padded[:3, :3] = K
+            K = padded
+        out[node.name] = K
+    return out
+
+
+def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
+    problem = solution.problem
+    cables = {line.name: _cable(problem, line, state) for line, state in zip(problem.lines, solution.lines)}
+    _check_seabed(problem, cables)
+    bodies, attitudes, points = {}, {}, {}
+    forces = {node.name: np.zeros(3) for node in problem.nodes}
+    moments = {node.name: np.zeros(3) for node in problem.nodes}
+    anchors = {}
+    q = solution.q
+    for line, state in zip(problem.lines, solution.lines):
+        for i, (end, label) in enumerate(zip(line.ends, ("from", "to"))):
+            f = state.forces[i]
+            if end.node >= 0:
+                node = problem.nodes[end.node]
+                start = problem.offsets[end.node]
+                lever = cables[line.name].position[0 if i == 0 else -1] - q[start:start + 3]
+                forces[node.name] += f
+                moments[node.name] += np.cross(lever, f)
+            elif end.kind == "anchor":
+                anchors[f"{line.name}.{label}"] = f + np.array([0.0, 0.0, -end.load])
+    notes = []
+    for n, node in enumerate(problem.nodes):
+        start = problem.offsets[n]
+        r = q[start:start + 3].copy()
+        if node.kind == "body":
+            bodies[node.name] = r
+            attitudes[node.name] = q[start + 3:start + 6].copy() if node.dof == 6 else np.zeros(3)
+        else:
+            points[node.name] = r
+        if r[2] > 0.0 and node.dof == 3:
+            raise SolverError(f"{node.kind} '{node.name}' would float {r[2]:.4g} m above the water surface, "
+                              "where its buoyancy is lost: its lines cannot hold it under water. Statics "
+                              "takes submerged points and point bodies; give it more weight or shorter "
+                              "lines, or make it a dof: 6 body with a waterplane")
+    return NetworkResult(case, method, cables, bodies, attitudes, points,
+                         {k: v for k, v in forces.items() if k in bodies},
+                         {k: v for k, v in moments.items() if k in bodies}, anchors,
+                         condensed_stiffness(solution), solution.iterations, solution.stages,
+                         float(np.max(np.abs(solution.residual), initial=0.0)), tuple(notes))
+
+
+# --------------------------------------------------------------------------- from node positions
+
+def result_from_positions(case, cables: dict, bodies: dict, points: dict, method: str,
+                          iterations: int = 0, notes=()) -> NetworkResult:
+    """A :class:`NetworkResult` from the node positions of a discretized equilibrium.
+
+    For a network in a current, which the catenary lines cannot carry, the front door solves
+    the lumped model's equilibrium and hands its node positions here. Each element of
+    ``L_e = section length / segments`` between nodes ``k``, ``k + 1`` has the linear tension
+    ``T_e = EA (|r_k+1 - r_k| / L_e - 1)`` (clipped at 0; statics takes linear lines only);
+    node tensions are the mean of the adjacent elements' (the end element's at an end). A
+    fixed end carries its end element's pull ``T_e u_e`` and half the element's weight and
+    drag, as a lumped node does; a body carries what balances its own loads (net buoyancy,
+    constant force, drag in the relative flow). The stiffness is not computed (left empty).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    cables : dict of str to ndarray, shape (segments + 1, 3)
+        Node positions of every cable, from ``from`` to ``to``.
+    bodies, points : dict of str to ndarray, shape (3,)
+    method : str
+    iterations : int
+    notes : sequence of str
+    """
+    from kanat.physics.drag import body_drag
+
+    env = case.environment
+    ship = np.array([case.vessel.initial_speed, 0.0, 0.0])         # every node moves with the vessel
+    out, anchors = {}, {}
+    for cable in case.cables:
+        r = np.asarray(cables[cable.name], dtype=float)
+        s, T, unit, ends = _elements(case, cable, r, ship)
+        node_T = np.concatenate([[T[0]], 0.5 * (T[:-1] + T[1:]), [T[-1]]])
+        angle = np.arctan2(unit[:, 2], np.hypot(unit[:, 0], unit[:, 1]))
+        node_angle = np.concatenate([[angle[0]], 0.5 * (angle[:-1] + angle[1:]), [angle[-1]]])
+        out[cable.name] = NetworkCable(s, r, node_T, node_angle, 0.0, method)
+        for label, end, pull in zip(("from", "to"), cable.ends, ends):
+            if end.kind == "anchor":
+                anchors[f"{cable.name}.{label}"] = pull
+    forces = {}
+    for name, r in bodies.items():
+        body = case.bodies[name]
+        own = np.asarray(body.force, dtype=float) + np.array([0.0, 0.0, body.net_buoyancy])
+        forces[name] = -(own + body_drag(env.current.at(r[2]) - ship, body.drag_area, env.water_density))
+    zeros = {name: np.zeros(3) for name in bodies}
+    return NetworkResult(case, method, out, {k: np.asarray(v, float) for k, v in bodies.items()}, zeros,
+                         {k: np.asarray(v, float) for k, v in points.items()}, forces, dict(zeros), anchors, {},
+                         iterations, 0, 0.0, tuple(notes))
+
+
+def _elements(case, cable, r, ship):
+    """Node arclengths, element tensions and directions, and the pull of the end elements
+    (tension, half weight and half drag) on the two ends."""
+    from kanat.physics.drag import cable_drag
+
+    env = case.environment
+    s, EA, L0, loads = [np.zeros(1)], [], [], []
+    start = 0.0
+    for section in cable.sections:
+        line_type = case.line_types[section.line_type]
+        n = section.segments
+        s.append(start + np.linspace(0.0, section.length, n + 1)[1:])
+        EA += [line_type.axial_stiffness] * n
+        L0 += [section.length / n] * n
+        loads += [(line_type.weight_in_water_value(env.water_density, env.gravity), line_type)] * n
+        start += section.length
+    EA, L0 = np.array(EA), np.array(L0)
+    chord = np.diff(r, axis=0)
+    length = np.linalg.norm(chord, axis=1)
+    strain = length / L0 - 1.0
+    T = np.maximum(EA * strain, 0.0)
+    unit = chord / np.maximum(length, 1e-300)[:, None]
+    ends = []
+    for k, sign in ((0, 1.0), (-1, -1.0)):
+        weight, line_type = loads[k]
+        mid = 0.5 * (r[k] + r[k + 1] if k == 0 else r[-1] + r[-2])
+        drag = cable_drag(unit[k], env.current.at(mid[2]) - ship, strain[k], line_type.diameter,
+                          line_type.drag_normal, line_type.drag_tangential, env.water_density)
+        ends.append(sign * T[k] * unit[k] + 0.5 * L0[k] * (drag - np.array([0.0, 0.0, weight])))
+    return np.concatenate(s), T, unit, ends
