@@ -142,7 +142,8 @@ SCHEMES = registry(*CONTINUUM_SCHEMES.values(), *LUMPED_SCHEMES.values())
 
 # --- the front door ---------------------------------------------------------------------
 
-def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str | None = None) -> Case:
+def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str | None = None,
+              solver: str | None = None) -> Case:
     """A validated case from a file, YAML text or a mapping.
 
     Parameters
@@ -153,6 +154,9 @@ def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str
     max_output_bytes : float or str, optional
         The largest result a dynamic run may write (``"8G"``); default the environment
         variable ``KANAT_MAX_OUTPUT_BYTES``, else 2 GiB (docs/limits.md).
+    solver : str, optional
+        Check what this model supports instead of the case's own ``model`` (``"statics"``:
+        the steady state of a dynamic case, as ``kanat statics`` does).
 
     Returns
     -------
@@ -171,7 +175,7 @@ def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str
     from kanat.io import parse_case
     from kanat.io import load_case as load_file
 
-    limit = {"max_output_bytes": max_output_bytes}
+    limit = {"max_output_bytes": max_output_bytes, "solver": solver}
     if isinstance(source, Mapping):
         import yaml
 

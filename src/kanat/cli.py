@@ -68,7 +68,7 @@ def statics(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
             method: str = typer.Option("auto", "--method", help="auto | shooting | collocation | catenary"),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Solve the steady state of a case and write it to OUTPUT."""
-    _steady(load(case, debug), case, output, plot, debug, model="statics", method=method)
+    _steady(load(case, debug, solver="statics"), case, output, plot, debug, model="statics", method=method)
 
 
 @app.command()

@@ -81,14 +81,15 @@ def print_problems(problems) -> None:
 MAX_OUTPUT_HELP = "Largest result a run may write, e.g. 8G (default: KANAT_MAX_OUTPUT_BYTES, else 2G)."
 
 
-def load(case: Path, debug: bool, max_output: str | None = None):
-    """Load a case, logging its warnings; explain and exit if it cannot be read."""
+def load(case: Path, debug: bool, max_output: str | None = None, solver: str | None = None):
+    """Load a case, logging its warnings; explain and exit if it cannot be read. ``solver``:
+    check what that model supports instead of the case's own (``kanat statics``)."""
     from kanat.api import load_case
 
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            loaded = load_case(case, max_output_bytes=max_output)
+            loaded = load_case(case, max_output_bytes=max_output, solver=solver)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "cannot read the case")
     for warning in caught:

@@ -28,14 +28,15 @@ from os import PathLike
 from ..errors import CaseError, CaseWarning, Problem
 from ..model import Case
 from ..model.checks import physical_checks
+from ..model.support import unsupported
 from ..model.validation import bool_problems, validate_data
 from .case_source import read_document
 from .case_read import read_case_text
 
 # --- public entry points ----------------------------------------------------------
 
-def _check(text: str, file: str | None,
-           max_output_bytes: float | str | None = None) -> tuple[Case | None, list[Problem]]:
+def _check(text: str, file: str | None, max_output_bytes: float | str | None = None,
+           solver: str | None = None) -> tuple[Case | None, list[Problem]]:
     doc = read_document(text, file)  # YAML (its tables read), or a MoorDyn file mapped
     problems = list(doc.problems)
     if doc.data is None and problems:
@@ -44,8 +45,18 @@ def _check(text: str, file: str | None,
     case, found = validate_data(doc.data, file, doc.lines)
     problems += found
     if case is not None:
-        problems += physical_checks(case, file, doc.lines, max_output_bytes)
+        problems += _for_solver(physical_checks(case, file, doc.lines, max_output_bytes), case, solver,
+                                file, doc.lines)
     return case, sorted(problems, key=lambda p: p.line or 0)
+
+
+def _for_solver(problems: list[Problem], case: Case, solver: str | None, file, lines) -> list[Problem]:
+    """The support problems of ``solver`` instead of the case's own model's (``kanat statics``
+    of a dynamic case is solved by statics, whatever ``model`` says)."""
+    if solver is None or solver == case.model:
+        return problems
+    own = unsupported(case, case.model, file, lines)
+    return [p for p in problems if p not in own] + unsupported(case, solver, file, lines)
 
 
 def check_text(text: str, file: str | None = None, *,
@@ -88,7 +99,7 @@ def _accept(case: Case | None, problems: list[Problem]) -> Case:
 
 
 def parse_case(text: str, file: str | None = None, *,
-               max_output_bytes: float | str | None = None) -> Case:
+               max_output_bytes: float | str | None = None, solver: str | None = None) -> Case:
     """Validate a case given as YAML text.
 
     Parameters
@@ -99,6 +110,9 @@ def parse_case(text: str, file: str | None = None, *,
         Name used in messages.
     max_output_bytes : float, str or None
         Largest estimated result of a dynamic run (module docstring).
+    solver : str or None
+        Check what this solver supports instead of the case's ``model`` (``statics`` for
+        the steady state of a dynamic case, as ``kanat statics`` does).
 
     Returns
     -------
@@ -114,14 +128,14 @@ def parse_case(text: str, file: str | None = None, *,
     CaseWarning
         One per sanity warning, when there is no error.
     """
-    return _accept(*_check(text, file, max_output_bytes))
+    return _accept(*_check(text, file, max_output_bytes, solver))
 
 
 def load_case(path: str | PathLike[str], *,
-              max_output_bytes: float | str | None = None) -> Case:
+              max_output_bytes: float | str | None = None, solver: str | None = None) -> Case:
     """Read and validate a case file (see :func:`parse_case`); a file that cannot be read
     raises :class:`~kanat.errors.CaseError` too."""
     text, problems = read_case_text(path)
     if text is None:
         raise CaseError(problems)
-    return _accept(*_check(text, str(path), max_output_bytes))
+    return _accept(*_check(text, str(path), max_output_bytes, solver))
