@@ -78,10 +78,11 @@ def test_track_samples_match_the_vessel_track():
     system = LumpedSystem(build_network(case), case)
     times = np.linspace(0.0, 3.0, 61)
     pos, vel, heading = track_samples(system, times)
+    assert pos.shape == (len(times), 1, 3)                       # one vessel node: the tow point
     for k, t in enumerate(times):
         st = system.track.state(t)
-        np.testing.assert_allclose(pos[k], st.position, atol=1e-12)
-        np.testing.assert_allclose(vel[k], st.velocity, atol=1e-12)
+        np.testing.assert_allclose(pos[k, 0], st.position, atol=1e-12)
+        np.testing.assert_allclose(vel[k, 0], st.velocity, atol=1e-12)
         assert heading[k] == pytest.approx(st.heading, abs=1e-14)
 
 

@@ -108,8 +108,9 @@ def test_pendulum_chain_conserves_energy_over_100_periods(name):
 @pytest.mark.parametrize("segments", [20, 40])
 def test_hanging_line_matches_the_elastic_catenary(segments):
     span, rise, length, weight, ea = 80.0, 60.0, 120.0, 150.0, 5e6
+    down = 200.0                       # wholly under water (an element above it loses its buoyancy)
     case = make_case([dict(name="line", line_type="c", length=length, segments=segments,
-                           **{"from": "anchor:[0,0,0]"}, to=f"anchor:[{span},0,{rise}]")],
+                           **{"from": f"anchor:[0,0,{-down}]"}, to=f"anchor:[{span},0,{rise - down}]")],
                      dict(diameter=0.05, mass=20.0, weight_in_water=weight, axial_stiffness=ea))
     net = build_network(case)
     x, info = equilibrium(net, case)
@@ -118,7 +119,7 @@ def test_hanging_line_matches_the_elastic_catenary(segments):
     T = ea * (np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0)
     error = np.max(np.abs(T - exact.tension[1::2])) / exact.tension_upper   # elements vs midpoints
     assert error < 5e-3
-    assert np.max(np.abs(x[net.node_index, 2] - exact.z[::2])) < 0.002 * length
+    assert np.max(np.abs(x[net.node_index, 2] + down - exact.z[::2])) < 0.002 * length
     assert T[-1] == pytest.approx(exact.tension[-2], rel=5e-3)
 
 
@@ -136,11 +137,12 @@ def test_taut_line_natural_frequencies(mode):
     line = dict(diameter=0.01, mass=m, weight_in_water=0.0, axial_stiffness=ea, added_mass=ma,
                 drag_normal=0.0, drag_tangential=0.0)
     case = make_case([dict(name="line", line_type="c", length=length, segments=segments,
-                           **{"from": "anchor:[0,0,0]"}, to=f"anchor:[{stretched},0,0]")], line)
+                           **{"from": "anchor:[0,0,-10]"}, to=f"anchor:[{stretched},0,-10]")], line)
     net = build_network(case)
     system = LumpedSystem(net, case)
     x = np.zeros((net.n_nodes, 3))
     x[net.node_index, 0] = net.node_s * stretched / length
+    x[net.node_index, 2] = -10.0
     xi = net.node_s / length
     amplitude = 0.05 if mode == "transverse" else 0.002
     component = 2 if mode == "transverse" else 0

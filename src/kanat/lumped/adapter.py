@@ -6,7 +6,14 @@ one compiled call where :mod:`kanat.lumped.advance` can — and tracks every sna
 A case that names no scheme gets the fastest safe one, and a case without ``dt`` a
 documented step (:mod:`kanat.lumped.stepping`); both decisions are in ``notes``. Its checks
 of every output: no element stretched beyond the line's strain limit, no node below the
-seabed.
+seabed beyond the contact model's penetration (or below it at all without contact).
+
+Outputs beyond the node and element series (case-format.md): ``seabed_contact_length(cable)``
+(unstretched length of each cable whose nodes touch the seabed: half an element per node in
+contact), ``anchor_force(anchor)`` (the total force on the prescribed anchor node: the end
+element's tension and the half element's loads — uplift is its +z part), ``body_force(body)``
+(the lines' force on each body: the forces of its node's elements, or of its fairleads' for a
+6-DOF body) and ``body_attitude(body)`` (roll, pitch, yaw; zeros for point bodies).
 """
 from __future__ import annotations
 
@@ -26,10 +33,14 @@ from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.mooring_outputs import allowed_penetration, attitudes, contact_length, line_forces
+from kanat.physics.contact import PENETRATION_MARGIN
+from kanat.physics.seabed import seabed_of
 from kanat.schemes import get_scheme
 
 TIME_VARIABLES = ("position", "velocity", "tension", "segment_tension", "body_position", "vessel_position",
-                  "vessel_heading", "vessel_pitch")
+                  "vessel_heading", "vessel_pitch", "seabed_contact_length", "anchor_force", "body_force",
+                  "body_attitude")
 
 
 @dataclass
@@ -56,27 +67,30 @@ class LumpedModel:
         sim = case.simulation
         self.case, self.net = case, build_network(case)
         self.system = LumpedSystem(self.net, case, sim.mass_matrix)
-        self.info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent")
+        self.info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent",
+                                       case.environment.seabed)
         self.notes: list[str] = []
         self.scheme = self._choose(scheme)
         self.dt = self._step_size()
         self.output_interval, self.duration = sim.output_interval, sim.duration
         self.node_tension = NodeTension(self.net)
-        self.max_strain = np.array([case.line_types[name].strain_limit() for name in self._segment_line_types()])
+        self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
-
-    def _segment_line_types(self):
-        cables = {c.name: c.line_type for c in self.case.cables}
-        return [cables.get(str(c)) for c in self.net.segment_cable]
+        self.penetration = allowed_penetration(self.net, case.environment)
 
     def _choose(self, scheme):
         sim = self.case.simulation
         spec = scheme if scheme is not None else sim.scheme
+        rigid = self.net.rigid.count > 0
         if spec is None:
-            chosen = stepping.choose_scheme(self.info, sim.step_or_default, SCHEMES)
+            chosen = stepping.choose_scheme(self.info, sim.step_or_default, SCHEMES, explicit_only=rigid)
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
-        return get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
+        chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
+        if rigid and not chosen.explicit:
+            raise SolverError(f"scheme {chosen.name} does not take bodies with dof: 6 yet (body "
+                              f"'{self.net.rigid.names[0]}'); use simulation.scheme: rk4 or abm4")
+        return chosen
 
     def _step_size(self) -> float:
         sim, info, scheme = self.case.simulation, self.info, self.scheme
@@ -105,8 +119,10 @@ class LumpedModel:
                            **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
         static = {"s": (("node",), net.node_s), "cable": (("node",), net.node_cable.astype(str)),
                   "segment_cable": (("segment",), net.segment_cable.astype(str)),
-                  "segment_length": (("segment",), net.el_length)}
-        return Layout(static, {"xyz": ("x", "y", "z"), "body": list(net.body_names)}, TIME_VARIABLES, attrs)
+                  "segment_length": (("segment",), net.el_length),
+                  "cable_name": (("cable",), np.array(net.cable_names, dtype=str))}
+        labels = {"xyz": ("x", "y", "z"), "body": list(net.body_names), "anchor": list(net.anchor_names)}
+        return Layout(static, labels, TIME_VARIABLES, attrs)
 
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self) -> LumpedState:
@@ -122,6 +138,7 @@ class LumpedModel:
             x = self.net.x_guess.copy()
         free = system.free_index
         velocity = np.broadcast_to(system.vessel(0.0)[1], (len(free), 3)).copy()
+        velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0         # Euler angle rates
         state = self.scheme.start(system, 0.0, x[free], velocity, self.dt)
         return LumpedState(state, SnapTracker(0.0, self._tensions(state)))
 
@@ -137,7 +154,8 @@ class LumpedModel:
         snaps = {k[5:]: v for k, v in arrays.items() if k.startswith("snap_")}
         self.system.evaluations = int(arrays["evaluations"])
         x = self.system.full(scheme["t"], *state_positions(scheme))[0]
-        self.info = stepping.step_info(self.net, x, self.case.simulation.mass_matrix == "consistent")
+        self.info = stepping.step_info(self.net, x, self.case.simulation.mass_matrix == "consistent",
+                                       self.case.environment.seabed)
         return LumpedState(scheme, SnapTracker(scheme["t"], self._tensions(scheme), snaps))
 
     # 3. step -----------------------------------------------------------------------------
@@ -167,9 +185,13 @@ class LumpedModel:
         T = self._tensions(state.scheme).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
+        F = system.loads(t, x, v, heading)[0]
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
-                "vessel_heading": heading, "vessel_pitch": pitch}
+                "vessel_heading": heading, "vessel_pitch": pitch,
+                "seabed_contact_length": contact_length(net, system.normal_force),
+                "anchor_force": F[net.anchor_nodes].reshape(-1, 3),
+                "body_force": line_forces(net, x, T), "body_attitude": attitudes(net, x)}
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:
@@ -181,14 +203,27 @@ class LumpedModel:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
                     f"{t:.6g} s in {net.element_where(k)} (tension {values['segment_tension'][k]:.4g} N); check "
                     "axial_stiffness and the loads, or reduce dt, or set line_types.<name>.max_strain")
-        depth = self.case.environment.depth
-        if depth is not None:
-            z = values["position"][:, 2]
-            deep = int(np.argmin(z))
-            if z[deep] < -depth * (1.0 + 1e-9):
-                return (f"a node is {-depth - z[deep]:.4g} m below the seabed at t = {t:.6g} s "
-                        f"({net.where(int(net.node_index[deep]))}); this model has no seabed contact yet")
-        return None
+        return self._below_seabed(x, t)
+
+    def _below_seabed(self, x, t) -> str | None:
+        seabed = seabed_of(self.case.environment)
+        if seabed is None:
+            return None
+        net = self.net
+        cable = np.zeros(net.n_nodes, dtype=bool)
+        cable[net.node_index] = True
+        depth = np.where(cable, seabed.penetration(x), -np.inf)
+        excess = depth - self.penetration
+        worst = int(np.argmax(excess))
+        if excess[worst] <= 0.0:
+            return None
+        if self.case.environment.seabed is None:
+            return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}); "
+                    "without environment.seabed this model has no seabed contact: add environment.seabed "
+                    "(stiffness, damping, friction)")
+        return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}), more "
+                f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight / "
+                "(stiffness x contact area)); raise environment.seabed.stiffness or damping, or reduce dt")
 
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state: LumpedState) -> tuple[dict, dict]:

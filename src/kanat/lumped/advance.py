@@ -27,31 +27,42 @@ class FusedArrays:
     Attributes
     ----------
     nodes, el, bodies, env, work : tuple
-        See :func:`kanat.lumped.fast.acceleration`.
+        See :func:`kanat.lumped.fast.loads`: ``nodes`` (free, vessel, anchor nodes, anchor
+        positions, nodal loads and masses, free flags, 6-DOF pseudo-nodes' free-local rows),
+        ``el`` the element arrays, ``bodies`` (load nodes, drag, spreading, added mass, buoys,
+        rigid bodies, seabed contact), ``env`` (rho, g, current table, sea, still, elevation
+        bound), ``work`` the scratch arrays.
     """
 
     def __init__(self, system):
         net = system.net
-        n, m, nb = net.n_nodes, net.n_elements, len(net.body_node)
+        n, m, nl, nb = net.n_nodes, net.n_elements, len(net.load_node), net.rigid.count
+        local = np.searchsorted(system.free_index, np.stack([net.rigid.ref_node, net.rigid.rot_node], -1))
         self.nodes = (system.free_index.astype(np.int64), net.vessel_nodes.astype(np.int64),
                       net.anchor_nodes.astype(np.int64), np.ascontiguousarray(net.anchor_position, float),
-                      np.ascontiguousarray(net.node_force, float), system.node_mass, net.free.copy())
+                      np.ascontiguousarray(net.node_force, float), system.node_mass, net.free.copy(),
+                      np.ascontiguousarray(local.reshape(nb, 2), dtype=np.int64))
         self.el = system.el_args
         buoys = net.body_node[net.buoy_body] if len(net.buoy_body) else np.zeros(0, np.int64)
-        self.bodies = (net.body_node.astype(np.int64), net.body_drag_area.astype(float),
-                       net.body_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
-                       net.buoy_area.astype(float), net.buoy_height.astype(float))
+        self.bodies = (net.load_node.astype(np.int64), net.load_drag_area.astype(float),
+                       net.load_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
+                       net.buoy_area.astype(float), net.buoy_height.astype(float), system.rig, system.contact)
         cz, cu = system.current.table()
         still = system.sea is None and len(cz) == 1                  # water kinematics constant in space and time
-        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still)
+        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still, system.eta_bound)
         self.work = (np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 6)), np.zeros(m),
-                     np.zeros(m), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((nb, 3)),
-                     np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros((n, 3)))
-        if still:                                                     # set once: uw (m, 3), bu (nb, 3)
+                     np.zeros(m), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((nl, 3)),
+                     np.zeros((nl, 3)), np.zeros((nl, 3)), np.zeros((n, 3)), np.ones(m), np.zeros((nb, 2, 3)),
+                     np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros(nb), np.zeros(n), np.zeros((n, 3)),
+                     np.zeros((nb, 3)))
+        if still:                                                     # set once: uw (m, 3), bu (nl, 3)
             self.work[7][:], self.work[10][:] = cu[0], cu[0]
+            if nb:
+                self.work[15][:] = cu[0]
         self.events = np.zeros((max(fast.EVENT_BUFFER_MIN, 4 * m), 4))
         self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
-        self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)))
+        self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
+                       np.zeros((n, 3, 3)))
         self.band = np.zeros((3 * len(system.free_index), 2 * self.bandwidth + 1))
 
 
@@ -68,30 +79,10 @@ def sea_arrays(sea) -> tuple:
 
 
 def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Tow point position, velocity (k, 3) and heading (k,) at ``times`` (k,), from the
-    :class:`kanat.vessel.track.VesselTrack` phases (:func:`kanat.lumped.fast.track_states`)."""
-    times = np.ascontiguousarray(times, dtype=float)
-    k = len(times)
-    position, velocity, heading = np.empty((k, 3)), np.empty((k, 3)), np.empty(k)
-    if system.track is None:
-        position[:] = np.asarray(system.case.vessel.tow_point, float)
-        velocity[:], heading[:] = 0.0, 0.0
-        return position, velocity, heading
-    if system.track.pitch is not None:        # the compiled phase table knows no pitch: ask the track
-        for i, t in enumerate(times):
-            s = system.track.state(t)
-            position[i], velocity[i], heading[i] = s.position, s.velocity, s.heading
-        return position, velocity, heading
-    fast.track_states(times, _phase_table(system), system.track.tow_point, position, velocity, heading)
-    return position, velocity, heading
-
-
-def _phase_table(system) -> np.ndarray:
-    """Phases as rows (start, duration, x, y, heading, speed, acceleration, yaw rate)."""
-    if getattr(system, "_phases", None) is None:
-        fields = ("start", "duration", "x", "y", "heading", "speed", "acceleration", "yaw_rate")
-        system._phases = np.array([[getattr(ph, f) for f in fields] for ph in system.track.phases], float)
-    return system._phases
+    """Vessel nodes' positions, velocities (k, n_vessel, 3) and the heading (k,) at ``times`` (k,)
+    (:meth:`kanat.lumped.system.LumpedSystem.vessel_points`: track and prescribed motion)."""
+    pos, vel, heading = system.vessel_points(np.ascontiguousarray(times, dtype=float))
+    return np.ascontiguousarray(pos), np.ascontiguousarray(vel), np.ascontiguousarray(heading)
 
 
 def _arrays(system) -> FusedArrays:

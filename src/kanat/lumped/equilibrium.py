@@ -36,13 +36,28 @@ LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before 
 ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
 
 
-def distance2_colouring(net) -> np.ndarray:
-    """Colour of each free node so that nodes of one colour are > 2 edges apart."""
-    n = net.n_nodes
-    neighbours = [set() for _ in range(n)]
+def node_graph(net) -> list[set]:
+    """Each node's neighbours (itself included): the nodes its force depends on. Elements join
+    their ends; a 6-DOF body's two pseudo-nodes join each other, its fairleads and the nodes
+    next to them (the fairleads move with the body)."""
+    neighbours = [{k} for k in range(net.n_nodes)]
     for i, j in zip(net.el_i, net.el_j):
         neighbours[i].add(j)
         neighbours[j].add(i)
+    rigid = net.rigid
+    for b in range(rigid.count):
+        group = {int(rigid.ref_node[b]), int(rigid.rot_node[b])}
+        for f in rigid.fairlead_node[rigid.fairlead_body == b]:
+            group |= neighbours[int(f)]
+        for node in group:
+            neighbours[node] |= group
+    return neighbours
+
+
+def distance2_colouring(net) -> np.ndarray:
+    """Colour of each free node so that nodes of one colour are > 2 edges apart."""
+    n = net.n_nodes
+    neighbours = node_graph(net)
     colour = -np.ones(n, dtype=np.int64)
     for node in np.flatnonzero(net.free):
         near = set(neighbours[node])
@@ -203,10 +218,7 @@ def _solve(net, case, x0, velocity, max_iterations):
     forces = _SteadyForces(system)
     system.acceleration_free_force = lambda t, xf: forces(t, xf)[0]
     colour = distance2_colouring(net)
-    neighbours = [{k} for k in range(net.n_nodes)]
-    for i, j in zip(net.el_i, net.el_j):
-        neighbours[i].add(j)
-        neighbours[j].add(i)
+    neighbours = node_graph(net)
     xf = np.array((net.x_guess if x0 is None else x0)[system.free_index], dtype=float)
     tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)

@@ -21,7 +21,8 @@ import math
 import numpy as np
 from kanat.jit import inner, kernel
 
-from kanat.lumped import kernels
+from kanat.lumped import kernels, rigid
+from kanat.physics.contact import contact_forces
 
 EVENT_BUFFER_MIN = 1024     # closed snap events held before the kernel hands them back
 
@@ -129,7 +130,7 @@ def track_states(times, phases, arm, position, velocity, heading):
 @inner
 def place(y, vpos, vvel, nodes, x, v):
     """All nodes' positions and velocities from ``y = (q, q_dot)`` (flat, free nodes) and the
-    prescribed motion."""
+    prescribed motion (``vpos, vvel`` (k, 3): the vessel nodes')."""
     free_index, vessel_nodes, anchor_nodes, anchor_pos = nodes[0], nodes[1], nodes[2], nodes[3]
     nf = free_index.shape[0]
     for k in range(nf):
@@ -138,8 +139,8 @@ def place(y, vpos, vvel, nodes, x, v):
             v[free_index[k], r] = y[3 * nf + 3 * k + r]
     for k in range(vessel_nodes.shape[0]):
         for r in range(3):
-            x[vessel_nodes[k], r] = vpos[r]
-            v[vessel_nodes[k], r] = vvel[r]
+            x[vessel_nodes[k], r] = vpos[k, r]
+            v[vessel_nodes[k], r] = vvel[k, r]
     for k in range(anchor_nodes.shape[0]):
         for r in range(3):
             x[anchor_nodes[k], r] = anchor_pos[k, r]
@@ -150,23 +151,62 @@ PACKED = kernels.PACKED      # packed symmetric 3 x 3 mass blocks: xx, yy, zz, x
 
 
 @inner
+def wetted(x, el_i, el_j, diameter, t, sea, bound, wet):
+    """Wetted fraction of every element (kernels.wetted_fraction); the surface elevation is only
+    evaluated for elements that reach above ``-bound`` (``bound`` >= the largest elevation)."""
+    for k in range(el_i.shape[0]):
+        i, j = el_i[k], el_j[k]
+        top = max(x[i, 2], x[j, 2]) + 0.5 * diameter[k]
+        if top < -bound:
+            wet[k] = 1.0
+            continue
+        eta = 0.0
+        if bound > 0.0:
+            eta = sea_elevation(0.5 * (x[i, 0] + x[j, 0]), 0.5 * (x[i, 1] + x[j, 1]), t, sea)
+        wet[k] = kernels.wetted_fraction(x[i, 2], x[j, 2], diameter[k], eta)
+
+
+@inner
+def rigid_loads(t, nodes, bodies, env, work):
+    """6-DOF body accelerations into ``work[14]`` (rigid.rigid_accelerations), water at their
+    reference points."""
+    rig = bodies[7]
+    rho, cz, cu, sea = env[0], env[2], env[3], env[4]
+    x, v, F, M, acc, ru, ra, reta, rx = work[0], work[1], work[2], work[3], work[14], work[15], work[16], \
+        work[17], work[20]
+    ref = rig[0]
+    for b in range(ref.shape[0]):
+        for r in range(3):
+            rx[b, r] = x[ref[b], r]
+        reta[b] = sea_elevation(rx[b, 0], rx[b, 1], t, sea) if env[6] > 0.0 else 0.0
+    water(rx, t, cz, cu, sea, ru, ra)
+    rigid.rigid_accelerations(x, v, F, M, ru, ra, reta, rho, rig, acc)
+
+
+@inner
 def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
-    — system eqs. (1)-(2)."""
+    — system eqs. (1)-(2); seabed contact and 6-DOF bodies included."""
     node_force, node_mass = nodes[4], nodes[5]
     x, v, F, M, T, strain, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7], \
         work[8]
-    bx, bu, ba = work[9], work[10], work[11]
-    rho, g, cz, cu, sea, still = env
-    body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height = bodies
+    bx, bu, ba, wet = work[9], work[10], work[11], work[13]
+    rho, g, cz, cu, sea, still, bound = env
+    body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height, rig, contact = bodies
     place(y, vpos, vvel, nodes, x, v)
+    if rig[0].shape[0] > 0:
+        rigid.place_fairleads(x, v, rig)
     el_i, el_j = el[0], el[1]
     if not still:                        # else uw, aw hold the uniform current and zero (FusedArrays)
         for k in range(el_i.shape[0]):
             for r in range(3):
                 mid[k, r] = 0.5 * (x[el_i[k], r] + x[el_j[k], r])
         water(mid, t, cz, cu, sea, uw, aw)
-    kernels.element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain)
+    wetted(x, el_i, el_j, el[18], t, sea, bound, wet)
+    kernels.element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain)
+    if contact[0].shape[0] > 0:
+        area, bed, params, laid = contact
+        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work[19], F, work[18])
     if body_node.shape[0] > 0:
         if not still:
             for b in range(body_node.shape[0]):
@@ -174,11 +214,13 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
                     bx[b, r] = x[body_node[b], r]
             water(bx, t, cz, cu, sea, bu, ba)
         kernels.add_body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
-        for b in range(buoy_node.shape[0]):
-            keel = buoy_node[b]
-            immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]
-            immersion = min(max(immersion, 0.0), buoy_height[b])
-            F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
+    for b in range(buoy_node.shape[0]):
+        keel = buoy_node[b]
+        immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]
+        immersion = min(max(immersion, 0.0), buoy_height[b])
+        F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
+    if rig[0].shape[0] > 0:
+        rigid_loads(t, nodes, bodies, env, work)
 
 
 @inner
@@ -200,6 +242,11 @@ def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
         dy[3 * nf + 3 * k] = (c00 * b0 + c01 * b1 + c02 * b2) * inv
         dy[3 * nf + 3 * k + 1] = (c01 * b0 + c11 * b1 + c12 * b2) * inv
         dy[3 * nf + 3 * k + 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
+    local, acc = nodes[7], work[14]
+    for b in range(local.shape[0]):
+        for q in range(2):
+            for r in range(3):
+                dy[3 * nf + 3 * local[b, q] + r] = acc[b, q, r]
 
 
 @kernel
@@ -236,10 +283,12 @@ def snap_update(t, T, snap, events, count):
 
 
 @kernel
-def tensions_at(y, s, samples, nodes, el, work):
+def tensions_at(y, s, samples, nodes, el, bodies, work):
     """Element tensions at ``y`` into ``work[4]`` (vessel at sample ``s``)."""
     x, v, T = work[0], work[1], work[4]
     place(y, samples[0][s], samples[1][s], nodes, x, v)
+    if bodies[7][0].shape[0] > 0:
+        rigid.place_fairleads(x, v, bodies[7])
     kernels.tensions(x, v, el[0], el[1], el[2], el[10], el[11], el[12], el[13], el[14], el[15], T)
 
 
@@ -282,7 +331,7 @@ def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, even
             y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
         if not finite(y):
             return step + 1, count
-    tensions_at(y, 2 * steps, samples, nodes, el, work)
+    tensions_at(y, 2 * steps, samples, nodes, el, bodies, work)
     return steps, snap_update(t0 + steps * h, T, snap, events, count)
 
 

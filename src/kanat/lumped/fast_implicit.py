@@ -20,6 +20,7 @@ from kanat.jit import inner, kernel
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 from kanat.lumped import fast, kernels
+from kanat.physics.contact import contact_tangent
 
 ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
 
@@ -88,10 +89,11 @@ def band_solve(A, bw, b):
 
 @inner
 def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
-    """Tangent ``c_mass M + c_damp (C + D + D_body) + c_stiff K`` in band storage (kernels
-    eq. tangent_blocks; body drag ``-dF/dv``), at the state in ``work``."""
+    """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
+    (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
+    :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``."""
     x, v, M, uw, bu = work[0], work[1], work[3], work[7], work[10]
-    K, C, D = blocks
+    K, C, D, Kc, Cc = blocks
     A[:, :] = 0.0
     kernels.tangent_blocks(x, v, uw, el[0], el[1], el[2], el[7], el[8], el[9], el[10], el[11], el[12], el[13],
                            el[14], el[15], K, C, D)
@@ -106,6 +108,14 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
     free_index = nodes[0]
     for f in range(free_index.shape[0]):
         band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
+    contact = bodies[8]
+    if contact[0].shape[0] > 0:
+        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], Kc, Cc)
+        for f in range(free_index.shape[0]):
+            node = free_index[f]
+            if work[18][node] > 0.0:
+                band_add(A, bw, position[node], position[node], Kc[node], c_stiff)
+                band_add(A, bw, position[node], position[node], Cc[node], c_damp)
     body_node, drag_area, rho = bodies[0], bodies[1], env[0]
     block = np.empty((3, 3))
     for b in range(body_node.shape[0]):
@@ -198,7 +208,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
             for r in range(3):
                 x[f, r], v[f, r], a[f, r] = nx[f, r], nv[f, r], na[f, r]
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
-        fast.tensions_at(y, step, end_samples, nodes, el, work)
+        fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
         n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
         if not fast.finite(y):
             return step + 1, iterations, n_events, False

@@ -7,12 +7,20 @@ Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - 
     (2)  T = max(0, f(e) + C_E2 e_dot) H(e)                                tension-only law
     (3)  F_i += T t,  F_j -= T t                                           internal forces Q*
     (4)  v_r = u_w - (v_i + v_j)/2,  v_t = (v_r . t) t,  v_n = v_r - v_t   relative flow
-    (5)  f_d = s (c_n |v_n| v_n + c_t |v_r . t| v_t),  s = sqrt(1+e) or 1   drag per length
-    (6)  f_i = (rho A + m_a) (a_w - (a_w . t) t)                            fluid inertia per length
-    (7)  F_i, F_j += (f_d + f_i - w0 z) L0 / 2                              loads, lumped to the ends
-    (8)  M_i, M_j += (L0 / 2) (m I + m_a (I - t t))                         lumped mass blocks
+    (5)  f_d = phi s (c_n |v_n| v_n + c_t |v_r . t| v_t),  s = sqrt(1+e) or 1   drag per length
+    (6)  f_i = phi [(rho A + m_a) (a_w - (a_w . t) t) + (rho A + m_at) (a_w . t) t]
+                                                                           fluid inertia per length:
+                                                                           Froude-Krylov rho A a_w on the
+                                                                           whole wave acceleration, added
+                                                                           mass normal and tangential
+    (7)  F_i, F_j += (f_d + f_i - (w0 + (1 - phi) rho g A) z) L0 / 2       loads, lumped to the ends
+    (8)  M_i, M_j += (L0 / 2) (m I + phi m_a (I - t t) + phi m_at t t)     lumped mass blocks
     (9)  B = (L0 / 6) (m I + m_a (I - t t)),  [[2B, B], [B, 2B]]            consistent mass
 
+``phi`` is the wetted fraction of the element (:func:`wetted_fraction`): an element crossing
+the surface keeps its buoyancy, drag and fluid inertia only for its part below it (as
+MoorDyn's VOF); ``phi = 1`` once its top is half a diameter below the surface. ``rho A a_w`` is the pressure-gradient force
+of the undisturbed wave on the displaced volume (MoorDyn, OrcaFlex).
 The added-mass matrix is taken at the current tangent (its ``dM/dq`` terms in Lagrange's
 equations are neglected, as in MoorDyn). Each kernel has a plain NumPy twin in
 :mod:`kanat.lumped.twins` that the tests compare it with.
@@ -60,7 +68,21 @@ PACKED = ((0, 3, 4), (3, 1, 5), (4, 5, 2))   # packed symmetric 3 x 3: xx, yy, z
 
 
 @kernel
-def element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain):
+def wetted_fraction(z_i, z_j, d, eta):
+    """Wetted fraction of an element of diameter ``d`` between centreline heights ``z_i, z_j``
+    under the surface ``eta``: the part of its vertical extent ``[low - d/2, high + d/2]`` below
+    ``eta`` — continuous, 1/2 for a horizontal element at the surface, ``(eta - low)/(high - low)``
+    for a steep one."""
+    low, high = min(z_i, z_j) - 0.5 * d, max(z_i, z_j) + 0.5 * d
+    if high <= eta:
+        return 1.0
+    if low >= eta:
+        return 0.0
+    return (eta - low) / (high - low)
+
+
+@kernel
+def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain):
     """Nodal forces, packed lumped mass blocks and element tensions and strains, eqs. (1)-(8).
 
     Parameters
@@ -69,18 +91,22 @@ def element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain):
         Node positions [m] and velocities [m/s].
     uw, aw : ndarray, shape (m, 3)
         Water velocity [m/s] and acceleration [m/s^2] at element midpoints.
+    wet : ndarray, shape (m,)
+        Wetted fraction ``phi`` of each element.
     node_force : ndarray, shape (n, 3)
         Constant nodal loads [N].
     node_mass : ndarray, shape (n,)
         Nodal (body) mass including body added mass [kg].
     el : tuple
         ``(el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x,
-        law_y)``, the element and law arrays of :class:`kanat.lumped.network.Network`.
+        law_y, mat, buoy, d)``, the element and law arrays of :class:`kanat.lumped.network.Network`
+        (``mat`` the tangential added mass, ``buoy = rho g A``, ``d`` the diameter).
     F, M, T, strain : ndarray, shapes (n, 3), (n, 6), (m,), (m,)
         Outputs, overwritten; ``M`` holds each node's symmetric mass block packed as
         :data:`PACKED` (xx, yy, zz, xy, xz, yz).
     """
-    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el
+    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el[:16]
+    mat, buoy = el[16], el[17]
     for a in range(x.shape[0]):
         for r in range(3):
             F[a, r] = node_force[a, r]
@@ -100,27 +126,29 @@ def element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain):
             tension = max(0.0, f + c[k] * edot)
         T[k] = tension
         strain[k] = e
+        phi = wet[k]
         vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
         vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
         vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
         vts = vr0 * t0 + vr1 * t1 + vr2 * t2
         vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
         half = 0.5 * L0[k]
-        s = half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
+        s = phi * half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
         normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
         axial = s * ct[k] * abs(vts) * vts
         ats = aw[k, 0] * t0 + aw[k, 1] * t1 + aw[k, 2] * t2
-        fi = half * (disp[k] + ma[k])
-        l0 = normal * vn0 + axial * t0 + fi * (aw[k, 0] - ats * t0)
-        l1 = normal * vn1 + axial * t1 + fi * (aw[k, 1] - ats * t1)
-        l2 = normal * vn2 + axial * t2 + fi * (aw[k, 2] - ats * t2) - w[k] * half
+        fn = phi * half * (disp[k] + ma[k])
+        ft = phi * half * (disp[k] + mat[k]) * ats
+        l0 = normal * vn0 + axial * t0 + fn * (aw[k, 0] - ats * t0) + ft * t0
+        l1 = normal * vn1 + axial * t1 + fn * (aw[k, 1] - ats * t1) + ft * t1
+        l2 = normal * vn2 + axial * t2 + fn * (aw[k, 2] - ats * t2) + ft * t2 - (w[k] + (1.0 - phi) * buoy[k]) * half
         F[i, 0] += l0 + tension * t0
         F[i, 1] += l1 + tension * t1
         F[i, 2] += l2 + tension * t2
         F[j, 0] += l0 - tension * t0
         F[j, 1] += l1 - tension * t1
         F[j, 2] += l2 - tension * t2
-        mass, added = half * (m[k] + ma[k]), half * ma[k]
+        mass, added = half * (m[k] + phi * ma[k]), half * phi * (ma[k] - mat[k])
         for node in (i, j):
             M[node, 0] += mass - added * t0 * t0
             M[node, 1] += mass - added * t1 * t1
@@ -131,15 +159,18 @@ def element_forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain):
 
 
 def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
-           law, law_kind, law_n, law_x, law_y, F, M, T, strain):
+           law, law_kind, law_n, law_x, law_y, F, M, T, strain, wet=None, mat=None, buoy=None):
     """:func:`element_forces` with the mass blocks unpacked to ``M`` (n, 3, 3) (the Python path).
 
     The arguments are those of :func:`element_forces` with ``el`` spread out; ``F, M, T,
-    strain`` (shapes (n, 3), (n, 3, 3), (m,), (m,)) are overwritten.
+    strain`` (shapes (n, 3), (n, 3, 3), (m,), (m,)) are overwritten. ``wet`` (default all 1),
+    ``mat`` (default 0) and ``buoy`` (default 0): wetted fraction, tangential added mass, ``rho g A``.
     """
-    el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y)
+    ones, zeros = np.ones(len(el_i)), np.zeros(len(el_i))
+    el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
+          zeros if mat is None else mat, zeros if buoy is None else buoy, zeros)
     packed = np.empty((x.shape[0], 6))
-    element_forces(x, v, _writable(uw), _writable(aw), node_force, node_mass, el, F, packed, T, strain)
+    element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force, node_mass, el, F, packed, T, strain)
     M[:] = packed[:, np.array(PACKED)]
 
 

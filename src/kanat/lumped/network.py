@@ -1,9 +1,13 @@
-"""Assembly of a case into the lumped network: nodes, elements, bodies (SPEC §5).
+"""Assembly of a case into the lumped network: nodes, elements, bodies (SPEC §4-5).
 
-Each cable of ``segments`` elements has ``segments + 1`` nodes. Cable ends attached to
-the same body or point share one node; the vessel's tow point is one prescribed node;
-each anchor end is its own prescribed node; a free end is a free node. Generalized
-coordinates are the positions of the free nodes.
+Each cable is cut into elements by :func:`kanat.lumped.grid.cable_grid` (every section joint
+and every inline attachment is a node). Cable ends attached to the same 3-DOF body or point
+share one node; the vessel's tow point is one prescribed node and each vessel fairlead
+(``{vessel: [x, y, z]}``) another, moved by the track and ``vessel.motion``; each anchor end
+is its own prescribed node; a free end is a free node. A 6-DOF body is two *pseudo-nodes*
+among the generalized coordinates — its reference point ``r`` and its Euler angles
+``(roll, pitch, yaw)`` — and each of its fairleads a node prescribed by them
+(:mod:`kanat.lumped.rigid`). Generalized coordinates are the positions of the free nodes.
 
 Element properties are stored per element as arrays, ready for the kernels
 (:mod:`kanat.lumped.kernels`):
@@ -12,9 +16,14 @@ Element properties are stored per element as arrays, ready for the kernels
   length ``c |v| v``: the seed's dimensional ``C_n, C_t`` as given (seed 004 eq. 4,
   ``stretch_drag = 0``), or from the ``Cd`` form ``c_n = rho d C_n / 2``,
   ``c_t = rho pi d C_t / 2`` with the factor ``sqrt(1 + e)`` (SPEC §2.1, ``stretch_drag = 1``);
-* weight in water per unstretched length ``w0`` [N/m];
-* displaced mass per length ``rho A`` [kg/m] for the Froude–Krylov inertia in waves;
+* weight in water per unstretched length ``w0`` [N/m] and the buoyancy ``rho g A`` it
+  includes (lost above the surface);
+* displaced mass per length ``rho A`` [kg/m] (Froude–Krylov), added mass normal ``m_a`` and
+  tangential ``m_at`` [kg/m];
 * the elastic law ``f(e)`` as a polynomial or a table (:func:`law_arrays`).
+
+Nodal arrays for the seabed contact (:mod:`kanat.physics.contact`): the contact area
+``sum d L0 / 2`` of the elements at each node [m^2] and the node's weight in water [N].
 """
 from __future__ import annotations
 
@@ -24,10 +33,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import CaseError, Problem
+from kanat.lumped.grid import cable_grid
+from kanat.lumped.rigid import RigidBodies, rigid_bodies
+from kanat.physics.motion import rotation_matrix
 
 POLYNOMIAL, TABLE = 0, 1
 GUESS_STRETCH = 1.0 + 1e-4   # the first guess stretches every cable by this factor
 VESSEL_GUESS_DIRECTION = np.array([-1.0, 0.0, -1.0]) / math.sqrt(2.0)  # astern and down
+PRESCRIBED = ("vessel", "anchor", "fairlead")
 
 
 @dataclass(frozen=True, eq=False)
@@ -37,43 +50,59 @@ class Network:
     Attributes
     ----------
     free : ndarray of bool, shape (n,)
-        Nodes moved by the dynamics; the others follow prescribed motions.
-    vessel_nodes, anchor_nodes : ndarray of int
-        Prescribed nodes: tow point(s) and anchors.
-    anchor_position : ndarray, shape (n_anchor, 3)
+        Nodes moved by the dynamics (cable nodes, 3-DOF bodies, points, 6-DOF body pseudo-nodes).
+    kinds : ndarray of str, shape (n,)
+        ``cable``, ``vessel``, ``anchor``, ``free``, ``body``, ``point``, ``fairlead``,
+        ``body_ref``, ``body_rot``.
+    vessel_nodes : ndarray of int
+        Prescribed vessel nodes (tow point and fairleads); ``vessel_offset`` (k, 3) their lever
+        arms in vessel axes.
+    anchor_nodes, anchor_position, anchor_names
+        Anchors, their positions (k, 3) and names ``cable.from`` / ``cable.to``.
     x_guess : ndarray, shape (n, 3)
-        Initial positions (straight cables between guessed ends).
+        Initial positions (cables sagging between guessed ends; Euler angles on ``body_rot``).
     node_mass, node_added_mass : ndarray, shape (n,)
-        Body and point masses and body added mass [kg] at nodes.
+        Body, attachment and point masses and added masses [kg] at nodes.
     node_force : ndarray, shape (n, 3)
-        Constant nodal loads [N]: body net buoyancy and force, point weight.
+        Constant nodal loads [N]: net buoyancy and force of bodies, point weight, buoyancy, force.
+    node_contact_area, node_weight : ndarray, shape (n,)
+        Seabed contact area ``sum d L0 / 2`` [m^2] and weight in water [N] (module docstring).
     el_i, el_j : ndarray of int, shape (m,)
         Element end nodes.
     el_length, el_mass, el_added_mass, el_weight, el_displaced : ndarray, shape (m,)
         ``L0`` [m], ``m``, ``m_a`` [kg/m], ``w0`` [N/m], ``rho A`` [kg/m].
-    el_cn, el_ct, el_stretch_drag : ndarray, shape (m,)
-        Drag coefficients [kg/m^2] and the ``sqrt(1+e)`` flag (module docstring).
-    el_damping : ndarray, shape (m,)
-        Kelvin–Voigt ``C_E2`` [N s].
-    el_law : ndarray of int, shape (m,)
-        Row of the law arrays.
-    law_kind, law_n : ndarray of int, shape (n_law,)
-    law_x, law_y : ndarray, shape (n_law, k)
-        Polynomial coefficients in ``law_y``, or table strains/tensions (through 0, 0).
-    body_names, body_node, body_drag_area, body_spreading : per body
+    el_added_tangential, el_buoyancy, el_diameter : ndarray, shape (m,)
+        ``m_at`` [kg/m], ``rho g A`` [N/m], ``d`` [m].
+    el_type : list of str
+        Line type of each element (its section's).
+    el_cn, el_ct, el_stretch_drag, el_damping, el_law, law_kind, law_n, law_x, law_y
+        Drag, Kelvin–Voigt ``C_E2`` [N s] and elastic laws (module docstring).
+    body_names, body_node : per body (3-DOF: its node; 6-DOF: its reference pseudo-node)
+    body_drag_area, body_spreading : per body (0 for 6-DOF bodies)
+    load_node, load_drag_area, load_spreading : nodes with point-body loads (3-DOF bodies and
+        points with drag or added mass), for :func:`kanat.lumped.kernels.body_loads`
     buoy_body, buoy_area, buoy_height : per surface buoy (index into the bodies)
+    rigid : RigidBodies
+        The 6-DOF bodies (:mod:`kanat.lumped.rigid`).
     node_cable, node_s, node_index : per output node (cables' nodes concatenated)
     segment_cable, cable_names, cable_first_element : per output segment / cable
+    names : dict
+        Node of each named body, point and shared end.
     """
 
     free: np.ndarray
+    kinds: np.ndarray
     vessel_nodes: np.ndarray
+    vessel_offset: np.ndarray
     anchor_nodes: np.ndarray
     anchor_position: np.ndarray
+    anchor_names: list
     x_guess: np.ndarray
     node_mass: np.ndarray
     node_added_mass: np.ndarray
     node_force: np.ndarray
+    node_contact_area: np.ndarray
+    node_weight: np.ndarray
     el_i: np.ndarray
     el_j: np.ndarray
     el_length: np.ndarray
@@ -81,6 +110,10 @@ class Network:
     el_added_mass: np.ndarray
     el_weight: np.ndarray
     el_displaced: np.ndarray
+    el_added_tangential: np.ndarray
+    el_buoyancy: np.ndarray
+    el_diameter: np.ndarray
+    el_type: list
     el_cn: np.ndarray
     el_ct: np.ndarray
     el_stretch_drag: np.ndarray
@@ -94,9 +127,13 @@ class Network:
     body_node: np.ndarray
     body_drag_area: np.ndarray
     body_spreading: np.ndarray
+    load_node: np.ndarray
+    load_drag_area: np.ndarray
+    load_spreading: np.ndarray
     buoy_body: np.ndarray
     buoy_area: np.ndarray
     buoy_height: np.ndarray
+    rigid: RigidBodies
     node_cable: np.ndarray
     node_s: np.ndarray
     node_index: np.ndarray
@@ -117,7 +154,8 @@ class Network:
         """``cable 'x' node k`` for an internal node, for messages."""
         hits = np.flatnonzero(self.node_index == node)
         if len(hits) == 0:
-            return f"node {node}"
+            named = [k for k, v in self.names.items() if v == node and not k.startswith("@")]
+            return f"'{named[0]}'" if named else f"node {node}"
         k = hits[0]
         cable = self.node_cable[k]
         local = k - np.flatnonzero(self.node_cable == cable)[0]
@@ -159,6 +197,10 @@ def law_arrays(line_types: dict) -> tuple[dict, np.ndarray, np.ndarray, np.ndarr
     return rows, np.array(kinds, dtype=np.int64), np.array([len(r) for r in ys], dtype=np.int64), pad(xs), pad(ys)
 
 
+def _key(offset) -> str:
+    return "[" + ",".join(f"{c:.12g}" for c in offset) + "]"
+
+
 class _Builder:
     """Collects nodes while walking the cables."""
 
@@ -167,25 +209,74 @@ class _Builder:
         self.named: dict[str, int] = {}
         self.positions: list = []       # guessed position or None
         self.kinds: list[str] = []
+        self.vessel: list[tuple[int, np.ndarray]] = []      # (node, lever arm)
+        self.fairleads: list[tuple[int, str, np.ndarray]] = []   # (node, body, offset)
+        self.anchor_names: list[str] = []
 
     def node(self, kind: str, position=None) -> int:
         self.kinds.append(kind)
         self.positions.append(None if position is None else np.asarray(position, float))
         return len(self.kinds) - 1
 
-    def end_node(self, end) -> int:
+    def end_node(self, end, label: str, where: tuple) -> int:
         if end.kind == "vessel":
-            if "@vessel" not in self.named:
-                self.named["@vessel"] = self.node("vessel", self.case.vessel.tow_point)
-            return self.named["@vessel"]
+            arm = np.asarray(self.case.vessel.tow_point if end.offset is None else end.offset, float)
+            key = "@vessel" if end.offset is None else "@vessel" + _key(end.offset)
+            if key not in self.named:
+                self.named[key] = self.node("vessel", _vessel_guess(self.case, arm))
+                self.vessel.append((self.named[key], arm))
+            return self.named[key]
         if end.kind == "anchor":
+            self.anchor_names.append(label)
             return self.node("anchor", end.position)
         if end.kind == "free":
             return self.node("free")
+        if end.kind == "body" and self.case.bodies[end.name].dof == 6:
+            return self._fairlead(end, where)
+        if end.offset is not None:
+            raise CaseError([Problem(where, f"a fairlead offset needs a rigid body: body '{end.name}' is a "
+                                            "point (dof 3); add dof: 6 and its inertia, or drop the offset")])
         if end.name not in self.named:
             item = (self.case.bodies if end.kind == "body" else self.case.points)[end.name]
             self.named[end.name] = self.node(end.kind, getattr(item, "position", None))
         return self.named[end.name]
+
+    def _fairlead(self, end, where) -> int:
+        body = self.case.bodies[end.name]
+        if body.position is None:
+            raise CaseError([Problem(("bodies", end.name, "position"),
+                                     "a dof: 6 body needs its position (the reference point) in the lumped "
+                                     "model")])
+        offset = np.zeros(3) if end.offset is None else np.asarray(end.offset, float)
+        key = f"{end.name}@{_key(offset)}"
+        if key not in self.named:
+            rotation = rotation_matrix(*np.radians(body.orientation_deg))
+            self.named[key] = self.node("fairlead", np.asarray(body.position) + rotation @ offset)
+            self.fairleads.append((self.named[key], end.name, offset))
+        return self.named[key]
+
+    def attach(self, name: str, node: int, where: tuple) -> None:
+        body = self.case.bodies[name]
+        if name in self.named:
+            raise CaseError([Problem(where, f"body '{name}' is already placed (a cable end or another "
+                                            "attachment); each attached body needs its own body entry")])
+        if body.dof == 6:
+            raise CaseError([Problem(where, f"body '{name}' has dof: 6; an inline attachment is a point "
+                                            "(dof 3)")])
+        if self.kinds[node] not in ("cable", "free"):
+            raise CaseError([Problem(where, f"body '{name}' is attached at a cable end that is a "
+                                            f"{self.kinds[node]}; attach it inside the cable or end the "
+                                            "cable at the body")])
+        self.kinds[node] = "body"
+        self.named[name] = node
+
+
+def _vessel_guess(case, arm) -> np.ndarray:
+    """A vessel point's place at t = 0 (the track's, or the arm itself without a track)."""
+    if not case.vessel.track:
+        return np.asarray(arm, float)
+    from kanat.vessel.track import VesselTrack
+    return VesselTrack.from_model(case.vessel).state(0.0, arm).position
 
 
 def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> None:
@@ -206,11 +297,12 @@ def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> N
                                            "an anchor: give its bodies or points a 'position'")])
 
 
-def sagged_line(p0, p1, length: float, segments: int) -> np.ndarray:
+def sagged_line(p0, p1, length: float, segments: int, s=None) -> np.ndarray:
     """Nodes of a cable between ``p0`` and ``p1``: straight when the chord is longer than
     ``GUESS_STRETCH`` times ``length``, else a parabola sagging downward whose polyline is
-    that long (elements taut, so the equilibrium's tangent is regular from the start)."""
-    xi = np.linspace(0.0, 1.0, segments + 1)[:, None]
+    that long (elements taut, so the equilibrium's tangent is regular from the start).
+    ``s`` (segments + 1,) places the nodes at those fractions of the length (default even)."""
+    xi = (np.linspace(0.0, 1.0, segments + 1) if s is None else np.asarray(s) / length)[:, None]
     chord = p1 - p0
     straight = p0 + chord * xi
     target = GUESS_STRETCH * length
@@ -235,89 +327,132 @@ def build_network(case) -> Network:
     Raises
     ------
     CaseError
-        When a part of the network has no prescribed node to hang from and no position.
+        When a part of the network has no prescribed node to hang from and no position, or an
+        attachment or fairlead cannot be placed.
     """
     env = case.environment
-    rho, g = env.water_density, env.gravity
     b = _Builder(case)
     laws = law_arrays(case.line_types)
-    el_rows, ends, cable_nodes = [], [], []
-    for cable in case.cables:
-        first, last = b.end_node(cable.from_), b.end_node(cable.to)
-        inner = [b.node("cable") for _ in range(cable.segments - 1)]
+    rows, ends, cable_nodes = [], [], []
+    for index, cable in enumerate(case.cables):
+        grid = cable_grid(cable)
+        first = b.end_node(cable.from_, f"{cable.name}.from", ("cables", index, "from"))
+        inner = [b.node("cable") for _ in range(len(grid.s) - 2)]
+        last = b.end_node(cable.to, f"{cable.name}.to", ("cables", index, "to"))
         nodes = [first, *inner, last]
+        for k, (item, node) in enumerate(zip(cable.attachments, grid.attachment_node)):
+            b.attach(item.body, nodes[node], ("cables", index, "attachments", k, "body"))
         cable_nodes.append(nodes)
         ends.append((first, last, cable.length))
-        lt = case.line_types[cable.line_type]
-        el_rows.append((nodes, cable, lt))
+        rows.append((nodes, cable, grid))
     _guess_positions(b, ends)
     x = np.zeros((len(b.kinds), 3))
-    for nodes, cable, _ in el_rows:
-        x[nodes] = sagged_line(b.positions[nodes[0]], b.positions[nodes[-1]], cable.length, cable.segments)
-    return _finish(case, b, laws, el_rows, cable_nodes, x, rho, g)
+    for nodes, cable, grid in rows:
+        x[nodes] = sagged_line(b.positions[nodes[0]], b.positions[nodes[-1]], cable.length, len(grid.s) - 1,
+                               grid.s)
+    rigid = rigid_bodies(case, b)
+    x = np.vstack([x, rigid.guess]) if rigid.count else x
+    return _finish(case, b, laws, rows, cable_nodes, x, rigid, env.water_density, env.gravity)
 
 
-def _element_arrays(el_rows, laws, rho, g):
-    cols = {k: [] for k in ("i", "j", "L", "m", "ma", "w", "disp", "cn", "ct", "stretch", "c", "law")}
-    for nodes, cable, lt in el_rows:
-        n = cable.segments
-        weight = lt.weight_in_water_value(rho, g)
-        dimensional = lt.drag_normal_coefficient is not None or lt.drag_tangential_coefficient is not None
-        if dimensional:
-            cn, ct = lt.drag_normal_coefficient or 0.0, lt.drag_tangential_coefficient or 0.0
-        else:
-            cn = 0.5 * rho * lt.diameter * lt.drag_normal
-            ct = 0.5 * rho * math.pi * lt.diameter * lt.drag_tangential
-        values = {"i": nodes[:-1], "j": nodes[1:], "L": [cable.length / n] * n, "m": [lt.mass] * n,
-                  "ma": [lt.added_mass] * n, "w": [weight] * n,
-                  "disp": [(lt.mass * g - weight) / g] * n, "cn": [cn] * n, "ct": [ct] * n,
-                  "stretch": [0.0 if dimensional else 1.0] * n, "c": [lt.axial_damping] * n,
-                  "law": [laws[0][cable.line_type]] * n}
-        for k, v in values.items():
-            cols[k].extend(v)
+def _element_arrays(case, rows, laws, rho, g):
+    cols = {k: [] for k in ("i", "j", "L", "m", "ma", "mat", "w", "disp", "buoy", "d", "cn", "ct", "stretch",
+                            "c", "law", "type")}
+    for nodes, cable, grid in rows:
+        for k in range(len(grid.s) - 1):
+            name = cable.sections[grid.section[k]].line_type
+            lt = case.line_types[name]
+            weight = lt.weight_in_water_value(rho, g)
+            dimensional = lt.drag_normal_coefficient is not None or lt.drag_tangential_coefficient is not None
+            if dimensional:
+                cn, ct = lt.drag_normal_coefficient or 0.0, lt.drag_tangential_coefficient or 0.0
+            else:
+                cn = 0.5 * rho * lt.diameter * lt.drag_normal
+                ct = 0.5 * rho * math.pi * lt.diameter * lt.drag_tangential
+            values = {"i": nodes[k], "j": nodes[k + 1], "L": grid.s[k + 1] - grid.s[k], "m": lt.mass,
+                      "ma": lt.added_mass, "mat": lt.added_mass_tangential, "w": weight,
+                      "disp": (lt.mass * g - weight) / g, "buoy": lt.mass * g - weight, "d": lt.diameter,
+                      "cn": cn, "ct": ct, "stretch": 0.0 if dimensional else 1.0, "c": lt.axial_damping,
+                      "law": laws[0][name], "type": name}
+            for key, value in values.items():
+                cols[key].append(value)
     return cols
 
 
-def _finish(case, b, laws, el_rows, cable_nodes, x, rho, g) -> Network:
-    n = len(b.kinds)
-    kinds = np.array(b.kinds)
+def _node_loads(case, b, n, g, rho):
     node_mass, node_added, node_force = np.zeros(n), np.zeros(n), np.zeros((n, 3))
-    body_names = [name for name in case.bodies if name in b.named]
-    body_node = np.array([b.named[k] for k in body_names], dtype=np.int64)
-    for name, node in zip(body_names, body_node):
-        body = case.bodies[name]
-        node_mass[node] += body.mass
-        node_added[node] += body.added_mass
-        node_force[node] += np.asarray(body.force) + np.array([0.0, 0.0, body.net_buoyancy])
+    loads = []                      # (node, drag area, spreading) of point-like loads
+    for name, body in case.bodies.items():
+        if name in b.named and body.dof == 3:
+            node = b.named[name]
+            node_mass[node] += body.mass
+            node_added[node] += body.added_mass
+            node_force[node] += np.asarray(body.force) + np.array([0.0, 0.0, body.net_buoyancy])
+            loads.append((node, body.drag_area, body.spreading_force))
     for name, point in case.points.items():
         if name in b.named:
-            node_mass[b.named[name]] += point.mass
-            node_force[b.named[name], 2] -= point.mass * g
+            node = b.named[name]
+            node_mass[node] += point.mass
+            node_added[node] += point.added_mass
+            node_force[node] += np.asarray(point.force) + np.array([0.0, 0.0, point.net_buoyancy(rho, g)])
+            if point.drag_area or point.added_mass:
+                loads.append((node, point.drag_area, 0.0))
+    return node_mass, node_added, node_force, loads
+
+
+def _contact_arrays(n, cols, node_force):
+    area, weight = np.zeros(n), np.zeros(n)
+    half = 0.5 * np.asarray(cols["L"])
+    for key in ("i", "j"):
+        np.add.at(area, np.asarray(cols[key], np.int64), half * np.asarray(cols["d"]))
+        np.add.at(weight, np.asarray(cols[key], np.int64), half * np.asarray(cols["w"]))
+    weight += np.maximum(-node_force[:, 2], 0.0)
+    return area, weight
+
+
+def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
+    n = len(x)
+    kinds = np.array(b.kinds + ["body_ref", "body_rot"] * rigid.count)
+    node_mass, node_added, node_force, loads = _node_loads(case, b, n, g, rho)
+    body_names = [name for name in case.bodies if name in b.named or name in rigid.names]
+    body_node = np.array([b.named[k] if k in b.named else rigid.ref_node[rigid.names.index(k)]
+                          for k in body_names], dtype=np.int64)
     buoys = [k for k, name in enumerate(body_names) if case.bodies[name].surface_buoy is not None]
-    cols = _element_arrays(el_rows, laws, rho, g)
+    cols = _element_arrays(case, rows, laws, rho, g)
+    area, weight = _contact_arrays(n, cols, node_force)
     names, s, index, seg_cable, first_el = [], [], [], [], []
-    for (nodes, cable, _), cn in zip(el_rows, cable_nodes):
+    for (nodes, cable, grid), cn in zip(rows, cable_nodes):
         first_el.append(len(seg_cable))
         names += [cable.name] * len(nodes)
-        s.extend(np.linspace(0.0, cable.length, len(nodes)))
+        s.extend(grid.s)
         index.extend(cn)
-        seg_cable += [cable.name] * cable.segments
+        seg_cable += [cable.name] * (len(nodes) - 1)
     arr = lambda k, dt=float: np.asarray(cols[k], dtype=dt)  # noqa: E731
+    three = [case.bodies[k].dof == 3 for k in body_names]
+    vessel_nodes = np.array([node for node, _ in b.vessel], dtype=np.int64)
     return Network(
-        free=~np.isin(kinds, ["vessel", "anchor"]),
-        vessel_nodes=np.flatnonzero(kinds == "vessel"), anchor_nodes=np.flatnonzero(kinds == "anchor"),
-        anchor_position=x[kinds == "anchor"].copy(), x_guess=x,
+        free=~np.isin(kinds, PRESCRIBED), kinds=kinds,
+        vessel_nodes=vessel_nodes,
+        vessel_offset=np.array([arm for _, arm in b.vessel], dtype=float).reshape(-1, 3),
+        anchor_nodes=np.flatnonzero(kinds == "anchor"), anchor_position=x[kinds == "anchor"].copy(),
+        anchor_names=list(b.anchor_names), x_guess=x,
         node_mass=node_mass, node_added_mass=node_added, node_force=node_force,
+        node_contact_area=area, node_weight=weight,
         el_i=arr("i", np.int64), el_j=arr("j", np.int64), el_length=arr("L"), el_mass=arr("m"),
-        el_added_mass=arr("ma"), el_weight=arr("w"), el_displaced=arr("disp"), el_cn=arr("cn"),
-        el_ct=arr("ct"), el_stretch_drag=arr("stretch"), el_damping=arr("c"), el_law=arr("law", np.int64),
-        law_kind=laws[1], law_n=laws[2], law_x=laws[3], law_y=laws[4],
+        el_added_mass=arr("ma"), el_weight=arr("w"), el_displaced=arr("disp"),
+        el_added_tangential=arr("mat"), el_buoyancy=arr("buoy"), el_diameter=arr("d"), el_type=list(cols["type"]),
+        el_cn=arr("cn"), el_ct=arr("ct"), el_stretch_drag=arr("stretch"), el_damping=arr("c"),
+        el_law=arr("law", np.int64), law_kind=laws[1], law_n=laws[2], law_x=laws[3], law_y=laws[4],
         body_names=body_names, body_node=body_node,
-        body_drag_area=np.array([case.bodies[k].drag_area for k in body_names]),
-        body_spreading=np.array([case.bodies[k].spreading_force for k in body_names]),
+        body_drag_area=np.array([case.bodies[k].drag_area if t else 0.0 for k, t in zip(body_names, three)]),
+        body_spreading=np.array([case.bodies[k].spreading_force if t else 0.0 for k, t in zip(body_names, three)]),
+        load_node=np.array([r[0] for r in loads], dtype=np.int64),
+        load_drag_area=np.array([r[1] for r in loads], dtype=float),
+        load_spreading=np.array([r[2] for r in loads], dtype=float),
         buoy_body=np.array(buoys, dtype=np.int64),
         buoy_area=np.array([case.bodies[body_names[k]].surface_buoy.waterplane_area for k in buoys]),
         buoy_height=np.array([case.bodies[body_names[k]].surface_buoy.height for k in buoys]),
+        rigid=rigid,
         node_cable=np.array(names, dtype=object), node_s=np.array(s), node_index=np.array(index, np.int64),
         segment_cable=np.array(seg_cable, dtype=object), cable_names=[c.name for c in case.cables],
         cable_first_element=np.array(first_el, dtype=np.int64), names=dict(b.named))

@@ -11,6 +11,11 @@ axial stiffness ``k = f'(e)/L0`` and Kelvin–Voigt rate ``c/L0``::
     (3)  T_axial = 2 pi / max omega_k             shortest axial nodal period
     (4)  h_safe  = SAFETY * limit / max(omega_k + sigma_k)
 
+With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` adds the rate
+``sqrt(k_b A_n / m_n) + (c_b A_n + mu W_n / v_s) / m_n`` (contact stiffness, damping, and the
+slope of the regularized friction at rest for the node's weight ``W_n``;
+:mod:`kanat.physics.contact`), which competes in the maximum of eq. (4).
+
 ``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
 imaginary axis). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
 """
@@ -22,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.lumped.kernels import elastic_row
+from kanat.physics.contact import SLIP_VELOCITY
 
 SAFETY = 0.8                 # margin below the stability limit
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
@@ -54,13 +60,15 @@ class StepInfo:
         return SAFETY * scheme.stability_limit / self.omega_max
 
 
-def step_info(net, x, consistent: bool = False) -> StepInfo:
-    """Stability bound of the network at positions ``x`` (n, 3), eqs. (1)-(3)."""
+def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
+    """Stability bound of the network at positions ``x`` (n, 3), eqs. (1)-(4); ``seabed`` the
+    case's ``environment.seabed`` block (None: no contact)."""
     inv = np.zeros(net.n_nodes)
     mass = net.node_mass.copy()
     np.add.at(mass, net.el_i, 0.5 * net.el_mass * net.el_length)
     np.add.at(mass, net.el_j, 0.5 * net.el_mass * net.el_length)
-    inv[net.free] = 1.0 / mass[net.free]
+    heavy = net.free & (mass > 0)
+    inv[heavy] = 1.0 / mass[heavy]
     strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
     slope = np.zeros(net.n_elements)
     for row in range(len(net.law_kind)):
@@ -76,7 +84,14 @@ def step_info(net, x, consistent: bool = False) -> StepInfo:
         omega = omega * CONSISTENT_FACTOR
     rate = omega + 2.0 * net.el_damping / net.el_length * pair
     k = int(np.argmax(rate))
-    return StepInfo(2.0 * math.pi / max(float(np.max(omega)), 1e-300), float(rate[k]), k)
+    top = float(rate[k]) if len(rate) else 0.0
+    if seabed is not None:
+        area = net.node_contact_area * (inv > 0)
+        contact = (np.sqrt(seabed.stiffness * area * inv)
+                   + (seabed.damping * area + max(seabed.friction, seabed.lateral_friction) * net.node_weight
+                      / SLIP_VELOCITY) * inv)
+        top = max(top, float(np.max(contact, initial=0.0)))
+    return StepInfo(2.0 * math.pi / max(float(np.max(omega, initial=0.0)), 1e-300), top, k)
 
 
 def fit_step(h_max: float, output_dt: float) -> float:
@@ -84,10 +99,13 @@ def fit_step(h_max: float, output_dt: float) -> float:
     return output_dt / math.ceil(output_dt / h_max - 1e-9)
 
 
-def choose_scheme(info: StepInfo, dt: float, schemes: dict):
+def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool = False):
     """The cheapest safe scheme for a case that names none: RK4 at its safe step, or the
-    implicit scheme at ``dt``, by force evaluations per simulated second."""
+    implicit scheme at ``dt``, by force evaluations per simulated second (RK4 when
+    ``explicit_only``: 6-DOF bodies)."""
     rk4, implicit = schemes["rk4"](), schemes["generalized-alpha-lumped"]()
+    if explicit_only:
+        return rk4
     explicit_cost = rk4.evaluations_per_step / min(info.safe_step(rk4), dt)
     implicit_cost = IMPLICIT_ITERATIONS * (1.0 + IMPLICIT_COST) / dt
     return rk4 if explicit_cost <= implicit_cost else implicit

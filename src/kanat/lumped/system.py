@@ -1,30 +1,40 @@
 """The lumped model's equations of motion: Lagrange's equations of the network (SPEC §5)
-with the vessel, anchors, bodies, current and waves.
+with the vessel, anchors, bodies, seabed, current and waves.
 
 With ``q`` the free node positions, Lagrange's equations (seed 004 eqs. 3-4) read::
 
     (1)  M(q) q_ddot = F(t, q, q_dot) - M_qp a_p(t)
 
-``M`` the lumped or consistent mass matrix with added mass on the normal relative
-acceleration (:mod:`kanat.lumped.kernels` eqs. 8-9) plus body masses and added masses;
-``F`` the element forces (kernels eqs. 1-7) plus the body loads::
+``M`` the lumped or consistent mass matrix with added mass on the relative acceleration
+(:mod:`kanat.lumped.kernels` eqs. 8-9) plus body masses and added masses; ``F`` the element
+forces (kernels eqs. 1-7, with the wetted fraction of elements crossing the surface), the
+seabed contact (:mod:`kanat.physics.contact`) and the body loads::
 
     (2)  F_b = (B - W) z + F_ext + 1/2 rho C_D S |u_r| u_r + m_a,b a_w + F0 n_h + F_buoy
 
 ``u_r = u_w - R_dot`` the relative flow, ``n_h = (-sin psi, cos psi, 0)`` the horizontal
 normal to the vessel heading ``psi`` (otter-board spreading force ``F0``, positive to port),
 ``F_buoy = rho g A_wp clip(eta(x, y, t) - z, 0, h_b) z`` the waterplane buoyancy of a
-surface buoy whose node is its keel (lost when it leaves the water). Prescribed nodes
-follow the vessel track (tow point) or stay put (anchors); ``a_p`` their acceleration
-(only the consistent mass couples it in).
+surface buoy whose node is its keel (lost when it leaves the water). 6-DOF bodies follow
+:mod:`kanat.lumped.rigid`. Prescribed nodes: the vessel's points (tow point and fairleads,
+lever arms ``r`` in vessel axes) at the track's point ``r`` plus the prescribed motion
+``Rz(psi) [(surge, sway, heave) + R(roll, pitch, yaw) r - r]`` (:mod:`kanat.physics.motion`),
+anchors fixed, body fairleads on their bodies; ``a_p`` their acceleration (only the
+consistent mass couples it in).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from kanat.lumped import kernels
+from kanat.lumped import fast, kernels, rigid
+from kanat.physics import contact
+from kanat.physics.motion import compile_motion
+from kanat.physics.motion_samples import motion_series, point_series
+from kanat.physics.seabed import seabed_of
 from kanat.physics.waves import sea_from_model
 from kanat.vessel.track import VesselTrack
+
+YAW_RATE_STEP = 1e-4      # s, central difference of the track's heading for its yaw rate
 
 
 class LumpedSystem:
@@ -40,7 +50,8 @@ class LumpedSystem:
         False: the mean, wave-free surface (initial equilibrium).
     steady_velocity : ndarray, shape (3,), optional
         If given, every free node moves at this velocity and the vessel is frozen at
-        ``t = 0`` (the steady frame of the initial equilibrium, SPEC §4).
+        ``t = 0`` (the steady frame of the initial equilibrium, SPEC §4); seabed friction then
+        takes its equilibrium form (:mod:`kanat.physics.contact`).
     """
 
     def __init__(self, net, case, mass_matrix: str = "lumped", waves: bool = True, steady_velocity=None):
@@ -50,6 +61,7 @@ class LumpedSystem:
         self.current = env.current
         self.sea = sea_from_model(env) if waves else None
         self.track = VesselTrack.from_model(case.vessel) if case.vessel.track else None
+        self.motion = compile_motion(case.vessel.motion) if waves else None
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
         self.free_index = np.flatnonzero(net.free)
@@ -57,33 +69,113 @@ class LumpedSystem:
         n, m = net.n_nodes, net.n_elements
         self._F, self._M = np.zeros((n, 3)), np.zeros((n, 3, 3))
         self.tension, self.strain = np.zeros(m), np.zeros(m)
+        self.wet = np.ones(m)
         self._uniform = env.current.profile is None and self.sea is None
         self._u_uniform = np.broadcast_to(env.current.at(0.0), (m, 3)).copy()
         self._zero_m3 = np.zeros((m, 3))
+        self.eta_bound = float(np.sum(self.sea.amplitude)) if self.sea is not None else 0.0
         self.evaluations = 0
         self.el_args = (net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, net.el_weight,
                         net.el_displaced, net.el_cn, net.el_ct, net.el_stretch_drag, net.el_damping, net.el_law,
-                        net.law_kind, net.law_n, net.law_x, net.law_y)
+                        net.law_kind, net.law_n, net.law_x, net.law_y, net.el_added_tangential, net.el_buoyancy,
+                        net.el_diameter)
+        self.contact = self._contact(case, net)
+        self.normal_force, self._tangent = np.zeros(n), np.zeros((n, 3))
+        self.rig = net.rigid.arrays()
+        self.rigid_acc = np.zeros((net.rigid.count, 2, 3))
+
+    def _contact(self, case, net) -> tuple:
+        """``(area, bed, params, laid)`` for :func:`kanat.physics.contact.contact_forces`, or empty."""
+        block = case.environment.seabed
+        if block is None:
+            empty = np.zeros(0)
+            return empty, empty, empty, (np.zeros((0, 3)), np.zeros((0, 3)), empty)
+        static = self.steady_velocity is not None
+        bed = contact.seabed_arrays(seabed_of(case.environment))
+        laid = laid_lines(net, bed) if static else (np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3)),
+                                                    np.zeros(net.n_nodes))
+        return net.node_contact_area, bed, contact.contact_parameters(block, int(static)), laid
 
     # --- prescribed motion and environment -------------------------------------------------
-    def vessel(self, t: float):
-        """Tow point ``(position, velocity, acceleration, heading)`` at ``t``."""
-        if self.track is None:
-            p = np.asarray(self.case.vessel.tow_point, float)
-            return p, np.zeros(3), np.zeros(3), 0.0
-        st = self.track.state(0.0 if self.steady_velocity is not None else t)
+    def vessel_points(self, times, arms=None):
+        """Position, velocity (k, p, 3) and heading (k,) of vessel points ``arms`` (p, 3) in vessel
+        axes (default: the vessel nodes') at ``times`` (k,): the track's point plus the
+        prescribed motion turned by the heading (module docstring)."""
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        arms = self.net.vessel_offset if arms is None else np.asarray(arms, float).reshape(-1, 3)
         if self.steady_velocity is not None:
-            return st.position, st.velocity, np.zeros(3), st.heading
-        return st.position, st.velocity, st.acceleration, st.heading
+            times = np.zeros_like(times)
+        k, p = len(times), len(arms)
+        pos, vel, heading = np.empty((k, p, 3)), np.zeros((k, p, 3)), np.zeros(k)
+        if self.track is None:
+            pos[:] = arms
+        else:
+            for j, arm in enumerate(arms):
+                pos[:, j], vel[:, j], heading[:] = self.track_series(times, arm)
+        if self.motion is not None and p:
+            q, qd = motion_series(self.motion, times)
+            disp, dvel = point_series(arms, q, qd)
+            c, s = np.cos(heading)[:, None], np.sin(heading)[:, None]
+            turned = np.stack([c * disp[..., 0] - s * disp[..., 1], s * disp[..., 0] + c * disp[..., 1],
+                               disp[..., 2]], -1)
+            rate = self._yaw_rate(times)[:, None]
+            pos += turned
+            vel[..., 0] += c * dvel[..., 0] - s * dvel[..., 1] - rate * turned[..., 1]
+            vel[..., 1] += s * dvel[..., 0] + c * dvel[..., 1] + rate * turned[..., 0]
+            vel[..., 2] += dvel[..., 2]
+        return pos, vel, heading
+
+    def track_series(self, times, arm):
+        """Position, velocity (k, 3) and heading (k,) of the vessel point ``arm`` along the track:
+        compiled (:func:`kanat.lumped.fast.track_states`) unless the vessel pitches."""
+        k = len(times)
+        pos, vel, heading = np.empty((k, 3)), np.empty((k, 3)), np.empty(k)
+        if self.track.pitch is None:
+            if getattr(self, "_phases", None) is None:
+                self._phases = phase_table(self.track)
+            fast.track_states(np.ascontiguousarray(times, float), self._phases, np.asarray(arm, float), pos, vel,
+                              heading)
+            return pos, vel, heading
+        for i, t in enumerate(times):
+            st = self.track.state(float(t), arm)
+            pos[i], vel[i], heading[i] = st.position, st.velocity, st.heading
+        return pos, vel, heading
+
+    def _yaw_rate(self, times):
+        if self.track is None:
+            return np.zeros(len(times))
+        ahead = self.track_series(times + YAW_RATE_STEP, np.zeros(3))[2]
+        behind = self.track_series(times - YAW_RATE_STEP, np.zeros(3))[2]
+        return (ahead - behind) / (2 * YAW_RATE_STEP)
+
+    def vessel(self, t: float):
+        """Tow point ``(position, velocity, acceleration, heading)`` at ``t`` (acceleration of the
+        track; the prescribed motion's is left out: only the consistent mass uses it)."""
+        if self.track is None:
+            pos, vel, heading = self.vessel_points([t], self.case.vessel.tow_point)
+            return pos[0, 0], vel[0, 0], np.zeros(3), 0.0
+        st = self.track.state(0.0 if self.steady_velocity is not None else t)
+        pos, vel, heading = self.vessel_points([t], self.case.vessel.tow_point)
+        acc = np.zeros(3) if self.steady_velocity is not None else st.acceleration
+        return pos[0, 0], vel[0, 0], acc, heading[0]
 
     def prescribed(self, t: float, x: np.ndarray, v: np.ndarray, a: np.ndarray | None = None) -> float:
-        """Write the prescribed nodes' motion at ``t`` into ``x, v`` (and ``a``); return the heading."""
+        """Write the prescribed nodes' motion at ``t`` into ``x, v`` (and ``a``); return the heading.
+        6-DOF bodies' fairleads follow their bodies' pseudo-nodes, which ``x, v`` must hold."""
         net = self.net
-        p, vel, acc, heading = self.vessel(t)
-        x[net.vessel_nodes], v[net.vessel_nodes] = p, vel
+        heading = 0.0
+        if len(net.vessel_nodes):
+            pos, vel, head = self.vessel_points([t])
+            x[net.vessel_nodes], v[net.vessel_nodes], heading = pos[0], vel[0], head[0]
+            if a is not None:
+                a[net.vessel_nodes] = self.vessel(t)[2]
+        elif self.track is not None:
+            heading = self.track.state(0.0 if self.steady_velocity is not None else t).heading
         x[net.anchor_nodes], v[net.anchor_nodes] = net.anchor_position, 0.0
         if a is not None:
-            a[net.vessel_nodes], a[net.anchor_nodes] = acc, 0.0
+            a[net.anchor_nodes] = 0.0
+        if net.rigid.count:
+            rigid.place_fairleads(x, v, self.rig)
         return heading
 
     def water(self, t: float, points: np.ndarray):
@@ -95,6 +187,20 @@ class LumpedSystem:
             return u, np.zeros_like(u)
         return u + self.sea.velocity(points, t), self.sea.acceleration(points, t)
 
+    def wetted(self, t: float, x: np.ndarray) -> np.ndarray:
+        """Wetted fraction of every element (kernels.wetted_fraction) into ``self.wet``."""
+        net = self.net
+        zi, zj, half = x[net.el_i, 2], x[net.el_j, 2], 0.5 * net.el_diameter
+        top, low = np.maximum(zi, zj) + half, np.minimum(zi, zj) - half
+        near = top >= -self.eta_bound
+        self.wet[:] = 1.0
+        if np.any(near):
+            mid = 0.5 * (x[net.el_i[near]] + x[net.el_j[near]])
+            eta = self.sea.elevation(mid[:, 0], mid[:, 1], t) if self.sea is not None else np.zeros(len(mid))
+            span = np.maximum(top[near] - low[near], 1e-300)
+            self.wet[near] = np.clip((eta - low[near]) / span, 0.0, 1.0)
+        return self.wet
+
     # --- loads, mass and acceleration ------------------------------------------------------
     def loads(self, t: float, x: np.ndarray, v: np.ndarray, heading: float):
         """Nodal forces ``F`` (n, 3) and lumped mass blocks ``M`` (n, 3, 3), eqs. (1)-(2)."""
@@ -103,24 +209,42 @@ class LumpedSystem:
             uw, aw = self._u_uniform, self._zero_m3
         else:
             uw, aw = self.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))
-        kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, *self.el_args,
-                       self._F, self._M, self.tension, self.strain)
+        kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, *self.el_args[:16],
+                       self._F, self._M, self.tension, self.strain, self.wetted(t, x), *self.el_args[16:18])
         self.evaluations += 1
-        if len(net.body_node):
+        area, bed, params, laid = self.contact
+        if len(area):
+            contact.contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, self._tangent, self._F,
+                                   self.normal_force)
+        if len(net.load_node):
             self._body_loads(t, x, v, heading)
+        if net.rigid.count:
+            self._rigid(t, x, v)
         return self._F, self._M
 
     def _body_loads(self, t, x, v, heading):
         net, F = self.net, self._F
-        nodes = net.body_node
+        nodes = net.load_node
         u, a = self.water(t, x[nodes])
-        kernels.body_loads(x, v, np.ascontiguousarray(u), a, nodes, net.body_drag_area, net.body_spreading,
-                           net.node_added_mass, self.rho, heading, F)
+        kernels.body_loads(x, v, np.ascontiguousarray(u), np.ascontiguousarray(a), nodes, net.load_drag_area,
+                           net.load_spreading, net.node_added_mass, self.rho, heading, F)
         if len(net.buoy_body):
-            keel = x[nodes[net.buoy_body]]
+            keel = x[net.body_node[net.buoy_body]]
             eta = self.sea.elevation(keel[:, 0], keel[:, 1], t) if self.sea is not None else 0.0
             immersion = np.clip(eta - keel[:, 2], 0.0, net.buoy_height)
-            F[nodes[net.buoy_body], 2] += self.rho * self.g * net.buoy_area * immersion
+            F[net.body_node[net.buoy_body], 2] += self.rho * self.g * net.buoy_area * immersion
+
+    def _rigid(self, t, x, v):
+        """6-DOF bodies (:mod:`kanat.lumped.rigid`): accelerations into ``rigid_acc``, their rows of
+        ``F`` and ``M`` set."""
+        ref = self.net.rigid.ref_node
+        points = np.ascontiguousarray(x[ref])
+        u, a = self.water(t, points)
+        eta = self.sea.elevation(points[:, 0], points[:, 1], t) if self.sea is not None else np.zeros(len(ref))
+        packed = self._M[:, [0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]].copy()
+        rigid.rigid_accelerations(x, v, self._F, packed, np.ascontiguousarray(u), np.ascontiguousarray(a),
+                                  np.asarray(eta, float), self.rho, self.rig, self.rigid_acc)
+        self._M[:] = packed[:, np.array(kernels.PACKED)]
 
     def solve_mass(self, x: np.ndarray, F: np.ndarray, M: np.ndarray, a: np.ndarray) -> np.ndarray:
         """Accelerations of the free nodes from ``M a = F`` (``a`` holds the prescribed ones)."""
@@ -131,6 +255,8 @@ class LumpedSystem:
             kernels.consistent_solve(B, self.net.el_i, self.net.el_j, self.node_mass, F, self.net.free, a)
         else:
             kernels.lumped_solve(M, F, self.net.free, a)
+        if self.net.rigid.count:
+            a[self.net.rigid.ref_node], a[self.net.rigid.rot_node] = self.rigid_acc[:, 0], self.rigid_acc[:, 1]
         return a
 
     def full(self, t: float, xf: np.ndarray, vf: np.ndarray):
@@ -138,9 +264,10 @@ class LumpedSystem:
         n = self.net.n_nodes
         x, v, a = np.empty((n, 3)), np.empty((n, 3)), np.zeros((n, 3))
         x[self.free_index], v[self.free_index] = xf, vf
-        heading = self.prescribed(t, x, v, a)
         if self.steady_velocity is not None:
             v[self.free_index] = self.steady_velocity
+            v[self.net.rigid.rot_node] = 0.0
+        heading = self.prescribed(t, x, v, a)
         return x, v, a, heading
 
     def acceleration(self, t: float, xf: np.ndarray, vf: np.ndarray) -> np.ndarray:
@@ -154,3 +281,36 @@ class LumpedSystem:
         nf = len(self.free_index)
         xf, vf = y[: 3 * nf].reshape(nf, 3), y[3 * nf:].reshape(nf, 3)
         return np.concatenate([y[3 * nf:], self.acceleration(t, xf, vf).ravel()])
+
+
+def phase_table(track) -> np.ndarray:
+    """A track's phases as rows (start, duration, x, y, heading, speed, acceleration, yaw rate)."""
+    fields = ("start", "duration", "x", "y", "heading", "speed", "acceleration", "yaw_rate")
+    return np.array([[getattr(ph, f) for f in fields] for ph in track.phases], float)
+
+
+def laid_lines(net, bed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Where each cable node lay for the equilibrium's seabed friction (:mod:`kanat.physics.contact`):
+    from the cable's anchor (its first anchor end), straight along the seabed towards the other
+    end's first guess; nodes of cables without an anchor, and cable ends, get no direction."""
+    n = net.n_nodes
+    ref, direction, s = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros(n)
+    anchors = set(int(a) for a in net.anchor_nodes)
+    normal = np.array([-bed[4], 0.0, bed[3]])
+    for c, name in enumerate(net.cable_names):
+        rows = np.flatnonzero(net.node_cable == name)
+        nodes = net.node_index[rows]
+        if int(nodes[0]) in anchors:
+            start, other, arc = nodes[0], nodes[-1], net.node_s[rows]
+        elif int(nodes[-1]) in anchors:
+            start, other, arc = nodes[-1], nodes[0], net.node_s[rows][-1] - net.node_s[rows]
+        else:
+            continue
+        d = net.x_guess[other] - net.x_guess[start]
+        d = d - (d @ normal) * normal
+        if np.linalg.norm(d) == 0.0:
+            continue
+        d /= np.linalg.norm(d)
+        inner = nodes[1:-1]
+        ref[inner], direction[inner], s[inner] = net.x_guess[start], d, arc[1:-1]
+    return ref, direction, s

@@ -24,8 +24,13 @@ def elastic_numpy(kind, n, xs, ys, e):
     return y[k - 1] + slope * (e - x[k - 1]), slope
 
 
-def forces_numpy(net, x, v, uw, aw, node_mass):
-    """Twin of :func:`kernels.forces`: returns ``F (n,3), M (n,3,3), T (m,), strain (m,)``."""
+def forces_numpy(net, x, v, uw, aw, node_mass, wet=None, mat=None, buoy=None):
+    """Twin of :func:`kernels.forces` (same defaults for ``wet``, ``mat``, ``buoy``): returns
+    ``F (n,3), M (n,3,3), T (m,), strain (m,)``."""
+    m = len(net.el_i)
+    wet = np.ones(m) if wet is None else np.asarray(wet)
+    mat = np.zeros(m) if mat is None else np.asarray(mat)
+    buoy = np.zeros(m) if buoy is None else np.asarray(buoy)
     i, j, L0 = net.el_i, net.el_j, net.el_length
     d = x[j] - x[i]
     length = np.linalg.norm(d, axis=1)
@@ -41,19 +46,21 @@ def forces_numpy(net, x, v, uw, aw, node_mass):
     vr = uw - 0.5 * (v[i] + v[j])
     vts = np.einsum("kr,kr->k", vr, t)
     vn = vr - vts[:, None] * t
-    s = np.where(net.el_stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
+    s = wet * np.where(net.el_stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
     fd = s[:, None] * (net.el_cn[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
                        + (net.el_ct * np.abs(vts) * vts)[:, None] * t)
-    an = aw - np.einsum("kr,kr->k", aw, t)[:, None] * t
-    fi = (net.el_displaced + net.el_added_mass)[:, None] * an
+    at = np.einsum("kr,kr->k", aw, t)[:, None] * t
+    fi = wet[:, None] * ((net.el_displaced + net.el_added_mass)[:, None] * (aw - at)
+                         + (net.el_displaced + mat)[:, None] * at)
     load = (fd + fi) * (0.5 * L0)[:, None]
-    load[:, 2] -= net.el_weight * 0.5 * L0
+    load[:, 2] -= (net.el_weight + (1.0 - wet) * buoy) * 0.5 * L0
     F = np.array(net.node_force, dtype=float)
     np.add.at(F, i, T[:, None] * t + load)
     np.add.at(F, j, -T[:, None] * t + load)
     eye = np.eye(3)
-    blocks = (0.5 * L0)[:, None, None] * ((net.el_mass + net.el_added_mass)[:, None, None] * eye
-                                           - net.el_added_mass[:, None, None] * np.einsum("kr,kq->krq", t, t))
+    tt = np.einsum("kr,kq->krq", t, t)
+    blocks = (0.5 * L0)[:, None, None] * ((net.el_mass + wet * net.el_added_mass)[:, None, None] * eye
+                                           + (wet * (mat - net.el_added_mass))[:, None, None] * tt)
     M = node_mass[:, None, None] * eye
     np.add.at(M, i, blocks)
     np.add.at(M, j, blocks)

@@ -1,0 +1,72 @@
+"""Mooring outputs of the lumped model (case-format.md): seabed contact length, line forces on
+bodies, body attitudes, and the penetration the seabed check allows.
+
+* ``seabed_contact_length(cable) = sum_k L0_k (c_i + c_j) / 2`` with ``c = 1`` at a node the
+  seabed pushes (normal force > 0): half an element per node in contact;
+* the lines' force on a body: at each of its nodes (a 3-DOF body's node, a 6-DOF body's
+  fairleads), ``sum_k (+/- T_k t_k - w0_k L0_k / 2 z)`` over the elements there — the end
+  tension and the weight in water of the half element the node carries (as statics reports it);
+* the allowed penetration of node ``n``: ``PENETRATION_MARGIN W_n / (k_b A_n) + PENETRATION_FLOOR``
+  (its weight in water over the contact stiffness), or round-off without seabed contact.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
+
+NO_CONTACT_RTOL = 1e-9     # below the seabed by more than this fraction of the depth fails without contact
+
+
+def contact_length(net, normal_force: np.ndarray) -> np.ndarray:
+    """Unstretched length of each cable resting on the seabed (n_cables,) [m]."""
+    touching = (normal_force > 0.0).astype(float)
+    per_element = net.el_length * 0.5 * (touching[net.el_i] + touching[net.el_j])
+    out = np.zeros(len(net.cable_names))
+    for c, first in enumerate(net.cable_first_element):
+        last = net.cable_first_element[c + 1] if c + 1 < len(out) else net.n_elements
+        out[c] = per_element[first:last].sum()
+    return out
+
+
+def _node_pull(net, x, T, node) -> np.ndarray:
+    """The lines' force on ``node``: its elements' end tensions and half weights."""
+    out = np.zeros(3)
+    for ends, sign in ((net.el_i, 1.0), (net.el_j, -1.0)):
+        for k in np.flatnonzero(ends == node):
+            d = x[net.el_j[k]] - x[net.el_i[k]]
+            out += sign * T[k] * d / np.linalg.norm(d)
+            out[2] -= 0.5 * net.el_weight[k] * net.el_length[k]
+    return out
+
+
+def line_forces(net, x, T) -> np.ndarray:
+    """Resultant force of the lines on each body (n_body, 3) [N]."""
+    out = np.zeros((len(net.body_names), 3))
+    rigid = net.rigid
+    for b, (name, node) in enumerate(zip(net.body_names, net.body_node)):
+        if name in rigid.names:
+            r = rigid.names.index(name)
+            for f in rigid.fairlead_node[rigid.fairlead_body == r]:
+                out[b] += _node_pull(net, x, T, f)
+        else:
+            out[b] = _node_pull(net, x, T, node)
+    return out
+
+
+def attitudes(net, x) -> np.ndarray:
+    """Roll, pitch, yaw of each body (n_body, 3) [rad]; zeros for point bodies."""
+    out = np.zeros((len(net.body_names), 3))
+    for r, name in enumerate(net.rigid.names):
+        out[net.body_names.index(name)] = x[net.rigid.rot_node[r]]
+    return out
+
+
+def allowed_penetration(net, environment) -> np.ndarray:
+    """Penetration below the seabed each node may reach before a run fails (n,) [m]."""
+    block = environment.seabed
+    if block is None:
+        return np.full(net.n_nodes, NO_CONTACT_RTOL * (environment.depth or 0.0))
+    area = net.node_contact_area
+    static = np.where(area > 0, net.node_weight / (block.stiffness * np.maximum(area, 1e-300)), 0.0)
+    return PENETRATION_MARGIN * static + PENETRATION_FLOOR

@@ -1,0 +1,180 @@
+"""Seabed contact of line nodes (SPEC §4 "Seabed contact"; MoorDyn's kbot/cbot convention).
+
+Node ``n`` carries the contact area ``A_n = sum d L0 / 2`` of its elements. With the seabed's
+upward unit normal ``nu`` and the node's penetration ``delta = (h(x, y) - z) nu_z`` (the
+normal distance below the seabed, :meth:`kanat.physics.seabed.PlaneSeabed.penetration`)::
+
+    (1)  N = max(0, k_b delta - c_b (v . nu)) A_n            if delta > 0, else 0   [N]
+    (2)  F_n = N nu                                         normal force
+    (3)  F_a = -mu_a N tanh(v_a / v_s) a                    friction along the line
+    (4)  F_l = -mu_l N tanh(|v_l| / v_s) v_l / |v_l|        friction across the line
+
+``k_b`` [Pa/m], ``c_b`` [Pa s/m] (``environment.seabed.stiffness``, ``damping``); ``a`` the
+line's direction at the node (sum of its elements' unit tangents) projected on the seabed
+plane; ``v_a = v . a`` and ``v_l = v - (v . nu) nu - v_a a``. Coulomb friction is
+regularized by ``tanh`` with the velocity scale ``v_s`` = :data:`SLIP_VELOCITY`: smooth, so
+the implicit scheme's Newton iteration sees a continuous tangent (its ``dF/dv`` is
+``mu N / v_s`` at rest, included in the tangent), and a line loaded below its friction limit
+creeps at ``v_s atanh(load / (mu N))`` at most (0.55 v_s at half the limit).
+
+In a static equilibrium velocities are zero, and friction depends on how the line got
+there. The equilibrium takes MoorPy's assumption (the line laid straight from its anchor,
+then pulled towards the fairlead, so friction is mobilized towards the anchor wherever the
+line has stretched): friction along the line is ``-mu_a N tanh(u / u_s) a`` with ``u`` the
+node's displacement along ``a`` from where it lay, ``x_ref + s a`` (:data:`SLIP_DISPLACEMENT`
+``= u_s``); nodes of a cable with no anchor on the seabed feel none, and none across.
+
+The seabed is passed to the kernels as an array (:func:`seabed_arrays`): kind 0 is the
+plane ``z = -depth + x tan(slope)``; a bathymetry grid is another kind with the same
+``height`` and ``normal`` role (:mod:`kanat.physics.seabed`).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from kanat.jit import inner, kernel
+from kanat.physics.seabed import PlaneSeabed
+
+SLIP_VELOCITY = 1.0e-3      # m/s, v_s of eqs. (3)-(4)
+SLIP_DISPLACEMENT = 1.0e-5  # m, u_s of the equilibrium's friction
+PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
+PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
+
+
+def seabed_arrays(seabed) -> np.ndarray:
+    """The kernel form of a seabed geometry: ``[kind, depth, tan(slope), cos(slope), sin(slope)]``.
+
+    Raises
+    ------
+    TypeError
+        For a geometry this kernel does not know yet (only :class:`PlaneSeabed`).
+    """
+    if isinstance(seabed, PlaneSeabed):
+        angle = math.radians(seabed.slope_deg)
+        return np.array([0.0, seabed.depth, math.tan(angle), math.cos(angle), math.sin(angle)])
+    raise TypeError(f"no contact kernel for the seabed {type(seabed).__name__}")
+
+
+def contact_parameters(seabed_block, friction_mode: int = 0) -> np.ndarray:
+    """``[k_b, c_b, mu_a, mu_l, v_s, mode, u_s]`` from ``environment.seabed`` (mode 0: dynamics,
+    1: equilibrium)."""
+    return np.array([seabed_block.stiffness, seabed_block.damping, seabed_block.friction,
+                     seabed_block.lateral_friction, SLIP_VELOCITY, float(friction_mode), SLIP_DISPLACEMENT])
+
+
+@inner
+def penetration_at(x, y, z, bed):
+    """Normal depth below the seabed (eq. 1's ``delta``; < 0 above) and the normal ``(nx, nz)``."""
+    height = -bed[1] + bed[2] * x
+    return (height - z) * bed[3], -bed[4], bed[3]
+
+
+@kernel
+def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal_force):
+    """Add the seabed contact forces, eqs. (1)-(4), to ``F`` (n, 3) for every node with a contact
+    area; ``normal_force`` (n,) gets ``N``.
+
+    Parameters
+    ----------
+    x, v : ndarray, shape (n, 3)
+    el_i, el_j : ndarray of int, shape (m,)
+    area : ndarray, shape (n,)
+        Contact area ``A_n`` [m^2].
+    bed : ndarray
+        :func:`seabed_arrays`.
+    params : ndarray
+        :func:`contact_parameters`.
+    laid : tuple (ref (n, 3), direction (n, 3), s (n,))
+        Where each node lay (equilibrium friction): ``x_ref + s a``; a zero direction: none.
+    tangent : ndarray, shape (n, 3)
+        Work array.
+    """
+    kb, cb, mu_a, mu_l, vs, mode, us = params[0], params[1], params[2], params[3], params[4], params[5], \
+        params[6]
+    n = x.shape[0]
+    any_contact = False
+    for a in range(n):
+        normal_force[a] = 0.0
+        if area[a] > 0.0 and penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)[0] > 0.0:
+            any_contact = True
+    if not any_contact:
+        return
+    friction = mu_a > 0.0 or mu_l > 0.0
+    if friction:
+        tangent[:, :] = 0.0
+        for k in range(el_i.shape[0]):
+            i, j = el_i[k], el_j[k]
+            d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
+            inv = 1.0 / max(math.sqrt(d0 * d0 + d1 * d1 + d2 * d2), 1e-300)
+            for node in (i, j):
+                tangent[node, 0] += d0 * inv
+                tangent[node, 1] += d1 * inv
+                tangent[node, 2] += d2 * inv
+    for a in range(n):
+        if area[a] <= 0.0:
+            continue
+        delta, nx, nz = penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)
+        if delta <= 0.0:
+            continue
+        vn = v[a, 0] * nx + v[a, 2] * nz
+        N = max(0.0, kb * delta - cb * vn) * area[a]
+        normal_force[a] = N
+        F[a, 0] += N * nx
+        F[a, 2] += N * nz
+        if friction and N > 0.0:
+            add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
+
+
+@inner
+def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F):
+    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form)."""
+    t0, t1, t2 = tangent[a, 0], tangent[a, 1], tangent[a, 2]
+    tn = t0 * nx + t2 * nz
+    t0, t2 = t0 - tn * nx, t2 - tn * nz
+    size = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+    if size > 0.0:
+        t0, t1, t2 = t0 / size, t1 / size, t2 / size
+    if mode > 0.0:
+        ref, direction, s = laid
+        d0, d1, d2 = direction[a, 0], direction[a, 1], direction[a, 2]
+        if d0 == 0.0 and d1 == 0.0 and d2 == 0.0:
+            return
+        u = (x[a, 0] - ref[a, 0]) * d0 + (x[a, 1] - ref[a, 1]) * d1 + (x[a, 2] - ref[a, 2]) * d2 - s[a]
+        f = mu_a * N * math.tanh(u / us)
+        F[a, 0] -= f * d0
+        F[a, 1] -= f * d1
+        F[a, 2] -= f * d2
+        return
+    vn = v[a, 0] * nx + v[a, 2] * nz
+    s0, s1, s2 = v[a, 0] - vn * nx, v[a, 1], v[a, 2] - vn * nz
+    va = s0 * t0 + s1 * t1 + s2 * t2
+    l0, l1, l2 = s0 - va * t0, s1 - va * t1, s2 - va * t2
+    fa = mu_a * N * math.tanh(va / vs)
+    speed = math.sqrt(l0 * l0 + l1 * l1 + l2 * l2)
+    fl = mu_l * N * math.tanh(speed / vs) / speed if speed > 0.0 else 0.0
+    F[a, 0] -= fa * t0 + fl * l0
+    F[a, 1] -= fa * t1 + fl * l1
+    F[a, 2] -= fa * t2 + fl * l2
+
+
+@kernel
+def contact_tangent(x, v, area, bed, params, normal_force, K, C):
+    """Node blocks of ``-dF/dx`` (``K``) and ``-dF/dv`` (``C``) of eqs. (1)-(4), shape (n, 3, 3)
+    (friction: its ``mu N / v_s`` at rest, isotropic in the seabed plane; an approximation that
+    only slows Newton's convergence where friction slides)."""
+    kb, cb, mu = params[0], params[1], max(params[2], params[3])
+    vs = params[4]
+    for a in range(x.shape[0]):
+        K[a, :, :] = 0.0
+        C[a, :, :] = 0.0
+        if normal_force[a] <= 0.0:
+            continue
+        _, nx, nz = penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)
+        nrm = (nx, 0.0, nz)
+        slide = mu * normal_force[a] / vs
+        for r in range(3):
+            for q in range(3):
+                K[a, r, q] = kb * area[a] * nrm[r] * nrm[q]
+                C[a, r, q] = cb * area[a] * nrm[r] * nrm[q] + slide * ((1.0 if r == q else 0.0) - nrm[r] * nrm[q])
