@@ -80,7 +80,7 @@ def test_report_errors_name_the_problem(tmp_path, result):
     with pytest.raises(KanatError, match="does not exist"):
         write_report(tmp_path / "missing.nc", tmp_path / "x.html")
     (tmp_path / "bad.nc").write_text("not netcdf")
-    with pytest.raises(KanatError, match="not a kanat result file"):
+    with pytest.raises(KanatError, match="not a (kanat|readable) result file"):
         write_report(tmp_path / "bad.nc", tmp_path / "x.html")
     with pytest.raises(KanatError, match="not a study directory"):
         write_report(tmp_path, tmp_path / "x.html")

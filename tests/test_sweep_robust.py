@@ -85,12 +85,19 @@ def test_failures_are_recorded_and_the_others_finish(base, tmp_path, monkeypatch
     assert str(os.getpid()) not in pids and len(pids) == 2     # one child, then a new one after the crash
 
 
-def test_a_crash_on_a_cluster_is_recorded(base, tmp_path, monkeypatch):
+def test_a_crash_on_a_local_or_dask_cluster_is_recorded(base, tmp_path, monkeypatch):
+    from kanat.sweep.cluster import local_cluster
+
     monkeypatch.setattr(engine, "run_case", crashing_run_case)           # inherited by the forked workers
-    result = sweep(base, {"name": ["good", CRASH, "also-good"]}, tmp_path / "study", workers=2)
+    result = sweep(base, {"name": ["good", CRASH, "also-good"]}, tmp_path / "local", workers=2)
     assert list(result.summary["status"].values) == ["ok", "failed", "ok"]
-    assert "worker process running this case died" in str(result.summary["message"].values[1])
-    assert "local Dask cluster of 2" in result.engine
+    assert "died (killed by signal SIGKILL)" in str(result.summary["message"].values[1])
+    assert result.engine == "a local cluster of 2 worker processes (--workers)"
+    with local_cluster(2) as client:
+        on_dask = sweep(base, {"name": ["good", CRASH, "also-good"]}, tmp_path / "dask", scheduler=client)
+    assert list(on_dask.summary["status"].values) == ["ok", "failed", "ok"]
+    assert "worker process running this case died" in str(on_dask.summary["message"].values[1])
+    np.testing.assert_array_equal(on_dask.summary["tension_max"].values, result.summary["tension_max"].values)
 
 
 HOSTILE = ["../../x", "/etc/passwd", "a/../../b", "..", "<img src=x onerror=alert(1)>", "x" * 400, "name"]
@@ -159,7 +166,7 @@ def test_default_engine_reuses_a_configured_or_named_cluster(base, tmp_path):
 def test_default_engine_goes_parallel_when_the_cluster_pays(base, tmp_path, monkeypatch):
     monkeypatch.setattr(execution, "CLUSTER_STARTUP_S", 0.0)
     result = sweep(base, {"vessel.track[1].to_speed_kn": [8, 9, 10, 11]}, tmp_path / "study")
-    assert "a local Dask cluster of 2 worker processes (a case" in result.engine
+    assert "a local cluster of 2 worker processes (a case" in result.engine
     assert result.failed == 0 and result.ran == 4
     serial = sweep(base, {"vessel.track[1].to_speed_kn": [8, 9, 10, 11]}, tmp_path / "serial", scheduler="serial")
     np.testing.assert_allclose(result.summary["tension_max"].values, serial.summary["tension_max"].values,
@@ -196,3 +203,22 @@ def test_bad_study_outputs_are_refused(base, tmp_path):
         sweep(base, {"vessel.track[1].to_speed_kn": [8]}, tmp_path / "file")
     with pytest.raises(KanatError, match="does not exist. Create it first"):
         sweep(base, {"vessel.track[1].to_speed_kn": [8]}, tmp_path / "missing" / "study")
+
+
+@pytest.mark.slow
+def test_ctrl_c_stops_the_workers_and_records_no_false_failure(base, tmp_path):
+    script = ("import sys; from kanat.sweep import sweep; "
+              "sweep(sys.argv[1], {'vessel.track[1].to_speed_kn': [7, 8, 9, 10, 11, 12]}, sys.argv[2], workers=2)")
+    proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path / "study")],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    records = tmp_path / "study" / "records"
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and not (records.exists() and list(records.glob("*.json"))):
+        time.sleep(0.02)
+    proc.send_signal(signal.SIGINT)                                      # as Ctrl-C in a terminal would
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode != 0 and "KeyboardInterrupt" in err
+    done = [json.loads(p.read_text()) for p in records.glob("*.json")]
+    assert done and all(r["status"] == "ok" for r in done) and len(done) < 6   # interrupted cases: not recorded
+    again = sweep(base, {"vessel.track[1].to_speed_kn": [7, 8, 9, 10, 11, 12]}, tmp_path / "study")
+    assert again.skipped == len(done) and again.failed == 0 and again.ran == 6 - len(done)

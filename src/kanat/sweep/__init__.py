@@ -3,8 +3,9 @@
 Public API
 ----------
 sweep(case, vary, out_dir, scheduler=None, workers=None, progress=None, window=None) -> StudyResult
-    Run a study (cartesian product of the values), serially or on Dask distributed as
-    pays best (:mod:`.execution`); resume a killed one.
+    Run a study (cartesian product of the values), serially or on local worker
+    processes as pays best, or on a running Dask cluster (:mod:`.execution`); resume a
+    killed one.
 plan_study(case, vary) -> StudyPlan
     The cases of a study, validated, without running them.
 parse_values(spec, key="") -> list

@@ -1,24 +1,23 @@
-"""Dask clusters for a study: start a local one, find and reuse a running one, run cases on it.
+"""Dask clusters for a study: find and reuse a running one, run cases on it, or start one.
 
-A local cluster (:func:`local_cluster`) has one single-threaded worker process per core:
-the continuum and lumped runs hold the GIL most of the time, so processes, not threads,
-run cases side by side. On Linux its workers are **forked** from the study's process
-(Dask's ``distributed.worker.multiprocessing-method: fork``): they start with kanat
-already imported, in about 0.3 s for two workers instead of 2-3 s for spawned ones that
-import everything again (``benchmarks/RESULTS.md``). Every port is chosen free at random
-on the loopback interface.
-
-A running cluster is reused when the study is given its address or scheduler file
+A running cluster is used when the study is given its address or scheduler file
 (``scheduler="tcp://127.0.0.1:8786"`` or ``scheduler="scheduler.json"``, as written by
-``dask scheduler --scheduler-file scheduler.json``), or, with no ``scheduler`` and no
-``workers``, when Dask's own configuration names one (``DASK_SCHEDULER_ADDRESS`` or
-``scheduler-address`` in a Dask config file). Its workers need kanat installed and must
-see the study directory at the same path.
+``dask scheduler --scheduler-file scheduler.json``), or a ``distributed.Client``, or, with
+no ``scheduler`` and no ``workers``, when Dask's own configuration names one
+(``DASK_SCHEDULER_ADDRESS``, or ``scheduler-address`` in a Dask config file). Its workers
+need kanat installed and must see the study directory at the same path.
+
+:func:`local_cluster` starts a Dask ``LocalCluster`` on this machine (for Python users who
+want Dask's dashboard, and for tests): one single-threaded worker process per core (the
+runs hold the GIL most of the time, so processes, not threads, run cases side by side),
+forked where the platform can (``distributed.worker.multiprocessing-method: fork``, so
+workers start with kanat imported), without Dask's sampling profiler, every port chosen
+free on the loopback interface. ``kanat sweep --workers N`` uses kanat's own lighter local
+cluster instead (:mod:`.processes`).
 """
 from __future__ import annotations
 
 import contextlib
-import multiprocessing
 import os
 import time
 from pathlib import Path
@@ -41,11 +40,6 @@ DISCOVER_TIMEOUT_S = 3.0
 """How long to wait for a cluster found in Dask's configuration before running without it."""
 
 
-def start_method() -> str:
-    """``fork`` where the platform has it (Linux), else ``spawn``."""
-    return "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-
-
 @contextlib.contextmanager
 def local_cluster(workers: int | None = None):
     """A Dask ``LocalCluster`` of ``workers`` single-threaded processes and its client.
@@ -63,12 +57,16 @@ def local_cluster(workers: int | None = None):
     import dask
     from dask.distributed import Client, LocalCluster
 
+    from kanat.sweep.processes import start_method
+
     n = workers or os.cpu_count() or 1
     if n < 1:
         raise KanatError(f"workers must be at least 1, got {workers}")
     settings = {"distributed.worker.multiprocessing-method": start_method(),
                 "distributed.scheduler.allowed-failures": ALLOWED_FAILURES,
-                "distributed.scheduler.worker-saturation": 1.0}   # a worker holds only the case it runs
+                "distributed.scheduler.worker-saturation": 1.0,    # a worker holds only the case it runs
+                "distributed.worker.profile.enabled": False,        # its sampling thread slows a case ~5 %
+                "distributed.admin.system-monitor.gil.enabled": False}
     with dask.config.set(settings):                       # for the cluster's life: restarted workers fork too
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, host=LOOPBACK, scheduler_port=0,
                                dashboard_address=f"{LOOPBACK}:0")
