@@ -5,6 +5,7 @@ import pytest
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
+from kanat.continuum import oracle3d
 from kanat.continuum.derivation3d import CableConstants, numeric_system
 from kanat.continuum.model2d import parameters
 
@@ -47,13 +48,16 @@ def test_spatial_jacobian_matches_complex_step(end):
                             rng.normal(.3, .5, n), rng.normal(-.4, .3, n), rng.normal(.2, .3, n)])
     x = base + rng.normal(0, 1, base.shape) * [50, .05, .05, .05, .01, .01]
     d = rng.normal(0, 1, base.shape) * [20, .1, .1, .1, .01, .01]
-    cur, up = rng.normal(0, .3, (n, 3)), np.array([0.2, -0.3, 0.93]) / np.linalg.norm([0.2, -0.3, 0.93])
-    b0 = np.array([k.VELOCITY, 3.0, 0.2, -0.1, 0, 0, 0, 0, 0, 0.0])
-    b1 = {"body": np.array([k.BODY, 0, 0, 0, 1135.0, -6686.0, 0.5 * 1025 * 0.3276, 0, 0, -500.0]),
-          "free": np.array([k.FREE, 0, 0, 0, 0, 0, 0, 0, 0, 0.0]), "anchor": np.zeros(10)}[end]
+    env, up = np.zeros((n, k3.NENV3)), np.array([0.2, -0.3, 0.93]) / np.linalg.norm([0.2, -0.3, 0.93])
+    env[:, :3] = rng.normal(0, .3, (n, 3))                            # the current
+    pad = np.zeros(5)
+    b0 = np.array([k.VELOCITY, 3.0, 0.2, -0.1, 0, 0, 0, 0, 0, 0.0, *pad])
+    b1 = {"body": np.array([k.BODY, 0, 0, 0, 1135.0, -6686.0, 0.5 * 1025 * 0.3276, 0, 0, -500.0, *pad]),
+          "free": np.array([k.FREE, 0, 0, 0, 0, 0, 0, 0, 0, 0.0, *pad]), "anchor": np.zeros(15)}[end]
+    P = np.tile(p, (n - 1, 1))
     res, band = np.empty(x.size), np.empty((17, x.size))
     res2, band2 = np.empty(x.size), np.empty((17, x.size))
-    k3.assemble3(x, base, d, cur, up, p, b0, b1, res, band)
-    k3.jacobian_complex_step3(x, base, d, cur, up, p, b0, b1, res2, band2)
+    k3.assemble3(x, base, d, env, up, P, b0, b1, res, band)
+    oracle3d.jacobian_complex_step3(x, base, d, env, up, P, b0, b1, res2, band2)
     np.testing.assert_allclose(res, res2, rtol=1e-12, atol=1e-9)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))

@@ -4,19 +4,23 @@
 and a scheme of the generalized-α family or seed 000's factorized schemes. It steps
 ``dt`` at a time; a step whose Newton iteration fails is cut in halves (up to
 :data:`kanat.continuum.stepper.MAX_CUTS` levels) before the run stops with a message
-saying where and what to try. Its checks of every output: no compression (the continuum
-model needs a taut cable), strain within the line type's range, no node below the seabed
-(the continuum model has no seabed contact yet).
+saying where and what to try. Its checks of every output:
+
+* compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
+  stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``
+  (beyond it the grid no longer resolves the buckled shape);
+* strain within the line type's range;
+* seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
+  penetration ``w / (k_b d)`` below the seabed (a node falling through it).
 """
 from __future__ import annotations
 
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum.courant import check_step
 from kanat.continuum.models import model_for
 from kanat.continuum.model2d import strain_of
-from kanat.continuum.schemes import SCHEMES, ContinuumScheme
+from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.dynamics import StepFailure, Steps
 from kanat.errors import CaseError, Problem, SolverError
@@ -26,6 +30,8 @@ from kanat.schemes import get_scheme
 
 COMPRESSION_TOLERANCE = 1e-3
 """Compression beyond this fraction of the largest tension (or of the cable's weight) fails a run."""
+PENETRATION_FACTOR = 10.0
+"""A node deeper below the seabed than this many static penetrations (plus 1 mm) fails a run."""
 TIME_VARIABLES = ("position", "velocity", "tension", "body_position", "vessel_position", "vessel_heading",
                   "vessel_pitch", "newton_iterations")
 
@@ -51,14 +57,41 @@ class ContinuumModel:
                                                   lambda_inf=sim.lambda_inf, gamma=sim.gamma)
         self.cable_model = model_for(case)
         self.dt, self.output_interval, self.duration = sim.dt, sim.output_interval, sim.duration
-        self.notes: list[str] = []
-        self.max_strain = case.line_types[case.cables[0].line_type].strain_limit()
+        cable = self.cable_model.cable
+        self.notes: list[str] = list(cable.grid.notes) if cable.grid is not None else []
+        self._refuse_for_factorized()
+        self.max_strain = min(case.line_types[name].strain_limit() for name in case.cables[0].line_types)
         self.body = case.cables[0].to.kind == "body"
+        self.attached = [name for _, name in cable.grid.junctions] if cable.grid is not None else []
+        self.junction_nodes = [j for j, _ in cable.grid.junctions] if cable.grid is not None else []
+
+    def _refuse_for_factorized(self) -> None:
+        """Seed 000's schemes step the uniform flexible cable of SPEC §2.1–2.2 only."""
+        if isinstance(self.scheme, FamilyScheme):
+            return
+        case, cable = self.case, self.cable_model.cable
+        used = []
+        if len(case.cables[0].sections) > 1:
+            used.append(("cables[0].sections", "a cable of several sections"))
+        if case.cables[0].attachments:
+            used.append(("cables[0].attachments", "inline bodies"))
+        if cable.grid is not None and cable.grid.bending:
+            used.append(("line_types", "bending stiffness"))
+        if case.environment.waves is not None:
+            used.append(("environment.waves", "waves"))
+        if case.winch:
+            used.append(("winch", "a winch"))
+        if any(case.bodies[e.name].surface_buoy is not None for e in case.cables[0].ends if e.kind == "body"):
+            used.append(("bodies", "a surface buoy"))
+        if used:
+            raise CaseError([Problem(key, f"{what}: scheme '{self.scheme.name}' (seed 000's factorized schemes) "
+                                     "steps a uniform flexible cable only; use scheme: generalized-alpha")
+                             for key, what in used])
 
     # 1. set up ------------------------------------------------------------------------
     def layout(self) -> Layout:
         cable, case = self.cable_model.cable, self.case
-        bodies = [case.cables[0].to.name] if self.body else []
+        bodies = ([case.cables[0].to.name] if self.body else []) + self.attached
         attrs = provenance(case, model=self.name, scheme=self.scheme.name, dt=self.dt,
                            dimensions=self.cable_model.dimensions, output_interval=self.output_interval,
                            **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
@@ -68,14 +101,13 @@ class ContinuumModel:
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
         try:
-            state = self.cable_model.initial()
+            return self.cable_model.initial()
         except SolverError as error:
             raise SolverError(
                 f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
-                "continuum model needs a taut cable from the start; a slack, grounded or compressed line runs "
-                "with model: lumped, which carries slack (kanat statics CASE shows the steady shape)") from None
-        check_step(self.scheme, self.cable_model, state, self.dt)
-        return state
+                "continuum model needs a taut cable from the start (bending stiffness lets a line go slack); a "
+                "slack or compressed line runs with model: lumped, which carries slack (kanat statics CASE "
+                "shows the steady shape)") from None
 
     def save(self, state) -> dict:
         return {"t": np.array(state.t), **self.cable_model.save(state)}
@@ -109,13 +141,16 @@ class ContinuumModel:
 
     def _failure(self, failure: NewtonFailure, state) -> str:
         cable = self.cable_model.cable
-        message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {failure.node} "
-                   f"(s = {failure.node * cable.ds:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
+        s = cable.s
+        node = min(max(failure.node, 0), len(s) - 1)
+        message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {node} "
+                   f"(s = {s[node]:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
         lowest = int(np.argmin(state.y[:, 0]))
         if state.y[lowest, 0] < 0.0:
             return message + (f"the cable went into compression (T = {state.y[lowest, 0]:.4g} N at node "
-                              f"{lowest}), which a cable cannot carry: the continuum model needs it taut. Slack "
-                              "and snapping cables run with model: lumped; or soften the manoeuvre")
+                              f"{lowest}), which a cable cannot carry: the continuum model needs it taut (or "
+                              "bending stiffness). Slack and snapping cables run with model: lumped; or soften the "
+                              "manoeuvre")
         return message + (f"try a smaller dt (now {self.dt:g} s), a more dissipative scheme (lambda_inf closer "
                           "to 0) or more segments")
 
@@ -125,39 +160,75 @@ class ContinuumModel:
         track = self.cable_model.track
         vessel = track.state(state.t)
         pitch = track.pitch(state.t)[0] if track.pitch is not None else 0.0
-        body = values["position"][-1:] if self.body else np.zeros((0, 3))
-        return {**values, "body_position": body, "vessel_position": vessel.position,
+        ends = values["position"][-1:] if self.body else np.zeros((0, 3))
+        inline = values["position"][self.junction_nodes] if self.junction_nodes else np.zeros((0, 3))
+        return {**values, "body_position": np.vstack([ends, inline]), "vessel_position": vessel.position,
                 "vessel_heading": vessel.heading, "vessel_pitch": pitch}
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state, values: dict) -> str | None:
+        return (self._compression(state, values) or self._strain(state, values)
+                or self._seabed(state, values))
+
+    def _compression(self, state, values) -> str | None:
         cable = self.cable_model.cable
         tension, t = values["tension"], state.t
         scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
-        low = int(np.argmin(tension))
-        if tension[low] < -COMPRESSION_TOLERANCE * scale:
+        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
+        allowed = np.zeros(len(tension))
+        if np.any(rows[:, k.EI] > 0):
+            buckling = np.pi**2 * rows[:, k.EI] / np.maximum(2 * rows[:, k.DS], 1e-300) ** 2
+            allowed[:-1] = np.where(rows[:, k.DS] > 0, buckling, np.inf)
+            allowed[1:] = np.minimum(allowed[1:], np.where(rows[:, k.DS] > 0, buckling, np.inf))
+        low = int(np.argmin(tension + allowed))
+        if tension[low] + allowed[low] < -COMPRESSION_TOLERANCE * scale:
+            what = ("which a perfectly flexible cable cannot carry (give the line bending_stiffness to model it as "
+                    "a rod)" if allowed[low] == 0 else
+                    f"beyond the Euler load of one segment ({allowed[low]:.4g} N): the grid no longer resolves the "
+                    "buckled line; use more segments")
             return (f"the cable went into compression (T = {tension[low]:.4g} N) at t = {t:.6g} s on cable "
-                    f"'{cable.name}' at node {low} (s = {cable.s[low]:.4g} m), which the continuum model cannot "
-                    "carry; slack and snapping cables run with model: lumped, or refine the grid (more "
-                    "segments) or soften the manoeuvre")
-        strain = strain_of(tension, cable.params)
+                    f"'{cable.name}' at node {low} (s = {cable.s[low]:.4g} m), {what}; slack and snapping cables "
+                    "run with model: lumped, or refine the grid (more segments) or soften the manoeuvre")
+        return None
+
+    def _strain(self, state, values) -> str | None:
+        cable = self.cable_model.cable
+        tension = values["tension"]
+        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
+        strain = np.zeros(len(rows))
+        for value in np.unique(rows[:, k.SECTION]):
+            which = np.flatnonzero(rows[:, k.SECTION] == value)
+            p = rows[which[0]]
+            strain[which] = np.maximum(strain_of(tension[which], p), strain_of(tension[which + 1], p))
         high = int(np.argmax(strain))
         if strain[high] > self.max_strain:
-            return (f"strain {strain[high]:.4g} (tension {tension[high]:.4g} N) at t = {t:.6g} s on cable "
-                    f"'{cable.name}' at node {high} (s = {cable.s[high]:.4g} m) exceeds the line's limit "
-                    f"{self.max_strain:g}; check axial_stiffness and the loads (speeds, bodies), or set "
-                    "line_types.<name>.max_strain")
-        depth = self.case.environment.depth
-        if depth is not None:
-            z = values["position"][:, 2]
-            deep = int(np.argmin(z))
-            if z[deep] < -depth * (1.0 + 1e-9):
-                return (f"node {deep} of cable '{cable.name}' (s = {cable.s[deep]:.4g} m) is {-depth - z[deep]:.4g} "
-                        f"m below the seabed at t = {t:.6g} s; the continuum model has no seabed contact: run "
-                        "moorings that touch the seabed with model: lumped")
+            return (f"strain {strain[high]:.4g} (tension {max(tension[high], tension[high + 1]):.4g} N) at "
+                    f"t = {state.t:.6g} s on cable '{cable.name}' near node {high} (s = {cable.s[high]:.4g} m) "
+                    f"exceeds the line's limit {self.max_strain:g}; check axial_stiffness and the loads (speeds, "
+                    "bodies), or set line_types.<name>.max_strain")
+        return None
+
+    def _seabed(self, state, values) -> str | None:
+        cable = self.cable_model.cable
+        seabed = cable.seabed
+        if seabed is None:
+            return None
+        rows = cable.rows()
+        cable_rows = rows[rows[:, k.DS] > 0]
+        static = float(np.max(np.abs(cable_rows[:, k.W0]) / (seabed.stiffness * cable_rows[:, k.DIAM])))
+        limit = PENETRATION_FACTOR * static + 1e-3
+        depth = seabed.penetration(values["position"])
+        deep = int(np.argmax(depth))
+        if depth[deep] > limit:
+            s = cable.s if len(cable.s) == len(depth) else np.arange(len(depth))
+            return (f"node {deep} of cable '{cable.name}' (s = {s[deep]:.4g} m) is {depth[deep]:.4g} m below the "
+                    f"seabed at t = {state.t:.6g} s, more than {PENETRATION_FACTOR:g} times the contact model's "
+                    f"static penetration ({static:.3g} m); it fell through: reduce dt, or raise "
+                    "environment.seabed.stiffness or damping"
+                    + ("" if isinstance(self.scheme, FamilyScheme) else
+                       f" (scheme '{self.scheme.name}' applies no seabed contact: use generalized-alpha)"))
         return None
 
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state) -> tuple[dict, dict]:
         return {}, {}
-

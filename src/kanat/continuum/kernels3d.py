@@ -1,4 +1,4 @@
-"""Compiled kernels of the spatial continuum cable (SPEC §2.2–2.4): residual and Jacobian.
+"""Compiled kernels of the spatial continuum cable (SPEC §2.2–2.4, §4): loads and end rows.
 
 Unknowns per node ``Y = (T, u, v, w, phi, theta)``; ``V = u t + v n + w b`` with the frame of
 SPEC §2.2 about the pole ``p`` of the current chart, and every vector (weight direction,
@@ -18,12 +18,21 @@ momentum and compatibility on ``(t, n, b)`` gives ``M(Y) Y_t + K(Y) Y_s = F(Y)``
 the same system symbolically and the tests compare. ``M`` is singular where ``cos(phi) = 0``
 (the tangent along the pole): the driver re-charts the pole before that happens.
 
-Box method and generalized-α exactly as the planar kernels (:mod:`kernels2d`), with the
-two-node averages of ``M``, ``K`` and ``F``; rows are ``[start (3); interval 1 (6); ...;
-far end (3)]``, a band of 8 sub- and super-diagonals. All derivatives are written out —
-``M(m) r`` and ``K(k) g`` (:func:`d_mass_times`, :func:`d_stiffness_times`), the nodal loads
-(:func:`node_load3_jacobian`) and the ends (:func:`end_jacobian3`) — so a run compiles real
-kernels only; the complex-step oracle :func:`jacobian_complex_step3` is compiled by the tests.
+Loads as in the plane (:mod:`kernels2d`): weight and drag (:func:`node_load3`), and
+(:func:`extra_load3`) the waves' fluid inertia ``(m - w0/g) a_w + m_a (a_w)_normal`` and seabed
+contact with Coulomb friction along the line and across it: with ``a`` the line's direction on
+the seabed (from the previous step, in the nodal data) and ``l = n_b x a``,
+``F = N n_b - mu_a N tanh(V.a / v_s) a - mu_l N tanh(V.l / v_s) l``. Inline bodies, the winch and
+the parameter rows per interval are :mod:`kanat.continuum.rows3d`'s; the ends add a surface
+buoy's waterplane, the body's wave inertia and the winch's pay-out as in the plane (bending
+stiffness is planar only).
+
+Box method and generalized-α exactly as the planar kernels, with the two-node averages of
+``M``, ``K`` and ``F``; rows are ``[start (3); interval 0 (6); ...; far end (3)]``, a band of 8
+sub- and super-diagonals. All derivatives are written out -- ``M(m) r`` and ``K(k) g``
+(:func:`d_mass_times`, :func:`d_stiffness_times`), the nodal loads (:func:`node_load3_jacobian`,
+:func:`extra_load3_jacobian`) and the ends (:func:`end_jacobian3`) -- so a run compiles real
+kernels only; the complex-step oracle (:mod:`kanat.continuum.oracle3d`) is compiled by the tests.
 As in :mod:`kernels2d`, scalar loops only (no array expressions, slice copies or ``@``).
 """
 from __future__ import annotations
@@ -31,12 +40,20 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import inner, kernel
 
-from kanat.continuum.kernels2d import (AK, AM, CN, CT, DIAM, DS, DT, EA, FREE, GAMMA, INERTIA, MA, RHO,
-                                       STEP, VELOCITY, W0, M, _law_segment, compliance, strain)
+from kanat.continuum.kernels2d import (AK, AM, CN, CT, DIAM, DS, DT, EA, FREE, FRICTION_SPEED, GAMMA, GRAV,  # noqa: F401
+                                       INERTIA, MA, PRED, RHO, SB_C, SB_C0, SB_K, SB_MUA, SB_MUL, SB_N0, SB_N1,
+                                       SB_N2, SB_ON, STEP, VELOCITY, W0, M, _law_segment, compliance, smooth_sign,
+                                       strain)
 
 LOWER = UPPER = 8
-# End parameters: [kind, Vt1, Vt2, Vp (velocity, chart), mass, net_buoyancy, half_rho_cds, F1, F2, Fp]
-NBPAR3 = 10
+# End parameters: kind, velocity (3, chart), mass + added mass, net buoyancy, 0.5 rho C_D S, force (3, chart),
+# wave-inertia coefficient, surface buoy rho g A_w and height, wave elevation, winch pay-out speed
+(B3_KIND, B3_V0, B3_V1, B3_V2, B3_MASS, B3_BUOY, B3_DRAG, B3_F0, B3_F1, B3_F2, B3_WAVE, B3_WPA, B3_HEIGHT, B3_ETA,
+ B3_PAYOUT) = range(15)
+NBPAR3 = 15
+# Nodal data (chart coordinates): water velocity, water acceleration, position R, direction of the line on the seabed
+UX3, AX3, RX3, DX3 = 0, 3, 6, 9
+NENV3 = 12
 
 
 @kernel
@@ -198,141 +215,194 @@ def d_stiffness_times(y, g, out):
     out[5, 1], out[5, 2], out[5, 4] = cp * g[5], -sp * g[5], (-y[1] * sp - y[2] * cp) * g[5]
 
 
-@inner
-def _node_loads(wk, cur, up, p):
-    """Loads (n, 3) at the ``[ak]`` states and their derivatives (n, 3, 6) (:func:`node_load3_jacobian`)."""
-    n_nodes = wk.shape[0]
-    load = np.empty((n_nodes, 3))
-    dload = np.empty((n_nodes, 3, 6))
-    jac = np.empty((3, 6))
-    for j in range(n_nodes):
-        f0, f1, f2 = node_load3_jacobian(wk[j], cur[j], up, p, jac)
-        load[j, 0], load[j, 1], load[j, 2] = f0, f1, f2
+
+
+@kernel
+def seabed_force3(vel, rp, axis, p):
+    """Seabed force per unstretched length (3, chart) on a node at ``rp + PRED vel`` moving at ``vel``,
+    friction along ``axis`` (unit, in the seabed plane) and across it (module docstring; complex-capable)."""
+    n0, n1, n2 = p[SB_N0], p[SB_N1], p[SB_N2]
+    zero = 0.0 * vel[0]
+    out = (zero, zero, zero)
+    depth = p[SB_C0] - (n0 * (rp[0] + p[PRED] * vel[0]) + n1 * (rp[1] + p[PRED] * vel[1])
+                        + n2 * (rp[2] + p[PRED] * vel[2]))
+    if depth.real <= 0.0:
+        return out
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vel[0] + n1 * vel[1] + n2 * vel[2]))
+    if normal.real <= 0.0:
+        return out
+    a0, a1, a2 = axis[0], axis[1], axis[2]
+    l0, l1, l2 = n1 * a2 - n2 * a1, n2 * a0 - n0 * a2, n0 * a1 - n1 * a0
+    fa = -p[SB_MUA] * normal * smooth_sign((a0 * vel[0] + a1 * vel[1] + a2 * vel[2]) / FRICTION_SPEED)
+    fl = -p[SB_MUL] * normal * smooth_sign((l0 * vel[0] + l1 * vel[1] + l2 * vel[2]) / FRICTION_SPEED)
+    return (normal * n0 + fa * a0 + fl * l0, normal * n1 + fa * a1 + fl * l1, normal * n2 + fa * a2 + fl * l2)
+
+
+@kernel
+def seabed_force3_jacobian(vel, rp, axis, p, force, g):
+    """:func:`seabed_force3` (real) into ``force`` (3,) and ``g[i, j] = dF_i / dV_j`` (3, 3)."""
+    for i in range(3):
+        force[i] = 0.0
+        for j in range(3):
+            g[i, j] = 0.0
+    n = np.empty(3)
+    n[0], n[1], n[2] = p[SB_N0], p[SB_N1], p[SB_N2]
+    depth, rate = p[SB_C0], 0.0
+    for i in range(3):
+        depth -= n[i] * (rp[i] + p[PRED] * vel[i])
+        rate += n[i] * vel[i]
+    if depth <= 0.0:
+        return
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * rate)
+    if normal <= 0.0:
+        return
+    stiff = -p[DIAM] * (p[SB_K] * p[PRED] + p[SB_C])          # dN/dV = stiff n
+    lat = np.empty(3)
+    lat[0], lat[1], lat[2] = n[1] * axis[2] - n[2] * axis[1], n[2] * axis[0] - n[0] * axis[2], \
+        n[0] * axis[1] - n[1] * axis[0]
+    for i in range(3):
+        force[i] = normal * n[i]
+        for j in range(3):
+            g[i, j] = n[i] * stiff * n[j]
+    for which in range(2):
+        mu = p[SB_MUA] if which == 0 else p[SB_MUL]
+        if mu == 0.0:
+            continue
+        slide = 0.0
         for i in range(3):
-            for q in range(6):
-                dload[j, i, q] = jac[i, q]
-    return load, dload
+            slide += (axis[i] if which == 0 else lat[i]) * vel[i]
+        th = np.tanh(slide / FRICTION_SPEED)
+        sech2 = 1.0 - th * th
+        for i in range(3):
+            di = axis[i] if which == 0 else lat[i]
+            force[i] -= mu * normal * th * di
+            for j in range(3):
+                dj = axis[j] if which == 0 else lat[j]
+                g[i, j] -= mu * di * (th * stiff * n[j] + normal * sech2 / FRICTION_SPEED * dj)
 
 
 @kernel
-def assemble3(x, y, d, cur, up, p, b0, b1, res, band):
-    """Residual (6(N+1),) and banded Jacobian (17, 6(N+1)) of one step at unknowns ``x`` (N+1, 6).
-
-    ``y, d``: old state and rate; ``cur`` (N+1, 3) current in chart coordinates; ``up`` (3,)
-    the chart components of the vertical ``z``; ``b0, b1`` end conditions (NBPAR3).
-    """
-    n_nodes = x.shape[0]
-    band[:, :] = 0.0
-    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
-    wm, wk, wr = np.empty((n_nodes, 6)), np.empty((n_nodes, 6)), np.empty((n_nodes, 6))
-    for j in range(n_nodes):
-        for i in range(6):
-            wm[j, i] = (1.0 - am) * x[j, i] + am * y[j, i]
-            wk[j, i] = (1.0 - ak) * x[j, i] + ak * y[j, i]
-            wr[j, i] = (1.0 - am) * ((x[j, i] - y[j, i]) / (gamma * dt) - (1.0 - gamma) / gamma * d[j, i]) \
-                + am * d[j, i]
-    load, dload = _node_loads(wk, cur, up, p)
-    scratch, vectors = np.empty((6, 6, 6)), np.empty((2, 6))
-    for j in range(1, n_nodes):
-        _interval_rows3(j, wm, wk, wr, load, dload, p, scratch, vectors, res, band)
-    _end_rows3(x, y, d, cur, up, p, b0, b1, res, band)
+def extra_load3(T, u, v, w, phi, theta, env, p):
+    """``(f_t, f_n, f_b)`` of wave inertia and seabed contact (module docstring; complex-capable)."""
+    t, n, b = frame(phi, theta)
+    disp = p[M] - p[W0] / p[GRAV]
+    a0, a1, a2 = env[AX3], env[AX3 + 1], env[AX3 + 2]
+    ft = disp * (a0 * t[0] + a1 * t[1] + a2 * t[2])
+    fn = (disp + p[MA]) * (a0 * n[0] + a1 * n[1] + a2 * n[2])
+    fb = (disp + p[MA]) * (a0 * b[0] + a1 * b[1] + a2 * b[2])
+    if p[SB_ON] != 0.0:
+        vel = (u * t[0] + v * n[0] + w * b[0], u * t[1] + v * n[1] + w * b[1], u * t[2] + v * n[2] + w * b[2])
+        f = seabed_force3(vel, env[RX3:RX3 + 3], env[DX3:DX3 + 3], p)
+        ft = ft + f[0] * t[0] + f[1] * t[1] + f[2] * t[2]
+        fn = fn + f[0] * n[0] + f[1] * n[1] + f[2] * n[2]
+        fb = fb + f[0] * b[0] + f[1] * b[1] + f[2] * b[2]
+    return ft, fn, fb
 
 
 @inner
-def _interval_rows3(j, wm, wk, wr, load, dload, p, scratch, vectors, res, band):
-    """The six rows of interval ``j`` and their derivatives by the states of its two nodes
-    (``scratch`` (6, 6, 6) and ``vectors`` (2, 6) are work space)."""
-    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
-    cm, ck, cr = 1.0 - am, 1.0 - ak, (1.0 - am) / (gamma * dt)
-    c, ds = p[INERTIA], p[DS]
-    l, r = j - 1, j
-    ml, mr, kl, kr, dm, dk = scratch[0], scratch[1], scratch[2], scratch[3], scratch[4], scratch[5]
-    rate, grad = vectors[0], vectors[1]
-    for i in range(6):
-        rate[i] = 0.5 * (wr[l, i] + wr[r, i])
-        grad[i] = (wk[r, i] - wk[l, i]) / ds
-    mass_matrix(wm[l], p, ml)
-    mass_matrix(wm[r], p, mr)
-    stiffness_matrix(wk[l], kl)
-    stiffness_matrix(wk[r], kr)
-    row = 3 + 6 * (j - 1)
-    for i in range(6):
-        acc = 0.0
-        for q in range(6):
-            acc += c * 0.5 * (ml[i, q] + mr[i, q]) * rate[q] + 0.5 * (kl[i, q] + kr[i, q]) * grad[q]
-        if i < 3:
-            acc -= 0.5 * (load[l, i] + load[r, i])
-        res[row + i] = acc
-    for side in range(2):
-        node = l if side == 0 else r
-        sign = -1.0 if side == 0 else 1.0
-        d_mass_times(wm[node], rate, p, dm)
-        d_stiffness_times(wk[node], grad, dk)
-        for q in range(6):
-            col = 6 * node + q
-            for i in range(6):
-                value = (c * (0.5 * dm[i, q] * cm + 0.25 * (ml[i, q] + mr[i, q]) * cr)
-                         + 0.5 * dk[i, q] * ck + 0.5 * (kl[i, q] + kr[i, q]) * sign / ds * ck)
-                if i < 3:
-                    value -= 0.5 * dload[node, i, q] * ck
-                band[UPPER + row + i - col, col] = value
+def _frame_rows(phi, theta, e):
+    """Rows ``t, n, b`` of ``e`` (3, 3) in chart coordinates."""
+    cp, sp, ct, st = np.cos(phi), np.sin(phi), np.cos(theta), np.sin(theta)
+    e[0, 0], e[0, 1], e[0, 2] = cp * ct, cp * st, sp
+    e[1, 0], e[1, 1], e[1, 2] = -sp * ct, -sp * st, cp
+    e[2, 0], e[2, 1], e[2, 2] = st, -ct, 0.0
+
+
+@inner
+def _velocity_derivatives(y, e, dv):
+    """``dv[q] = dV/dy_q`` (6, 3) of ``V = u t + v n + w b`` (rows of ``e``: t, n, b)."""
+    cp, sp = np.cos(y[4]), np.sin(y[4])
+    u, v, w = y[1], y[2], y[3]
+    for j in range(3):
+        dv[0, j] = 0.0
+        dv[1, j] = e[0, j]
+        dv[2, j] = e[1, j]
+        dv[3, j] = e[2, j]
+        dv[4, j] = u * e[1, j] - v * e[0, j]
+        dv[5, j] = -u * cp * e[2, j] + v * sp * e[2, j] + w * (cp * e[0, j] - sp * e[1, j])
+
+
+@inner
+def _add_projection(force, dforce_dv, y, e, dv, jac):
+    """``jac[i, q] += d(F . e_i)/dy_q`` for a chart force ``F(V)`` with ``dF/dV`` (frame module docstring)."""
+    cp, sp = np.cos(y[4]), np.sin(y[4])
+    comp = np.empty(3)
+    for i in range(3):
+        comp[i] = force[0] * e[i, 0] + force[1] * e[i, 1] + force[2] * e[i, 2]
+    for q in range(6):
+        for i in range(3):
+            acc = 0.0
+            for j in range(3):
+                gd = dforce_dv[j, 0] * dv[q, 0] + dforce_dv[j, 1] * dv[q, 1] + dforce_dv[j, 2] * dv[q, 2]
+                acc += e[i, j] * gd
+            jac[i, q] += acc
+    jac[0, 4] += comp[1]
+    jac[0, 5] += -cp * comp[2]
+    jac[1, 4] += -comp[0]
+    jac[1, 5] += sp * comp[2]
+    jac[2, 5] += cp * comp[0] - sp * comp[1]
 
 
 @kernel
-def end_residual3(x, y, d, cur, up, p, b, side, out):
-    """The three conditions of one end (SPEC §2.3), as :func:`kernels2d.end_residual` in 3-D."""
-    kind = int(b[0].real)
-    if kind == VELOCITY:
-        t, n, bb = frame(x[4], x[5])
-        out[0] = x[1] - (b[1] * t[0] + b[2] * t[1] + b[3] * t[2])
-        out[1] = x[2] - (b[1] * n[0] + b[2] * n[1] + b[3] * n[2])
-        out[2] = x[3] - (b[1] * bb[0] + b[2] * bb[1] + b[3] * bb[2])
-        return
-    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
-    m = (1.0 - am) * x + am * y
-    k = (1.0 - ak) * x + ak * y
-    r = (1.0 - am) * ((x - y) / (gamma * dt) - (1.0 - gamma) / gamma * d) + am * d
-    cp, sp = np.cos(m[4]), np.sin(m[4])
-    at = r[1] - m[2] * r[4] + m[3] * cp * r[5]                     # acceleration in (t, n, b)
-    an = r[2] + m[1] * r[4] - m[3] * sp * r[5]
-    ab = r[3] + (-m[1] * cp + m[2] * sp) * r[5]
-    if kind == FREE:
-        f = node_load3(k[0], k[1], k[2], k[3], k[4], k[5], cur, up, p)
-        mn = p[INERTIA] * (p[M] + p[MA])
-        out[0] = x[0] / p[EA]
-        out[1] = mn * an - f[1]
-        out[2] = mn * ab - f[2]
-        return
-    t, n, bb = frame(k[4], k[5])
-    rel_t = cur[0] * t[0] + cur[1] * t[1] + cur[2] * t[2] - k[1]    # water relative to the body
-    rel_n = cur[0] * n[0] + cur[1] * n[1] + cur[2] * n[2] - k[2]
-    rel_b = cur[0] * bb[0] + cur[1] * bb[1] + cur[2] * bb[2] - k[3]
-    drag = b[6] * np.sqrt(rel_t * rel_t + rel_n * rel_n + rel_b * rel_b)
-    lift = (b[5] * up[0] + b[7], b[5] * up[1] + b[8], b[5] * up[2] + b[9])   # buoyancy + force
-    mass = p[INERTIA] * b[4]
-    out[0] = mass * at - (-side * k[0] + drag * rel_t + lift[0] * t[0] + lift[1] * t[1] + lift[2] * t[2])
-    out[1] = mass * an - (drag * rel_n + lift[0] * n[0] + lift[1] * n[1] + lift[2] * n[2])
-    out[2] = mass * ab - (drag * rel_b + lift[0] * bb[0] + lift[1] * bb[1] + lift[2] * bb[2])
+def extra_load3_jacobian(y, env, p, jac):
+    """:func:`extra_load3` (real) at ``y`` (6,) and ``jac[i, q] = d f_i / d y_q`` (3, 6)."""
+    for i in range(3):
+        for q in range(6):
+            jac[i, q] = 0.0
+    e = np.empty((3, 3))
+    _frame_rows(y[4], y[5], e)
+    cp, sp = np.cos(y[4]), np.sin(y[4])
+    disp = p[M] - p[W0] / p[GRAV]
+    comp = np.empty(3)                                 # the water acceleration along t, n, b
+    for i in range(3):
+        comp[i] = env[AX3] * e[i, 0] + env[AX3 + 1] * e[i, 1] + env[AX3 + 2] * e[i, 2]
+    c0, c1 = disp, disp + p[MA]
+    f0, f1, f2 = c0 * comp[0], c1 * comp[1], c1 * comp[2]
+    jac[0, 4], jac[0, 5] = c0 * comp[1], -c0 * cp * comp[2]
+    jac[1, 4], jac[1, 5] = -c1 * comp[0], c1 * sp * comp[2]
+    jac[2, 5] = c1 * (cp * comp[0] - sp * comp[1])
+    if p[SB_ON] != 0.0:
+        vel, force, g, dv = np.empty(3), np.empty(3), np.empty((3, 3)), np.empty((6, 3))
+        for j in range(3):
+            vel[j] = y[1] * e[0, j] + y[2] * e[1, j] + y[3] * e[2, j]
+        seabed_force3_jacobian(vel, env[RX3:RX3 + 3], env[DX3:DX3 + 3], p, force, g)
+        _velocity_derivatives(y, e, dv)
+        _add_projection(force, g, y, e, dv, jac)
+        f0 += force[0] * e[0, 0] + force[1] * e[0, 1] + force[2] * e[0, 2]
+        f1 += force[0] * e[1, 0] + force[1] * e[1, 1] + force[2] * e[1, 2]
+        f2 += force[0] * e[2, 0] + force[1] * e[2, 1] + force[2] * e[2, 2]
+    return f0, f1, f2
 
 
 @kernel
-def end_jacobian3(x, y, d, cur, up, p, b, side, out, jac):
-    """:func:`end_residual3` (real) into ``out`` (3,) and its derivatives by ``x`` into ``jac`` (3, 6).
+def surface_buoyancy3(z, b):
+    """Buoyancy of a surface buoy's waterplane ``rho g A_w clip(eta - z, 0, h)`` and its derivative by ``z``."""
+    immersion = b[B3_ETA] - z
+    if b[B3_WPA] == 0.0 or immersion.real <= 0.0:
+        return 0.0 * z, 0.0
+    if immersion.real >= b[B3_HEIGHT]:
+        return b[B3_WPA] * b[B3_HEIGHT] + 0.0 * z, 0.0
+    return b[B3_WPA] * immersion, -b[B3_WPA]
 
-    The same equations written out (the tests compare): weighted states as in
-    :func:`kernels2d.end_jacobian`, frame derivatives as in :func:`node_load3_jacobian`, the
-    body's drag ``b6 |w| w`` with derivative ``b6 (|w| I + w w^T / |w|)``.
+
+@kernel
+def end_jacobian3(x, y, d, env, up, p, b, side, out, jac):
+    """The three rows of one end (SPEC §2.3; :mod:`kernels2d` docstring) into ``out`` (3,) and
+    their derivatives by ``x`` into ``jac`` (3, 6), real.
+
+    Weighted states as in :func:`kernels2d.end_jacobian`, frame derivatives as in
+    :func:`node_load3_jacobian`, the body's drag ``b |w| w`` with derivative ``b (|w| I + w w^T / |w|)``.
     """
     for i in range(3):
         for q in range(6):
             jac[i, q] = 0.0
-    kind = int(b[0])
+    kind = int(b[B3_KIND])
     if kind == VELOCITY:
         cp, sp, ct, st = np.cos(x[4]), np.sin(x[4]), np.cos(x[5]), np.sin(x[5])
         vt = b[1] * cp * ct + b[2] * cp * st + b[3] * sp
         vn = -b[1] * sp * ct - b[2] * sp * st + b[3] * cp
         vb = b[1] * st - b[2] * ct
-        out[0], out[1], out[2] = x[1] - vt, x[2] - vn, x[3] - vb
+        out[0], out[1], out[2] = x[1] - vt - b[B3_PAYOUT], x[2] - vn, x[3] - vb
         jac[0, 1], jac[1, 2], jac[2, 3] = 1.0, 1.0, 1.0
         jac[0, 4], jac[0, 5] = -vn, cp * vb
         jac[1, 4], jac[1, 5] = vt, -sp * vb
@@ -360,11 +430,16 @@ def end_jacobian3(x, y, d, cur, up, p, b, side, out, jac):
     force, dforce = np.empty(3), np.zeros((3, 6))     # external force on the node in (t, n, b), d/dk
     if kind == FREE:
         mass = p[INERTIA] * (p[M] + p[MA])
-        f0, f1, f2 = node_load3_jacobian(k, cur, up, p, dforce)
-        force[0], force[1], force[2] = f0, f1, f2
+        extra = np.empty((3, 6))
+        f0, f1, f2 = node_load3_jacobian(k, env[UX3:UX3 + 3], up, p, dforce)
+        e0, e1, e2 = extra_load3_jacobian(k, env, p, extra)
+        force[0], force[1], force[2] = f0 + e0, f1 + e1, f2 + e2
+        for i in range(3):
+            for q in range(6):
+                dforce[i, q] += extra[i, q]
     else:
-        mass = p[INERTIA] * b[4]
-        _body_force3(k, cur, up, b, side, force, dforce)
+        mass = p[INERTIA] * b[B3_MASS]
+        _body_force3(k, env, up, p, b, side, force, dforce)
     first = 1 if kind == FREE else 0
     if kind == FREE:
         out[0] = x[0] / p[EA]
@@ -376,37 +451,47 @@ def end_jacobian3(x, y, d, cur, up, p, b, side, out, jac):
 
 
 @inner
-def _body_force3(k, cur, up, b, side, force, dforce):
-    """Force on an end body in (t, n, b) at the weighted state ``k`` and its derivative by ``k``:
-    the cable's tension ``-side T t``, drag of the relative water, buoyancy and constant force."""
-    cp, sp, ct, st = np.cos(k[4]), np.sin(k[4]), np.cos(k[5]), np.sin(k[5])
+def _body_force3(k, env, up, p, b, side, force, dforce):
+    """Force on an end body in (t, n, b) at the weighted state ``k`` and its derivative by ``k``: the
+    cable's tension ``-side T t``, drag of the relative water, buoyancy (a surface buoy's with its
+    immersion), constant force and wave inertia."""
+    cp, sp = np.cos(k[4]), np.sin(k[4])
     e = np.empty((3, 3))                                # rows t, n, b in chart coordinates
-    e[0, 0], e[0, 1], e[0, 2] = cp * ct, cp * st, sp
-    e[1, 0], e[1, 1], e[1, 2] = -sp * ct, -sp * st, cp
-    e[2, 0], e[2, 1], e[2, 2] = st, -ct, 0.0
+    _frame_rows(k[4], k[5], e)
+    dv = np.empty((6, 3))
+    _velocity_derivatives(k, e, dv)
+    z = 0.0
+    for j in range(3):
+        z += up[j] * (env[RX3 + j] + p[PRED] * (k[1] * e[0, j] + k[2] * e[1, j] + k[3] * e[2, j]))
+    lift_z, dlift = surface_buoyancy3(z, b)
+    total = np.empty(3)                                 # buoyancy + force + wave inertia (chart)
+    for j in range(3):
+        total[j] = (b[B3_BUOY] + lift_z) * up[j] + b[B3_F0 + j] + b[B3_WAVE] * env[AX3 + j]
     rel, lift = np.empty(3), np.empty(3)
     for i in range(3):
-        rel[i] = cur[0] * e[i, 0] + cur[1] * e[i, 1] + cur[2] * e[i, 2] - k[1 + i]
-        lift[i] = (b[5] * up[0] + b[7]) * e[i, 0] + (b[5] * up[1] + b[8]) * e[i, 1] + (b[5] * up[2] + b[9]) * e[i, 2]
+        rel[i] = env[UX3] * e[i, 0] + env[UX3 + 1] * e[i, 1] + env[UX3 + 2] * e[i, 2] - k[1 + i]
+        lift[i] = total[0] * e[i, 0] + total[1] * e[i, 1] + total[2] * e[i, 2]
     speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
-    # d(component along t, n, b)/d(phi), d/d(theta) of a fixed chart vector with components a = (a_t, a_n, a_b)
     drel = np.zeros((3, 6))
     for i in range(3):
         drel[i, 1 + i] = -1.0
     cw = np.empty(3)
     for i in range(3):
-        cw[i] = rel[i] + k[1 + i]                      # the current's components
+        cw[i] = rel[i] + k[1 + i]                      # the water velocity's components
     drel[0, 4], drel[0, 5] = cw[1], -cp * cw[2]
     drel[1, 4], drel[1, 5] = -cw[0], sp * cw[2]
     drel[2, 5] = cp * cw[0] - sp * cw[1]
+    hd = b[B3_DRAG]
     for i in range(3):
-        force[i] = b[6] * speed * rel[i] + lift[i]
+        force[i] = hd * speed * rel[i] + lift[i]
+        up_i = up[0] * e[i, 0] + up[1] * e[i, 1] + up[2] * e[i, 2]
         for q in range(6):
             acc = 0.0
             for j in range(3):
-                g = b[6] * ((speed if i == j else 0.0) + (rel[i] * rel[j] / speed if speed > 0.0 else 0.0))
+                g = hd * ((speed if i == j else 0.0) + (rel[i] * rel[j] / speed if speed > 0.0 else 0.0))
                 acc += g * drel[j, q]
-            dforce[i, q] = acc
+            dz = p[PRED] * (up[0] * dv[q, 0] + up[1] * dv[q, 1] + up[2] * dv[q, 2])
+            dforce[i, q] = acc + dlift * dz * up_i
     force[0] -= side * k[0]
     dforce[0, 0] = -side
     dforce[0, 4] += lift[1]
@@ -416,85 +501,4 @@ def _body_force3(k, cur, up, b, side, force, dforce):
     dforce[2, 5] += cp * lift[0] - sp * lift[1]
 
 
-@inner
-def _end_rows3(x, y, d, cur, up, p, b0, b1, res, band):
-    """The three rows of each end and their derivatives (:func:`end_jacobian3`) into ``res``, ``band``."""
-    out, jac = np.empty(3), np.empty((3, 6))
-    last = x.shape[0] - 1
-    for end in range(2):
-        node, side, row = (0, -1.0, 0) if end == 0 else (last, 1.0, 6 * last + 3)
-        end_jacobian3(x[node], y[node], d[node], cur[node], up, p, b0 if end == 0 else b1, side, out, jac)
-        for i in range(3):
-            res[row + i] = out[i]
-            for q in range(6):
-                band[UPPER + row + i - (6 * node + q), 6 * node + q] = jac[i, q]
-
-
-@kernel
-def _end_rows3_complex_step(x, y, d, cur, up, p, b, side, row, col0, res, band):
-    """One end's rows by complex step (the tests' oracle)."""
-    out = np.empty(3)
-    zout = np.empty(3, dtype=np.complex128)
-    z = np.empty(6, dtype=np.complex128)
-    end_residual3(x, y, d, cur, up, p, b, side, out)
-    res[row:row + 3] = out
-    for k in range(6):
-        z[:] = x
-        z[k] += 1j * STEP
-        end_residual3(z, y, d, cur, up, p, b, side, zout)
-        for i in range(3):
-            band[UPPER + row + i - (col0 + k), col0 + k] = zout[i].imag / STEP
-
-
-@kernel
-def interval_residual3(xl, xr, yl, yr, dl, dr, cl, cr, up, p, out):
-    """The six rows of one interval, directly from the nodal M, K, F (complex-capable)."""
-    am, ak, gamma, dt = p[AM], p[AK], p[GAMMA], p[DT]
-    ml, mr = (1.0 - am) * xl + am * yl, (1.0 - am) * xr + am * yr
-    kl, kr = (1.0 - ak) * xl + ak * yl, (1.0 - ak) * xr + ak * yr
-    rl = (1.0 - am) * ((xl - yl) / (gamma * dt) - (1.0 - gamma) / gamma * dl) + am * dl
-    rr = (1.0 - am) * ((xr - yr) / (gamma * dt) - (1.0 - gamma) / gamma * dr) + am * dr
-    rate = 0.5 * (rl + rr)
-    grad = (kr - kl) / p[DS]
-    a, b2, c2, e = np.empty(6, dtype=out.dtype), np.empty(6, dtype=out.dtype), np.empty(6, dtype=out.dtype), \
-        np.empty(6, dtype=out.dtype)
-    mass_times(ml, rate, p, a)
-    mass_times(mr, rate, p, b2)
-    stiffness_times(kl, grad, c2)
-    stiffness_times(kr, grad, e)
-    fl = node_load3(kl[0], kl[1], kl[2], kl[3], kl[4], kl[5], cl, up, p)
-    fr = node_load3(kr[0], kr[1], kr[2], kr[3], kr[4], kr[5], cr, up, p)
-    for i in range(6):
-        out[i] = p[INERTIA] * 0.5 * (a[i] + b2[i]) + 0.5 * (c2[i] + e[i])
-    for i in range(3):
-        out[i] -= 0.5 * (fl[i] + fr[i])
-
-
-@kernel
-def jacobian_complex_step3(x, y, d, cur, up, p, b0, b1, res, band):
-    """The residual and Jacobian of :func:`assemble3`, every entry by complex step (test oracle)."""
-    n_nodes = x.shape[0]
-    band[:, :] = 0.0
-    out = np.empty(6)
-    zout = np.empty(6, dtype=np.complex128)
-    zl = np.empty(6, dtype=np.complex128)
-    zr = np.empty(6, dtype=np.complex128)
-    for j in range(1, n_nodes):
-        row = 3 + 6 * (j - 1)
-        interval_residual3(x[j - 1], x[j], y[j - 1], y[j], d[j - 1], d[j], cur[j - 1], cur[j], up, p, out)
-        res[row:row + 6] = out
-        for side in range(2):
-            for k in range(6):
-                zl[:] = x[j - 1]
-                zr[:] = x[j]
-                if side == 0:
-                    zl[k] += 1j * STEP
-                else:
-                    zr[k] += 1j * STEP
-                interval_residual3(zl, zr, y[j - 1], y[j], d[j - 1], d[j], cur[j - 1], cur[j], up, p, zout)
-                col = 6 * (j - 1 + side) + k
-                for i in range(6):
-                    band[UPPER + row + i - col, col] = zout[i].imag / STEP
-    _end_rows3_complex_step(x[0], y[0], d[0], cur[0], up, p, b0, -1.0, 0, 0, res, band)
-    _end_rows3_complex_step(x[-1], y[-1], d[-1], cur[-1], up, p, b1, 1.0, 6 * n_nodes - 3, 6 * (n_nodes - 1),
-                            res, band)
+from kanat.continuum.rows3d import assemble3  # noqa: E402,F401  the run's entry (rows3d uses the loads above)

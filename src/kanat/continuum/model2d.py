@@ -1,8 +1,8 @@
 """The planar continuum cable as typed data: parameters, end conditions, state (SPEC §2.1, §2.3).
 
-Kernels take flat arrays; this module builds them from a case, once. A continuum case
-here is one cable whose first end is the vessel's tow point or an anchor and whose
-second end is a body, an anchor or free.
+Kernels take flat arrays; this module builds them from a case, once. A continuum case here is
+one cable (of one or several sections, with inline bodies) whose first end is the vessel's tow
+point or an anchor and whose second end is a body (a surface buoy too), an anchor or free.
 """
 from __future__ import annotations
 
@@ -11,8 +11,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.continuum import kernels2d as k
+from kanat.continuum.grid import Grid, SeabedContact, cable_grid, parameters, seabed_contact  # noqa: F401
 from kanat.errors import CaseError, Problem
 from kanat.model.plane import out_of_plane
+from kanat.physics.waves import sea_from_model
 
 
 @dataclass(frozen=True)
@@ -34,6 +36,18 @@ class EndCondition:
         True for the vessel's tow point (velocity from the track); False for an anchor.
     position : tuple of float
         ``(x, z)`` of an anchor [m].
+    wave_mass : float
+        Added mass plus displaced mass ``M_a + rho Vol`` [kg]: the body's coefficient of the
+        water's acceleration (Morison, Froude–Krylov) in waves.
+    waterplane : float
+        ``rho g A_w`` [N/m] of a surface buoy (0: none).
+    height : float
+        Keel to deck of a surface buoy [m].
+    clamped : bool
+        With bending stiffness: the end holds the cable's angle (``angle``) instead of leaving
+        it moment-free.
+    angle : float
+        The clamped angle [rad].
     """
 
     kind: int
@@ -43,29 +57,52 @@ class EndCondition:
     force: tuple = (0.0, 0.0)
     moving: bool = False
     position: tuple = (0.0, 0.0)
+    wave_mass: float = 0.0
+    waterplane: float = 0.0
+    height: float = 0.0
+    clamped: bool = False
+    angle: float = 0.0
 
-    def array(self, velocity=(0.0, 0.0), density: float = 1025.0) -> np.ndarray:
-        """The kernel's end-parameter vector (kernels2d.NBPAR) for a prescribed ``velocity``."""
+    def array(self, velocity=(0.0, 0.0), density: float = 1025.0, eta: float = 0.0, payout: float = 0.0) -> np.ndarray:
+        """The kernel's end-parameter vector (kernels2d.NBPAR) for a prescribed ``velocity``, the
+        wave elevation ``eta`` over a surface buoy and a winch's pay-out speed ``payout``."""
         return np.array([self.kind, velocity[0], velocity[1], self.mass, self.net_buoyancy,
-                         0.5 * density * self.drag_area, self.force[0], self.force[1]])
+                         0.5 * density * self.drag_area, self.force[0], self.force[1], self.wave_mass,
+                         self.waterplane, self.height, eta, payout, float(self.clamped), self.angle])
 
 
 class CableGrid:
     """What the planar and the spatial cable share: the grid of nodes and the current profile.
 
-    Subclasses have ``length``, ``segments``, ``current_z`` (ascending heights, m) and
-    ``current_rows`` (the current at those heights, one column per component, m/s).
+    Subclasses have ``length``, ``segments``, ``params``, ``grid`` (a :class:`Grid` or None for a
+    uniform cable), ``current_z`` (ascending heights, m) and ``current_rows`` (the current at
+    those heights, one column per component, m/s).
     """
 
     @property
     def ds(self) -> float:
-        """Unstretched segment length [m]."""
-        return self.length / self.segments
+        """Unstretched length of the first segment [m] (of every segment of a uniform cable)."""
+        return float(self.rows()[0, k.DS])
 
     @property
     def s(self) -> np.ndarray:
-        """Unstretched arclength of the nodes [m], shape (N+1,)."""
+        """Unstretched arclength of the nodes [m], shape (n_nodes,) (a junction's two nodes share theirs)."""
+        if self.grid is not None:
+            return self.grid.s
         return np.linspace(0.0, self.length, self.segments + 1)
+
+    @property
+    def nv(self) -> int:
+        """Unknowns per node: 4 in the plane (6 with bending stiffness)."""
+        return 6 if self.grid is not None and self.grid.bending else 4
+
+    def rows(self) -> np.ndarray:
+        """Parameter row of every interval (n_nodes - 1, n_par)."""
+        if self.grid is not None:
+            return self.grid.rows
+        p = self.params.copy()
+        p[k.DS] = self.length / self.segments
+        return np.tile(p, (self.segments, 1))
 
     def current_at(self, z) -> np.ndarray:
         """Current at heights ``z`` (n,): linear between rows, constant beyond -> (n, components)."""
@@ -82,11 +119,16 @@ class PlanarCable(CableGrid):
     length : float
         Unstretched length [m].
     segments : int
-    params : ndarray, shape (kernels2d.NPAR,)
-        Physical parameters; scheme entries are filled per step.
+    params : ndarray, shape (kernels2d.NPAR + law,)
+        Physical parameters of the first section; scheme entries are filled per step.
     start, end : EndCondition
     current_z, current_rows : ndarray
         Current profile: heights (ascending) [m] and (u_x, u_z) rows [m/s].
+    grid : Grid or None
+        Sections, attachments and per-interval rows; None: ``segments`` equal intervals of ``params``.
+    sea : kanat.physics.waves.LinearSea or None
+        Waves acting on the cable and its bodies.
+    seabed : SeabedContact or None
     """
 
     name: str
@@ -97,23 +139,9 @@ class PlanarCable(CableGrid):
     end: EndCondition
     current_z: np.ndarray = field(default_factory=lambda: np.zeros(1))
     current_rows: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))
-
-
-def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds,
-               law=None):
-    """The kernel parameter vector: the scalars (scheme entries zero), then the elastic law.
-
-    ``law`` is ``(tensions, strains)`` knots (tensions ascending, through (0, 0)); default the
-    linear law ``e = T / EA`` (knots (0, 0) and (EA, 1)).
-    """
-    tensions, strains = law if law is not None else ((0.0, stiffness), (0.0, 1.0))
-    p = np.zeros(k.NPAR + 1 + 2 * len(tensions))
-    p[[k.M, k.MA, k.W0, k.EA, k.DIAM, k.CN, k.CT, k.RHO, k.DS]] = (
-        mass, added_mass, weight, stiffness, diameter, drag_normal, drag_tangential, density, ds)
-    p[k.INERTIA] = 1.0
-    p[k.LAW] = len(tensions)
-    p[k.LAW + 1:] = np.concatenate([tensions, strains])
-    return p
+    grid: Grid | None = None
+    sea: object = None
+    seabed: SeabedContact | None = None
 
 
 def elastic_law_knots(law, max_strain: float = 0.5, samples: int = 400):
@@ -144,6 +172,18 @@ def strain_of(tension, params) -> np.ndarray:
     return knots_e[i] + slope * (np.asarray(tension) - knots_t[i])
 
 
+def interval_stretch(tension, rows) -> tuple[np.ndarray, np.ndarray]:
+    """``(1 + e)`` of both nodes of every interval, each with that interval's law: shapes (N,), (N,)."""
+    left, right = np.empty(len(rows)), np.empty(len(rows))
+    sections = rows[:, k.SECTION]
+    for value in np.unique(sections):
+        which = np.flatnonzero(sections == value)
+        p = rows[which[0]]
+        left[which] = 1.0 + strain_of(tension[which], p)
+        right[which] = 1.0 + strain_of(tension[which + 1], p)
+    return left, right
+
+
 def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     """The planar model of a case's single cable (raises CaseError when it does not fit).
 
@@ -155,17 +195,17 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                                  f"{len(case.cables)} (networks run with model: lumped)")])
     cable = case.cables[0]
     env = case.environment
-    lt = case.line_types[cable.line_type]
-    law = elastic_law_knots(lt.elastic_law) if getattr(lt, "elastic_law", None) is not None else None
-    p = parameters(lt.mass, lt.added_mass, lt.weight_in_water_value(env.water_density, env.gravity),
-                   lt.axial_stiffness, lt.diameter, lt.drag_normal, lt.drag_tangential, env.water_density,
-                   cable.length / cable.segments, law)
+    seabed = seabed_contact(env)
+    grid = cable_grid(case, 0, seabed)
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
     z, rows = case.environment.current.table()
     if check_plane and out_of_plane(case):
         raise CaseError(out_of_plane(case))
-    return PlanarCable(cable.name, cable.length, cable.segments, p, start, end, z, rows[:, [0, 2]])
+    first = grid.rows[0].copy()
+    return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
+                       None if grid.uniform and not grid.bending and seabed is None else grid, sea_from_model(env),
+                       seabed)
 
 
 def _end(case, end, key: str, first: bool) -> EndCondition:
@@ -179,15 +219,22 @@ def _end(case, end, key: str, first: bool) -> EndCondition:
     if end.kind == "free":
         return EndCondition(k.FREE)
     if end.kind == "body":
-        body = case.bodies[end.name]
+        body, env = case.bodies[end.name], case.environment
+        buoy = body.surface_buoy
         return EndCondition(k.BODY, body.mass + body.added_mass, body.net_buoyancy, body.drag_area,
-                            (body.force[0], body.force[2]))
+                            (body.force[0], body.force[2]),
+                            wave_mass=body.added_mass + (body.net_buoyancy + body.mass * env.gravity) / env.gravity,
+                            waterplane=0.0 if buoy is None else env.water_density * env.gravity * buoy.waterplane_area,
+                            height=0.0 if buoy is None else buoy.height)
     raise CaseError([Problem(key, f"point '{end.name}' joins a network; networks run with model: lumped")])
 
 
-def positions(cable: PlanarCable, y: np.ndarray, origin) -> np.ndarray:
-    """Node positions (N+1, 2) from the first end, trapezoidal in ``(1 + e) t`` (2nd order)."""
-    stretch = 1.0 + strain_of(y[:, 0], cable.params)
-    step = np.column_stack([stretch * np.cos(y[:, 3]), stretch * np.sin(y[:, 3])])
-    increments = 0.5 * cable.ds * (step[1:] + step[:-1])
+def positions(cable: PlanarCable, y: np.ndarray, origin, rows=None) -> np.ndarray:
+    """Node positions (n_nodes, 2) from the first end, trapezoidal in ``(1 + e) t`` (2nd order),
+    each interval with its own length and elastic law (``rows``: the cable's own by default)."""
+    rows = cable.rows() if rows is None else rows
+    left, right = interval_stretch(y[:, 0], rows)
+    c, s = np.cos(y[:, 3]), np.sin(y[:, 3])
+    half = 0.5 * rows[:, k.DS]
+    increments = np.column_stack([half * (left * c[:-1] + right * c[1:]), half * (left * s[:-1] + right * s[1:])])
     return np.vstack([np.zeros((1, 2)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)

@@ -11,6 +11,11 @@ Both adapters have the same methods, so nothing above them asks which one it hol
 
 ``dimensions: auto`` picks the planar model when the case stays in the x–z plane
 (:func:`kanat.model.plane.out_of_plane` finds nothing) and the spatial one otherwise.
+
+The initial state is the discrete steady state of the box equations, found by Newton from the
+statics of the case's cable: the planar solvers for a plain cable in the x–z plane, the 3-D
+single-cable statics (:mod:`kanat.statics.shooting3d`) for a cable of several sections, with inline
+bodies, a surface buoy, a current with a y component or anything else off the plane.
 """
 from __future__ import annotations
 
@@ -30,7 +35,16 @@ from kanat.statics.setup import cable_problems
 from kanat.vessel.track import VesselTrack
 
 
-def _static_shape(case, name, s):
+def needs_spatial_statics(case) -> bool:
+    """True when the planar statics cannot give the cable's shape (module docstring)."""
+    cable, env = case.cables[0], case.environment
+    ends = [case.bodies[e.name] for e in cable.ends if e.kind == "body"]
+    slope = env.seabed is not None and (env.seabed.slope_deg != 0 or env.seabed.friction > 0)
+    return (len(cable.sections) > 1 or bool(cable.attachments) or bool(out_of_plane(case)) or slope
+            or any(b.surface_buoy is not None for b in ends))
+
+
+def _static_shape(case, name, s) -> CableSolution:
     """The statics solution of the case's cable at stations ``s`` (the initial guess).
 
     A cable with a free tail has no statics solution of its own (statics refuses free ends);
@@ -38,6 +52,11 @@ def _static_shape(case, name, s):
     """
     if case.cables[0].to.kind == "free":
         return free_tail_guess(case, s)
+    if needs_spatial_statics(case):
+        from kanat.statics.setup3d import cable_problem3
+        from kanat.statics.solve3d import solve_cable3
+
+        return solve_cable3(cable_problem3(case), "auto", s)
     return solve_cable(cable_problems(case)[name], "auto", s)
 
 
@@ -60,6 +79,20 @@ def free_tail_guess(case, s) -> CableSolution:
     origin = np.array([case.vessel.tow_point[0], case.vessel.tow_point[2]])
     xz = origin + np.outer(s, along)
     return CableSolution(s, xz[:, 0], xz[:, 1], np.outer(tension, along), "free-tail guess")
+
+
+def bending_guess(cable, y: np.ndarray) -> np.ndarray:
+    """Shear 0 and moment ``EI dphi/ds`` (node averages of the intervals' curvature) appended to a
+    flexible planar guess (n, 4) when the cable has bending stiffness."""
+    if cable.nv == 4:
+        return y
+    rows = cable.rows()
+    ds = np.where(rows[:, k.DS] > 0, rows[:, k.DS], 1.0)
+    moment = np.where(rows[:, k.DS] > 0, rows[:, k.EI] * np.diff(y[:, 3]) / ds, 0.0)
+    nodes = np.zeros(len(y))
+    nodes[:-1] += 0.5 * moment
+    nodes[1:] += 0.5 * moment
+    return np.column_stack([y, np.zeros(len(y)), nodes])
 
 
 class PlanarModel:
@@ -93,6 +126,7 @@ class PlanarModel:
         v0, phi = drive.velocities(0.0)[0], np.unwrap(static.angle)     # continuous through +-pi
         guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
                                  -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
+        guess = bending_guess(cable, guess)
         y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))
         return State(0.0, y, np.zeros_like(y), positions(cable, y, drive.origin(0.0)))
 
@@ -134,10 +168,13 @@ class PlanarModel:
                 "tension": y[:, 0]}
 
     def save(self, state) -> dict:
-        return {"y": state.y, "rate": state.rate, "xz": state.xz}
+        saved = {"y": state.y, "rate": state.rate, "xz": state.xz}
+        if state.rows is not None:
+            saved["rows"] = state.rows
+        return saved
 
     def restore(self, t, saved) -> State:
-        return State(t, saved["y"], saved["rate"], saved["xz"])
+        return State(t, saved["y"], saved["rate"], saved["xz"], saved.get("rows"))
 
 
 class SpatialModel:
@@ -162,16 +199,14 @@ class SpatialModel:
     def initial(self) -> SpatialState:
         cable = self.cable
         static = _static_shape(self.case, cable.name, cable.s)
-        tangents = np.column_stack([static.force[:, 0], np.zeros(len(static.s)), static.force[:, 1]])
-        tangents /= static.tension[:, None]
+        tangents = static.force3 / static.tension[:, None]
         chart = choose_chart(tangents)
         phi, theta = angles(tangents, chart)
         guess = np.column_stack([static.tension, np.zeros((len(phi), 3)), phi, theta])
         t, n, b = frames(guess, chart)
         v0 = self.velocities(0.0)[0]
         guess[:, 1:4] = np.column_stack([t @ v0, n @ v0, b @ v0])
-        xyz = np.column_stack([static.x, np.zeros_like(static.x), static.z])
-        y = steady3(cable, guess, chart, self.velocities(0.0), xyz)
+        y = steady3(cable, guess, chart, self.velocities(0.0), static.position)
         return SpatialState(0.0, y, np.zeros_like(y), positions3(cable, y, chart, self.origin(0.0)), chart)
 
     def step(self, state, dt, coefficients):
@@ -207,10 +242,13 @@ class SpatialModel:
         return {"position": state.xyz, "velocity": u * t + v * n + w * b, "tension": state.y[:, 0]}
 
     def save(self, state) -> dict:
-        return {"y": state.y, "rate": state.rate, "xyz": state.xyz, "chart": state.chart}
+        saved = {"y": state.y, "rate": state.rate, "xyz": state.xyz, "chart": state.chart}
+        if state.rows is not None:
+            saved["rows"] = state.rows
+        return saved
 
     def restore(self, t, saved) -> SpatialState:
-        return SpatialState(t, saved["y"], saved["rate"], saved["xyz"], saved["chart"])
+        return SpatialState(t, saved["y"], saved["rate"], saved["xyz"], saved["chart"], saved.get("rows"))
 
 
 def spatial_cable(case) -> SpatialCable:
@@ -219,20 +257,33 @@ def spatial_cable(case) -> SpatialCable:
     cable = case.cables[0]
 
     def end(e, key, first):
-        kind = planar_end(case, e, key, first).kind
+        made = planar_end(case, e, key, first)
         if e.kind == "vessel":
-            return SpatialEnd(kind, moving=True, position=tuple(case.vessel.tow_point))
+            return SpatialEnd(made.kind, moving=True, position=tuple(case.vessel.tow_point))
         if e.kind == "anchor":
-            return SpatialEnd(kind, position=tuple(e.position))
+            return SpatialEnd(made.kind, position=tuple(e.position))
         if e.kind == "body":
             body = case.bodies[e.name]
-            return SpatialEnd(kind, body.mass + body.added_mass, body.net_buoyancy, body.drag_area,
-                              tuple(body.force))
-        return SpatialEnd(kind)
+            return SpatialEnd(made.kind, made.mass, body.net_buoyancy, body.drag_area, tuple(body.force),
+                              wave_mass=made.wave_mass, waterplane=made.waterplane, height=made.height)
+        return SpatialEnd(made.kind)
 
     z, rows = case.environment.current.table()
+    grid = planar.grid
+    if grid is not None and grid.bending:
+        from kanat.errors import CaseError, Problem
+
+        name = next(lt for lt in grid.sections if case.line_types[lt].bending_stiffness > 0)
+        raise CaseError([Problem(f"line_types.{name}.bending_stiffness", "bending stiffness is modelled by the "
+                                 "planar continuum model only; this case leaves the x-z plane (a 3-D run): set "
+                                 "bending_stiffness: 0, or keep the case in the plane (simulation.dimensions: 2)")])
+    if grid is None:
+        from kanat.continuum.grid import cable_grid
+
+        grid = cable_grid(case, 0, planar.seabed)
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
-                        end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows)
+                        end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows,
+                        None if grid.uniform and planar.seabed is None else grid, planar.sea, planar.seabed)
 
 
 def model_for(case):
@@ -241,4 +292,3 @@ def model_for(case):
     if wanted == 3 or (wanted == "auto" and out_of_plane(case)):
         return SpatialModel(case)
     return PlanarModel.from_case(case)
-

@@ -14,15 +14,18 @@ from scipy.linalg import solve_banded
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
-from kanat.continuum.model2d import CableGrid, strain_of
-from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure
+from kanat.continuum.grid import Grid, SeabedContact
+from kanat.continuum.model2d import CableGrid, interval_stretch
+from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure, step_rows
+from kanat.continuum.water import elevation, kinematics_time, predictor_weight
 
 UP = np.array([0.0, 0.0, 1.0])
 
 
 @dataclass(frozen=True)
 class SpatialEnd:
-    """An end in 3-D: kind (kernels2d constants), body data (global force), tow point or anchor."""
+    """An end in 3-D: kind (kernels2d constants), body data (global force), tow point or anchor,
+    and (as :class:`kanat.continuum.model2d.EndCondition`) wave mass and a surface buoy."""
 
     kind: int
     mass: float = 0.0
@@ -31,12 +34,16 @@ class SpatialEnd:
     force: tuple = (0.0, 0.0, 0.0)
     moving: bool = False
     position: tuple = (0.0, 0.0, 0.0)
+    wave_mass: float = 0.0
+    waterplane: float = 0.0
+    height: float = 0.0
 
-    def array(self, velocity, chart: np.ndarray, density: float) -> np.ndarray:
+    def array(self, velocity, chart: np.ndarray, density: float, eta: float = 0.0, payout: float = 0.0) -> np.ndarray:
         """Kernel end vector (kernels3d.NBPAR3), vectors rotated into ``chart``."""
         v = np.asarray(velocity, dtype=float) @ chart
         f = np.asarray(self.force, dtype=float) @ chart
-        return np.array([self.kind, *v, self.mass, self.net_buoyancy, 0.5 * density * self.drag_area, *f])
+        return np.array([self.kind, *v, self.mass, self.net_buoyancy, 0.5 * density * self.drag_area, *f,
+                         self.wave_mass, self.waterplane, self.height, eta, payout])
 
 
 @dataclass(frozen=True)
@@ -51,36 +58,48 @@ class SpatialCable(CableGrid):
     end: SpatialEnd
     current_z: np.ndarray = field(default_factory=lambda: np.zeros(1))
     current_rows: np.ndarray = field(default_factory=lambda: np.zeros((1, 3)))
+    grid: Grid | None = None
+    sea: object = None
+    seabed: SeabedContact | None = None
 
 
 @dataclass(frozen=True)
 class SpatialState:
-    """The spatial cable at one instant: ``y`` (N+1, 6) and ``rate`` in ``chart``, ``xyz`` global."""
+    """The spatial cable at one instant: ``y`` (N+1, 6) and ``rate`` in ``chart``, ``xyz`` global;
+    ``rows`` the interval rows when they change in time (a winch)."""
 
     t: float
     y: np.ndarray
     rate: np.ndarray
     xyz: np.ndarray
     chart: np.ndarray
+    rows: np.ndarray | None = None
 
 
-def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin) -> np.ndarray:
-    """Global node positions (N+1, 3), trapezoidal in ``(1 + e) t`` from the first end."""
+def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin, rows=None) -> np.ndarray:
+    """Global node positions (n_nodes, 3), trapezoidal in ``(1 + e) t`` from the first end, each
+    interval with its own length and law."""
+    rows = cable.rows() if rows is None else rows
     t, _, _ = frames(y, chart)
-    step = (1.0 + strain_of(y[:, 0], cable.params))[:, None] * t
-    increments = 0.5 * cable.ds * (step[1:] + step[:-1])
+    left, right = interval_stretch(y[:, 0], rows)
+    increments = 0.5 * rows[:, k.DS, None] * (left[:, None] * t[:-1] + right[:, None] * t[1:])
     return np.vstack([np.zeros((1, 3)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)
 
 
-def _solve(cable, x0, y, rate, current, up, p, b0, b1):
+def spatial_scales(cable, y) -> np.ndarray:
+    """Increment scales (6,): tension, three speeds, two angles."""
+    tension = max(np.max(np.abs(y[:, 0])), abs(cable.params[k.W0]) * cable.length, 1.0)
+    speed = max(np.max(np.abs(y[:, 1:4])), 1.0)
+    return np.array([tension, speed, speed, speed, 1.0, 1.0])
+
+
+def _solve(cable, x0, y, rate, env, up, P, b0, b1):
     x = x0.copy()
     n = x.size
     res, band = np.empty(n), np.empty((k3.LOWER + k3.UPPER + 1, n))
-    tension = max(np.max(np.abs(y[:, 0])), abs(p[k.W0]) * cable.length, 1.0)
-    speed = max(np.max(np.abs(y[:, 1:4])), 1.0)
-    scale = np.tile([tension, speed, speed, speed, 1.0, 1.0], len(x))
+    scale = np.tile(spatial_scales(cable, y), len(x))
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k3.assemble3(x, y, rate, current, up, p, b0, b1, res, band)
+        k3.assemble3(x, y, rate, env, up, P, b0, b1, res, band)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // 6))
         try:
@@ -94,11 +113,40 @@ def _solve(cable, x0, y, rate, current, up, p, b0, b1):
                         int(np.argmax(np.abs(dx) / scale) // 6))
 
 
-def _kernel_inputs(cable, state_xyz, chart, velocities):
-    p_rho = cable.params[k.RHO]
-    current = cable.current_at(state_xyz[:, 2]) @ chart
-    v0, v1 = velocities
-    return current, chart.T @ UP, cable.start.array(v0, chart, p_rho), cable.end.array(v1, chart, p_rho)
+def velocities3(y: np.ndarray, chart: np.ndarray) -> np.ndarray:
+    """Global velocities (n, 3) of states ``y`` in ``chart``."""
+    t, n, b = frames(y, chart)
+    return y[:, 1:2] * t + y[:, 2:3] * n + y[:, 3:4] * b
+
+
+def spatial_water(cable: SpatialCable, xyz, velocity, tangents, t: float, dt: float, coefficients, chart,
+                  waves: bool = True) -> np.ndarray:
+    """Nodal data (n, NENV3) in ``chart`` coordinates (:mod:`kanat.continuum.water`; global inputs)."""
+    n = len(xyz)
+    env = np.zeros((n, k3.NENV3))
+    water = cable.current_at(xyz[:, 2])
+    if waves and cable.sea is not None:
+        tk = kinematics_time(t, dt, coefficients)
+        water = water + cable.sea.velocity(xyz, tk)
+        env[:, k3.AX3:k3.AX3 + 3] = cable.sea.acceleration(xyz, tk) @ chart
+    env[:, k3.UX3:k3.UX3 + 3] = water @ chart
+    env[:, k3.RX3:k3.RX3 + 3] = (xyz + predictor_weight(coefficients, dt) * velocity) @ chart
+    if cable.seabed is not None:
+        normal = cable.seabed.normal
+        along = tangents - np.outer(tangents @ normal, normal)
+        size = np.linalg.norm(along, axis=1)
+        flat = size < 1e-9
+        along[flat] = np.cross(normal, [0.0, 1.0, 0.0])
+        size[flat] = np.linalg.norm(along[flat], axis=1) if np.any(flat) else size[flat]
+        env[:, k3.DX3:k3.DX3 + 3] = (along / size[:, None]) @ chart
+    return env
+
+
+def chart_rows(rows: np.ndarray, cable: SpatialCable, chart: np.ndarray) -> np.ndarray:
+    """``rows`` with the seabed's normal in ``chart`` coordinates (in place) -> rows."""
+    if cable.seabed is not None:
+        rows[:, [k.SB_N0, k.SB_N1, k.SB_N2]] = chart.T @ cable.seabed.normal
+    return rows
 
 
 def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, drive):
@@ -108,20 +156,67 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
         new = choose_chart(frames(y, chart)[0])
         y, rate = rechart(y, rate, chart, new)
         chart = new
-    am, ak, gamma = coefficients
-    p = cable.params.copy()
-    p[[k.AM, k.AK, k.GAMMA, k.DT]] = am, ak, gamma, dt
-    current, up, b0, b1 = _kernel_inputs(cable, state.xyz, chart, drive.velocities(state.t + dt))
-    x, iterations = _solve(cable, y + dt * rate, y, rate, current, up, p, b0, b1)
+    rows = cable.rows() if state.rows is None else state.rows
+    P = chart_rows(step_rows(rows, coefficients, dt), cable, chart)
+    rho = P[0, k.RHO]
+    v0, v1 = drive.velocities(state.t + dt)
+    env = spatial_water(cable, state.xyz, velocities3(y, chart), frames(y, chart)[0], state.t, dt, coefficients, chart)
+    payout = drive.payout(state.t + dt) if hasattr(drive, "payout") else 0.0
+    eta = elevation(cable.sea, state.xyz[-1, :2], kinematics_time(state.t, dt, coefficients))
+    b0 = cable.start.array(v0, chart, rho, payout=payout)
+    b1 = cable.end.array(v1, chart, rho, eta=eta)
+    x, iterations = _solve(cable, y + dt * rate, y, rate, env, chart.T @ UP, P, b0, b1)
+    gamma = coefficients[2]
     new_rate = (x - y) / (gamma * dt) - (1.0 - gamma) / gamma * rate
-    xyz = positions3(cable, x, chart, drive.origin(state.t + dt))
-    return SpatialState(state.t + dt, x, new_rate, xyz, chart), iterations
+    xyz = positions3(cable, x, chart, drive.origin(state.t + dt), rows)
+    return SpatialState(state.t + dt, x, new_rate, xyz, chart, state.rows), iterations
 
 
 def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocities, xyz) -> np.ndarray:
-    """The discrete steady state (no inertia) in ``chart``, from ``guess`` (N+1, 6)."""
-    p = cable.params.copy()
-    p[[k.AM, k.AK, k.GAMMA, k.DT, k.INERTIA]] = 0.0, 0.0, 1.0, 1.0, 0.0
-    current, up, b0, b1 = _kernel_inputs(cable, xyz, chart, velocities)
-    x, _ = _solve(cable, guess, guess, np.zeros_like(guess), current, up, p, b0, b1)
-    return x
+    """The discrete steady state (no inertia) in ``chart``, from ``guess`` (N+1, 6); with a seabed or
+    a surface buoy, Newton on the dense system (:mod:`kanat.continuum.steady`)."""
+    rows = cable.rows()
+    P = chart_rows(step_rows(rows, (0.0, 0.0, 1.0), 1.0, inertia=0.0), cable, chart)
+    P[:, k.PRED] = 0.0
+    rho = P[0, k.RHO]
+    v0, v1 = velocities
+    b0, b1 = cable.start.array(v0, chart, rho), cable.end.array(v1, chart, rho)
+    up = chart.T @ UP
+    env = spatial_water(cable, xyz, np.zeros_like(xyz), frames(guess, chart)[0], 0.0, 0.0, (0.0, 0.0, 1.0), chart,
+                        waves=False)
+    if cable.seabed is None and cable.end.waterplane == 0.0:
+        x, _ = _solve(cable, guess, guess, np.zeros_like(guess), env, up, P, b0, b1)
+        return x
+    from kanat.continuum.steady import steady_with_positions
+
+    def layout(x):
+        r = positions3(cable, x, chart, xyz[0], rows)
+        e = env.copy()
+        e[:, k3.RX3:k3.RX3 + 3] = r @ chart
+        return e, r @ chart
+
+    def residual(x, e):
+        res, band = np.empty(x.size), np.empty((k3.LOWER + k3.UPPER + 1, x.size))
+        k3.assemble3(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band)
+        return res, band
+
+    def derivative(x):
+        n = len(x)
+        left, right = interval_stretch(x[:, 0], rows)
+        from kanat.continuum.stepper import interval_compliance
+
+        flex_l, flex_r = interval_compliance(x[:, 0], rows)
+        t, nn, b = frames(x, chart)
+        t, nn, b = t @ chart, nn @ chart, b @ chart            # chart coordinates
+        cp = np.cos(x[:, 4])
+        half = 0.5 * rows[:, k.DS]
+        a = np.zeros((n, 3, n * 6))
+        i = np.arange(n - 1)
+        for node, stretch, flex in ((i, left, flex_l), (i + 1, right, flex_r)):
+            for c in range(3):
+                a[i + 1, c, 6 * node] = half * flex * t[node, c]
+                a[i + 1, c, 6 * node + 4] = half * stretch * nn[node, c]
+                a[i + 1, c, 6 * node + 5] = -half * stretch * cp[node] * b[node, c]
+        return np.cumsum(a, axis=0)
+    return steady_with_positions(guess, layout, tuple(range(k3.RX3, k3.RX3 + 3)), residual, derivative,
+                                 spatial_scales(cable, guess), (4, 5), k3.UPPER)

@@ -1,9 +1,9 @@
 """One time step of the planar continuum model: Newton's method on the banded system (SPEC §2.4).
 
 Newton starts from the previous state advanced with its rate, tests convergence on
-increments scaled by the problem's own sizes (tension, speed, 1 rad), and stops after
-``MAX_ITERATIONS``. A step whose Newton iteration fails is cut in halves, up to
-``MAX_CUTS`` levels, before the run is stopped with a message saying what to try.
+increments scaled by the problem's own sizes (tension, speed, 1 rad; shear and moment with
+bending), and stops after ``MAX_ITERATIONS``. A step whose Newton iteration fails is cut in
+halves, up to ``MAX_CUTS`` levels, before the run is stopped with a message saying what to try.
 """
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from scipy.linalg import solve_banded
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import PlanarCable, positions
+from kanat.continuum.water import elevation, kinematics_time, planar_water
 from kanat.errors import SolverError
 
 MAX_ITERATIONS = 20
@@ -29,18 +30,21 @@ class State:
     ----------
     t : float
         Time [s].
-    y : ndarray, shape (N+1, 4)
-        ``(T, u, v, phi)`` at the nodes.
-    rate : ndarray, shape (N+1, 4)
+    y : ndarray, shape (n_nodes, nv)
+        ``(T, u, v, phi)`` at the nodes (and ``S, M`` with bending stiffness).
+    rate : ndarray, shape (n_nodes, nv)
         Time derivative of ``y`` (the generalized-α scheme carries it).
-    xz : ndarray, shape (N+1, 2)
+    xz : ndarray, shape (n_nodes, 2)
         Node positions [m].
+    rows : ndarray or None
+        The interval rows when they change in time (a winch); None: the cable's own.
     """
 
     t: float
     y: np.ndarray
     rate: np.ndarray
     xz: np.ndarray
+    rows: np.ndarray | None = None
 
 
 class NewtonFailure(SolverError):
@@ -51,34 +55,52 @@ class NewtonFailure(SolverError):
         self.node = node
 
 
-def scales(cable: PlanarCable, y: np.ndarray) -> np.ndarray:
-    """Increment scales (4,): tension, speed, speed, angle."""
+def scales(cable, y: np.ndarray) -> np.ndarray:
+    """Increment scales (nv,): tension, speed, speed, angle (and shear, moment with bending)."""
     p = cable.params
     tension = max(np.max(np.abs(y[:, 0])), abs(p[k.W0]) * cable.length, 1.0)
     speed = max(np.max(np.abs(y[:, 1:3])), 1.0)
+    if y.shape[1] == 6:
+        return np.array([tension, speed, speed, 1.0, tension, tension * cable.length])
     return np.array([tension, speed, speed, 1.0])
 
 
-def solve(cable: PlanarCable, x0, y, rate, current, p, b0, b1):
+def solve(cable, x0, y, rate, env, P, b0, b1):
     """Newton's method for the new state; returns ``(x, iterations)`` or raises NewtonFailure."""
     x = x0.copy()
-    n = x.size
+    n, nv = x.size, x.shape[1]
+    width = k.bandwidth(nv)
     res = np.empty(n)
-    band = np.empty((k.LOWER + k.UPPER + 1, n))
+    band = np.empty((2 * width + 1, n))
     scale = np.tile(scales(cable, y), len(x))
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k.assemble(x, y, rate, current, p, b0, b1, res, band)
+        k.assemble(x, y, rate, env, P, b0, b1, res, band)
         if not np.all(np.isfinite(res)):
-            raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // 4))
+            raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         try:
-            dx = solve_banded((k.LOWER, k.UPPER), band, -res, check_finite=False)
+            dx = solve_banded((width, width), band, -res, check_finite=False)
         except (np.linalg.LinAlgError, ValueError):
-            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // 4)) from None
+            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv)) from None
         x += dx.reshape(x.shape)
         if np.max(np.abs(dx) / scale) < TOLERANCE:
             return x, iteration
-    worst = int(np.argmax(np.abs(dx) / scale) // 4)
+    worst = int(np.argmax(np.abs(dx) / scale) // nv)
     raise NewtonFailure(f"Newton did not converge in {MAX_ITERATIONS} iterations", worst)
+
+
+def step_rows(rows: np.ndarray, coefficients, dt: float, inertia: float = 1.0) -> np.ndarray:
+    """A copy of the interval rows with the scheme's entries set for a step of ``dt``."""
+    am, ak, gamma = coefficients
+    P = rows.copy()
+    P[:, k.AM], P[:, k.AK], P[:, k.GAMMA], P[:, k.DT], P[:, k.PRED] = am, ak, gamma, dt, gamma * dt
+    P[:, k.INERTIA] = inertia
+    return P
+
+
+def node_velocity(y: np.ndarray) -> np.ndarray:
+    """Global velocities (x, z) (n, 2) of planar states ``y``."""
+    c, s = np.cos(y[:, 3]), np.sin(y[:, 3])
+    return np.column_stack([y[:, 1] * c - y[:, 2] * s, y[:, 1] * s + y[:, 2] * c])
 
 
 def step(cable: PlanarCable, state: State, dt: float, coefficients, drive) -> tuple[State, int]:
@@ -88,31 +110,93 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive) -> tu
     ----------
     drive : Drive
         Prescribed motion: ``drive.velocities(t)`` gives the end velocities ``(Vx, Vz)``
-        at ``s = 0`` and ``s = L``, ``drive.origin(t)`` the position of the first end.
+        at ``s = 0`` and ``s = L``, ``drive.origin(t)`` the position of the first end; an
+        optional ``drive.payout(t)`` the winch's pay-out speed [m/s].
 
     Returns
     -------
     State, int
         The new state and the Newton iterations spent.
     """
-    am, ak, gamma = coefficients
-    p = cable.params.copy()
-    p[[k.AM, k.AK, k.GAMMA, k.DT]] = am, ak, gamma, dt
+    rows = cable.rows() if state.rows is None else state.rows
+    P = step_rows(rows, coefficients, dt)
     v0, v1 = drive.velocities(state.t + dt)
-    rho = p[k.RHO]
-    b0, b1 = cable.start.array(v0, rho), cable.end.array(v1, rho)
-    current = cable.current_at(state.xz[:, 1])
-    x, iterations = solve(cable, state.y + dt * state.rate, state.y, state.rate, current, p, b0, b1)
+    rho = P[0, k.RHO]
+    env = planar_water(cable, state.xz, node_velocity(state.y), state.t, dt, coefficients)
+    payout = drive.payout(state.t + dt) if hasattr(drive, "payout") else 0.0
+    eta = elevation(cable.sea, (state.xz[-1, 0], 0.0), kinematics_time(state.t, dt, coefficients))
+    b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
+    x, iterations = solve(cable, state.y + dt * state.rate, state.y, state.rate, env, P, b0, b1)
+    gamma = coefficients[2]
     rate = (x - state.y) / (gamma * dt) - (1.0 - gamma) / gamma * state.rate
-    return State(state.t + dt, x, rate, positions(cable, x, drive.origin(state.t + dt))), iterations
+    xz = positions(cable, x, drive.origin(state.t + dt), rows)
+    return State(state.t + dt, x, rate, xz, state.rows), iterations
 
 
 def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
-    """The discrete steady state of the box equations (no inertia), from ``guess`` (N+1, 4)."""
-    p = cable.params.copy()
-    p[[k.AM, k.AK, k.GAMMA, k.DT, k.INERTIA]] = 0.0, 0.0, 1.0, 1.0, 0.0
+    """The discrete steady state of the box equations (no inertia), from ``guess`` (n_nodes, nv).
+
+    With a seabed, the contact forces depend on the node positions, which depend on every
+    state up the cable: Newton then runs on the dense system (:mod:`kanat.continuum.steady`).
+    """
+    rows = cable.rows()
+    P = step_rows(rows, (0.0, 0.0, 1.0), 1.0, inertia=0.0)
+    P[:, k.PRED] = 0.0
     v0, v1 = velocities
-    rho = p[k.RHO]
-    x, _ = solve(cable, guess, guess, np.zeros_like(guess), cable.current_at(xz[:, 1]), p,
-                 cable.start.array(v0, rho), cable.end.array(v1, rho))
-    return x
+    rho = P[0, k.RHO]
+    b0, b1 = cable.start.array(v0, rho), cable.end.array(v1, rho)
+    env = planar_water(cable, xz, np.zeros_like(xz), 0.0, 0.0, (0.0, 0.0, 1.0), waves=False)
+    if cable.seabed is None and cable.end.waterplane == 0.0:
+        x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
+        return x
+    from kanat.continuum.steady import steady_with_positions
+
+    def layout(x):
+        r = positions(cable, x, xz[0], rows)
+        e = env.copy()
+        e[:, [k.RX, k.RZ]] = r
+        return e, r
+
+    width = k.bandwidth(guess.shape[1])
+
+    def residual(x, e):
+        res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
+        k.assemble(x, x, np.zeros_like(x), e, P, b0, b1, res, band)
+        return res, band
+    return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),
+                                 scales(cable, guess), (3,), width)
+
+
+def planar_position_jacobian(rows):
+    """``D(x)`` (n, 2, n nv): the derivatives of the node positions (:func:`positions`) by the states."""
+    def derivative(x):
+        from kanat.continuum.model2d import interval_stretch
+
+        n, nv = x.shape
+        left, right = interval_stretch(x[:, 0], rows)
+        flex_l, flex_r = interval_compliance(x[:, 0], rows)
+        c, s = np.cos(x[:, 3]), np.sin(x[:, 3])
+        half = 0.5 * rows[:, k.DS]
+        a = np.zeros((n, 2, n * nv))
+        i = np.arange(n - 1)
+        for node, stretch, flex in ((i, left, flex_l), (i + 1, right, flex_r)):
+            a[i + 1, 0, nv * node] = half * flex * c[node]
+            a[i + 1, 1, nv * node] = half * flex * s[node]
+            a[i + 1, 0, nv * node + 3] = -half * stretch * s[node]
+            a[i + 1, 1, nv * node + 3] = half * stretch * c[node]
+        return np.cumsum(a, axis=0)
+    return derivative
+
+
+def interval_compliance(tension, rows):
+    """``de/dT`` of both nodes of every interval with that interval's law: (N,), (N,)."""
+    left, right = np.empty(len(rows)), np.empty(len(rows))
+    for value in np.unique(rows[:, k.SECTION]):
+        which = np.flatnonzero(rows[:, k.SECTION] == value)
+        p = rows[which[0]]
+        n = int(p[k.LAW])
+        knots_t, knots_e = p[k.LAW + 1:k.LAW + 1 + n], p[k.LAW + 1 + n:k.LAW + 1 + 2 * n]
+        slopes = np.diff(knots_e) / np.diff(knots_t)
+        for out, nodes in ((left, which), (right, which + 1)):
+            out[which] = slopes[np.clip(np.searchsorted(knots_t, tension[nodes]) - 1, 0, n - 2)]
+    return left, right
