@@ -33,7 +33,13 @@ from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, state_positions
-from kanat.lumped.mooring_outputs import allowed_penetration, attitudes, contact_length, line_forces
+from kanat.lumped.mooring_outputs import (
+    allowed_penetration,
+    anchor_forces,
+    attitudes,
+    contact_length,
+    line_forces,
+)
 from kanat.physics.contact import PENETRATION_MARGIN
 from kanat.physics.seabed import seabed_of
 from kanat.schemes import get_scheme
@@ -77,6 +83,10 @@ class LumpedModel:
         self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
         self.penetration = allowed_penetration(self.net, case.environment)
+        seabed = seabed_of(case.environment)
+        self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
+        self._anchors_on_seabed = (np.zeros(len(self.net.anchor_nodes), bool) if seabed is None else
+                                   seabed.penetration(self.net.anchor_position) > -1e-6 * seabed.depth)
 
     def _choose(self, scheme):
         sim = self.case.simulation
@@ -189,8 +199,8 @@ class LumpedModel:
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
                 "vessel_heading": heading, "vessel_pitch": pitch,
-                "seabed_contact_length": contact_length(net, system.normal_force),
-                "anchor_force": F[net.anchor_nodes].reshape(-1, 3),
+                "seabed_contact_length": contact_length(net, system.normal_force, self._anchors_on_seabed),
+                "anchor_force": anchor_forces(net, F, system.normal_force, self._anchors_on_seabed, self._friction),
                 "body_force": line_forces(net, x, T), "body_attitude": attitudes(net, x)}
 
     # 5. status ---------------------------------------------------------------------------

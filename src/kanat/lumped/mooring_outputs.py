@@ -6,6 +6,10 @@ bodies, body attitudes, and the penetration the seabed check allows.
 * the lines' force on a body: at each of its nodes (a 3-DOF body's node, a 6-DOF body's
   fairleads), ``sum_k (+/- T_k t_k - w0_k L0_k / 2 z)`` over the elements there — the end
   tension and the weight in water of the half element the node carries (as statics reports it);
+* the line's force on an anchor: the total force on its prescribed node (end tension and the
+  half element's loads), less the half element's weight where that element rests on the seabed
+  (both its ends touching, or the anchor on the seabed and the other end touching): the
+  seabed carries it, not the anchor;
 * the allowed penetration of node ``n``: ``PENETRATION_MARGIN W_n / (k_b A_n) + PENETRATION_FLOOR``
   (its weight in water over the contact stiffness), or round-off without seabed contact.
 """
@@ -18,9 +22,12 @@ from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
 NO_CONTACT_RTOL = 1e-9     # below the seabed by more than this fraction of the depth fails without contact
 
 
-def contact_length(net, normal_force: np.ndarray) -> np.ndarray:
-    """Unstretched length of each cable resting on the seabed (n_cables,) [m]."""
+def contact_length(net, normal_force: np.ndarray, anchors_on_seabed=None) -> np.ndarray:
+    """Unstretched length of each cable resting on the seabed (n_cables,) [m]; anchors on the
+    seabed (``anchors_on_seabed`` (n_anchor,)) count as touching."""
     touching = (normal_force > 0.0).astype(float)
+    if anchors_on_seabed is not None:
+        touching[net.anchor_nodes[np.asarray(anchors_on_seabed, bool)]] = 1.0
     per_element = net.el_length * 0.5 * (touching[net.el_i] + touching[net.el_j])
     out = np.zeros(len(net.cable_names))
     for c, first in enumerate(net.cable_first_element):
@@ -59,6 +66,25 @@ def attitudes(net, x) -> np.ndarray:
     out = np.zeros((len(net.body_names), 3))
     for r, name in enumerate(net.rigid.names):
         out[net.body_names.index(name)] = x[net.rigid.rot_node[r]]
+    return out
+
+
+def anchor_forces(net, F, normal_force, on_seabed, friction: float = 0.0) -> np.ndarray:
+    """Force of the lines on each anchor (n_anchor, 3) [N] (module docstring); ``on_seabed``
+    (n_anchor,) whether each anchor lies on the seabed; ``friction`` the axial coefficient, which
+    on a resting half element also relieves the anchor of up to ``mu w L0 / 2`` of horizontal pull."""
+    out = F[net.anchor_nodes].reshape(-1, 3).copy()
+    for a, node in enumerate(net.anchor_nodes):
+        if not on_seabed[a]:
+            continue
+        for ends, others in ((net.el_i, net.el_j), (net.el_j, net.el_i)):
+            for k in np.flatnonzero(ends == node):
+                if normal_force[others[k]] > 0.0:
+                    half = 0.5 * net.el_weight[k] * net.el_length[k]
+                    out[a, 2] += half
+                    pull = np.hypot(out[a, 0], out[a, 1])
+                    if pull > 0.0:
+                        out[a, :2] *= max(pull - friction * half, 0.0) / pull
     return out
 
 

@@ -298,16 +298,16 @@ def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> N
 
 
 def sagged_line(p0, p1, length: float, segments: int, s=None) -> np.ndarray:
-    """Nodes of a cable between ``p0`` and ``p1``: straight when the chord is longer than
-    ``GUESS_STRETCH`` times ``length``, else a parabola sagging downward whose polyline is
+    """Nodes of a cable between ``p0`` and ``p1``: straight when the chord is as long as the
+    cable, else a parabola sagging downward whose polyline is
     that long (elements taut, so the equilibrium's tangent is regular from the start).
     ``s`` (segments + 1,) places the nodes at those fractions of the length (default even)."""
     xi = (np.linspace(0.0, 1.0, segments + 1) if s is None else np.asarray(s) / length)[:, None]
     chord = p1 - p0
     straight = p0 + chord * xi
     target = GUESS_STRETCH * length
-    if np.linalg.norm(chord) >= target:
-        return straight
+    if np.linalg.norm(chord) >= target or np.linalg.norm(chord) >= length * (1.0 - 1e-12):
+        return straight                               # taut, or laid out straight as given
     down = np.array([0.0, 0.0, -1.0]) - chord * (-chord[2]) / max(chord @ chord, 1e-300)
     if np.linalg.norm(down) < 1e-9:                  # vertical chord: bow sideways
         down = np.array([1.0, 0.0, 0.0])

@@ -38,7 +38,7 @@ from kanat.jit import inner, kernel
 from kanat.physics.seabed import PlaneSeabed
 
 SLIP_VELOCITY = 1.0e-3      # m/s, v_s of eqs. (3)-(4)
-SLIP_DISPLACEMENT = 1.0e-5  # m, u_s of the equilibrium's friction
+SLIP_DISPLACEMENT = 1.0e-4  # m, u_s of the equilibrium's friction
 PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
 PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
 
