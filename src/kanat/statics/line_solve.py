@@ -35,6 +35,7 @@ STEP_TOLERANCE = 1e-13        # relative Newton step at which the iteration has 
 POSITION_TOLERANCE = 1e-9     # accepted end-position error, in line lengths
 VERTICAL_SPAN = 1e-12         # spans below this many line lengths are vertical lines
 TAUT_GUESS_LAMBDA = 0.2       # Peyrot & Goulois' catenary parameter for a taut line
+SLACK_STIFFNESS = 0.01        # horizontal stiffness of a slack line, per N/m of its mean weight (MoorPy's)
 
 
 @dataclass(frozen=True)
@@ -52,6 +53,10 @@ class LineSolution:
     slack : bool
         True when the line lies slack on the seabed (``H = 0``).
     iterations : int
+    slack_stiffness : float
+        Horizontal stiffness given to a line without any (slack on the seabed, or hanging
+        vertically through a fold) [N/m]: MoorPy's ``0.01 w``, so that a node held by slack
+        lines only still moves under a horizontal load.
     """
 
     horizontal_tension: float
@@ -59,13 +64,14 @@ class LineSolution:
     evaluation: LineEvaluation
     slack: bool = False
     iterations: int = 0
+    slack_stiffness: float = 0.0
 
     @property
     def stiffness(self) -> np.ndarray:
         """``d(H, V_B)/d(span, rise)`` [N/m], shape (2, 2)."""
         J = self.evaluation.jacobian
         if self.slack or not np.all(np.isfinite(J)):
-            return np.array([[0.0, 0.0], [0.0, 1.0 / J[1, 1] if J[1, 1] > 0 else 0.0]])
+            return np.array([[self.slack_stiffness, 0.0], [0.0, 1.0 / J[1, 1] if J[1, 1] > 0 else 0.0]])
         return np.linalg.inv(J)
 
     @property
@@ -91,6 +97,7 @@ def initial_guess(span: float, rise: float, pieces: Pieces):
     heavy one mirrored in ``z``, and ``V_B`` follows from whichever end is the upper one.
     """
     L, w, EA, sign = _equivalent(pieces)
+    span = max(span, VERTICAL_SPAN * L)
     up = sign * rise                                   # rise of B in the mirrored, heavy line
     chord = math.hypot(span, rise)
     lam = TAUT_GUESS_LAMBDA if chord >= L else math.sqrt(3.0 * ((L * L - rise * rise) / (span * span) - 1.0))
@@ -239,7 +246,8 @@ def _lying(span, rise, pieces: Pieces, ground: Ground) -> LineSolution:
                      + c * abs(pieces.total_weight) + 1.0, xtol=1e-12, rtol=1e-15)
         slope = stretch(T_B)[1]
     H, VB = T_B * ground.cos, T_B * ground.sin
-    jacobian = np.array([[slope, 0.0], [ground.slope * slope, 1.0 / max(pieces.weight[-1], 1e-300)]])
+    jacobian = np.array([[slope, 0.0], [ground.slope * slope if ground.slope else 0.0,
+                                         1.0 / max(pieces.weight[-1], 1e-300)]])
     T_A = _anchor_tension_lying(T_B, pieces, c)
     ev = LineEvaluation(span, rise, jacobian, np.array([T_A * ground.cos, T_A * ground.sin]),
                         np.zeros((2, 2)), pieces.total_length)
@@ -256,6 +264,16 @@ def _anchor_tension_lying(T, pieces: Pieces, c: float) -> float:
 
 def solve_line(span: float, rise: float, pieces: Pieces, ground: Ground | None = None,
                start: tuple[float, float] | None = None) -> LineSolution:
+    """End tensions of a line whose end B is at ``(span, rise)`` from end A (:func:`_solve`),
+    with the slack stiffness of module SLACK_STIFFNESS."""
+    solution = _solve(span, rise, pieces, ground, start)
+    kx = SLACK_STIFFNESS * float(np.dot(np.abs(pieces.weight), pieces.length)) / pieces.total_length
+    return LineSolution(solution.horizontal_tension, solution.vertical_tension, solution.evaluation,
+                        solution.slack, solution.iterations, kx)
+
+
+def _solve(span: float, rise: float, pieces: Pieces, ground: Ground | None,
+           start: tuple[float, float] | None) -> LineSolution:
     """End tensions of a line whose end B is at ``(span, rise)`` from end A.
 
     Parameters

@@ -21,9 +21,12 @@ horizontal projection across the line, the end stiffness is (MoorPy's ``getStiff
 
     (3)  -df_B/dr_B = K_hh e_h e_h^T + K_hv e_h e_z^T + K_vh e_z e_h^T + K_vv e_z e_z^T + H/span P
 
-Newton's method on (1)-(2) with this exact Jacobian, each step capped at a quarter of the
-shortest line at a node and 0.2 rad, is halved until the scaled residual falls. If that
-fails from the first guess, the loads are continued (a Newton homotopy): with ``R_0`` the
+Newton's method on (1)-(2) with this exact Jacobian runs in a trust region (at most a
+quarter of the longest line at a node and 0.2 rad per step, shrunk fourfold until the
+scaled residual falls), its step bent from Newton's towards the nodes' own forces
+(Levenberg-Marquardt) where the region is small or slack lines leave the Jacobian singular.
+If that fails from the first guess, a pseudo-transient continuation (:func:`_relax`) tries
+from the same guess, and then the loads are continued (a Newton homotopy): with ``R_0`` the
 residual at the guess, ``R(q) = (1 - lambda) R_0`` is solved for ``lambda`` rising from 0
 (the guess itself) to 1 in adaptive steps, each from the previous solution.
 """
@@ -43,13 +46,17 @@ __all__ = ["LineState", "NetworkSolution", "solve_network"]
 
 MAX_ITERATIONS = 60           # Newton iterations from the first guess
 STAGE_ITERATIONS = 20         # per continuation stage
-MAX_HALVINGS = 10
-STEP_FRACTION = 0.25          # largest node move per iteration, in lengths of its shortest line
+RELAX_ITERATIONS = 150        # pseudo-transient continuation, where Newton's method stalls
+MAX_SHRINKS = 20              # trust-region reductions (by 4) before a Newton iteration gives up
+MAX_REGULARIZATIONS = 30      # tenfold increases of the Levenberg-Marquardt parameter
+STEP_FRACTION = 0.25          # largest node move per iteration, in lengths of its longest line
 MAX_TURN = 0.2                # largest body rotation per iteration [rad]
 FORCE_TOLERANCE = 1e-9        # of the network's load scale
 ROUNDOFF = 1e-12              # force round-off allowance, per newton of the stiffest EA
 FIRST_STAGE, MIN_STAGE = 0.25, 1e-4
 VERTICAL = 1e-9               # spans below this many line lengths: the line is vertical
+MAX_CONDITION = 1e12          # a Jacobian worse conditioned than this gets a regularized step
+REGULARIZATION = 1e-8         # Levenberg-Marquardt diagonal, relative to the Jacobian's own
 
 
 def skew(v) -> np.ndarray:
@@ -256,56 +263,119 @@ def _scales(problem: NetworkProblem):
 
 
 def _caps(problem: NetworkProblem) -> np.ndarray:
-    """Largest change of each unknown per Newton step."""
-    shortest = np.full(len(problem.nodes), np.inf)
+    """Largest change of each unknown per Newton step: a quarter of the longest line at the
+    node (a short link does not hold back the lines beyond it), MAX_TURN for a rotation."""
+    longest = np.zeros(len(problem.nodes))
     for line in problem.lines:
         for end in line.ends:
             if end.node >= 0:
-                shortest[end.node] = min(shortest[end.node], line.pieces.total_length)
+                longest[end.node] = max(longest[end.node], line.pieces.total_length)
     return np.array([value for n, node in enumerate(problem.nodes)
-                     for value in [STEP_FRACTION * shortest[n]] * 3 + [MAX_TURN] * (node.dof - 3)])
+                     for value in [STEP_FRACTION * longest[n]] * 3 + [MAX_TURN] * (node.dof - 3)])
 
 
-def _step(J, R):
+def _step(J, R, limit):
+    """The Newton step ``J dq = -R`` where it is within ``limit`` (per unknown), else the
+    Levenberg-Marquardt step ``(J - mu D) dq = -R``, ``D`` the diagonal of ``|J|``, with ``mu``
+    raised tenfold from REGULARIZATION until it is: from Newton's direction towards each
+    node's own force, as the trust region shrinks (and where slack lines leave ``J``
+    singular)."""
     try:
-        dq = np.linalg.solve(J, -R)
-        if np.all(np.isfinite(dq)):
-            return dq
+        if np.linalg.cond(J) < MAX_CONDITION:
+            dq = np.linalg.solve(J, -R)
+            if np.all(np.abs(dq) <= limit):
+                return dq
     except np.linalg.LinAlgError:
         pass
-    return np.linalg.lstsq(J, -R, rcond=1e-12)[0]
+    diagonal = np.abs(np.diag(J))
+    diagonal = np.maximum(diagonal, np.max(diagonal, initial=0.0) * 1e-12 + 1e-300)
+    mu = REGULARIZATION
+    for _ in range(MAX_REGULARIZATIONS):
+        dq = np.linalg.solve(J - mu * np.diag(diagonal), -R)
+        if np.all(np.abs(dq) <= limit):
+            return dq
+        mu *= 10.0
+    return dq * float(np.min(limit / np.maximum(np.abs(dq), 1e-300)))
+
+
+def _try(problem, q, starts):
+    try:
+        return assemble(problem, q, starts)
+    except SolverError:
+        return None
 
 
 def _newton(problem, q, shift, scale, tolerance, caps, max_iterations, starts=None):
-    """Newton's method on ``R(q) = shift``; returns ``(q, iterations, converged, assembled)``."""
+    """Newton's method on ``R(q) = shift`` in a trust region; returns ``(q, iterations,
+    converged, assembled)``.
+
+    The region starts at the caps; a step that does not lower the scaled residual is
+    retried in a region four times smaller (:func:`_step` bends it from Newton's direction
+    towards the nodes' forces), and the region grows back twofold after a step accepted at
+    once.
+    """
     def merit(values):
         return float(np.sum(((values[0] - shift) / scale) ** 2))
-    try:
-        current = assemble(problem, q, starts)
-    except SolverError:
+    current = _try(problem, q, starts)
+    if current is None:
         return q, 0, False, None
+    radius = 1.0
     for iteration in range(1, max_iterations + 1):
         R = current[0] - shift
         if np.max(np.abs(R) / scale, initial=0.0) <= tolerance:
             return q, iteration - 1, True, current
-        dq = _step(current[1], R)
-        alpha = min(1.0, float(np.min(caps / np.maximum(np.abs(dq), 1e-300))))
         base = merit(current)
-        for _ in range(MAX_HALVINGS):
-            trial_q = q + alpha * dq
-            try:
-                trial = assemble(problem, trial_q, warm_starts(current[3]))
-            except SolverError:
-                alpha *= 0.5
-                continue
-            if merit(trial) < base * (1.0 - 1e-4 * alpha):
+        for attempt in range(MAX_SHRINKS):
+            trial_q = q + _step(current[1], R, radius * caps)
+            trial = _try(problem, trial_q, warm_starts(current[3]))
+            if trial is not None and merit(trial) < base:
+                radius = min(1.0, 2.0 * radius) if attempt == 0 else radius
                 break
-            alpha *= 0.5
+            radius *= 0.25
         else:
             return q, iteration, False, current
         q, current = trial_q, trial
     R = current[0] - shift
     return q, max_iterations, bool(np.max(np.abs(R) / scale, initial=0.0) <= tolerance), current
+
+
+def _relax(problem, q, shift, scale, tolerance, caps, max_iterations):
+    """Pseudo-transient continuation of ``R(q) = shift`` (Kelley & Keyes 1998, SIAM J. Numer.
+    Anal. 35, 508; the lumped model's equilibrium): ``(J - D/dtau) dq = -R`` with ``D`` a
+    pseudo-mass of the network's load scale per node (so that nodes joined by a stiff link
+    move together), ``dtau`` growing as the residual falls (switched evolution relaxation)
+    until the step is Newton's. A step may raise the residual up to tenfold, so it passes
+    where a line snaps taut; returns ``(q, iterations, converged, assembled)``."""
+    current = _try(problem, q, None)
+    if current is None:
+        return q, 0, False, None
+    mass = np.diag(scale**2 / scale[0])         # F per m of pseudo-time; F lever^2 for a turn (scale F lever)
+    dtau = 1.0                                               # m: a node moves about dtau R/F at first
+    for iteration in range(1, max_iterations + 1):
+        R = current[0] - shift
+        size = np.max(np.abs(R) / scale, initial=0.0)
+        if size <= tolerance:
+            return q, iteration - 1, True, current
+        dq = np.linalg.solve(current[1] - mass / dtau, -R)
+        dq *= min(1.0, float(np.min(caps / np.maximum(np.abs(dq), 1e-300))))
+        trial = _try(problem, q + dq, warm_starts(current[3]))
+        new = np.max(np.abs(trial[0] - shift) / scale, initial=0.0) if trial is not None else np.inf
+        if not new <= 10.0 * size:
+            dtau *= 0.25
+            continue
+        dtau *= min(max(size / max(new, 1e-300), 0.5), 10.0)
+        q, current = q + dq, trial
+    R = current[0] - shift
+    return q, max_iterations, bool(np.max(np.abs(R) / scale, initial=0.0) <= tolerance), current
+
+
+def _solve_stage(problem, q, shift, scale, tolerance, caps, max_iterations):
+    """Newton's method in its trust region, else pseudo-transient continuation from ``q``."""
+    found = _newton(problem, q, shift, scale, tolerance, caps, max_iterations)
+    if found[2]:
+        return found
+    relaxed = _relax(problem, q, shift, scale, tolerance, caps, RELAX_ITERATIONS)
+    return relaxed[0], found[1] + relaxed[1], relaxed[2], relaxed[3]
 
 
 def warm_starts(states) -> list[tuple[float, float]]:
@@ -323,7 +393,7 @@ def solve_network(problem: NetworkProblem, q0: np.ndarray) -> NetworkSolution:
     """
     scale, tolerance = _scales(problem)
     caps = _caps(problem)
-    q, iterations, ok, done = _newton(problem, q0, 0.0, scale, tolerance, caps, MAX_ITERATIONS)
+    q, iterations, ok, done = _solve_stage(problem, q0, 0.0, scale, tolerance, caps, MAX_ITERATIONS)
     stages = 0
     if not ok:
         q, iterations, stages, done = _continuation(problem, q0, scale, tolerance, caps)

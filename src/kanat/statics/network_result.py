@@ -1,17 +1,19 @@
 """Network statics of a case: the first guess, the solve, and the result (positions and
 tensions at every node, forces on anchors and bodies, grounded lengths, stiffness).
 
-The first guess needs no ``position`` hints for ordinary moorings: unknown nodes start at
-the mean of their neighbours (fixed ends and other nodes, 100 sweeps), a buoyant node half
-its shortest line higher and a sinking one a tenth lower (kept between the seabed and the
-surface), and every line is then shortened to 95 % of its length where its chord is
-longer. Given positions and attitudes are kept.
+The first guess needs no ``position`` hints for ordinary moorings: unknown nodes start
+where springs of stiffness 1/length along the lines would hold them between the fixed ends
+(100 Gauss-Seidel sweeps: nodes spaced along a chain of lines in proportion to their
+lengths), a buoyant node half its shortest line higher and a sinking one a tenth lower
+(kept between the seabed and the surface), and every line whose chord is longer than 95 %
+of its length is then shortened to that. Given positions and attitudes are kept.
 
 The mooring stiffness at a node is ``-dR_lines/dq`` of the lines on that node with every
 other free node re-balanced (static condensation of the full tangent, analytic, module
-eq. 3 of :mod:`kanat.statics.network`): 6x6 at a rigid body about its reference point, in
-its roll, pitch, yaw; 3x3 at a point and at a point body (MoorPy's ``getStiffnessA`` and
-``getCoupledStiffnessA``).
+eq. 3 of :mod:`kanat.statics.network`): 6x6 at a rigid body about its reference point, per
+metre of translation and per radian of small rotation about the global axes (the roll,
+pitch, yaw columns turned by the angular-rate matrix of the body's attitude); 3x3 at a
+point and at a point body (MoorPy's ``getStiffnessA`` and ``getCoupledStiffnessA``).
 """
 from __future__ import annotations
 
@@ -30,6 +32,7 @@ __all__ = ["NetworkCable", "NetworkResult", "first_guess", "solve_network_case"]
 SMOOTHING_SWEEPS = 100
 LIFT_FRACTION, SINK_FRACTION = 0.5, 0.1     # of the shortest line at the node
 CHORD_FRACTION = 0.95                        # longest first-guess chord, in line lengths
+SHORTEN_SWEEPS = 1000                        # at most this many passes over the lines to shorten them
 CLEARANCE = 0.02                             # of the depth: guesses stay this far off seabed and surface
 SEABED_TOLERANCE = 1e-6                      # of the depth: deeper nodes are below the seabed
 
@@ -149,9 +152,11 @@ def first_guess(problem: NetworkProblem) -> np.ndarray:
     pos = [node.position.copy() if node.position is not None else centre.copy() for node in nodes]
     free = [n for n, node in enumerate(nodes) if node.position is None]
     near = _neighbours(problem)
-    for _ in range(SMOOTHING_SWEEPS if free else 0):
+    for _ in range(SMOOTHING_SWEEPS if free else 0):         # springs of stiffness 1/length
         for n in free:
-            pos[n] = np.mean([other.point if other.node < 0 else pos[other.node] for other, _ in near[n]], axis=0)
+            weights = np.array([1.0 / length for _, length in near[n]])
+            places = np.array([other.point if other.node < 0 else pos[other.node] for other, _ in near[n]])
+            pos[n] = weights @ places / weights.sum()
     depth = problem.seabed.depth if problem.seabed is not None else max(-c[2] for c in [centre, *fixed])
     for n in free:
         reach = min(length for _, length in near[n])
@@ -159,25 +164,33 @@ def first_guess(problem: NetworkProblem) -> np.ndarray:
         z = pos[n][2] + (LIFT_FRACTION if lift > 0 else -SINK_FRACTION) * reach
         floor = (problem.seabed.height(pos[n][0], pos[n][1]) if problem.seabed is not None else -np.inf)
         pos[n][2] = min(max(z, floor + CLEARANCE * depth), -CLEARANCE * depth)
-    for _ in range(10):
-        for line in problem.lines:
-            _shorten(line, pos, free)
+    for _ in range(SHORTEN_SWEEPS):
+        if not any([_shorten(line, pos, free) for line in problem.lines]):
+            break
     return np.concatenate([np.concatenate([pos[n], node.orientation]) if node.dof == 6 else pos[n]
                            for n, node in enumerate(nodes)]) if nodes else np.zeros(0)
 
 
-def _shorten(line, pos, free) -> None:
-    """Pull a guessed end towards the other end until the chord is CHORD_FRACTION of the line."""
+def _shorten(line, pos, free) -> bool:
+    """Pull the guessed ends of a line together until its chord is CHORD_FRACTION of its length
+    (both by half the excess when both are guessed); True if it moved them."""
     a, b = line.ends
-    for mine, other in ((b, a), (a, b)):
-        if mine.node in free:
-            far = other.point if other.node < 0 else pos[other.node]
-            chord = pos[mine.node] - far
-            length = np.linalg.norm(chord)
-            limit = CHORD_FRACTION * line.pieces.total_length
-            if length > limit:
-                pos[mine.node] = far + chord * (limit / length)
-            return
+    moving = [end for end in (a, b) if end.node in free]
+    if not moving:
+        return False
+    where = [end.point if end.node < 0 else pos[end.node] for end in (a, b)]
+    chord = where[1] - where[0]
+    length = np.linalg.norm(chord)
+    excess = length - CHORD_FRACTION * line.pieces.total_length
+    if excess <= 1e-6 * line.pieces.total_length:
+        return False
+    unit = chord / length
+    share = excess / len(moving)
+    if a.node in free:
+        pos[a.node] = pos[a.node] + share * unit
+    if b.node in free:
+        pos[b.node] = pos[b.node] - share * unit
+    return True
 
 
 # --------------------------------------------------------------------------- the result
@@ -245,8 +258,20 @@ def condensed_stiffness(solution: NetworkSolution) -> dict:
             padded = np.zeros((6, 6))
             padded[:3, :3] = K
             K = padded
+        elif node.dof == 6:                      # per small rotation about the global axes
+            turn = np.eye(6)
+            turn[3:, 3:] = np.linalg.inv(_angular_rates(solution.q[i[3:]]))
+            K = K @ turn
         out[node.name] = K
     return out
+
+
+def _angular_rates(angles) -> np.ndarray:
+    """``T`` with ``omega = T d(roll, pitch, yaw)`` for ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the
+    small global rotation made by small changes of the three angles (identity at zero)."""
+    _, pitch, yaw = angles
+    cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
+    return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
 
 def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
