@@ -296,6 +296,26 @@ def test_the_lumped_equilibrium_converges_to_network_statics_at_second_order():
         assert 3.5 < coarse / fine < 4.5
 
 
+def test_the_lumped_equilibrium_on_the_seabed_converges_to_network_statics():
+    """Three chain legs lying 448 m on the seabed: the lumped equilibrium with seabed contact
+    at 20, 40 and 80 segments per leg approaches network statics' buoy height and fairlead
+    tension at second order."""
+    from kanat.lumped.equilibrium import equilibrium
+    from kanat.lumped.network import build_network
+
+    text = (DATA / "network" / "buoy_3leg_seabed.yaml").read_text()
+    exact = solve_statics(load(text))
+    errors = []
+    for segments in (20, 40, 80):
+        case = load(text.replace("segments: 40", f"segments: {segments}"))
+        net = build_network(case)
+        x, _ = equilibrium(net, case)
+        errors.append(abs(x[net.body_node[0]][2] - exact.bodies["buoy"][2]))
+    assert errors[-1] < 0.03                                   # m, of a 104 m rise
+    for coarse, fine in zip(errors, errors[1:]):
+        assert 3.5 < coarse / fine < 4.5
+
+
 def test_a_network_in_a_current_goes_to_the_lumped_equilibrium():
     """The catenary carries no drag: the front door solves the lumped model's equilibrium, and
     the lines hold the buoy against its buoyancy and drag exactly."""
