@@ -337,7 +337,7 @@ def test_a_network_in_a_current_goes_to_the_lumped_equilibrium():
 
 def test_statics_refuses_what_the_table_says():
     """A network in a current over a seabed, which the lumped equilibrium cannot take yet, and
-    bending stiffness: errors at their keys, from the support table and the solver alike."""
+    a nonlinear elastic law: errors at their keys, from the support table and the solver alike."""
     from kanat.model import Case
 
     data = yaml.safe_load((DATA / "moorpy" / "buoy_two_line_types_clumps.yaml").read_text())
@@ -348,12 +348,12 @@ def test_statics_refuses_what_the_table_says():
     with pytest.raises(CaseError, match="lumped model's equilibrium"):
         solve_statics(case)
     del data["environment"]["current"]
-    data["line_types"]["wire"]["bending_stiffness"] = 1e3
-    stiff = Case.model_validate(data)
-    assert [p.key for p in unsupported(stiff, "statics") if p.severity == "error"] == \
-        ["line_types.wire.bending_stiffness"]
-    with pytest.raises(CaseError, match="bending stiffness"):
-        solve_statics(stiff)
+    data["line_types"]["wire"]["elastic_law"] = {"polynomial": [4.0e8, 1.0e9]}
+    nonlinear = Case.model_validate(data)
+    assert [p.key for p in unsupported(nonlinear, "statics") if p.severity == "error"] == \
+        ["line_types.wire.elastic_law"]
+    with pytest.raises(CaseError, match="nonlinear elastic law"):
+        solve_statics(nonlinear)
 
 
 def test_a_line_touching_down_between_suspended_ends_is_refused():

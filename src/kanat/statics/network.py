@@ -59,6 +59,11 @@ MAX_CONDITION = 1e12          # a Jacobian worse conditioned than this gets a re
 REGULARIZATION = 1e-8         # Levenberg-Marquardt diagonal, relative to the Jacobian's own
 
 
+def cross(a, b) -> np.ndarray:
+    """``a x b`` of two 3-vectors (numpy's cross is slow on small arrays)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
 def skew(v) -> np.ndarray:
     """``S(v)`` with ``S(v) x = v x x``."""
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
@@ -195,11 +200,11 @@ def _own_loads(problem: NetworkProblem, q, R, J) -> None:
         weight, buoyancy = -node.weight * up, node.buoyancy * up
         turned = node.orientation if node.fixed_levers else q[i + 3:i + 6]
         rot, d_rot = fairlead_rotation(turned)
-        R[i + 3:i + 6] += np.cross(rot @ node.cog, weight) + np.cross(rot @ node.cob, buoyancy)
+        R[i + 3:i + 6] += cross(rot @ node.cog, weight) + cross(rot @ node.cob, buoyancy)
         if not node.fixed_levers:
             for k in range(3):
-                J[i + 3:i + 6, i + 3 + k] += (np.cross(d_rot[k] @ node.cog, weight)
-                                               + np.cross(d_rot[k] @ node.cob, buoyancy))
+                J[i + 3:i + 6, i + 3 + k] += (cross(d_rot[k] @ node.cog, weight)
+                                               + cross(d_rot[k] @ node.cob, buoyancy))
 
 
 def assemble(problem: NetworkProblem, q, starts=None):
@@ -230,7 +235,7 @@ def assemble(problem: NetworkProblem, q, starts=None):
             R[row:row + 3] += f
             lever = kin[i][0] - q[row:row + 3]
             if node.dof == 6:
-                R[row + 3:row + 6] += np.cross(lever, f)
+                R[row + 3:row + 6] += cross(lever, f)
             for j, other in enumerate(line.ends):
                 if other.node < 0:
                     continue

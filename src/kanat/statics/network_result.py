@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
-from kanat.statics.network import NetworkSolution, solve_network
+from kanat.statics.network import NetworkSolution, cross, solve_network
 from kanat.statics.network_setup import NetworkProblem, network_problem
 from kanat.statics.piecewise import sample
 
@@ -291,7 +291,7 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
                 start = problem.offsets[end.node]
                 lever = cables[line.name].position[0 if i == 0 else -1] - q[start:start + 3]
                 forces[node.name] += f
-                moments[node.name] += np.cross(lever, f)
+                moments[node.name] += cross(lever, f)
             elif end.kind == "anchor":
                 anchors[f"{line.name}.{label}"] = f + np.array([0.0, 0.0, -end.load])
     notes = []

@@ -404,13 +404,32 @@ def sample(s, H, VB, pieces: Pieces, ground: Ground | None = None):
             continue
         V0 = bottom[k] + pieces.weight[k] * (lo - starts[k])
         w, EA = pieces.weight[k], pieces.stiffness[k]
-        for i in np.flatnonzero((s >= lo) & (s <= ends[k]) & ((s > touchdown) | (touchdown == 0.0))):
-            dx, dz, _ = suspended_piece(H, V0, s[i] - lo, w, EA)
-            V = V0 + w * (s[i] - lo)
-            out[0][i], out[1][i], out[2][i], out[3][i] = base[0] + dx, base[1] + dz, math.hypot(H, V), V
+        here = np.flatnonzero((s >= lo) & (s <= ends[k]) & ((s > touchdown) | (touchdown == 0.0)))
+        if len(here):
+            dx, dz, V = _offsets(s[here] - lo, H, V0, w, EA)
+            out[0][here], out[1][here], out[2][here], out[3][here] = base[0] + dx, base[1] + dz, np.hypot(H, V), V
         dx, dz, _ = suspended_piece(H, V0, ends[k] - lo, w, EA)
         base = (base[0] + dx, base[1] + dz)
     return tuple(out)
+
+
+def _offsets(l, H, V0, w, EA):
+    """Eqs. (1)-(2) at many lengths ``l`` of one piece (vectorized :func:`suspended_piece`)."""
+    V1 = V0 + w * l
+    if H == 0.0:
+        return (np.zeros_like(l), np.array([suspended_piece(0.0, V0, x, w, EA)[1] for x in l]), V1)
+    T0, T1 = math.hypot(H, V0), np.hypot(H, V1)
+    dz = l * (V0 + V1) / (T0 + T1) + l * (V0 + V1) / (2.0 * EA)
+    one_sign = (V0 >= 0.0) & (V1 >= 0.0) | (V0 <= 0.0) & (V1 <= 0.0)
+    D = V1 * T0 + V0 * T1
+    safe = one_sign & (D != 0.0)
+    ratio = np.where(safe, (V0 + V1) / np.where(safe, D, 1.0), 1.0 / H)
+    y = w * l * ratio
+    small = np.abs(y) < SERIES_LIMIT
+    asinhc = np.where(small, 1.0 - y * y / 6.0, np.arcsinh(y) / np.where(small, 1.0, y))
+    folded = (np.arcsinh(V1 / H) - math.asinh(V0 / H)) / (w if w != 0.0 else 1.0)
+    per_h = np.where(one_sign, l * ratio * asinhc, folded)
+    return H * per_h + H * l / EA, dz, V1
 
 
 def _sample_ground(s, H, pieces, ground, k, touchdown, at_joint, below, out):
