@@ -172,10 +172,10 @@ def seabed_force(vx, vz, rx, rz, p):
     n0, n1 = p[SB_N0], p[SB_N1]
     depth = p[SB_C0] - (n0 * (rx + p[PRED] * vx) + n1 * (rz + p[PRED] * vz))
     zero = 0.0 * vx
-    if depth.real <= 0.0:
+    if depth.real < 0.0:
         return zero, zero
     normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vx + n1 * vz))
-    if normal.real <= 0.0:
+    if normal.real < 0.0:
         return zero, zero
     friction = -p[SB_MUA] * normal * smooth_sign((n1 * vx - n0 * vz) / FRICTION_SPEED)
     return normal * n0 + friction * n1, normal * n1 - friction * n0
@@ -187,10 +187,10 @@ def seabed_force_jacobian(vx, vz, rx, rz, p, g):
     g[0, 0] = g[0, 1] = g[1, 0] = g[1, 1] = 0.0
     n0, n1 = p[SB_N0], p[SB_N1]
     depth = p[SB_C0] - (n0 * (rx + p[PRED] * vx) + n1 * (rz + p[PRED] * vz))
-    if depth <= 0.0:
+    if depth < 0.0:
         return 0.0, 0.0
     normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vx + n1 * vz))
-    if normal <= 0.0:
+    if normal < 0.0:
         return 0.0, 0.0
     stiff = -p[DIAM] * (p[SB_K] * p[PRED] + p[SB_C])          # dN/dV = stiff n_b
     th = np.tanh((n1 * vx - n0 * vz) / FRICTION_SPEED)

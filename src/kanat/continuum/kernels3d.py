@@ -226,10 +226,10 @@ def seabed_force3(vel, rp, axis, p):
     out = (zero, zero, zero)
     depth = p[SB_C0] - (n0 * (rp[0] + p[PRED] * vel[0]) + n1 * (rp[1] + p[PRED] * vel[1])
                         + n2 * (rp[2] + p[PRED] * vel[2]))
-    if depth.real <= 0.0:
+    if depth.real < 0.0:
         return out
     normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vel[0] + n1 * vel[1] + n2 * vel[2]))
-    if normal.real <= 0.0:
+    if normal.real < 0.0:
         return out
     a0, a1, a2 = axis[0], axis[1], axis[2]
     l0, l1, l2 = n1 * a2 - n2 * a1, n2 * a0 - n0 * a2, n0 * a1 - n1 * a0
@@ -251,10 +251,10 @@ def seabed_force3_jacobian(vel, rp, axis, p, force, g):
     for i in range(3):
         depth -= n[i] * (rp[i] + p[PRED] * vel[i])
         rate += n[i] * vel[i]
-    if depth <= 0.0:
+    if depth < 0.0:
         return
     normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * rate)
-    if normal <= 0.0:
+    if normal < 0.0:
         return
     stiff = -p[DIAM] * (p[SB_K] * p[PRED] + p[SB_C])          # dN/dV = stiff n
     lat = np.empty(3)

@@ -35,6 +35,10 @@ from kanat.statics.setup import cable_problems
 from kanat.vessel.track import VesselTrack
 
 
+STEADY_PASSES = 4
+"""Steady solves at most, each with the current (and the seabed) at the previous solve's node positions."""
+
+
 def needs_spatial_statics(case) -> bool:
     """True when the planar statics cannot give the cable's shape (module docstring)."""
     cable, env = case.cables[0], case.environment
@@ -126,9 +130,14 @@ class PlanarModel:
         v0, phi = drive.velocities(0.0)[0], np.unwrap(static.angle)     # continuous through +-pi
         guess = np.column_stack([static.tension, v0[0] * np.cos(phi) + v0[1] * np.sin(phi),
                                  -v0[0] * np.sin(phi) + v0[1] * np.cos(phi), phi])
-        guess = bending_guess(cable, guess)
-        y = steady(cable, guess, drive.velocities(0.0), np.column_stack([static.x, static.z]))
-        return State(0.0, y, np.zeros_like(y), positions(cable, y, drive.origin(0.0)))
+        y = bending_guess(cable, guess)
+        xz = np.column_stack([static.x, static.z])
+        for _ in range(STEADY_PASSES):               # the current is taken at the steady state's own nodes
+            y = steady(cable, y, drive.velocities(0.0), xz)
+            moved, xz = xz, positions(cable, y, drive.origin(0.0))
+            if np.max(np.abs(moved - xz)) <= 1e-10 * cable.length:
+                break
+        return State(0.0, y, np.zeros_like(y), xz)
 
     def step(self, state, dt, coefficients):
         return step(self.cable, state, dt, coefficients, self.drive)
@@ -206,8 +215,13 @@ class SpatialModel:
         t, n, b = frames(guess, chart)
         v0 = self.velocities(0.0)[0]
         guess[:, 1:4] = np.column_stack([t @ v0, n @ v0, b @ v0])
-        y = steady3(cable, guess, chart, self.velocities(0.0), static.position)
-        return SpatialState(0.0, y, np.zeros_like(y), positions3(cable, y, chart, self.origin(0.0)), chart)
+        y, xyz = guess, static.position
+        for _ in range(STEADY_PASSES):               # the current is taken at the steady state's own nodes
+            y = steady3(cable, y, chart, self.velocities(0.0), xyz)
+            moved, xyz = xyz, positions3(cable, y, chart, self.origin(0.0))
+            if np.max(np.abs(moved - xyz)) <= 1e-10 * cable.length:
+                break
+        return SpatialState(0.0, y, np.zeros_like(y), xyz, chart)
 
     def step(self, state, dt, coefficients):
         return step3(self.cable, state, dt, coefficients, self)

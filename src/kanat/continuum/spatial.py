@@ -184,7 +184,8 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
     up = chart.T @ UP
     env = spatial_water(cable, xyz, np.zeros_like(xyz), frames(guess, chart)[0], 0.0, 0.0, (0.0, 0.0, 1.0), chart,
                         waves=False)
-    if cable.seabed is None and cable.end.waterplane == 0.0:
+    anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
+    if cable.seabed is None and cable.end.waterplane == 0.0 and not anchored:
         x, _ = _solve(cable, guess, guess, np.zeros_like(guess), env, up, P, b0, b1)
         return x
     from kanat.continuum.steady import steady_with_positions
@@ -218,5 +219,6 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
                 a[i + 1, c, 6 * node + 4] = half * stretch * nn[node, c]
                 a[i + 1, c, 6 * node + 5] = -half * stretch * cp[node] * b[node, c]
         return np.cumsum(a, axis=0)
+    target = np.asarray(cable.end.position, dtype=float) @ chart if anchored else None
     return steady_with_positions(guess, layout, tuple(range(k3.RX3, k3.RX3 + 3)), residual, derivative,
-                                 spatial_scales(cable, guess), (4, 5), k3.UPPER)
+                                 spatial_scales(cable, guess), (4, 5), k3.UPPER, target)

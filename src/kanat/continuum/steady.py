@@ -9,8 +9,9 @@ uses the full Jacobian
     J = J_band + (dR/dr) (dr/dx)
 
 with ``J_band`` the kernels' banded Jacobian at frozen positions, ``dR/dr`` the residual's
-derivative by the positions in the nodal data (finite differences, nodes of one parity at a
-time: an interval's rows see one node of each parity), and ``dr/dx`` the positions' exact
+derivative by the positions in the nodal data (one-sided finite differences towards lower
+coordinates, into the seabed where contact acts; nodes of one parity at a time: an interval's
+rows see one node of each parity), and ``dr/dx`` the positions' exact
 derivative (dense, lower block-triangular). It runs once per run, from the statics solution,
 and costs a dense solve per iteration (0.1 s at 300 nodes).
 """
@@ -42,15 +43,16 @@ def _position_sensitivity(residual, x, env, res, columns, nv: int) -> np.ndarray
     for c, column in enumerate(columns):
         for parity in range(2):
             shifted = env.copy()
-            shifted[parity::2, column] += POSITION_STEP
-            change = (residual(x, shifted)[0] - res) / POSITION_STEP
+            shifted[parity::2, column] -= POSITION_STEP       # downwards: into the seabed, where contact acts
+            change = (res - residual(x, shifted)[0]) / POSITION_STEP
             for node in range(parity, n, 2):
                 low, high = max(0, half + nv * (node - 1)), min(x.size, half + nv * (node + 1))
                 out[low:high, dim * node + c] = change[low:high]
     return out
 
 
-def steady_with_positions(guess, layout, columns, residual, derivative, scale, angles, width: int) -> np.ndarray:
+def steady_with_positions(guess, layout, columns, residual, derivative, scale, angles, width: int,
+                          target=None) -> np.ndarray:
     """Newton's method on the steady rows with positions tied to the states (module docstring).
 
     Parameters
@@ -70,6 +72,11 @@ def steady_with_positions(guess, layout, columns, residual, derivative, scale, a
         The unknowns that are angles (a step is limited to :data:`MAX_ANGLE_STEP` in them).
     width : int
         Bandwidth of the banded Jacobian.
+    target : ndarray or None
+        The position of a fixed far end (an anchor), in the coordinates of ``layout``'s positions:
+        its velocity rows are replaced by ``r_N(x) = target``. Without them a cable between two
+        fixed points has no steady equation for where it ends (its velocities are zero for any
+        shape), so its steady state would be a family.
     """
     x = guess.copy()
     n, nv = x.shape
@@ -81,7 +88,13 @@ def steady_with_positions(guess, layout, columns, residual, derivative, scale, a
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the steady residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         dense = _band_to_dense(band, width)
-        dense += _position_sensitivity(residual, x, env, res, columns, nv) @ derivative(x).reshape(-1, x.size)
+        drdx = derivative(x)
+        dense += _position_sensitivity(residual, x, env, res, columns, nv) @ drdx.reshape(-1, x.size)
+        if target is not None:
+            rows = slice(x.size - nv // 2, x.size - nv // 2 + len(columns))
+            res = res.copy()
+            res[rows] = (layout(x)[1][-1] - target) * scale[0] / max(np.max(np.abs(target)), 1.0)
+            dense[rows] = drdx[-1] * scale[0] / max(np.max(np.abs(target)), 1.0)
         try:
             dx = np.linalg.solve(dense, -res).reshape(x.shape)
         except np.linalg.LinAlgError:

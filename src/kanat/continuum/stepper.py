@@ -146,7 +146,8 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     rho = P[0, k.RHO]
     b0, b1 = cable.start.array(v0, rho), cable.end.array(v1, rho)
     env = planar_water(cable, xz, np.zeros_like(xz), 0.0, 0.0, (0.0, 0.0, 1.0), waves=False)
-    if cable.seabed is None and cable.end.waterplane == 0.0:
+    anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
+    if cable.seabed is None and cable.end.waterplane == 0.0 and not anchored:
         x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
         return x
     from kanat.continuum.steady import steady_with_positions
@@ -163,8 +164,9 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
         res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
         k.assemble(x, x, np.zeros_like(x), e, P, b0, b1, res, band)
         return res, band
+    target = np.asarray(cable.end.position, dtype=float) if anchored else None
     return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),
-                                 scales(cable, guess), (3,), width)
+                                 scales(cable, guess), (3,), width, target)
 
 
 def planar_position_jacobian(rows):
