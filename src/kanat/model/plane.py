@@ -6,6 +6,8 @@ key) when ``dimensions: 2`` is asked of a case that leaves the plane.
 """
 from __future__ import annotations
 
+import math
+
 from ..errors import Problem
 from .vessel import Heading, Turn
 
@@ -40,6 +42,9 @@ def out_of_plane(case) -> list[Problem]:
                 found.append((f"cables[{index}].{key}", "the anchor is off y = 0"))
     if case.vessel.tow_point[1]:
         found.append(("vessel.tow_point", "the tow point is off y = 0"))
+    waves = case.environment.waves
+    if waves is not None and abs(math.sin(math.radians(waves.heading_deg))) > 1e-9:
+        found.append(("environment.waves.heading_deg", f"the waves travel at {waves.heading_deg:g} deg from +x"))
     for index, segment in enumerate(case.vessel.track):
         if isinstance(segment, (Turn, Heading)):
             found.append((f"vessel.track[{index}]", f"the vessel turns ({segment.KEY})"))
