@@ -22,6 +22,7 @@ from kanat.continuum.models import model_for
 from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
+from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure, Steps
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.results import provenance
@@ -44,11 +45,14 @@ class ContinuumModel:
     case : kanat.model.Case
     scheme : str or ContinuumScheme, optional
         Overrides ``simulation.scheme`` (default ``generalized-alpha``).
+    start_from : kanat.model.Case, optional
+        Start from the steady state of this case instead (the same cable and grid in another
+        current, say): the run is then the response to the change, a current step for one.
     """
 
     name = "continuum"
 
-    def __init__(self, case, scheme=None):
+    def __init__(self, case, scheme=None, start_from=None):
         sim = case.simulation
         if sim.dt is None:
             raise CaseError([Problem("simulation.dt", "the continuum model needs a time step dt [s]")])
@@ -56,6 +60,11 @@ class ContinuumModel:
         self.scheme: ContinuumScheme = get_scheme(scheme or sim.scheme or "generalized-alpha", SCHEMES,
                                                   lambda_inf=sim.lambda_inf, gamma=sim.gamma)
         self.cable_model = model_for(case)
+        self.start_from = None if start_from is None else model_for(start_from)
+        if self.start_from is not None and (self.start_from.dimensions != self.cable_model.dimensions or
+                                            len(self.start_from.cable.s) != len(self.cable_model.cable.s)):
+            raise CaseError([Problem("start_from", "the case to start from must have the same cable, grid and "
+                                     "dimensions as the case run")])
         self.dt, self.output_interval, self.duration = sim.dt, sim.output_interval, sim.duration
         cable = self.cable_model.cable
         self.notes: list[str] = list(cable.grid.notes) if cable.grid is not None else []
@@ -63,7 +72,13 @@ class ContinuumModel:
         self.max_strain = min(case.line_types[name].strain_limit() for name in case.cables[0].line_types)
         self.body = case.cables[0].to.kind == "body"
         self.attached = [name for _, name in cable.grid.junctions] if cable.grid is not None else []
-        self.junction_nodes = [j for j, _ in cable.grid.junctions] if cable.grid is not None else []
+        self.winch = cable.winch
+        self.stations = (material_stations(case, cable.s, cable.winch, self.dt, self.duration)
+                         if cable.winch is not None else None)
+        if cable.winch is not None:
+            self.notes.append(f"winch: the grid grows from the winch (a node every {cable.winch.segment:.4g} m paid "
+                              f"out); s is each node's arclength at t = 0 (negative: still on the drum, where "
+                              "its outputs sit at the winch)")
 
     def _refuse_for_factorized(self) -> None:
         """Seed 000's schemes step the uniform flexible cable of SPEC §2.1–2.2 only."""
@@ -95,13 +110,15 @@ class ContinuumModel:
         attrs = provenance(case, model=self.name, scheme=self.scheme.name, dt=self.dt,
                            dimensions=self.cable_model.dimensions, output_interval=self.output_interval,
                            **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
-        return Layout({"s": (("node",), cable.s), "cable": (("node",), [cable.name] * len(cable.s))},
-                      {"xyz": ("x", "y", "z"), "body": bodies}, TIME_VARIABLES, attrs)
+        s = cable.s if self.stations is None else self.stations
+        names = TIME_VARIABLES + (("winch_tension", "winch_length") if self.winch is not None else ())
+        return Layout({"s": (("node",), s), "cable": (("node",), [cable.name] * len(s))},
+                      {"xyz": ("x", "y", "z"), "body": bodies}, names, attrs)
 
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
         try:
-            return self.cable_model.initial()
+            return (self.start_from or self.cable_model).initial()
         except SolverError as error:
             raise SolverError(
                 f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
@@ -139,9 +156,14 @@ class ContinuumModel:
         new, second = self._step(half, dt / 2, level + 1)
         return new, Steps(1, first.iterations + second.iterations, 1 + first.cuts + second.cuts)
 
+    def _s(self, state) -> np.ndarray:
+        """Arclength of the state's nodes (with a winch: at t = 0)."""
+        s = getattr(state, "s", None)
+        return self.cable_model.cable.s if s is None else s
+
     def _failure(self, failure: NewtonFailure, state) -> str:
         cable = self.cable_model.cable
-        s = cable.s
+        s = self._s(state)
         node = min(max(failure.node, 0), len(s) - 1)
         message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {node} "
                    f"(s = {s[node]:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
@@ -160,13 +182,32 @@ class ContinuumModel:
         track = self.cable_model.track
         vessel = track.state(state.t)
         pitch = track.pitch(state.t)[0] if track.pitch is not None else 0.0
+        rows = self.cable_model.cable.rows() if getattr(state, "rows", None) is None else state.rows
+        junctions = np.flatnonzero(rows[:, k.KIND] == k.JUNCTION)
         ends = values["position"][-1:] if self.body else np.zeros((0, 3))
-        inline = values["position"][self.junction_nodes] if self.junction_nodes else np.zeros((0, 3))
+        inline = values["position"][junctions] if len(junctions) else np.zeros((0, 3))
+        extra = {}
+        if self.winch is not None:
+            extra = {"winch_tension": values["tension"][0], "winch_length": float(np.sum(rows[:, k.DS]))}
+            values = self._on_stations(state, values)
         return {**values, "body_position": np.vstack([ends, inline]), "vessel_position": vessel.position,
-                "vessel_heading": vessel.heading, "vessel_pitch": pitch}
+                "vessel_heading": vessel.heading, "vessel_pitch": pitch, **extra}
+
+    def _on_stations(self, state, values: dict) -> dict:
+        """Nodal outputs on the fixed material stations of a run with a winch (:func:`material_stations`):
+        the nodes in the water at their stations, the others (on the drum) at the winch."""
+        slots = np.searchsorted(self.stations, state.s[1:] - 1e-9 * self.cable_model.cable.length)
+        out = {}
+        for name, array in values.items():
+            full = np.repeat(array[:1], len(self.stations), axis=0)
+            full[slots] = array[1:]
+            out[name] = full
+        return out
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state, values: dict) -> str | None:
+        if self.winch is not None:                           # the checks look at the nodes in the water
+            values = self.cable_model.outputs(state)
         return (self._compression(state, values) or self._strain(state, values)
                 or self._seabed(state, values))
 
@@ -187,7 +228,7 @@ class ContinuumModel:
                     f"beyond the Euler load of one segment ({allowed[low]:.4g} N): the grid no longer resolves the "
                     "buckled line; use more segments")
             return (f"the cable went into compression (T = {tension[low]:.4g} N) at t = {t:.6g} s on cable "
-                    f"'{cable.name}' at node {low} (s = {cable.s[low]:.4g} m), {what}; slack and snapping cables "
+                    f"'{cable.name}' at node {low} (s = {self._s(state)[low]:.4g} m), {what}; slack and snapping cables "
                     "run with model: lumped, or refine the grid (more segments) or soften the manoeuvre")
         return None
 
@@ -203,7 +244,7 @@ class ContinuumModel:
         high = int(np.argmax(strain))
         if strain[high] > self.max_strain:
             return (f"strain {strain[high]:.4g} (tension {max(tension[high], tension[high + 1]):.4g} N) at "
-                    f"t = {state.t:.6g} s on cable '{cable.name}' near node {high} (s = {cable.s[high]:.4g} m) "
+                    f"t = {state.t:.6g} s on cable '{cable.name}' near node {high} (s = {self._s(state)[high]:.4g} m) "
                     f"exceeds the line's limit {self.max_strain:g}; check axial_stiffness and the loads (speeds, "
                     "bodies), or set line_types.<name>.max_strain")
         return None
@@ -213,14 +254,14 @@ class ContinuumModel:
         seabed = cable.seabed
         if seabed is None:
             return None
-        rows = cable.rows()
+        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
         cable_rows = rows[rows[:, k.DS] > 0]
         static = float(np.max(np.abs(cable_rows[:, k.W0]) / (seabed.stiffness * cable_rows[:, k.DIAM])))
         limit = PENETRATION_FACTOR * static + 1e-3
         depth = seabed.penetration(values["position"])
         deep = int(np.argmax(depth))
         if depth[deep] > limit:
-            s = cable.s if len(cable.s) == len(depth) else np.arange(len(depth))
+            s = self._s(state)
             return (f"node {deep} of cable '{cable.name}' (s = {s[deep]:.4g} m) is {depth[deep]:.4g} m below the "
                     f"seabed at t = {state.t:.6g} s, more than {PENETRATION_FACTOR:g} times the contact model's "
                     f"static penetration ({static:.3g} m); it fell through: reduce dt, or raise "

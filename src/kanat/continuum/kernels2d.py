@@ -19,11 +19,13 @@ Nodal loads per unstretched length (f_t, f_n), at the ``[ak]``-weighted state:
   (current plus wave orbital velocity), with the ``sqrt(1 + e)`` factor (SPEC §2.1);
 * :func:`extra_load` -- the fluid inertia of waves (Morison): Froude–Krylov ``rho A a_w`` on the
   whole water acceleration plus ``m_a (a_w . n)`` on its normal part, ``rho A = m - w0/g`` the
-  displaced mass; and seabed contact (MoorDyn's convention): with the penetration
-  ``delta = c0 - n_b . r`` below the plane ``n_b . r = c0``, a normal force per unstretched
-  length ``N = d (k_b delta + c_b delta_dot)`` (``N >= 0``, only where ``delta > 0``) and Coulomb
-  friction ``-mu N tanh(V . s_b / v_s) s_b`` along the seabed (``s_b`` the seabed's slope
-  direction in the x–z plane, ``v_s`` = :data:`FRICTION_SPEED`).
+  displaced mass; and seabed contact, the lumped model's law (:mod:`kanat.physics.contact`,
+  MoorDyn's convention): with the penetration ``delta = c0 - n_b . r`` below the plane
+  ``n_b . r = c0``, a normal force per unstretched length ``N = d (k_b delta + c_b r(delta)
+  delta_dot)`` (``N >= 0``, only where ``delta >= 0``; the damping ramps in as ``r = min(1,
+  delta / delta_r)`` so the force is continuous where a node strikes) and Coulomb friction
+  ``-mu N tanh(V . s_b / v_s) s_b`` along the seabed (``s_b`` the seabed's slope direction in the
+  x–z plane, ``v_s`` = :data:`FRICTION_SPEED`).
 
 Positions are not unknowns; a node's position at the ``[ak]`` level is predicted from its own
 velocity: ``r^[ak] = r^n + dt ((1 - ak)(1 - gamma) - gamma ak) V^n + dt gamma V^[ak]`` (exact
@@ -49,6 +51,7 @@ from __future__ import annotations
 
 import numpy as np
 from kanat.jit import kernel
+from kanat.physics.contact import DAMPING_RAMP, SLIP_VELOCITY
 
 # Parameter row of an interval (see :func:`kanat.continuum.model2d.parameters`).
 M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA = range(14)
@@ -70,7 +73,8 @@ VELOCITY, BODY, FREE = 0, 1, 2
 (B_KIND, B_V0, B_V1, B_MASS, B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP,
  B_PHI0) = range(15)
 NBPAR = 15
-FRICTION_SPEED = 0.01  # m/s: the regularizing speed v_s of Coulomb friction, mu N tanh(v / v_s)
+FRICTION_SPEED = SLIP_VELOCITY   # m/s: v_s of Coulomb friction mu N tanh(v / v_s), as the lumped model's
+CONTACT_RAMP = DAMPING_RAMP      # m: the contact damping ramps in over this penetration, as the lumped model's
 STEP = 1e-30           # complex-step size: derivative = imag(R(x + i h)) / h, exact to round-off
 LOWER = UPPER = 5      # bandwidths of the Jacobian of a flexible cable (8 with bending)
 
@@ -174,7 +178,8 @@ def seabed_force(vx, vz, rx, rz, p):
     zero = 0.0 * vx
     if depth.real < 0.0:
         return zero, zero
-    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vx + n1 * vz))
+    ramp = depth / CONTACT_RAMP if depth.real < CONTACT_RAMP else 1.0 + 0.0 * depth
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * ramp * (n0 * vx + n1 * vz))
     if normal.real < 0.0:
         return zero, zero
     friction = -p[SB_MUA] * normal * smooth_sign((n1 * vx - n0 * vz) / FRICTION_SPEED)
@@ -189,10 +194,13 @@ def seabed_force_jacobian(vx, vz, rx, rz, p, g):
     depth = p[SB_C0] - (n0 * (rx + p[PRED] * vx) + n1 * (rz + p[PRED] * vz))
     if depth < 0.0:
         return 0.0, 0.0
-    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vx + n1 * vz))
+    rate = n0 * vx + n1 * vz
+    ramp, slope = (depth / CONTACT_RAMP, 1.0 / CONTACT_RAMP) if depth < CONTACT_RAMP else (1.0, 0.0)
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * ramp * rate)
     if normal < 0.0:
         return 0.0, 0.0
-    stiff = -p[DIAM] * (p[SB_K] * p[PRED] + p[SB_C])          # dN/dV = stiff n_b
+    # dN/dV = stiff n_b: d(depth)/dV = -PRED n_b, d(rate)/dV = n_b
+    stiff = -p[DIAM] * ((p[SB_K] - p[SB_C] * slope * rate) * p[PRED] + p[SB_C] * ramp)
     th = np.tanh((n1 * vx - n0 * vz) / FRICTION_SPEED)
     sech2 = 1.0 - th * th
     mu = p[SB_MUA]

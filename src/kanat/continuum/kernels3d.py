@@ -40,7 +40,8 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import inner, kernel
 
-from kanat.continuum.kernels2d import (AK, AM, CN, CT, DIAM, DS, DT, EA, FREE, FRICTION_SPEED, GAMMA, GRAV,  # noqa: F401
+from kanat.continuum.kernels2d import (AK, AM, CN, CONTACT_RAMP, CT, DIAM, DS, DT, EA, FREE, FRICTION_SPEED,  # noqa: F401
+                                       GAMMA, GRAV,
                                        INERTIA, MA, PRED, RHO, SB_C, SB_C0, SB_K, SB_MUA, SB_MUL, SB_N0, SB_N1,
                                        SB_N2, SB_ON, STEP, VELOCITY, W0, M, _law_segment, compliance, smooth_sign,
                                        strain)
@@ -228,7 +229,8 @@ def seabed_force3(vel, rp, axis, p):
                         + n2 * (rp[2] + p[PRED] * vel[2]))
     if depth.real < 0.0:
         return out
-    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * (n0 * vel[0] + n1 * vel[1] + n2 * vel[2]))
+    ramp = depth / CONTACT_RAMP if depth.real < CONTACT_RAMP else 1.0 + 0.0 * depth
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * ramp * (n0 * vel[0] + n1 * vel[1] + n2 * vel[2]))
     if normal.real < 0.0:
         return out
     a0, a1, a2 = axis[0], axis[1], axis[2]
@@ -253,10 +255,11 @@ def seabed_force3_jacobian(vel, rp, axis, p, force, g):
         rate += n[i] * vel[i]
     if depth < 0.0:
         return
-    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * rate)
+    ramp, slope = (depth / CONTACT_RAMP, 1.0 / CONTACT_RAMP) if depth < CONTACT_RAMP else (1.0, 0.0)
+    normal = p[DIAM] * (p[SB_K] * depth - p[SB_C] * ramp * rate)
     if normal < 0.0:
         return
-    stiff = -p[DIAM] * (p[SB_K] * p[PRED] + p[SB_C])          # dN/dV = stiff n
+    stiff = -p[DIAM] * ((p[SB_K] - p[SB_C] * slope * rate) * p[PRED] + p[SB_C] * ramp)   # dN/dV = stiff n
     lat = np.empty(3)
     lat[0], lat[1], lat[2] = n[1] * axis[2] - n[2] * axis[1], n[2] * axis[0] - n[0] * axis[2], \
         n[0] * axis[1] - n[1] * axis[0]

@@ -12,6 +12,7 @@ import numpy as np
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum.grid import Grid, SeabedContact, cable_grid, parameters, seabed_contact  # noqa: F401
+from kanat.continuum.winch import Winch
 from kanat.errors import CaseError, Problem
 from kanat.model.plane import out_of_plane
 from kanat.physics.waves import sea_from_model
@@ -129,6 +130,8 @@ class PlanarCable(CableGrid):
     sea : kanat.physics.waves.LinearSea or None
         Waves acting on the cable and its bodies.
     seabed : SeabedContact or None
+    winch : kanat.continuum.winch.Winch or None
+        Pay-out and haul-in at the first end (:mod:`kanat.continuum.winch`).
     """
 
     name: str
@@ -142,6 +145,7 @@ class PlanarCable(CableGrid):
     grid: Grid | None = None
     sea: object = None
     seabed: SeabedContact | None = None
+    winch: object = None
 
 
 def elastic_law_knots(law, max_strain: float = 0.5, samples: int = 400):
@@ -203,9 +207,13 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     if check_plane and out_of_plane(case):
         raise CaseError(out_of_plane(case))
     first = grid.rows[0].copy()
+    winch = Winch.from_case(case, float(grid.rows[0, k.DS]))
+    if winch is not None and start.kind != k.VELOCITY:
+        raise CaseError([Problem("winch", "the winch pays out at the first cable's 'from' end, which must be the "
+                                 "vessel or an anchor")])
+    plain = grid.uniform and not grid.bending and seabed is None and winch is None
     return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
-                       None if grid.uniform and not grid.bending and seabed is None else grid, sea_from_model(env),
-                       seabed)
+                       None if plain else grid, sea_from_model(env), seabed, winch)
 
 
 def _end(case, end, key: str, first: bool) -> EndCondition:

@@ -137,7 +137,8 @@ class PlanarModel:
             moved, xz = xz, positions(cable, y, drive.origin(0.0))
             if np.max(np.abs(moved - xz)) <= 1e-10 * cable.length:
                 break
-        return State(0.0, y, np.zeros_like(y), xz)
+        rows, s = (cable.rows().copy(), cable.s.copy()) if cable.winch is not None else (None, None)
+        return State(0.0, y, np.zeros_like(y), xz, rows, s)
 
     def step(self, state, dt, coefficients):
         return step(self.cable, state, dt, coefficients, self.drive)
@@ -179,11 +180,11 @@ class PlanarModel:
     def save(self, state) -> dict:
         saved = {"y": state.y, "rate": state.rate, "xz": state.xz}
         if state.rows is not None:
-            saved["rows"] = state.rows
+            saved.update(rows=state.rows, s=state.s)
         return saved
 
     def restore(self, t, saved) -> State:
-        return State(t, saved["y"], saved["rate"], saved["xz"], saved.get("rows"))
+        return State(t, saved["y"], saved["rate"], saved["xz"], saved.get("rows"), saved.get("s"))
 
 
 class SpatialModel:
@@ -221,7 +222,8 @@ class SpatialModel:
             moved, xyz = xyz, positions3(cable, y, chart, self.origin(0.0))
             if np.max(np.abs(moved - xyz)) <= 1e-10 * cable.length:
                 break
-        return SpatialState(0.0, y, np.zeros_like(y), xyz, chart)
+        rows, s = (cable.rows().copy(), cable.s.copy()) if cable.winch is not None else (None, None)
+        return SpatialState(0.0, y, np.zeros_like(y), xyz, chart, rows, s)
 
     def step(self, state, dt, coefficients):
         return step3(self.cable, state, dt, coefficients, self)
@@ -258,11 +260,12 @@ class SpatialModel:
     def save(self, state) -> dict:
         saved = {"y": state.y, "rate": state.rate, "xyz": state.xyz, "chart": state.chart}
         if state.rows is not None:
-            saved["rows"] = state.rows
+            saved.update(rows=state.rows, s=state.s)
         return saved
 
     def restore(self, t, saved) -> SpatialState:
-        return SpatialState(t, saved["y"], saved["rate"], saved["xyz"], saved["chart"], saved.get("rows"))
+        return SpatialState(t, saved["y"], saved["rate"], saved["xyz"], saved["chart"], saved.get("rows"),
+                            saved.get("s"))
 
 
 def spatial_cable(case) -> SpatialCable:
@@ -297,7 +300,8 @@ def spatial_cable(case) -> SpatialCable:
         grid = cable_grid(case, 0, planar.seabed)
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows,
-                        None if grid.uniform and planar.seabed is None else grid, planar.sea, planar.seabed)
+                        None if grid.uniform and planar.seabed is None and planar.winch is None else grid, planar.sea,
+                        planar.seabed, planar.winch)
 
 
 def model_for(case):

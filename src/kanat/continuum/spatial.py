@@ -61,12 +61,13 @@ class SpatialCable(CableGrid):
     grid: Grid | None = None
     sea: object = None
     seabed: SeabedContact | None = None
+    winch: object = None
 
 
 @dataclass(frozen=True)
 class SpatialState:
     """The spatial cable at one instant: ``y`` (N+1, 6) and ``rate`` in ``chart``, ``xyz`` global;
-    ``rows`` the interval rows when they change in time (a winch)."""
+    ``rows`` the interval rows and ``s`` the nodes' material arclength when they change in time (a winch)."""
 
     t: float
     y: np.ndarray
@@ -74,6 +75,7 @@ class SpatialState:
     xyz: np.ndarray
     chart: np.ndarray
     rows: np.ndarray | None = None
+    s: np.ndarray | None = None
 
 
 def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin, rows=None) -> np.ndarray:
@@ -157,19 +159,24 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
         y, rate = rechart(y, rate, chart, new)
         chart = new
     rows = cable.rows() if state.rows is None else state.rows
-    P = chart_rows(step_rows(rows, coefficients, dt), cable, chart)
+    winch = cable.winch
+    during, after = winch.step_rows(rows, state.t, dt, coefficients[1]) if winch else (rows, rows)
+    P = chart_rows(step_rows(during, coefficients, dt), cable, chart)
     rho = P[0, k.RHO]
     v0, v1 = drive.velocities(state.t + dt)
     env = spatial_water(cable, state.xyz, velocities3(y, chart), frames(y, chart)[0], state.t, dt, coefficients, chart)
-    payout = drive.payout(state.t + dt) if hasattr(drive, "payout") else 0.0
+    payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, state.xyz[-1, :2], kinematics_time(state.t, dt, coefficients))
     b0 = cable.start.array(v0, chart, rho, payout=payout)
     b1 = cable.end.array(v1, chart, rho, eta=eta)
     x, iterations = _solve(cable, y + dt * rate, y, rate, env, chart.T @ UP, P, b0, b1)
     gamma = coefficients[2]
     new_rate = (x - y) / (gamma * dt) - (1.0 - gamma) / gamma * rate
-    xyz = positions3(cable, x, chart, drive.origin(state.t + dt), rows)
-    return SpatialState(state.t + dt, x, new_rate, xyz, chart, state.rows), iterations
+    xyz = positions3(cable, x, chart, drive.origin(state.t + dt), after)
+    if winch is None:
+        return SpatialState(state.t + dt, x, new_rate, xyz, chart, state.rows), iterations
+    rows, arrays, s = winch.regrid(after, {"y": x, "rate": new_rate, "xyz": xyz}, state.s)
+    return SpatialState(state.t + dt, arrays["y"], arrays["rate"], arrays["xyz"], chart, rows, s), iterations
 
 
 def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocities, xyz) -> np.ndarray:

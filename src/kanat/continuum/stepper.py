@@ -38,6 +38,8 @@ class State:
         Node positions [m].
     rows : ndarray or None
         The interval rows when they change in time (a winch); None: the cable's own.
+    s : ndarray or None
+        With a winch: each node's material arclength at t = 0 (node 0 is the winch point).
     """
 
     t: float
@@ -45,6 +47,7 @@ class State:
     rate: np.ndarray
     xz: np.ndarray
     rows: np.ndarray | None = None
+    s: np.ndarray | None = None
 
 
 class NewtonFailure(SolverError):
@@ -119,18 +122,23 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive) -> tu
         The new state and the Newton iterations spent.
     """
     rows = cable.rows() if state.rows is None else state.rows
-    P = step_rows(rows, coefficients, dt)
+    winch = getattr(cable, "winch", None)
+    during, after = winch.step_rows(rows, state.t, dt, coefficients[1]) if winch else (rows, rows)
+    P = step_rows(during, coefficients, dt)
     v0, v1 = drive.velocities(state.t + dt)
     rho = P[0, k.RHO]
     env = planar_water(cable, state.xz, node_velocity(state.y), state.t, dt, coefficients)
-    payout = drive.payout(state.t + dt) if hasattr(drive, "payout") else 0.0
+    payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, (state.xz[-1, 0], 0.0), kinematics_time(state.t, dt, coefficients))
     b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
     x, iterations = solve(cable, state.y + dt * state.rate, state.y, state.rate, env, P, b0, b1)
     gamma = coefficients[2]
     rate = (x - state.y) / (gamma * dt) - (1.0 - gamma) / gamma * state.rate
-    xz = positions(cable, x, drive.origin(state.t + dt), rows)
-    return State(state.t + dt, x, rate, xz, state.rows), iterations
+    xz = positions(cable, x, drive.origin(state.t + dt), after)
+    if winch is None:
+        return State(state.t + dt, x, rate, xz, state.rows), iterations
+    rows, arrays, s = winch.regrid(after, {"y": x, "rate": rate, "xz": xz}, state.s)
+    return State(state.t + dt, arrays["y"], arrays["rate"], arrays["xz"], rows, s), iterations
 
 
 def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:

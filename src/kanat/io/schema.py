@@ -69,6 +69,9 @@ VARIABLES: dict[str, Variable] = {
     "vessel_heading": Variable((), "rad", "vessel heading, counter-clockwise from +x"),
     "vessel_pitch": Variable((), "rad", "vessel pitch, bow up positive"),
     "newton_iterations": Variable((), "1", "Newton iterations of the steps since the previous output"),
+    "winch_tension": Variable((), "N", "effective tension at the winch (the first cable's 'from' end)"),
+    "winch_length": Variable((), "m", "unstretched length of the first cable paid out from the winch "
+                             "(its length in the water)"),
     # moorings (statics; the dynamic models may add time)
     "seabed_contact_length": Variable(("cable",), "m", "unstretched length of each cable resting on the seabed"),
     "anchor_force": Variable(("anchor", "xyz"), "N", "force of the line on each anchor, named by cable end "

@@ -256,6 +256,24 @@ def _attachments(case: Case) -> list[Use]:
             for i, c in enumerate(case.cables) if c.attachments]
 
 
+def _inline_surface_buoys(case: Case) -> list[Use]:
+    return [(("cables", i, "attachments", j), f" (body '{a.body}')") for i, c in enumerate(case.cables)
+            for j, a in enumerate(c.attachments) if a.body in case.bodies and case.bodies[a.body].surface_buoy is not None]
+
+
+def _bending_in_3d(case: Case) -> list[Use]:
+    """Bending stiffness in a continuum run that leaves the x-z plane (the 3-D model has none)."""
+    from .plane import out_of_plane
+
+    sim = case.simulation
+    wanted = sim.dimensions if sim is not None else "auto"
+    if wanted == 2 or (wanted == "auto" and not out_of_plane(case)):
+        return []
+    used = {t for c in case.cables for t in c.line_types}
+    return [(("line_types", name, "bending_stiffness"), "") for name, line in case.line_types.items()
+            if name in used and line.bending_stiffness > 0]
+
+
 def _vessel_motion(case: Case) -> list[Use]:
     return [(("vessel", "motion"), "")] if case.vessel.motion.is_used else []
 
@@ -332,16 +350,16 @@ FEATURES: tuple[Feature, ...] = (
     Feature("loose_first_end", "a cable whose 'from' end is not the vessel or an anchor",
             _loose_first_ends, statics=YES, continuum=NO, lumped=YES,
             note="the continuum model builds positions from a fixed first end; swap from and to"),
-    Feature("waves", "waves", _waves, statics=IGNORED, continuum=NO, lumped=YES,
-            note={"statics": STEADY, "continuum": "it has no wave kinematics"}),
+    Feature("waves", "waves", _waves, statics=IGNORED, continuum=YES, lumped=YES,
+            note={"statics": STEADY}),
     Feature("current_y", "a current with a y component", _current_y,
-            statics=YES, continuum=NO, lumped=YES, note="the continuum model is planar (x-z plane)"),
+            statics=YES, continuum=YES, lumped=YES),
     Feature("out_of_plane", "a position or force off the x-z plane",
-            _out_of_plane, statics=YES, continuum=NO, lumped=YES,
-            note="the continuum model is planar (x-z plane)"),
+            _out_of_plane, statics=YES, continuum=YES, lumped=YES),
     Feature("seabed_contact", "seabed contact", _seabed_reach,
-            statics=YES, continuum=IGNORED, lumped=IGNORED,
-            note="it has no seabed contact: nodes may pass below z = -depth"),
+            statics=YES, continuum=YES, lumped=IGNORED,
+            note={"lumped": "without environment.seabed it has no seabed contact: a node below "
+                            "z = -depth stops the run (add environment.seabed)"}),
     Feature("elastic_law", "a nonlinear elastic law", _line_type_key("elastic_law", _NOT_NONE),
             statics=NO, continuum=YES, lumped=YES, note="statics uses the linear axial_stiffness"),
     Feature("dimensional_drag", "dimensional drag coefficients", _dimensional_drag,
@@ -351,7 +369,10 @@ FEATURES: tuple[Feature, ...] = (
     Feature("spreading_force", "an otter board's spreading force",
             _body_key("spreading_force", _NONZERO), statics=NO, continuum=NO, lumped=YES),
     Feature("surface_buoy", "a surface buoy's waterplane", _body_key("surface_buoy", _NOT_NONE),
-            statics=NO, continuum=NO, lumped=YES),
+            statics=NO, continuum=YES, lumped=YES),
+    Feature("inline_surface_buoy", "a surface buoy clamped inside a cable", _inline_surface_buoys,
+            statics=NO, continuum=NO, lumped=NO,
+            note="a surface buoy rides the waves at a cable's end; inline bodies have no waterplane"),
     Feature("vessel_pitch", "the vessel's pitch", _vessel_pitch,
             statics=IGNORED, continuum=YES, lumped=YES, note="its steady state is level"),
     Feature("consistent_mass", "the consistent mass matrix", _simulation("mass_matrix", "lumped"),
@@ -364,29 +385,34 @@ FEATURES: tuple[Feature, ...] = (
             statics=YES, continuum=YES, lumped=IGNORED, note="a 3-D continuum setting"),
     # the additions for moorings and real cable systems
     Feature("seabed", "seabed contact properties", _seabed(bool),
-            statics=YES, continuum=NO, lumped=YES),
+            statics=YES, continuum=YES, lumped=YES),
     Feature("seabed_friction", "seabed friction", _seabed(lambda s: s.friction > 0, "friction"),
-            statics=YES, continuum=NO, lumped=YES),
+            statics=YES, continuum=YES, lumped=YES),
     Feature("seabed_lateral_friction", "lateral seabed friction",
             _seabed(lambda s: s.lateral_friction > 0, "lateral_friction"),
-            statics=IGNORED, continuum=NO, lumped=YES,
+            statics=IGNORED, continuum=YES, lumped=YES,
             note={"statics": "statics lays each grounded line straight in its own vertical plane, so "
                              "nothing pushes it sideways for lateral friction to resist"}),
     Feature("seabed_slope", "a sloping seabed", _seabed(lambda s: s.slope_deg != 0, "slope_deg"),
-            statics=YES, continuum=NO, lumped=YES),
+            statics=YES, continuum=YES, lumped=YES),
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),
-            statics=NO, continuum=NO, lumped=NO),
+            statics=IGNORED, continuum=YES, lumped=NO,
+            note={"statics": "statics finds the steady shape of a perfectly flexible line (the continuum "
+                             "model starts from it and adds the bending)"}),
+    Feature("bending_3d", "bending stiffness in a 3-D run", _bending_in_3d,
+            statics=YES, continuum=NO, lumped=YES, pitch=YES,
+            note="the continuum model carries bending stiffness in the x-z plane only"),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
             statics=IGNORED, continuum=YES, lumped=YES,
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),
     Feature("tangential_added_mass", "tangential added mass",
             _line_type_key("added_mass_tangential", _NONZERO), statics=YES, continuum=NO, lumped=YES),
-    Feature("sections", "a cable of several sections", _sections, statics=YES, continuum=NO, lumped=YES),
+    Feature("sections", "a cable of several sections", _sections, statics=YES, continuum=YES, lumped=YES),
     Feature("attachments", "bodies attached along a cable", _attachments,
-            statics=YES, continuum=NO, lumped=YES),
+            statics=YES, continuum=YES, lumped=YES),
     Feature("vessel_motion", "the vessel's prescribed motion", _vessel_motion,
             statics=IGNORED, continuum=NO, lumped=YES, note=STEADY),
-    Feature("winch", "a winch", _winch, statics=IGNORED, continuum=NO, lumped=NO,
+    Feature("winch", "a winch", _winch, statics=IGNORED, continuum=YES, lumped=NO,
             note="its steady state is before the winch turns"),
     Feature("six_dof_bodies", "a body with 6 degrees of freedom", _body_key("dof", lambda v: v == 6),
             statics=YES, continuum=NO, lumped=YES),

@@ -98,8 +98,7 @@ class StaticsResult:
         for cable in self.case.cables if self.sphere is None else ():
             sol = self.cables[cable.name]
             for label, row, sign in (("from", 0, 1.0), ("to", -1, -1.0)):
-                fx, fz = sign * sol.force[row]
-                yield cable, label, np.array([fx, 0.0, fz])
+                yield cable, label, sign * sol.force3[row]
 
     def summary(self) -> str:
         """A few lines an engineer reads first: depths, layback, end tensions."""
@@ -115,11 +114,12 @@ class StaticsResult:
             tension = sol.tension
             lines.append(f"cable {name} ({sol.method}): tension {tension[0] / 1e3:.3f} kN at s = 0, "
                          f"{tension[-1] / 1e3:.3f} kN at s = {sol.s[-1]:g} m; leaves s = 0 at "
-                         f"{np.degrees(np.arctan2(-sol.force[0, 1], abs(sol.force[0, 0]))):.2f} deg "
+                         f"{np.degrees(np.arctan2(-sol.force3[0, 2], np.hypot(*sol.force3[0, :2]))):.2f} deg "
                          "below the horizontal"
                          + (f"; {sol.grounded_length:.2f} m on the seabed" if sol.grounded_length > 0 else ""))
         for name, position in self.bodies.items():
-            lines.append(f"body {name}: x = {position[0]:.3f} m, z = {position[2]:.3f} m (depth "
+            y = f"y = {position[1]:.3f} m, " if position[1] else ""
+            lines.append(f"body {name}: x = {position[0]:.3f} m, {y}z = {position[2]:.3f} m (depth "
                          f"{-position[2]:.3f} m)")
         return "\n".join(lines)
 
@@ -142,6 +142,8 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
         return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
     require_supported(case, "statics")
     if needs_network(case):
+        if has_drag(case) and single_cable(case):
+            return _solve_single_3d(case, method)
         return _solve_network(case, method)
     problems = cable_problems(case)
     solutions, bodies = {}, {}
@@ -154,6 +156,45 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
             if end.kind == "body":
                 bodies[end.name] = solution.position[index]
     return StaticsResult(case, method, solutions, bodies, vessel_velocity(case))
+
+
+def single_cable(case) -> bool:
+    """True when the case is one cable between the vessel's tow point, anchors and point bodies: the 3-D
+    single-cable statics (:mod:`kanat.statics.shooting3d`) solves it, in a current too."""
+    if len(case.cables) != 1 or case.points:
+        return False
+    for end in case.cables[0].ends:
+        if end.offset is not None or end.kind in ("point", "free"):
+            return False
+        if end.kind == "body" and case.bodies[end.name].dof != 3:
+            return False
+    return all(case.bodies[a.body].dof == 3 for a in case.cables[0].attachments)
+
+
+def stations(cable) -> np.ndarray:
+    """The nodes of a cable: ``segments`` equal steps, and each attachment's arclength twice (the state
+    before and after the body's jump)."""
+    s = list(np.linspace(0.0, cable.length, cable.segments + 1))
+    for item in cable.attachments:
+        at = int(np.searchsorted(s, item.s))
+        on_node = at < len(s) and abs(s[at] - item.s) <= 1e-9 * cable.length
+        s[at:at] = [item.s] if on_node else [item.s, item.s]
+    return np.array(s)
+
+
+def _solve_single_3d(case, method: str) -> StaticsResult:
+    """One cable in 3-D with sections, attachments, a current in x and y (:mod:`kanat.statics.solve3d`)."""
+    from kanat.statics.setup3d import cable_problem3
+    from kanat.statics.solve3d import solve_cable3
+
+    cable = case.cables[0]
+    s_out = stations(cable)
+    solution = solve_cable3(cable_problem3(case), method, s_out)
+    bodies = {end.name: solution.position[index] for end, index in ((cable.from_, 0), (cable.to, -1))
+              if end.kind == "body"}
+    for item in cable.attachments:
+        bodies[item.body] = solution.position[int(np.searchsorted(s_out, item.s))]
+    return StaticsResult(case, method, {cable.name: solution}, bodies, vessel_velocity(case))
 
 
 def _solve_network(case, method: str):
