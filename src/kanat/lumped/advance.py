@@ -5,7 +5,9 @@ and the built-in ``rk4`` and ``abm4`` schemes it hands the whole stretch to
 :mod:`kanat.lumped.fast` (:class:`FusedArrays` packs the network, environment and work
 arrays once per run); any other scheme (the implicit one, a user's own) or the consistent
 mass matrix goes through ``scheme.step`` with the tensions and snap events updated after
-every step in Python. Both paths give the same states to round-off (tests).
+every step in Python. Both paths give the same states to round-off (tests). A compiled
+implicit step whose Newton iteration fails is retaken as compiled half steps (up to
+:data:`COMPILED_HALVINGS` deep), and only then by the Python scheme, which halves it further.
 """
 from __future__ import annotations
 
@@ -13,6 +15,9 @@ import numpy as np
 
 from kanat.lumped import fast, fast_implicit, kernels
 from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, state_positions
+
+
+COMPILED_HALVINGS = 3       # a failed compiled implicit step is retried as 2, 4, 8 compiled half steps
 
 
 def supports(system, scheme) -> bool:
@@ -126,16 +131,32 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
     while taken < steps:
         if isinstance(scheme, GeneralizedAlphaLumped):
             done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
-            if failed:                                            # the Python scheme halves the step
-                state = scheme.step(system, state, h)
+            if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
+                state = scheme.step(system, state, h)             # the Python scheme halves it further
                 tracker.update(state["t"], tensions(state))
-                done += 1
+            done += failed
         else:
             done = _fused(scheme, system, state, h, steps - taken, tracker)
         taken += done
         if not np.all(np.isfinite(state_positions(state)[0])):
             break
     return state, taken
+
+
+def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
+    """Take one failed step of ``h`` as two compiled steps of ``h / 2`` (each halved again where it
+    fails, ``levels`` deep); ``state`` is updated in place. False (and ``state`` untouched) when
+    even that fails."""
+    if levels == 0:
+        return False
+    saved = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+    for _ in range(2):
+        done, failed = _fused_implicit(scheme, system, state, 0.5 * h, 1, tracker)
+        if failed and not _halved(scheme, system, state, 0.5 * h, tracker, levels - 1):
+            state.clear()
+            state.update(saved)
+            return False
+    return True
 
 
 def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool]:

@@ -8,7 +8,8 @@ force evaluation (:func:`kanat.lumped.fast.loads`), the tangent blocks
 tangent is stored as a band matrix over the free nodes in a bandwidth-reducing order
 (reverse Cuthill–McKee, :func:`band_order`) and factorized by LU without pivoting — the
 matrix is dominated by its mass blocks, and its geometric and drag parts are positive
-semidefinite — at ``O(n b^2)`` per Newton iteration. A step whose Newton iteration fails is
+semidefinite — at ``O(n b^2)``. (A chord iteration, reusing a step's first factors, needed
+twice the iterations on moorings: each iteration is full Newton.) A step whose Newton iteration fails is
 handed back; :mod:`kanat.lumped.advance` then takes it with the Python scheme, which halves it.
 The Python path is this module's twin (tests).
 """
@@ -63,27 +64,48 @@ def band_add(A, bw, pi, pj, block, scale):
 
 
 @kernel
-def band_solve(A, bw, b):
-    """Solve ``A x = b`` in place (``A`` band storage (n, 2 bw + 1), overwritten by its LU
-    factors without pivoting; ``b`` by ``x``). Returns False on a zero pivot."""
+def band_factor(A, bw):
+    """LU factors of ``A`` (band storage (n, 2 bw + 1)) in place, without pivoting. Returns False on
+    a zero or non-finite pivot."""
     n = A.shape[0]
     for k in range(n):
         pivot = A[k, bw]
         if pivot == 0.0 or not np.isfinite(pivot):
             return False
-        for i in range(k + 1, min(n, k + bw + 1)):
-            factor = A[i, k - i + bw] / pivot
+        inv = 1.0 / pivot
+        top = min(n, k + bw + 1)
+        for i in range(k + 1, top):
+            factor = A[i, k - i + bw] * inv
+            A[i, k - i + bw] = factor
             if factor == 0.0:
                 continue
-            A[i, k - i + bw] = factor
-            for j in range(k + 1, min(n, k + bw + 1)):
-                A[i, j - i + bw] -= factor * A[k, j - k + bw]
-            b[i] -= factor * b[k]
+            shift = k - i + bw
+            for j in range(k + 1, top):
+                A[i, j - k + shift] -= factor * A[k, j - k + bw]
+    return True
+
+
+@kernel
+def band_substitute(A, bw, b):
+    """Solve ``L U x = b`` in place with the factors of :func:`band_factor`."""
+    n = A.shape[0]
+    for k in range(n):
+        for i in range(k + 1, min(n, k + bw + 1)):
+            b[i] -= A[i, k - i + bw] * b[k]
     for k in range(n - 1, -1, -1):
         s = b[k]
         for j in range(k + 1, min(n, k + bw + 1)):
             s -= A[k, j - k + bw] * b[j]
         b[k] = s / A[k, bw]
+
+
+@kernel
+def band_solve(A, bw, b):
+    """Solve ``A x = b`` in place (``A`` band storage (n, 2 bw + 1), overwritten by its LU
+    factors without pivoting; ``b`` by ``x``). Returns False on a zero pivot."""
+    if not band_factor(A, bw):
+        return False
+    band_substitute(A, bw, b)
     return True
 
 

@@ -8,8 +8,8 @@ With ``(x, v, a)`` at ``t_n`` and the unknown ``a_1`` at ``t_n+1 = t_n + h``::
     (3)  J = (1 - alpha_m) M + (1 - alpha_f) (gamma h C + beta h^2 K)
 
 ``K = -dF/dx`` and ``C = -dF/dv`` from the element tangent blocks
-(:func:`kanat.lumped.kernels.tangent_blocks`: axial, geometric, Kelvin–Voigt, drag) and
-the body drag; the added-mass, buoy and wave terms are left out of ``J`` (Newton then
+(:func:`kanat.lumped.kernels.tangent_blocks`: axial, geometric, Kelvin–Voigt, drag), the
+body drag and the seabed contact (:func:`kanat.physics.contact.contact_tangent`); the added-mass, buoy and wave terms are left out of ``J`` (Newton then
 converges linearly rather than quadratically, to the same answer). ``J`` is sparse with
 the network's node graph; it is factorized by SuperLU at every iteration. A step whose
 Newton iteration fails is halved, up to ``MAX_HALVINGS`` times, then the run stops with
@@ -23,6 +23,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.lumped import kernels
+from kanat.physics.contact import contact_tangent
 
 MAX_HALVINGS = 4          # a step is cut to at most 1/16 before the run is stopped
 ACCELERATION_SCALE = 1.0  # m/s^2 floor of the convergence scale (1/10 g)
@@ -85,6 +86,11 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
     else:
         node = c_mass * M_blocks[pattern.free_nodes]
     node = node + c_damp * _body_damping(system, t, x, v)[pattern.free_nodes]
+    area, bed, params, _ = system.contact
+    if len(area):                                  # seabed contact (kanat.physics.contact)
+        Kc, Cc = np.zeros((net.n_nodes, 3, 3)), np.zeros((net.n_nodes, 3, 3))
+        contact_tangent(x, v, area, bed, params, system.normal_force, Kc, Cc)
+        node = node + (c_stiff * Kc + c_damp * Cc)[pattern.free_nodes]
     return pattern.matrix(np.stack([diag, off, off, diag]), node)
 
 
@@ -92,12 +98,12 @@ def _body_damping(system, t, x, v):
     """``-dF/dv`` of the body drag, per node (n, 3, 3)."""
     net = system.net
     out = np.zeros((net.n_nodes, 3, 3))
-    if len(net.body_node):
-        nodes = net.body_node
+    if len(net.load_node):
+        nodes = net.load_node
         ur = system.water(t, x[nodes])[0] - v[nodes]
         speed = np.linalg.norm(ur, axis=1)
         outer = np.einsum("kr,kq->krq", ur, ur) / np.maximum(speed, 1e-12)[:, None, None]
-        k = 0.5 * system.rho * net.body_drag_area
+        k = 0.5 * system.rho * net.load_drag_area
         out[nodes] += k[:, None, None] * (speed[:, None, None] * np.eye(3) + outer)
     return out
 

@@ -51,7 +51,9 @@ class LumpedSystem:
     steady_velocity : ndarray, shape (3,), optional
         If given, every free node moves at this velocity and the vessel is frozen at
         ``t = 0`` (the steady frame of the initial equilibrium, SPEC §4); seabed friction then
-        takes its equilibrium form (:mod:`kanat.physics.contact`).
+        takes its equilibrium form (:mod:`kanat.physics.contact`), and the vessel's points sit
+        where the prescribed motion has them at ``t = 0`` (a motion that starts at rest then
+        starts the run smoothly: a harmonic with ``phase_deg: -90``).
     """
 
     def __init__(self, net, case, mass_matrix: str = "lumped", waves: bool = True, steady_velocity=None):
@@ -61,7 +63,7 @@ class LumpedSystem:
         self.current = env.current
         self.sea = sea_from_model(env) if waves else None
         self.track = VesselTrack.from_model(case.vessel) if case.vessel.track else None
-        self.motion = compile_motion(case.vessel.motion) if waves else None
+        self.motion = compile_motion(case.vessel.motion)
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
         self.free_index = np.flatnonzero(net.free)
@@ -83,6 +85,7 @@ class LumpedSystem:
         self.normal_force, self._tangent = np.zeros(n), np.zeros((n, 3))
         self.rig = net.rigid.arrays()
         self.rigid_acc = np.zeros((net.rigid.count, 2, 3))
+        self._steady_points: dict = {}
 
     def _contact(self, case, net) -> tuple:
         """``(area, bed, params, laid)`` for :func:`kanat.physics.contact.contact_forces`, or empty."""
@@ -102,9 +105,19 @@ class LumpedSystem:
         axes (default: the vessel nodes') at ``times`` (k,): the track's point plus the
         prescribed motion turned by the heading (module docstring)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
+        if self.steady_velocity is not None:             # frozen at t = 0: computed once
+            key = None if arms is None else tuple(np.ravel(arms))
+            cached = self._steady_points.get(key)
+            if cached is None:
+                cached = self._vessel_points(np.zeros(1), arms)
+                self._steady_points[key] = cached
+            pos, vel, heading = cached
+            k = len(times)
+            return np.repeat(pos, k, 0), np.repeat(vel, k, 0), np.repeat(heading, k)
+        return self._vessel_points(times, arms)
+
+    def _vessel_points(self, times, arms):
         arms = self.net.vessel_offset if arms is None else np.asarray(arms, float).reshape(-1, 3)
-        if self.steady_velocity is not None:
-            times = np.zeros_like(times)
         k, p = len(times), len(arms)
         pos, vel, heading = np.empty((k, p, 3)), np.zeros((k, p, 3)), np.zeros(k)
         if self.track is None:
@@ -114,6 +127,8 @@ class LumpedSystem:
                 pos[:, j], vel[:, j], heading[:] = self.track_series(times, arm)
         if self.motion is not None and p:
             q, qd = motion_series(self.motion, times)
+            if self.steady_velocity is not None:        # the equilibrium: at the motion's t = 0 place
+                qd[:] = 0.0
             disp, dvel = point_series(arms, q, qd)
             c, s = np.cos(heading)[:, None], np.sin(heading)[:, None]
             turned = np.stack([c * disp[..., 0] - s * disp[..., 1], s * disp[..., 0] + c * disp[..., 1],

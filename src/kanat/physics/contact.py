@@ -9,7 +9,10 @@ normal distance below the seabed, :meth:`kanat.physics.seabed.PlaneSeabed.penetr
     (3)  F_a = -mu_a N tanh(v_a / v_s) a                    friction along the line
     (4)  F_l = -mu_l N tanh(|v_l| / v_s) v_l / |v_l|        friction across the line
 
-``k_b`` [Pa/m], ``c_b`` [Pa s/m] (``environment.seabed.stiffness``, ``damping``); ``a`` the
+``k_b`` [Pa/m], ``c_b`` [Pa s/m] (``environment.seabed.stiffness``, ``damping``), as MoorDyn
+(the damping acts from the first millimetre: a node striking the seabed meets ``c_b |v| A``
+at once; a ramp that made this continuous made the implicit scheme's Newton iteration cycle
+at touchdowns, where its slope turns the tangent indefinite); ``a`` the
 line's direction at the node (sum of its elements' unit tangents) projected on the seabed
 plane; ``v_a = v . a`` and ``v_l = v - (v . nu) nu - v_a a``. Coulomb friction is
 regularized by ``tanh`` with the velocity scale ``v_s`` = :data:`SLIP_VELOCITY`: smooth, so
@@ -39,6 +42,8 @@ from kanat.physics.seabed import PlaneSeabed
 
 SLIP_VELOCITY = 1.0e-3      # m/s, v_s of eqs. (3)-(4)
 SLIP_DISPLACEMENT = 1.0e-4  # m, u_s of the equilibrium's friction
+DAMPING_RAMP = 1.0e-3      # m: penetration over which a model may ramp the contact damping in (the
+                           # continuum model's seabed does; the lumped law (1) is MoorDyn's, unramped)
 PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
 PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
 
@@ -161,9 +166,9 @@ def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
 
 @kernel
 def contact_tangent(x, v, area, bed, params, normal_force, K, C):
-    """Node blocks of ``-dF/dx`` (``K``) and ``-dF/dv`` (``C``) of eqs. (1)-(4), shape (n, 3, 3)
-    (friction: its ``mu N / v_s`` at rest, isotropic in the seabed plane; an approximation that
-    only slows Newton's convergence where friction slides)."""
+    """Node blocks of ``-dF/dx`` (``K``) and ``-dF/dv`` (``C``) of eqs. (1)-(4), shape (n, 3, 3), at
+    nodes the seabed pushes: ``k_b A nu nu^T`` and ``c_b A nu nu^T`` , and friction's ``mu N / v_s`` at rest, isotropic in the seabed
+    plane — approximations that only slow Newton's convergence where they matter."""
     kb, cb, mu = params[0], params[1], max(params[2], params[3])
     vs = params[4]
     for a in range(x.shape[0]):

@@ -58,5 +58,9 @@ def point_series(offsets, q, v) -> tuple[np.ndarray, np.ndarray]:
     cp, sp, cy, sy = np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
     omega = np.stack([droll * cp * cy - dpitch * sy, droll * cp * sy + dpitch * cy, dyaw - droll * sp], -1)
     displacement = q[:, None, :3] + turned - r[None]
-    velocity = v[:, None, :3] + np.cross(omega[:, None, :], turned)
+    w = omega[:, None, :]
+    cross = np.stack([w[..., 1] * turned[..., 2] - w[..., 2] * turned[..., 1],
+                      w[..., 2] * turned[..., 0] - w[..., 0] * turned[..., 2],
+                      w[..., 0] * turned[..., 1] - w[..., 1] * turned[..., 0]], -1)
+    velocity = v[:, None, :3] + cross
     return displacement, velocity
