@@ -33,6 +33,7 @@ SMOOTHING_SWEEPS = 100
 LIFT_FRACTION, SINK_FRACTION = 0.5, 0.1     # of the shortest line at the node
 CHORD_FRACTION = 0.95                        # longest first-guess chord, in line lengths
 SHORTEN_SWEEPS = 1000                        # at most this many passes over the lines to shorten them
+SHORTEN_TOLERANCE = 1e-3                     # of a line's length: a chord this close to the limit is kept
 CLEARANCE = 0.02                             # of the depth: guesses stay this far off seabed and surface
 SEABED_TOLERANCE = 1e-6                      # of the depth: deeper nodes are below the seabed
 
@@ -153,10 +154,14 @@ def first_guess(problem: NetworkProblem) -> np.ndarray:
     free = [n for n, node in enumerate(nodes) if node.position is None]
     near = _neighbours(problem)
     for _ in range(SMOOTHING_SWEEPS if free else 0):         # springs of stiffness 1/length
+        moved = 0.0
         for n in free:
             weights = np.array([1.0 / length for _, length in near[n]])
             places = np.array([other.point if other.node < 0 else pos[other.node] for other, _ in near[n]])
-            pos[n] = weights @ places / weights.sum()
+            new = weights @ places / weights.sum()
+            moved, pos[n] = max(moved, float(np.max(np.abs(new - pos[n])))), new
+        if moved <= SHORTEN_TOLERANCE * min(length for n in free for _, length in near[n]):
+            break
     depth = problem.seabed.depth if problem.seabed is not None else max(-c[2] for c in [centre, *fixed])
     for n in free:
         reach = min(length for _, length in near[n])
@@ -182,7 +187,7 @@ def _shorten(line, pos, free) -> bool:
     chord = where[1] - where[0]
     length = np.linalg.norm(chord)
     excess = length - CHORD_FRACTION * line.pieces.total_length
-    if excess <= 1e-6 * line.pieces.total_length:
+    if excess <= SHORTEN_TOLERANCE * line.pieces.total_length:
         return False
     unit = chord / length
     share = excess / len(moving)

@@ -150,11 +150,12 @@ class NetworkProblem:
     seabed: PlaneSeabed | None
     friction: float
     gravity: float
+    offsets: np.ndarray = field(init=False, repr=False)
+    """First unknown of each node in the vector of unknowns, and their total, shape (n + 1,)."""
 
-    @property
-    def offsets(self) -> np.ndarray:
-        """First unknown of each node in the vector of unknowns, and their total (n + 1,)."""
-        return np.concatenate([[0], np.cumsum([node.dof for node in self.nodes])]).astype(int)
+    def __post_init__(self):
+        object.__setattr__(self, "offsets", np.concatenate([[0], np.cumsum([node.dof for node in self.nodes])])
+                           .astype(int))
 
 
 def network_problem(case) -> NetworkProblem:

@@ -76,6 +76,12 @@ class Pieces:
 
     starts: np.ndarray = field(init=False, repr=False)
     total_weight: float = field(init=False, repr=False)
+    total_length: float = field(init=False, repr=False)
+    l: tuple = field(init=False, repr=False)       # the same as tuples of floats, for the scalar hot loops
+    w: tuple = field(init=False, repr=False)
+    ea: tuple = field(init=False, repr=False)
+    p: tuple = field(init=False, repr=False)
+    s0: tuple = field(init=False, repr=False)
 
     def __post_init__(self):
         for name in ("length", "weight", "stiffness", "load"):
@@ -86,14 +92,14 @@ class Pieces:
         # A-side end of each piece [m]; weight in water with the point loads [N] (negative: floats)
         object.__setattr__(self, "starts", np.concatenate([[0.0], np.cumsum(self.length)[:-1]]))
         object.__setattr__(self, "total_weight", float(np.dot(self.weight, self.length) + np.sum(self.load)))
+        object.__setattr__(self, "total_length", float(np.sum(self.length)))
+        for name, values in (("l", self.length), ("w", self.weight), ("ea", self.stiffness), ("p", self.load),
+                             ("s0", self.starts)):
+            object.__setattr__(self, name, tuple(float(v) for v in values))
 
     @classmethod
     def uniform(cls, length: float, weight: float, stiffness: float) -> Pieces:
         return cls(np.array([length]), np.array([weight]), np.array([stiffness]))
-
-    @property
-    def total_length(self) -> float:
-        return float(np.sum(self.length))
 
     def reversed(self) -> Pieces:
         """The same line seen from B (``s -> L - s``)."""
@@ -241,8 +247,8 @@ def _vertical_walk(VB, pieces: Pieces):
     bottom, below = [0.0] * n, [0.0] * n
     V = VB
     for k in range(n - 1, -1, -1):
-        bottom[k] = V - pieces.weight[k] * pieces.length[k]
-        V = bottom[k] - (pieces.load[k - 1] if k > 0 else 0.0)
+        bottom[k] = V - pieces.w[k] * pieces.l[k]
+        V = bottom[k] - (pieces.p[k - 1] if k > 0 else 0.0)
         below[k] = V
     return bottom, below
 
@@ -255,11 +261,11 @@ def _touchdown(bottom, below, threshold, pieces: Pieces):
     load and piece ``k`` is wholly suspended).
     """
     for k in range(len(pieces.length) - 1, -1, -1):
-        top = bottom[k] + pieces.weight[k] * pieces.length[k]
+        top = bottom[k] + pieces.w[k] * pieces.l[k]
         if bottom[k] < threshold <= top:
-            return k, pieces.starts[k] + (threshold - bottom[k]) / pieces.weight[k], False
+            return k, pieces.s0[k] + (threshold - bottom[k]) / pieces.w[k], False
         if below[k] < threshold <= bottom[k]:
-            return k, pieces.starts[k], True
+            return k, pieces.s0[k], True
     raise SolverError("no touchdown point found although end A is grounded")  # unreachable: below[0] < threshold
 
 
@@ -267,7 +273,7 @@ def _check_no_loop(bottom, k, s_td, threshold, pieces: Pieces) -> None:
     """Raise :class:`LiftedLoop` when the weight on the seabed between some point and the
     touchdown point is negative: the would-be vertical tension below touchdown rises above
     its touchdown value."""
-    highest = max((max(bottom[j], bottom[j] + pieces.weight[j] * pieces.length[j]) for j in range(k)),
+    highest = max((max(bottom[j], bottom[j] + pieces.w[j] * pieces.l[j]) for j in range(k)),
                   default=-math.inf)
     if highest > threshold + 1e-12 * max(abs(pieces.total_weight), abs(threshold), 1.0):
         raise LiftedLoop(f"a buoyant stretch below the touchdown point (s = {s_td:.6g} m) would lift "
@@ -305,7 +311,7 @@ def end_position(H: float, VB: float, pieces: Pieces, ground: Ground | None = No
 def _suspended(H, VB, pieces: Pieces, bottom, below) -> LineEvaluation:
     x = z = a = b = c = d = 0.0
     for k in range(len(pieces.length)):
-        dx, dz, p = suspended_piece(H, bottom[k], pieces.length[k], pieces.weight[k], pieces.stiffness[k])
+        dx, dz, p = suspended_piece(H, bottom[k], pieces.l[k], pieces.w[k], pieces.ea[k])
         x, z = x + dx, z + dz
         a, b, c, d = a + p[0], b + p[1], c + p[3], d + p[4]     # dV0/dV_B = 1, dV0/dH = 0
     return LineEvaluation(x, z, np.array([[a, b], [c, d]]), np.array([H, below[0]]), np.eye(2), 0.0)
@@ -316,7 +322,7 @@ def _grounded(H, pieces: Pieces, ground: Ground, bottom, below, k, s_td, at_join
     n = len(pieces.length)
     x = z = j00 = j01 = j10 = j11 = 0.0
     for j in range(k + 1 if not at_joint else k, n):             # wholly suspended pieces
-        dx, dz, p = suspended_piece(H, bottom[j], pieces.length[j], pieces.weight[j], pieces.stiffness[j])
+        dx, dz, p = suspended_piece(H, bottom[j], pieces.l[j], pieces.w[j], pieces.ea[j])
         x, z = x + dx, z + dz
         j00, j01, j10, j11 = j00 + p[0], j01 + p[1], j10 + p[3], j11 + p[4]
     T, dT_h, dT_v = H / cos, 1.0 / cos, 0.0                      # grounded tension at touchdown
@@ -329,28 +335,28 @@ def _grounded(H, pieces: Pieces, ground: Ground, bottom, below, k, s_td, at_join
             T, dT_h, dT_v = 0.0, 0.0, 0.0
         first, top_length = k - 1, None
     else:                                                        # touchdown inside piece k
-        w = pieces.weight[k]
+        w = pieces.w[k]
         ds_h, ds_v = tan / w, -1.0 / w
-        dx, dz, p = suspended_piece(H, H * tan, pieces.starts[k] + pieces.length[k] - s_td, w,
-                                    pieces.stiffness[k])
+        dx, dz, p = suspended_piece(H, H * tan, pieces.s0[k] + pieces.l[k] - s_td, w,
+                                    pieces.ea[k])
         x, z = x + dx, z + dz
         j00 += p[0] + p[1] * tan - p[2] * ds_h
         j01 -= p[2] * ds_v
         j10 += p[3] + p[4] * tan - p[5] * ds_h
         j11 -= p[5] * ds_v
-        first, top_length = k, s_td - pieces.starts[k]
+        first, top_length = k, s_td - pieces.s0[k]
     stretch, dst_h, dst_v = 0.0, 0.0, 0.0
     for j in range(first, -1, -1):
         partial = j == k and top_length is not None
-        l = top_length if partial else pieces.length[j]
+        l = top_length if partial else pieces.l[j]
         dl_h, dl_v = (ds_h, ds_v) if partial else (0.0, 0.0)
-        I, T_next, q = grounded_piece(T, l, c * pieces.weight[j], pieces.stiffness[j])
+        I, T_next, q = grounded_piece(T, l, c * pieces.w[j], pieces.ea[j])
         stretch += I
         dst_h += q[0] * dT_h + q[1] * dl_h
         dst_v += q[0] * dT_v + q[1] * dl_v
         T, dT_h, dT_v = T_next, q[2] * dT_h + q[3] * dl_h, q[2] * dT_v + q[3] * dl_v
         if j > 0:                                                # the joint below, on the seabed
-            drop = c * pieces.load[j - 1]
+            drop = c * pieces.p[j - 1]
             T, dT_h, dT_v = (T - drop, dT_h, dT_v) if T > drop else (0.0, 0.0, 0.0)
     extent, dex_h, dex_v = s_td + stretch, ds_h + dst_h, ds_v + dst_v
     sin = ground.sin
