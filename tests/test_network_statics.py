@@ -261,6 +261,37 @@ def test_the_example_buoy_balances_and_its_anchors_feel_the_friction_drop():
         assert 0.0 < anchor < 0.5 * H
 
 
+def test_lines_on_a_sloped_seabed_lie_on_it_and_hold_the_platform():
+    """A 6-DOF platform on four chains over a seabed rising 2 deg towards +x: every grounded node
+    lies on the sloped plane, the suspended ones above it; the platform's forces and moments
+    balance; the anchor up the slope carries its grounded chain's weight along the slope too
+    (the tension grows by w sin(alpha) per metre towards it), and pulls along the slope."""
+    case = load(DATA / "network" / "platform_4leg_slope.yaml")
+    result = solve_statics(case)
+    seabed = 2.0 * math.pi / 180.0
+    for cable in result.cables.values():
+        floor = -180.0 + cable.position[:, 0] * math.tan(seabed)
+        grounded = cable.s <= cable.grounded_length
+        np.testing.assert_allclose(cable.position[grounded, 2], floor[grounded], atol=1e-8)
+        assert np.all(cable.position[~grounded, 2] > floor[~grounded] - 1e-8)
+    body = case.bodies["platform"]
+    r, angles = result.bodies["platform"], result.attitudes["platform"]
+    weight, up = body.mass * 9.81, np.array([0.0, 0.0, 1.0])
+    from kanat.statics.network_setup import fairlead_rotation
+
+    R = fairlead_rotation(angles)[0]
+    force = result.body_forces["platform"] + body.force + (body.buoyancy(9.81) - weight) * up \
+        - body.hydrostatic_stiffness_matrix(1025, 9.81)[:3, :3] @ r
+    moment = result.body_moments["platform"] + np.cross(R @ body.center_of_gravity, -weight * up) \
+        + np.cross(R @ body.center_of_buoyancy, body.buoyancy(9.81) * up)
+    assert np.max(np.abs(force)) < 1e-6 * body.buoyancy(9.81)
+    assert np.max(np.abs(moment)) < 1e-6 * body.buoyancy(9.81)
+    up, down = result.anchor_forces["leg1.from"], result.anchor_forces["leg3.from"]
+    assert np.linalg.norm(up) > np.linalg.norm(down)         # the anchor up the slope holds its chain from sliding
+    assert up[2] / np.hypot(*up[:2]) == pytest.approx(-math.tan(seabed), rel=1e-9)     # along the slope, down it
+    assert down[2] / np.hypot(*down[:2]) == pytest.approx(math.tan(seabed), rel=1e-9)
+
+
 def test_load_continuation_finds_the_equilibrium_from_a_far_guess():
     """From a guess 200 m off, where Newton's method alone is not trusted, the load
     continuation (R = (1 - lambda) R0, lambda 0 -> 1) ends at Newton's equilibrium."""
