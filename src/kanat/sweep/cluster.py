@@ -18,6 +18,7 @@ cluster instead (:mod:`.processes`).
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import os
 import time
 from pathlib import Path
@@ -54,6 +55,9 @@ def local_cluster(workers: int | None = None):
     distributed.Client
         Connected to the cluster; both are closed on leaving the block.
     """
+    from kanat.extras import require
+
+    require("studies", "dask.distributed", "a Dask cluster")
     import dask
     from dask.distributed import Client, LocalCluster
 
@@ -81,7 +85,13 @@ def local_cluster(workers: int | None = None):
 
 
 def configured_scheduler() -> str | None:
-    """The scheduler address in Dask's configuration (``DASK_SCHEDULER_ADDRESS``), if any."""
+    """The scheduler address in Dask's configuration (``DASK_SCHEDULER_ADDRESS``), if any.
+
+    None when Dask is not installed (the ``studies`` extra): then no cluster can be running
+    for this study anyway.
+    """
+    if importlib.util.find_spec("dask") is None:
+        return None
     import dask
 
     address = dask.config.get("scheduler-address", None)
@@ -104,6 +114,9 @@ def connect(scheduler, timeout: float = CONNECT_TIMEOUT_S):
     KanatError
         When the file cannot be read or the scheduler cannot be reached in ``timeout``.
     """
+    from kanat.extras import require
+
+    require("studies", "dask.distributed", "--scheduler")
     from dask.distributed import Client
 
     path = Path(str(scheduler)).expanduser()
