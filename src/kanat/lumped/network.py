@@ -36,6 +36,7 @@ from kanat.errors import CaseError, Problem
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.physics.motion import rotation_matrix
+from kanat.physics.seabed import seabed_of
 
 POLYNOMIAL, TABLE = 0, 1
 GUESS_STRETCH = 1.0 + 1e-4   # the first guess stretches every cable by this factor
@@ -350,6 +351,10 @@ def build_network(case) -> Network:
     for nodes, cable, grid in rows:
         x[nodes] = sagged_line(b.positions[nodes[0]], b.positions[nodes[-1]], cable.length, len(grid.s) - 1,
                                grid.s)
+    seabed = seabed_of(case.environment)
+    if seabed is not None:                       # a sag that would dip below the seabed lies on it
+        loose = ~np.isin(np.array(b.kinds), PRESCRIBED)
+        x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
     rigid = rigid_bodies(case, b)
     x = np.vstack([x, rigid.guess]) if rigid.count else x
     return _finish(case, b, laws, rows, cable_nodes, x, rigid, env.water_density, env.gravity)

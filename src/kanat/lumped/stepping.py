@@ -9,15 +9,18 @@ axial stiffness ``k = f'(e)/L0`` and Kelvin–Voigt rate ``c/L0``::
                                                   (the chain's 2 sqrt(k/m) for equal masses)
     (2)  sigma_k = 2 (c/L0) (1/m_i + 1/m_j)       its viscous decay rate
     (3)  T_axial = 2 pi / max omega_k             shortest axial nodal period
-    (4)  h_safe  = SAFETY * limit / max(omega_k + sigma_k)
+    (4)  |lambda_k| = omega_k                     if sigma_k < 2 omega_k (underdamped: the eigenvalues
+                    = sigma_k/2 + sqrt(sigma_k^2/4 - omega_k^2)   -sigma/2 +- i sqrt(omega^2 - sigma^2/4)
+                                                  lie on the circle |lambda| = omega), else overdamped
+    (5)  h_safe  = SAFETY * limit / max |lambda_k|
 
-With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` adds the rate
-``sqrt(k_b A_n / m_n) + (c_b A_n + mu W_n / v_s) / m_n`` (contact stiffness, damping, and the
-slope of the regularized friction at rest for the node's weight ``W_n``;
-:mod:`kanat.physics.contact`), which competes in the maximum of eq. (4).
+With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` is an oscillator of
+``omega = sqrt(k_b A_n / m_n)`` and ``sigma = c_b A_n / m_n`` (contact stiffness and damping, eq.
+4), and the regularized friction at rest adds the real rate ``mu W_n / (v_s m_n)`` for the node's
+weight ``W_n`` (:mod:`kanat.physics.contact`); they compete in the maximum of eq. (5).
 
 ``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
-imaginary axis). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
+imaginary axis; RK4's region reaches as far along the negative real axis, 2.79). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
 """
 from __future__ import annotations
 
@@ -46,7 +49,7 @@ class StepInfo:
     axial_period : float
         Shortest axial nodal period, eq. (3) [s].
     omega_max : float
-        ``max(omega_k + sigma_k)`` [1/s].
+        ``max |lambda_k|``, eq. (4) [1/s].
     element : int
         The element that sets it.
     """
@@ -56,8 +59,15 @@ class StepInfo:
     element: int
 
     def safe_step(self, scheme) -> float:
-        """Eq. (4) for an explicit ``scheme`` [s]."""
+        """Eq. (5) for an explicit ``scheme`` [s]."""
         return SAFETY * scheme.stability_limit / self.omega_max
+
+
+def spectral_radius(omega, sigma):
+    """``|lambda|`` of ``x'' + sigma x' + omega^2 x = 0``, eq. (4) (arrays)."""
+    omega, sigma = np.asarray(omega, float), np.asarray(sigma, float)
+    over = np.sqrt(np.maximum(0.25 * sigma**2 - omega**2, 0.0))
+    return np.where(sigma < 2.0 * omega, omega, 0.5 * sigma + over)
 
 
 def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
@@ -82,14 +92,13 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     omega = np.sqrt(2.0 * slope / net.el_length * pair)
     if consistent:
         omega = omega * CONSISTENT_FACTOR
-    rate = omega + 2.0 * net.el_damping / net.el_length * pair
+    rate = spectral_radius(omega, 2.0 * net.el_damping / net.el_length * pair)
     k = int(np.argmax(rate))
     top = float(rate[k]) if len(rate) else 0.0
     if seabed is not None:
         area = net.node_contact_area * (inv > 0)
-        contact = (np.sqrt(seabed.stiffness * area * inv)
-                   + (seabed.damping * area + max(seabed.friction, seabed.lateral_friction) * net.node_weight
-                      / SLIP_VELOCITY) * inv)
+        contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)
+                   + max(seabed.friction, seabed.lateral_friction) * net.node_weight / SLIP_VELOCITY * inv)
         top = max(top, float(np.max(contact, initial=0.0)))
     return StepInfo(2.0 * math.pi / max(float(np.max(omega, initial=0.0)), 1e-300), top, k)
 

@@ -71,10 +71,10 @@ def _end_position(case: Case, end: CableEnd) -> np.ndarray | None:
 
 
 def _line_weight(case: Case, cable: Cable) -> float:
-    """Weight in water of the whole cable [N]."""
+    """Weight in water of the whole cable [N], section by section."""
     env = case.environment
-    line = case.line_types[cable.line_type]
-    return line.weight_in_water_value(env.water_density, env.gravity) * cable.length
+    return sum(case.line_types[s.line_type].weight_in_water_value(env.water_density, env.gravity) * s.length
+               for s in cable.sections)
 
 
 def check_line_types(case: Case, out: Findings) -> None:
@@ -182,12 +182,28 @@ def check_mooring_buoys(case: Case, out: Findings) -> None:
         if not attached or not all(any(e.kind == "anchor" for e in c.ends) for c in attached):
             continue
         weight = sum(_line_weight(case, c) for c in attached)
+        if case.environment.seabed is not None:      # chain may rest on the seabed: only what must hang
+            weight = sum(_hanging_at_least(case, c) for c in attached)
         if weight > 0 and body.net_buoyancy < weight:
             names = ", ".join(f"'{c.name}'" for c in attached)
             out.warning(("bodies", name, "net_buoyancy"),
                         f"buoy '{name}' has net buoyancy {fmt(body.net_buoyancy)} N, less than "
                         f"the weight in water {weight:.6g} N of its mooring line(s) {names}: "
                         "it will sink")
+
+
+def _hanging_at_least(case: Case, cable: Cable) -> float:
+    """Weight in water of the least length of ``cable`` that must hang off the seabed [N]: the
+    height of its body end above the anchor, in its lightest line type (the rest may rest on
+    the seabed)."""
+    env = case.environment
+    anchors = [e.position[2] for e in cable.ends if e.kind == "anchor"]
+    body = next((case.bodies[e.name] for e in cable.ends if e.kind == "body"), None)
+    if not anchors or body is None or body.position is None:
+        return 0.0
+    lightest = min(case.line_types[s.line_type].weight_in_water_value(env.water_density, env.gravity)
+                   for s in cable.sections)
+    return max(lightest, 0.0) * min(max(body.position[2] - min(anchors), 0.0), cable.length)
 
 
 def check_time_steps(case: Case, out: Findings) -> None:
@@ -270,8 +286,8 @@ def check_waves(case: Case, out: Findings) -> None:
 
 def check_towing(case: Case, out: Findings) -> None:
     """A towed cable needs a vessel track (and a tow speed, for the statics)."""
-    towed = [c.name for c in case.cables if any(e.kind == "vessel" for e in c.ends)]
-    if not towed:
+    towed = [c.name for c in case.cables if any(e.kind == "vessel" and e.offset is None for e in c.ends)]
+    if not towed:                  # none, or only fairleads of a moored vessel (they need no track)
         return
     if not case.vessel.track:
         out.warning(("vessel", "track"), f"cable '{towed[0]}' hangs from the vessel but the "
