@@ -1,0 +1,164 @@
+"""A three-leg chain mooring with seabed contact, kanat's lumped model beside MoorDyn-C (PyPI
+``moordyn``, the ``peers`` extra), whole processes, on the same MoorDyn input file.
+
+The file is ``examples/moordyn/three_leg_chain_50.dat``: three 640 m studless chain legs
+(50 segments each, ``BA = -0.8``) from anchors in 120 m of water to three fairleads on a
+vessel (MoorDyn's coupled points), seabed ``kBot = 3e6``, ``cBot = 3e5``. The vessel moves as
+in waves: surge ``-2 cos(2 pi t / 11)`` m and heave ``-cos(2 pi t / 9)`` m (kanat's
+``vessel.motion`` with ``phase_deg: -90``; MoorDyn's coupled points driven with the same
+positions and the mean velocity of every 0.05 s coupling step), 600 s simulated.
+
+Each configuration runs as its own process (``kanat run case.yaml -o out.nc``; a Python process
+running MoorDyn on the file), interleaved, ``REPEATS`` times; the table gives medians of the
+whole process's wall time and of the stepping alone (kanat: the run loop's ``wall_time_s``
+less nothing — it includes the initial equilibrium; MoorDyn: its ``Step`` calls, its initial
+condition apart). Accuracy: the mean and range (max - min) of each fairlead tension over
+300-600 s — the tension of the segment at the fairlead in both codes (MoorDyn's ``FairTen``; kanat's
+node ``tension`` extrapolates to the end point, 1.8 % higher here) — relative to MoorDyn at its
+input file's own setting (RK2, ``dtM = 1 ms``).
+
+Run: ``python benchmarks/bench_mooring_moordyn.py [--repeats 3] [--duration 600]``; prints the
+Markdown table kept in benchmarks/RESULTS.md (about 10 minutes).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+FILE = ROOT / "examples" / "moordyn" / "three_leg_chain_50.dat"
+MOTION = [{"dof": "surge", "amplitude": 2.0, "period": 11.0, "phase_deg": -90.0},
+          {"dof": "heave", "amplitude": 1.0, "period": 9.0, "phase_deg": -90.0}]
+BASE = [[20.0, 0.0, -8.0], [-10.0, 17.321, -8.0], [-10.0, -17.321, -8.0]]
+COUPLING = 0.05
+WINDOW = [300.0, 600.0]     # s: the second half of the run (set from --duration)
+
+MOORDYN_SCRIPT = """
+import json, math, sys, time
+import numpy as np, moordyn
+path, scheme, dt, duration, out = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+base = np.array({base})
+def disp(t):
+    return np.array([-2.0 * math.cos(2 * math.pi * t / 11.0), 0.0, -1.0 * math.cos(2 * math.pi * t / 9.0)])
+system = moordyn.Create(path)
+moordyn.SetTimeScheme(system, scheme)
+moordyn.SetDt(system, dt)
+moordyn.Init(system, list((base + disp(0.0)).ravel()), [0.0] * 9)
+lines = [moordyn.GetLine(system, i) for i in (1, 2, 3)]
+dc = {coupling}
+record, start = [], time.perf_counter()
+for k in range(int(round(duration / dc))):
+    t = k * dc
+    velocity = np.tile((disp(t + dc) - disp(t)) / dc, 3)
+    moordyn.Step(system, list((base + disp(t)).ravel()), list(velocity), t, dc)
+    if (k + 1) % 10 == 0:
+        record.append([(k + 1) * dc] + [moordyn.GetLineFairTen(line) for line in lines])
+stepping = time.perf_counter() - start
+np.save(out, np.array(record))
+print(json.dumps({{"stepping": stepping}}))
+"""
+
+
+def kanat_case(folder: Path, scheme: str, dt: float | None, duration: float) -> Path:
+    """The MoorDyn file imported, with the vessel's motion, a scheme and a step."""
+    from kanat.io import load_case
+    import yaml
+
+    case = load_case(FILE)
+    sim = {"simulation.duration": duration, "simulation.output_dt": 0.5, "simulation.scheme": scheme,
+           "simulation.dt": dt}
+    case = case.replace({"vessel.motion": MOTION, **sim})
+    path = folder / f"kanat_{scheme}_{dt}.yaml"
+    path.write_text(yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_none=True), sort_keys=False))
+    return path
+
+
+def run_kanat(case_path: Path, folder: Path):
+    out = folder / (case_path.stem + ".nc")
+    start = time.perf_counter()
+    subprocess.run([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)],
+                   capture_output=True)
+    whole = time.perf_counter() - start
+    import xarray as xr
+    with xr.open_dataset(out) as ds:
+        if ds.attrs["status"] != "ok":
+            return whole, float("nan"), ds.attrs["status"]
+        cables = ds.segment_cable.values                     # the fairlead segment's tension, as MoorDyn's
+        ends = [int(np.flatnonzero(cables == name)[-1]) for name in ("line1", "line2", "line3")]
+        series = np.column_stack([ds.time.values] + [ds.segment_tension.values[:, k] for k in ends])
+        return whole, float(ds.attrs["wall_time_s"]), series
+
+
+def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
+    script = folder / "moordyn_run.py"
+    script.write_text(MOORDYN_SCRIPT.format(base=BASE, coupling=COUPLING))
+    out = folder / f"moordyn_{scheme}_{dt}.npy"
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, str(script), str(FILE), scheme, str(dt), str(duration), str(out)],
+                          check=True, capture_output=True, text=True)
+    whole = time.perf_counter() - start
+    stepping = json.loads(done.stdout.strip().splitlines()[-1])["stepping"]
+    return whole, stepping, np.load(out)
+
+
+def statistics(series: np.ndarray) -> np.ndarray:
+    """Mean and range of each fairlead tension over WINDOW: shape (3, 2)."""
+    t = series[:, 0]
+    inside = (t >= WINDOW[0] - 1e-9) & (t <= WINDOW[1] + 1e-9)
+    values = series[inside, 1:]
+    return np.stack([values.mean(axis=0), values.max(axis=0) - values.min(axis=0)], -1)
+
+
+CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK4", 0.008),
+           ("kanat", "generalized-alpha-lumped", 0.1), ("kanat", "generalized-alpha-lumped", 0.05),
+           ("kanat", "rk4", None)]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--duration", type=float, default=600.0)
+    args = parser.parse_args()
+    WINDOW[:] = [args.duration / 2, args.duration]
+    folder = Path(tempfile.mkdtemp())
+    times = {c: [] for c in CONFIGS}
+    results = {}
+    for _ in range(args.repeats):                                   # interleaved
+        for config in CONFIGS:
+            code, scheme, dt = config
+            if code == "kanat":
+                whole, stepping, series = run_kanat(kanat_case(folder, scheme, dt, args.duration), folder)
+            else:
+                whole, stepping, series = run_moordyn(scheme, dt, args.duration, folder)
+            times[config].append((whole, stepping))
+            results[config] = statistics(series) if not isinstance(series, str) else series
+    reference = results[CONFIGS[0]]
+    best_moordyn = min(np.median([w for w, _ in times[c]]) for c in CONFIGS
+                       if c[0] == "MoorDyn" and not isinstance(results[c], str))
+    print("| code | scheme | step [s] | whole process [s] | stepping [s] | vs best MoorDyn (whole) | "
+          "fairlead mean, max rel. diff. | range, max rel. diff. |")
+    print("|---|---|---|---|---|---|---|---|")
+    for config in CONFIGS:
+        whole = float(np.median([w for w, _ in times[config]]))
+        stepping = float(np.median([s for _, s in times[config]]))
+        code, scheme, dt = config
+        if isinstance(results[config], str):
+            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | – | – | {results[config][:90]} | |")
+            continue
+        diff = np.abs(results[config] - reference) / reference
+        print(f"| {code} | {scheme} | {dt if dt else 'safe'} | {whole:.2f} | {stepping:.2f} | "
+              f"{best_moordyn / whole:.2f}x | {100 * diff[:, 0].max():.2f} % | {100 * diff[:, 1].max():.2f} % |")
+    print(f"\nreference (MoorDyn RK2 1 ms) fairlead tension mean {reference[:, 0].round(0).tolist()} N, "
+          f"range {reference[:, 1].round(0).tolist()} N over {WINDOW[0]:g}-{WINDOW[1]:g} s")
+
+
+if __name__ == "__main__":
+    main()
