@@ -135,9 +135,9 @@ def test_continuum_refuses_what_the_table_says():
     with pytest.raises(CaseError, match="takes one cable"):
         planar_cable(several)
     sideways = case_of(**{"environment.current": {"velocity": [0.5, 0.3, 0.0]}})
-    assert any(p.key == "environment.current" for p in unsupported(sideways, "continuum"))
+    assert not any(p.key == "environment.current" for p in unsupported(sideways, "continuum"))
     with pytest.raises(CaseError, match="y component"):
-        cable_problems(sideways)                   # the continuum model's initial state
+        cable_problems(sideways)                   # planar statics; the 3-D statics starts the continuum model
     loose = case_of(**{"cables": [{"name": "tow", "line_type": "wire", "length": 1000, "segments": 20,
                                    "from": "sled", "to": "vessel"}]})
     assert [p.key for p in unsupported(loose, "continuum")] == ["cables[0].from"]
@@ -148,7 +148,6 @@ def test_continuum_refuses_what_the_table_says():
 
 
 @pytest.mark.parametrize("change, key", [
-    ({"environment.waves": {"type": "regular", "height": 2.0, "period": 8.0}}, "environment.waves"),
     ({"line_types.wire.axial_damping": 5.0e4}, "line_types.wire.axial_damping"),
 ])
 def test_continuum_lacks_what_the_table_says(change, key):
@@ -228,32 +227,34 @@ def test_lumped_has_what_the_table_says():
 
 def test_validate_reports_each_use_at_its_line_and_names_who_supports_it():
     text = TOW.replace("model: continuum", "model: continuum").replace(
-        "environment: {depth: 3000}", "environment:\n  depth: 3000\n  waves: {type: regular, height: 1.0, "
-        "period: 7.0}")
-    problems = [p for p in check_text(text, "case.yaml") if p.key == "environment.waves"]
+        "  sled: {mass: 1000, net_buoyancy: -4000, drag_area: 0.3}",
+        "  sled: {mass: 1000, net_buoyancy: -4000, drag_area: 0.3,\n         spreading_force: 100}")
+    problems = [p for p in check_text(text, "case.yaml") if p.key == "bodies.sled.spreading_force"]
     assert len(problems) == 1
     (problem,) = problems
-    assert (problem.severity, problem.line, problem.file) == ("error", 5, "case.yaml")
-    assert problem.message == ("waves (regular): model 'continuum' does not support it (it has no "
-                               "wave kinematics); supported by: lumped")
+    assert (problem.severity, problem.line, problem.file) == ("error", 8, "case.yaml")
+    assert problem.message == ("an otter board's spreading force: model 'continuum' does not support it; "
+                               "supported by: lumped")
 
 
 def test_new_keys_say_no_model_supports_them_yet():
-    case = case_of(**{"line_types.wire.bending_stiffness": 50.0})
-    (problem,) = unsupported(case, "continuum")
+    case = case_of(**{"line_types.wire.bending_stiffness": 50.0, "simulation.dimensions": 3})
+    (problem,) = unsupported(case, "continuum")                       # bending in a 3-D continuum run
     assert problem.key == "line_types.wire.bending_stiffness"
-    assert problem.message.endswith("no model supports it yet")
+    assert "x-z plane only" in problem.message
+    assert unsupported(case_of(**{"line_types.wire.bending_stiffness": 50.0}), "continuum") == []
     with pytest.raises(CaseError):
         require_supported(case, "lumped")
 
 
 def test_seabed_contact_without_a_contact_model_is_a_warning_where_cables_reach_it():
     shallow = case_of(**{"environment.depth": 500.0})
-    (problem,) = unsupported(shallow, "continuum")
+    (problem,) = unsupported(shallow, "lumped")
     assert problem.severity == "warning" and problem.key == "environment.depth"
     assert "cable 'tow' can reach the seabed at z = -500 m" in problem.message
-    assert "supported by: statics" in problem.message
-    assert unsupported(case_of(), "continuum") == []                 # 1000 m of cable in 3000 m
+    assert "supported by: statics, continuum" in problem.message
+    assert unsupported(shallow, "continuum") == []                   # the default contact model of the seabed
+    assert unsupported(case_of(), "lumped") == []                    # 1000 m of cable in 3000 m
     assert unsupported(shallow, "statics") == []
     assert [p.severity for p in require_supported(shallow, "lumped")] == ["warning"]
 

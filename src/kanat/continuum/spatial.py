@@ -16,7 +16,7 @@ from kanat.continuum import kernels3d as k3
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch
-from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure, step_rows
+from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure, near_seabed, step_rows
 from kanat.continuum.water import elevation, kinematics_time, predictor_weight
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -192,7 +192,7 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
     env = spatial_water(cable, xyz, np.zeros_like(xyz), frames(guess, chart)[0], 0.0, 0.0, (0.0, 0.0, 1.0), chart,
                         waves=False)
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
-    if cable.seabed is None and cable.end.waterplane == 0.0 and not anchored:
+    if not near_seabed(cable, xyz) and cable.end.waterplane == 0.0 and not anchored:
         x, _ = _solve(cable, guess, guess, np.zeros_like(guess), env, up, P, b0, b1)
         return x
     from kanat.continuum.steady import steady_with_positions

@@ -155,7 +155,8 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     b0, b1 = cable.start.array(v0, rho), cable.end.array(v1, rho)
     env = planar_water(cable, xz, np.zeros_like(xz), 0.0, 0.0, (0.0, 0.0, 1.0), waves=False)
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
-    if cable.seabed is None and cable.end.waterplane == 0.0 and not anchored:
+    if not near_seabed(cable, np.column_stack([xz[:, 0], np.zeros(len(xz)), xz[:, 1]])) and \
+            cable.end.waterplane == 0.0 and not anchored:
         x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
         return x
     from kanat.continuum.steady import steady_with_positions
@@ -175,6 +176,18 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     target = np.asarray(cable.end.position, dtype=float) if anchored else None
     return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),
                                  scales(cable, guess), (3,), width, target)
+
+
+SEABED_MARGIN = 0.01
+"""A steady guess whose nodes all stay this fraction of the cable's length (at least 1 m) above the
+seabed cannot touch it: its steady state needs no dense Newton."""
+
+
+def near_seabed(cable, xyz) -> bool:
+    """True when a node of ``xyz`` (n, 3) is within :data:`SEABED_MARGIN` of the seabed."""
+    if cable.seabed is None:
+        return False
+    return bool(np.max(cable.seabed.penetration(xyz)) > -max(1.0, SEABED_MARGIN * cable.length))
 
 
 def planar_position_jacobian(rows):

@@ -320,10 +320,25 @@ NO_STEADY_EFFECT = ("axial_damping", "tangential_added_mass", "consistent_mass",
 """Rows that do not change a steady state (damping, added mass, solver settings)."""
 
 
+def single_cable(case: Case) -> bool:
+    """One cable between the vessel's tow point, anchors and point bodies (no fairleads, points or 6-DOF
+    bodies): the 3-D single-cable statics solves it in a current too (:mod:`kanat.statics.shooting3d`)."""
+    if len(case.cables) != 1 or case.points:
+        return False
+    cable = case.cables[0]
+    for end in cable.ends:
+        if end.offset is not None or end.kind in ("point", "free"):
+            return False
+        if end.kind == "body" and end.name in case.bodies and case.bodies[end.name].dof != 3:
+            return False
+    return all(a.body in case.bodies and case.bodies[a.body].dof == 3 for a in cable.attachments)
+
+
 def _drag_without_fallback(case: Case) -> list[Use]:
     """A network in a current or under tow, where it uses what the lumped equilibrium lacks
-    (a row the lumped model does not support, or its missing seabed contact)."""
-    if not (has_drag(case) and needs_network(case)):
+    (a row the lumped model does not support, or its missing seabed contact); a single cable is
+    the 3-D single-cable statics' and needs no fallback."""
+    if not (has_drag(case) and needs_network(case)) or single_cable(case):
         return []
     return [(path, f" ({row.title}{detail})") for row in FEATURES
             if row.statics == YES and row.name not in NO_STEADY_EFFECT

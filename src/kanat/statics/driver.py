@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
-from kanat.model.support import has_drag, needs_network, require_supported
+from kanat.model.support import has_drag, needs_network, require_supported, single_cable
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
 from kanat.statics.network_setup import NeedsDrag
@@ -156,19 +156,6 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
             if end.kind == "body":
                 bodies[end.name] = solution.position[index]
     return StaticsResult(case, method, solutions, bodies, vessel_velocity(case))
-
-
-def single_cable(case) -> bool:
-    """True when the case is one cable between the vessel's tow point, anchors and point bodies: the 3-D
-    single-cable statics (:mod:`kanat.statics.shooting3d`) solves it, in a current too."""
-    if len(case.cables) != 1 or case.points:
-        return False
-    for end in case.cables[0].ends:
-        if end.offset is not None or end.kind in ("point", "free"):
-            return False
-        if end.kind == "body" and case.bodies[end.name].dof != 3:
-            return False
-    return all(case.bodies[a.body].dof == 3 for a in case.cables[0].attachments)
 
 
 def stations(cable) -> np.ndarray:

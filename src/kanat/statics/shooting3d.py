@@ -26,7 +26,8 @@ from kanat.statics.guess3d import grounding_guess, still_water_force
 from kanat.statics.spatial import Body3, CableBVP3, Fixed3, check_solvable, end_residual, grounded_states, jump, rhs
 from kanat.statics.solution import CableSolution
 
-RTOL = 1e-11          # ODE tolerance, far below the 1e-6 the solvers must agree to
+RTOL = 1e-12          # ODE tolerance: far below the 1e-6 the solvers must agree to, and rotations leave
+                      # tensions to 1e-9 (the integrator takes other steps in turned coordinates)
 RESIDUAL_TOL = 1e-10  # end residual, relative to the cable length / reference force
 MIN_TENSION = 1e-9    # relative; below this the cable is slack and the equations break down
 CONTINUATION_STEPS = 4

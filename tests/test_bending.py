@@ -1,0 +1,143 @@
+"""Bending stiffness in the planar continuum model (Gobat & Grosenbaugh's curvature term, SPEC §4):
+a cantilever's deflection, a beam-string's natural frequencies, the flexible limit, and what the
+model does with compression and in 3-D."""
+import warnings
+
+import numpy as np
+import pytest
+
+import kanat
+from kanat.continuum import kernels2d as k
+from kanat.continuum.grid import Grid, parameters
+from kanat.continuum.model2d import EndCondition, PlanarCable, positions
+from kanat.continuum.models import model_for
+from kanat.continuum.schemes import Box
+from kanat.continuum.stepper import State, steady, step
+from kanat.errors import CaseError
+
+from helpers import EXAMPLES
+
+STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
+
+
+def beam(n, length, mass, weight, ei, start, end, ea=1e9):
+    p = parameters(mass, 0.0, weight, ea, 0.05, 0.0, 0.0, 1025.0, length / n, bending=ei)
+    grid = Grid(np.linspace(0.0, length, n + 1), np.tile(p, (n, 1)), (), ("beam",))
+    return PlanarCable("beam", length, n, p, start, end, grid=grid)
+
+
+@pytest.mark.parametrize("segments", [10, 40])
+def test_cantilever_deflects_as_euler_bernoulli(segments):
+    """Clamped horizontally, free tip, own weight w: tip deflection w L^4 / (8 EI), root moment w L^2 / 2."""
+    length, w, ei = 10.0, 1.0, 1.0e4
+    cable = beam(segments, length, 0.5, w, ei, EndCondition(k.VELOCITY, clamped=True, angle=0.0), EndCondition(k.FREE))
+    xz = np.column_stack([np.linspace(0.0, length, segments + 1), np.zeros(segments + 1)])
+    y = steady(cable, np.zeros((segments + 1, 6)), ((0.0, 0.0), (0.0, 0.0)), xz)
+    tip = positions(cable, y, (0.0, 0.0))[-1]
+    assert tip[1] == pytest.approx(-w * length**4 / (8 * ei), rel=1e-3)    # 1.25 % of L: 1e-4 nonlinear
+    assert y[0, 5] == pytest.approx(-w * length**2 / 2, rel=1e-3)
+    assert y[0, 4] == pytest.approx(-w * length, rel=1e-3)                  # root shear
+
+
+class Hold:
+    def velocities(self, t):
+        return (0.0, 0.0), (0.0, 0.0)
+
+    def origin(self, t):
+        return np.zeros(2)
+
+
+def zero_crossing_period(t, signal):
+    sign = np.signbit(signal)
+    idx = np.nonzero(sign[1:] != sign[:-1])[0]
+    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
+    return 2.0 * np.mean(np.diff(times))
+
+
+@pytest.mark.parametrize("mode", [1, 2, 3])
+def test_beam_string_natural_frequencies(mode):
+    """Pinned taut string with EI: omega^2 = (T k^2 / (1 + e) + EI k^4 / (1 + e)^2) / m, k = n pi / L."""
+    n, length, tension, m, ea, ei = 60, 100.0, 1000.0, 1.0, 1e7, 1e5
+    cable = beam(n, length, m, 0.0, ei, EndCondition(k.VELOCITY, position=(0.0, 0.0)),
+                 EndCondition(k.VELOCITY, position=(length, 0.0)), ea)
+    s = cable.s
+    y = np.zeros((n + 1, 6))
+    y[:, 0] = tension
+    y[:, 2] = 1e-3 * np.sin(mode * np.pi * s / length)                     # the mode shape, as a velocity
+    state = State(0.0, y, np.zeros_like(y), np.column_stack([s, 0 * s]))
+    e, kk = tension / ea, mode * np.pi / length
+    omega = np.sqrt((tension * kk**2 / (1 + e) + ei * kk**4 / (1 + e) ** 2) / m)
+    dt, probe = 2 * np.pi / omega / 80, n // (2 * mode)
+    times, values = [], []
+    for _ in range(600):
+        state, _ = step(cable, state, dt, Box().coefficients(), Hold())
+        times.append(state.t)
+        values.append(state.y[probe, 2])
+    measured = 2 * np.pi / zero_crossing_period(np.array(times), np.array(values))
+    assert measured == pytest.approx(omega, rel=0.01)
+    string = np.sqrt(tension * kk**2 / (1 + e) / m)
+    assert omega / string - 1 > 0.04                                        # bending matters: 4.8 % up to 77 %
+
+
+def with_bending(text, ei, segments=100):
+    return text.replace("segments: 100", f"segments: {segments}").replace(
+        "    drag_tangential: 0.01\n", f"    drag_tangential: 0.01\n    bending_stiffness: {ei}\n", 1)
+
+
+def test_no_bending_stiffness_is_the_flexible_model_exactly():
+    plain = model_for(kanat.load_case(STEP_CASE))
+    zero = model_for(kanat.load_case(with_bending(STEP_CASE, 0.0)))
+    assert plain.cable.nv == zero.cable.nv == 4
+    a, b = plain.initial(), zero.initial()
+    assert np.array_equal(a.y, b.y) and np.array_equal(a.xz, b.xz)
+
+
+def test_vanishing_bending_stiffness_converges_to_the_flexible_model():
+    """EI = 1e-3 N m^2: the bending model's steady tow differs from the flexible one by a discretization
+    error that falls with the grid (about 16 times per halving of ds)."""
+    differences = []
+    for segments in (50, 100, 200):
+        flexible = model_for(kanat.load_case(STEP_CASE.replace("segments: 100", f"segments: {segments}"))).initial()
+        stiff = model_for(kanat.load_case(with_bending(STEP_CASE, 1e-3, segments))).initial()
+        assert stiff.y.shape[1] == 6
+        differences.append(np.max(np.abs(stiff.y[:, 0] - flexible.y[:, 0])) / flexible.y[:, 0].max())
+    assert differences[2] < 1e-7
+    assert differences[0] / differences[1] > 8 and differences[1] / differences[2] > 8
+
+
+def test_bending_stiffness_in_a_3d_run_is_refused_by_name():
+    text = with_bending((EXAMPLES / "turn_360_3d.yaml").read_text(), 100.0)
+    with pytest.raises(CaseError, match="line_types.towcable.bending_stiffness"):
+        kanat.load_case(text)
+
+
+def test_compression_beyond_a_segments_euler_load_stops_the_run():
+    """A line with EI is a rod: it may carry compression up to the Euler load of one segment; a run
+    pushed beyond it stops, and says so, with what to do."""
+    from kanat.continuum.adapter import ContinuumModel
+
+    model = ContinuumModel(kanat.load_case(with_bending(STEP_CASE, 50.0, 20)))
+    state = model.initial()
+    values = model.outputs(state)
+    assert model.check(state, values) is None
+    values["tension"] = values["tension"].copy()
+    euler = np.pi**2 * 50.0 / (2 * 50.0) ** 2
+    values["tension"][5] = -0.5 * euler                        # within the rod's reach
+    assert model.check(state, values) is None
+    values["tension"][5] = -2.0 * euler - 1e-3 * np.max(values["tension"])
+    message = model.check(state, values)
+    assert "compression" in message and "Euler load of one segment" in message and "more segments" in message
+    flexible = ContinuumModel(kanat.load_case(STEP_CASE.replace("segments: 100", "segments: 20")))
+    values["tension"][5] = -0.01 * np.max(values["tension"])
+    assert "perfectly flexible cable cannot carry" in flexible.check(flexible.initial(), values)
+
+
+def test_a_bending_case_runs_and_stays_steady():
+    text = with_bending(STEP_CASE, 300.0).replace("duration: 600\n", "duration: 20\n").replace(
+        "speed_kn: 6, duration: 60", "speed_kn: 6, duration: 100")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(kanat.load_case(text))
+    assert ds.attrs["status"] == "ok"
+    drift = np.max(np.abs(ds.tension.values[-1] - ds.tension.values[0])) / ds.tension.values.max()
+    assert drift < 1e-9
