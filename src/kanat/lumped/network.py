@@ -300,26 +300,31 @@ def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> N
 
 def sagged_line(p0, p1, length: float, segments: int, s=None) -> np.ndarray:
     """Nodes of a cable between ``p0`` and ``p1``: straight when the chord is as long as the
-    cable, else a parabola sagging downward whose polyline is
-    that long (elements taut, so the equilibrium's tangent is regular from the start).
-    ``s`` (segments + 1,) places the nodes at those fractions of the length (default even)."""
-    xi = (np.linspace(0.0, 1.0, segments + 1) if s is None else np.asarray(s) / length)[:, None]
+    cable, else a parabola sagging downward whose length is ``GUESS_STRETCH`` times the cable's
+    (elements taut, so the equilibrium's tangent is regular from the start), the nodes spaced
+    evenly along it in arclength. ``s`` (segments + 1,) places the nodes at those fractions of
+    the length (default even)."""
+    fraction = np.linspace(0.0, 1.0, segments + 1) if s is None else np.asarray(s) / length
     chord = p1 - p0
-    straight = p0 + chord * xi
-    target = GUESS_STRETCH * length
-    if np.linalg.norm(chord) >= target or np.linalg.norm(chord) >= length * (1.0 - 1e-12):
-        return straight                               # taut, or laid out straight as given
+    if np.linalg.norm(chord) >= GUESS_STRETCH * length or np.linalg.norm(chord) >= length * (1.0 - 1e-12):
+        return p0 + chord * fraction[:, None]          # taut, or laid out straight as given
     down = np.array([0.0, 0.0, -1.0]) - chord * (-chord[2]) / max(chord @ chord, 1e-300)
     if np.linalg.norm(down) < 1e-9:                  # vertical chord: bow sideways
         down = np.array([1.0, 0.0, 0.0])
     down /= np.linalg.norm(down)
+    xi = np.linspace(0.0, 1.0, 20 * segments + 201)[:, None]
     shape = 4.0 * xi * (1.0 - xi) * down
-    polyline = lambda sag: np.sum(np.linalg.norm(np.diff(straight + sag * shape, axis=0), axis=1))  # noqa: E731
+    curve = lambda sag: p0 + chord * xi + sag * shape  # noqa: E731
+    polyline = lambda sag: np.sum(np.linalg.norm(np.diff(curve(sag), axis=0), axis=1))  # noqa: E731
+    target = GUESS_STRETCH * length
     low, high = 0.0, target
     for _ in range(100):
         mid = 0.5 * (low + high)
         low, high = (mid, high) if polyline(mid) < target else (low, mid)
-    return straight + 0.5 * (low + high) * shape
+    points = curve(0.5 * (low + high))
+    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))])
+    wanted = fraction * arc[-1]
+    return np.stack([np.interp(wanted, arc, points[:, r]) for r in range(3)], -1)
 
 
 def build_network(case) -> Network:
