@@ -47,14 +47,15 @@ def run_case(text: str, label: str, output: str, window=None) -> dict:
     Returns
     -------
     dict
-        ``status`` (``ok`` or ``failed``), ``message``, ``wall_time_s``, ``statistics``
-        (empty when the case failed) and ``worker`` (host:pid).
+        ``status`` (``ok`` or ``failed``), ``message``, ``wall_time_s``, ``cpu_time_s``
+        (CPU time of the process running it meanwhile), ``statistics`` (empty when the
+        case failed) and ``worker`` (host:pid).
     """
     from kanat.analysis.summary import summary_statistics
     from kanat.io import parse_case
     from kanat.io.results import read_result
 
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     record = {"status": "failed", "message": "", "statistics": {}, "worker": f"{os.uname().nodename}:{os.getpid()}"}
     try:
         with warnings.catch_warnings():
@@ -70,4 +71,5 @@ def run_case(text: str, label: str, output: str, window=None) -> dict:
         record["message"] = f"{type(error).__name__}: {error}"
         record["traceback"] = traceback.format_exc(limit=6)
     record["wall_time_s"] = time.perf_counter() - start
+    record["cpu_time_s"] = time.process_time() - cpu
     return record

@@ -6,7 +6,7 @@ Layout of a study directory::
     cases/NAME.yaml       each variant's case file (run it alone with kanat run)
     results/NAME.nc       each case's result file (case-format.md)
     records/NAME.json     written when a case is finished (ok or failed): its status,
-                          message, wall time and summary statistics
+                          message, wall and CPU time and summary statistics
     summary.nc            one row per finished case (dimension ``case``): the varied
                           parameters (variables named by their key paths), ``name``,
                           ``status``, ``message`` and every summary statistic
