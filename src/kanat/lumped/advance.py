@@ -51,7 +51,9 @@ class FusedArrays:
         buoys = net.body_node[net.buoy_body] if len(net.buoy_body) else np.zeros(0, np.int64)
         self.bodies = (net.load_node.astype(np.int64), net.load_drag_area.astype(float),
                        net.load_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
-                       net.buoy_area.astype(float), net.buoy_height.astype(float), system.rig, system.contact)
+                       net.buoy_area.astype(float), net.buoy_height.astype(float),
+                       system.rig if net.rigid.count else None,                     # None: pruned from the kernels
+                       system.contact if len(system.contact[0]) else None)
         cz, cu = system.current.table()
         still = system.sea is None and len(cz) == 1                  # water kinematics constant in space and time
         self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still, system.eta_bound)

@@ -167,10 +167,30 @@ def wetted(x, el_i, el_j, diameter, t, sea, bound, wet):
 
 
 @inner
-def rigid_loads(t, nodes, bodies, env, work):
+def place_rigid(x, v, rig):
+    """Fairleads on their 6-DOF bodies; nothing (and nothing compiled) when ``rig`` is None."""
+    if rig is not None:
+        rigid.place_fairleads(x, v, rig)
+
+
+@inner
+def seabed_loads(x, v, el_i, el_j, contact, work):
+    """Seabed contact forces into ``work[2]``; nothing (and nothing compiled) when ``contact`` is None."""
+    if contact is not None:
+        area, bed, params, laid = contact
+        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work[19], work[2], work[18])
+
+
+@inner
+def rigid_loads(t, rig, env, work):
     """6-DOF body accelerations into ``work[14]`` (rigid.rigid_accelerations), water at their
-    reference points."""
-    rig = bodies[7]
+    reference points; nothing (and nothing compiled) when ``rig`` is None."""
+    if rig is not None:
+        rigid_water_and_loads(t, rig, env, work)
+
+
+@inner
+def rigid_water_and_loads(t, rig, env, work):
     rho, cz, cu, sea = env[0], env[2], env[3], env[4]
     x, v, F, M, acc, ru, ra, reta, rx = work[0], work[1], work[2], work[3], work[14], work[15], work[16], \
         work[17], work[20]
@@ -186,7 +206,8 @@ def rigid_loads(t, nodes, bodies, env, work):
 @inner
 def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
-    — system eqs. (1)-(2); seabed contact and 6-DOF bodies included."""
+    — system eqs. (1)-(2); seabed contact and 6-DOF bodies included (``bodies[7]``, ``bodies[8]``
+    None when a network has neither: their code is then pruned from the compiled kernels)."""
     node_force, node_mass = nodes[4], nodes[5]
     x, v, F, M, T, strain, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7], \
         work[8]
@@ -194,8 +215,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     rho, g, cz, cu, sea, still, bound = env
     body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height, rig, contact = bodies
     place(y, vpos, vvel, nodes, x, v)
-    if rig[0].shape[0] > 0:
-        rigid.place_fairleads(x, v, rig)
+    place_rigid(x, v, rig)
     el_i, el_j = el[0], el[1]
     if not still:                        # else uw, aw hold the uniform current and zero (FusedArrays)
         for k in range(el_i.shape[0]):
@@ -204,9 +224,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         water(mid, t, cz, cu, sea, uw, aw)
     wetted(x, el_i, el_j, el[18], t, sea, bound, wet)
     kernels.element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain)
-    if contact[0].shape[0] > 0:
-        area, bed, params, laid = contact
-        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work[19], F, work[18])
+    seabed_loads(x, v, el_i, el_j, contact, work)
     if body_node.shape[0] > 0:
         if not still:
             for b in range(body_node.shape[0]):
@@ -219,8 +237,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]
         immersion = min(max(immersion, 0.0), buoy_height[b])
         F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
-    if rig[0].shape[0] > 0:
-        rigid_loads(t, nodes, bodies, env, work)
+    rigid_loads(t, rig, env, work)
 
 
 @inner
@@ -287,8 +304,7 @@ def tensions_at(y, s, samples, nodes, el, bodies, work):
     """Element tensions at ``y`` into ``work[4]`` (vessel at sample ``s``)."""
     x, v, T = work[0], work[1], work[4]
     place(y, samples[0][s], samples[1][s], nodes, x, v)
-    if bodies[7][0].shape[0] > 0:
-        rigid.place_fairleads(x, v, bodies[7])
+    place_rigid(x, v, bodies[7])
     kernels.tensions(x, v, el[0], el[1], el[2], el[10], el[11], el[12], el[13], el[14], el[15], T)
 
 

@@ -110,6 +110,19 @@ def band_solve(A, bw, b):
 
 
 @inner
+def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c_stiff):
+    """The seabed contact's blocks in the band tangent; nothing (nor compiled) when ``contact`` is None."""
+    if contact is not None:
+        x, v = work[0], work[1]
+        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], Kc, Cc)
+        for f in range(free_index.shape[0]):
+            node = free_index[f]
+            if work[18][node] > 0.0:
+                band_add(A, bw, position[node], position[node], Kc[node], c_stiff)
+                band_add(A, bw, position[node], position[node], Cc[node], c_damp)
+
+
+@inner
 def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
     """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
     (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
@@ -130,14 +143,7 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
     free_index = nodes[0]
     for f in range(free_index.shape[0]):
         band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
-    contact = bodies[8]
-    if contact[0].shape[0] > 0:
-        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], Kc, Cc)
-        for f in range(free_index.shape[0]):
-            node = free_index[f]
-            if work[18][node] > 0.0:
-                band_add(A, bw, position[node], position[node], Kc[node], c_stiff)
-                band_add(A, bw, position[node], position[node], Cc[node], c_damp)
+    seabed_tangent(A, bw, position, free_index, bodies[8], work, Kc, Cc, c_damp, c_stiff)
     body_node, drag_area, rho = bodies[0], bodies[1], env[0]
     block = np.empty((3, 3))
     for b in range(body_node.shape[0]):

@@ -178,6 +178,21 @@ def place_fairleads(x, v, rig):
 
 
 @inner
+def matmul3(A, B, out):
+    """``out = A B`` (3 x 3), scalar loops (no ``@`` in kernels: kanat.jit)."""
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = A[i, 0] * B[0, j] + A[i, 1] * B[1, j] + A[i, 2] * B[2, j]
+
+
+@inner
+def turn(R, c, out):
+    """``out = R c`` (3,)."""
+    for i in range(3):
+        out[i] = R[i, 0] * c[0] + R[i, 1] * c[1] + R[i, 2] * c[2]
+
+
+@inner
 def solve6(A, b):
     """Solve ``A z = b`` (6, 6) in place by Gaussian elimination with partial pivoting."""
     n = 6
@@ -237,7 +252,9 @@ def static_loads(b, x, R, eta, g_vec, rig, F6):
             for j in range(6):
                 F6[i] -= Cg[i, j] * d[j]
         return
-    pg, pb = R @ cog[b], R @ cob[b]
+    pg, pb = np.empty(3), np.empty(3)
+    turn(R, cog[b], pg)
+    turn(R, cob[b], pb)
     F6[3] += -pg[1] * weight + pb[1] * buoyancy
     F6[4] += pg[0] * weight - pb[0] * buoyancy
 
@@ -267,6 +284,7 @@ def fairlead_terms(b, x, F, M, w, rig, M6, F6):
     (w x p))`` (module eq. 2); ``M`` packed (n, 6) blocks (kernels.PACKED order)."""
     ref, nodes, owner = rig[0], rig[13], rig[14]
     Mf, S, MS = np.empty((3, 3)), np.empty((3, 3)), np.empty((3, 3))
+    SMS, SM = np.empty((3, 3)), np.empty((3, 3))
     for f in range(nodes.shape[0]):
         if owner[f] != b:
             continue
@@ -278,9 +296,9 @@ def fairlead_terms(b, x, F, M, w, rig, M6, F6):
         S[0, 0], S[0, 1], S[0, 2] = 0.0, -p2, p1
         S[1, 0], S[1, 1], S[1, 2] = p2, 0.0, -p0
         S[2, 0], S[2, 1], S[2, 2] = -p1, p0, 0.0
-        MS[:, :] = Mf @ S
-        SMS = S @ MS
-        SM = S @ Mf
+        matmul3(Mf, S, MS)
+        matmul3(S, MS, SMS)
+        matmul3(S, Mf, SM)
         c0, c1, c2 = w[1] * p2 - w[2] * p1, w[2] * p0 - w[0] * p2, w[0] * p1 - w[1] * p0
         cc = np.array([w[1] * c2 - w[2] * c1, w[2] * c0 - w[0] * c2, w[0] * c1 - w[1] * c0])
         f = np.empty(3)
@@ -306,6 +324,7 @@ def rigid_accelerations(x, v, F, M, uw, aw, eta, rho, rig, acc):
     (nb,) the water at the reference points."""
     ref, rot, mass6, added6, cog, sc = rig[0], rig[1], rig[2], rig[3], rig[8], rig[10]
     R, w, Mg, M6, F6 = np.empty((3, 3)), np.empty(3), np.empty((6, 6)), np.empty((6, 6)), np.empty(6)
+    c, wc, Iw = np.empty(3), np.empty(3), np.empty(3)
     g_vec = np.zeros(3)
     for b in range(ref.shape[0]):
         th, thd = x[rot[b]], v[rot[b]]
@@ -315,9 +334,10 @@ def rigid_accelerations(x, v, F, M, uw, aw, eta, rho, rig, acc):
         rotate6(R, added6[b], M6)
         F6[:] = 0.0
         m, rhoV = sc[b, 5], sc[b, 2]
-        c = R @ cog[b]
-        wc = np.array([w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2], w[0] * c[1] - w[1] * c[0]])
-        Iw = Mg[3:, 3:] @ w
+        turn(R, cog[b], c)
+        wc[0], wc[1], wc[2] = w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2], w[0] * c[1] - w[1] * c[0]
+        for r in range(3):
+            Iw[r] = Mg[3 + r, 3] * w[0] + Mg[3 + r, 4] * w[1] + Mg[3 + r, 5] * w[2]
         for r in range(3):
             F6[r] -= m * (w[(r + 1) % 3] * wc[(r + 2) % 3] - w[(r + 2) % 3] * wc[(r + 1) % 3])
             F6[3 + r] -= w[(r + 1) % 3] * Iw[(r + 2) % 3] - w[(r + 2) % 3] * Iw[(r + 1) % 3]
