@@ -6,7 +6,9 @@ MoorDyn-C (PyPI ``moordyn``) run side by side on the same file.
   within 1 cm, the fairlead segment's tension within 0.5 %);
 * optional (``moordyn`` installed; slow): the three-leg chain mooring with the vessel moving
   as in waves, 120 s — fairlead tension mean and range over 60-120 s within 1 % and 5 % of
-  MoorDyn's (measured on 2026-11-25: mean 0.1-0.3 %, range 2-3 %, see benchmarks/RESULTS.md).
+  MoorDyn's RK2 at 1 ms (measured on 2026-11-25 with kanat's implicit scheme at 0.05 s: mean
+  0.05-0.12 %, range 2.6-3.6 %; over 300-600 s of the 600 s benchmark: 0.05 % and 1.6 %,
+  benchmarks/RESULTS.md).
 """
 import math
 import os
