@@ -193,7 +193,7 @@ def contact_twin(x, v, el_i, el_j, area, bed, params):
     np.add.at(tangent, el_j, unit)
     F = np.zeros_like(x)
     for a in np.flatnonzero((delta > 0) & (area > 0)):
-        N = max(0.0, kb * delta[a] - cb * v[a] @ nrm) * area[a]
+        N = max(0.0, kb * delta[a] - cb * min(delta[a] / contact.DAMPING_RAMP, 1.0) * v[a] @ nrm) * area[a]
         t = tangent[a] - (tangent[a] @ nrm) * nrm
         t /= np.linalg.norm(t)
         slip = v[a] - (v[a] @ nrm) * nrm

@@ -4,15 +4,19 @@ Node ``n`` carries the contact area ``A_n = sum d L0 / 2`` of its elements. With
 upward unit normal ``nu`` and the node's penetration ``delta = (h(x, y) - z) nu_z`` (the
 normal distance below the seabed, :meth:`kanat.physics.seabed.PlaneSeabed.penetration`)::
 
-    (1)  N = max(0, k_b delta - c_b (v . nu)) A_n            if delta > 0, else 0   [N]
+    (1)  N = max(0, k_b delta - c_b r(delta) (v . nu)) A_n   if delta > 0, else 0   [N]
+         r(delta) = min(1, delta / delta_r)                   damping ramp
     (2)  F_n = N nu                                         normal force
     (3)  F_a = -mu_a N tanh(v_a / v_s) a                    friction along the line
     (4)  F_l = -mu_l N tanh(|v_l| / v_s) v_l / |v_l|        friction across the line
 
-``k_b`` [Pa/m], ``c_b`` [Pa s/m] (``environment.seabed.stiffness``, ``damping``), as MoorDyn
-(the damping acts from the first millimetre: a node striking the seabed meets ``c_b |v| A``
-at once; a ramp that made this continuous made the implicit scheme's Newton iteration cycle
-at touchdowns, where its slope turns the tangent indefinite); ``a`` the
+``k_b`` [Pa/m], ``c_b`` [Pa s/m] (``environment.seabed.stiffness``, ``damping``), as MoorDyn,
+but with the damping ramped in over the first ``delta_r`` = :data:`DAMPING_RAMP` (0.2 mm) of
+penetration: MoorDyn's force jumps from 0 to ``c_b |v| A`` where a moving node strikes the
+seabed, which an implicit scheme's Newton iteration cannot follow (it cycles between touching
+and not); the ramp makes it continuous, and the tangent takes the ramp's slope where it
+stiffens (a node moving in) and ``k_b`` elsewhere (a negative slope, lifting off, would make it
+indefinite); ``a`` the
 line's direction at the node (sum of its elements' unit tangents) projected on the seabed
 plane; ``v_a = v . a`` and ``v_l = v - (v . nu) nu - v_a a``. Coulomb friction is
 regularized by ``tanh`` with the velocity scale ``v_s`` = :data:`SLIP_VELOCITY`: smooth, so
@@ -42,8 +46,7 @@ from kanat.physics.seabed import PlaneSeabed
 
 SLIP_VELOCITY = 1.0e-3      # m/s, v_s of eqs. (3)-(4)
 SLIP_DISPLACEMENT = 1.0e-4  # m, u_s of the equilibrium's friction
-DAMPING_RAMP = 1.0e-3      # m: penetration over which a model may ramp the contact damping in (the
-                           # continuum model's seabed does; the lumped law (1) is MoorDyn's, unramped)
+DAMPING_RAMP = 2.0e-4      # m, delta_r of eq. (1) (the continuum model's seabed uses it too)
 PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
 PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
 
@@ -124,7 +127,7 @@ def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal
         if delta <= 0.0:
             continue
         vn = v[a, 0] * nx + v[a, 2] * nz
-        N = max(0.0, kb * delta - cb * vn) * area[a]
+        N = max(0.0, kb * delta - cb * min(delta / DAMPING_RAMP, 1.0) * vn) * area[a]
         normal_force[a] = N
         F[a, 0] += N * nx
         F[a, 2] += N * nz
@@ -167,8 +170,8 @@ def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
 @kernel
 def contact_tangent(x, v, area, bed, params, normal_force, K, C):
     """Node blocks of ``-dF/dx`` (``K``) and ``-dF/dv`` (``C``) of eqs. (1)-(4), shape (n, 3, 3), at
-    nodes the seabed pushes: ``k_b A nu nu^T`` and ``c_b A nu nu^T`` , and friction's ``mu N / v_s`` at rest, isotropic in the seabed
-    plane — approximations that only slow Newton's convergence where they matter."""
+    nodes the seabed pushes: ``max(k_b, dN/d delta) A nu nu^T`` and ``c_b r A nu nu^T``, and
+    friction's ``mu N / v_s`` at rest, isotropic in the seabed plane — approximations that only slow Newton's convergence where they matter."""
     kb, cb, mu = params[0], params[1], max(params[2], params[3])
     vs = params[4]
     for a in range(x.shape[0]):
@@ -176,10 +179,15 @@ def contact_tangent(x, v, area, bed, params, normal_force, K, C):
         C[a, :, :] = 0.0
         if normal_force[a] <= 0.0:
             continue
-        _, nx, nz = penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)
+        delta, nx, nz = penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)
         nrm = (nx, 0.0, nz)
         slide = mu * normal_force[a] / vs
+        ramp, stiff = 1.0, kb
+        if delta < DAMPING_RAMP:      # the ramp's slope where it stiffens (a node moving in), else kb
+            ramp = delta / DAMPING_RAMP
+            stiff = max(kb, kb - cb * (v[a, 0] * nx + v[a, 2] * nz) / DAMPING_RAMP)
         for r in range(3):
             for q in range(3):
-                K[a, r, q] = kb * area[a] * nrm[r] * nrm[q]
-                C[a, r, q] = cb * area[a] * nrm[r] * nrm[q] + slide * ((1.0 if r == q else 0.0) - nrm[r] * nrm[q])
+                K[a, r, q] = stiff * area[a] * nrm[r] * nrm[q]
+                C[a, r, q] = cb * ramp * area[a] * nrm[r] * nrm[q] + slide * ((1.0 if r == q else 0.0)
+                                                                               - nrm[r] * nrm[q])
