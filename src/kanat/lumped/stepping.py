@@ -35,9 +35,10 @@ from kanat.physics.contact import SLIP_VELOCITY
 SAFETY = 0.8                 # margin below the stability limit
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
-IMPLICIT_COST = 12.0         # compiled force evaluations one compiled Newton iteration (band LU) is worth
-                             # (12-15 measured on 20-40 element lines, benchmarks/bench_lumped_moordyn.py)
-IMPLICIT_ITERATIONS = 3.0    # typical Newton iterations per implicit step
+IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
+                             # band LU) is worth: 8-10 on 20-100 element lines and seed 004's network,
+                             # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
+IMPLICIT_ITERATIONS = 2.5    # Newton iterations per implicit step (2.2-2.8 measured at 0.05-0.1 s)
 
 
 @dataclass(frozen=True)
