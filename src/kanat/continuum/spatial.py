@@ -16,7 +16,7 @@ from kanat.continuum import kernels3d as k3
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch
-from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure, near_seabed, step_rows
+from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, step_rows
 from kanat.continuum.water import elevation, kinematics_time, predictor_weight
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -100,6 +100,7 @@ def _solve(cable, x0, y, rate, env, up, P, b0, b1):
     n = x.size
     res, band = np.empty(n), np.empty((k3.LOWER + k3.UPPER + 1, n))
     scale = np.tile(spatial_scales(cable, y), len(x))
+    previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
         k3.assemble3(x, y, rate, env, up, P, b0, b1, res, band)
         if not np.all(np.isfinite(res)):
@@ -109,8 +110,10 @@ def _solve(cable, x0, y, rate, env, up, P, b0, b1):
         except (np.linalg.LinAlgError, ValueError):
             raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // 6)) from None
         x += dx.reshape(x.shape)
-        if np.max(np.abs(dx) / scale) < TOLERANCE:
+        size = np.max(np.abs(dx) / scale)
+        if converged(size, previous):
             return x, iteration
+        previous = size
     raise NewtonFailure(f"Newton did not converge in {MAX_ITERATIONS} iterations",
                         int(np.argmax(np.abs(dx) / scale) // 6))
 

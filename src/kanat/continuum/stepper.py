@@ -58,6 +58,19 @@ class NewtonFailure(SolverError):
         self.node = node
 
 
+def converged(size: float, previous: float) -> bool:
+    """Newton's test on the scaled increment ``size`` (and the one before, ``previous``): below
+    :data:`TOLERANCE`, or the next one predicted below it from the rate of convergence
+    (``theta = size / previous``, next ``<= theta / (1 - theta) size``: Hairer & Wanner's test, which
+    spares the iteration that would only confirm a quadratically converged step)."""
+    if size < TOLERANCE:
+        return True
+    if not np.isfinite(previous):
+        return False
+    theta = size / previous
+    return theta < 0.5 and theta / (1.0 - theta) * size < TOLERANCE
+
+
 def scales(cable, y: np.ndarray) -> np.ndarray:
     """Increment scales (nv,): tension, speed, speed, angle (and shear, moment with bending)."""
     p = cable.params
@@ -76,6 +89,7 @@ def solve(cable, x0, y, rate, env, P, b0, b1):
     res = np.empty(n)
     band = np.empty((2 * width + 1, n))
     scale = np.tile(scales(cable, y), len(x))
+    previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
         k.assemble(x, y, rate, env, P, b0, b1, res, band)
         if not np.all(np.isfinite(res)):
@@ -85,8 +99,10 @@ def solve(cable, x0, y, rate, env, P, b0, b1):
         except (np.linalg.LinAlgError, ValueError):
             raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv)) from None
         x += dx.reshape(x.shape)
-        if np.max(np.abs(dx) / scale) < TOLERANCE:
+        size = np.max(np.abs(dx) / scale)
+        if converged(size, previous):
             return x, iteration
+        previous = size
     worst = int(np.argmax(np.abs(dx) / scale) // nv)
     raise NewtonFailure(f"Newton did not converge in {MAX_ITERATIONS} iterations", worst)
 
