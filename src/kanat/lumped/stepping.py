@@ -38,7 +38,8 @@ STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets th
 IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
                              # band LU) is worth: 8-10 on 20-100 element lines and seed 004's network,
                              # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
-IMPLICIT_ITERATIONS = 2.5    # Newton iterations per implicit step (2.2-2.8 measured at 0.05-0.1 s)
+IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
+                             # 0.05-0.1 s, 5.5 on seed 004's network in waves
 
 
 @dataclass(frozen=True)
