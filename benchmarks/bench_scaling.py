@@ -79,7 +79,7 @@ def main(argv=None) -> None:
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}; "
           f"load average before: {os.getloadavg()[0]:.2f}\n")
     head = " / ".join(str(n) for n in args.segments)
-    print(f"| case | scheme, dt | cost per step [ms] at {head} segments | Newton iterations per step | "
+    print(f"| case | scheme, dt (at {args.segments[0]} segments) | cost per step [ms] at {head} segments | Newton iterations per step | "
           f"exponent | peak RSS at {args.segments[-1]} [MiB] | model memory at {args.segments[-1]} [MiB] |")
     print("|---|---|---|---|---|---|---|")
     for label in args.cases:
