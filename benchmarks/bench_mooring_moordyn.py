@@ -101,8 +101,10 @@ def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
     script = folder / "moordyn_run.py"
     script.write_text(MOORDYN_SCRIPT.format(base=BASE, coupling=COUPLING))
     out = folder / f"moordyn_{scheme}_{dt}.npy"
+    copy = folder / FILE.name                      # MoorDyn writes its outputs beside its input
+    copy.write_text(FILE.read_text())
     start = time.perf_counter()
-    done = subprocess.run([sys.executable, str(script), str(FILE), scheme, str(dt), str(duration), str(out)],
+    done = subprocess.run([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)],
                           check=True, capture_output=True, text=True)
     whole = time.perf_counter() - start
     stepping = json.loads(done.stdout.strip().splitlines()[-1])["stepping"]
