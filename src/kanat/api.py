@@ -22,11 +22,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from kanat import dynamics
-from kanat.continuum.adapter import ContinuumModel
-from kanat.continuum.schemes import SCHEMES as CONTINUUM_SCHEMES
 from kanat.errors import CaseError, KanatError
-from kanat.lumped.adapter import LumpedModel
-from kanat.lumped.integrators import SCHEMES as LUMPED_SCHEMES
 from kanat.model import Case
 from kanat.model.support import require_supported
 from kanat.schemes import registry
@@ -115,6 +111,18 @@ def _pitch_dataset(case: Case, method: str = "auto"):
     return pitch_dataset(result, case, wall_time_s=time.perf_counter() - start), result.table(), result
 
 
+def _continuum(case: Case, scheme=None):
+    from kanat.continuum.adapter import ContinuumModel
+
+    return ContinuumModel(case, scheme)
+
+
+def _lumped(case: Case, scheme=None):
+    from kanat.lumped.adapter import LumpedModel
+
+    return LumpedModel(case, scheme)
+
+
 @dataclass(frozen=True)
 class Steady:
     """A model solved at once: ``solve(case, method) -> (dataset, text, solution)``."""
@@ -132,12 +140,27 @@ class Dynamic:
 MODELS: dict[str, Steady | Dynamic] = {
     "statics": Steady(_statics_dataset),
     "pitch": Steady(_pitch_dataset),
-    "continuum": Dynamic(ContinuumModel),
-    "lumped": Dynamic(LumpedModel),
+    "continuum": Dynamic(_continuum),
+    "lumped": Dynamic(_lumped),
 }
-"""Every model by its case-file name (``model:``)."""
-SCHEMES = registry(*CONTINUUM_SCHEMES.values(), *LUMPED_SCHEMES.values())
-"""Every time scheme of every dynamic model, by its case-file name (``simulation.scheme``)."""
+"""Every model by its case-file name (``model:``). Each entry imports its model when it is
+used, so a statics solve does not load the dynamic models' compiled kernels."""
+
+
+def schemes() -> dict:
+    """Every time scheme of every dynamic model, by its case-file name (``simulation.scheme``):
+    the continuum registry (:data:`kanat.continuum.schemes.SCHEMES`) and the lumped one
+    (:data:`kanat.lumped.integrators.SCHEMES`)."""
+    from kanat.continuum.schemes import SCHEMES as CONTINUUM
+    from kanat.lumped.integrators import SCHEMES as LUMPED
+
+    return registry(*CONTINUUM.values(), *LUMPED.values())
+
+
+def __getattr__(name):
+    if name == "SCHEMES":                    # kanat.api.SCHEMES, built on first use
+        return schemes()
+    raise AttributeError(f"module 'kanat.api' has no attribute {name!r}")
 
 
 # --- the front door ---------------------------------------------------------------------
@@ -295,7 +318,7 @@ def simulate(case: Case, scheme=None, output=None, resume: bool = False, progres
         Any model: ``continuum`` and ``lumped`` run in time; ``statics`` and ``pitch``
         solve their steady state.
     scheme : str or kanat.schemes.Scheme, optional
-        Overrides ``simulation.scheme`` (a name of :data:`SCHEMES`, or
+        Overrides ``simulation.scheme`` (a name of :func:`schemes`, or
         a scheme object such as ``GeneralizedAlpha(lambda_inf=-0.3)``).
     output : path-like, optional
         None: the result stays in memory and no file is written. A path: the run streams

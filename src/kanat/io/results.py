@@ -61,19 +61,43 @@ def annotate(ds: xr.Dataset) -> xr.Dataset:
 
 
 def write_result(ds: xr.Dataset, path) -> Path:
-    """Write a result dataset to netCDF (h5netcdf engine), atomically.
+    """Write a result dataset to netCDF, atomically.
 
-    The file is written next to its destination and renamed, so a crash never leaves
-    a half-written result where a complete one is expected.
+    The file is written next to its destination and renamed, so a crash never leaves a
+    half-written result where a complete one is expected. It is written with h5netcdf
+    directly, as :class:`kanat.io.stream.ResultStream` writes a run's file (xarray's own
+    writer asks dask for a scheduler, which costs a quarter of a second of imports), and
+    reads back with :func:`read_result` as the same dataset: non-index coordinates are
+    named in each variable's CF ``coordinates`` attribute.
     """
+    import h5netcdf
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    ds = ds.copy()
-    ds.attrs = {k: netcdf_attr(v) for k, v in ds.attrs.items()}
     tmp = path.with_name(path.name + ".part")
-    ds.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=False)
+    extra = [name for name in ds.coords if name not in ds.dims]
+    with h5netcdf.File(tmp, "w") as f:
+        f.dimensions = dict(ds.sizes)
+        for name, var in ds.variables.items():
+            values = np.asarray(var.values)
+            text = values.dtype.kind in "OUS"
+            created = f.create_variable(name, var.dims, dtype=_string_dtype() if text else values.dtype)
+            if values.size:
+                created[...] = values.astype(object) if text else values
+            attrs = {k: netcdf_attr(v) for k, v in var.attrs.items()}
+            near = [c for c in extra if c != name and set(ds[c].dims) <= set(var.dims) and ds[c].dims]
+            if near and name not in ds.coords:
+                attrs["coordinates"] = " ".join(near)
+            created.attrs.update(attrs)
+        f.attrs.update({k: netcdf_attr(v) for k, v in ds.attrs.items()})
     os.replace(tmp, path)
     return path
+
+
+def _string_dtype():
+    import h5py
+
+    return h5py.string_dtype()
 
 
 SOUND_VARIABLES = ("time", "position", "velocity", "tension", "segment_tension", "body_position")
