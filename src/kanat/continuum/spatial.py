@@ -231,4 +231,4 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
         return np.cumsum(a, axis=0)
     target = np.asarray(cable.end.position, dtype=float) @ chart if anchored else None
     return steady_with_positions(guess, layout, tuple(range(k3.RX3, k3.RX3 + 3)), residual, derivative,
-                                 spatial_scales(cable, guess), (4, 5), k3.UPPER, target)
+                                 spatial_scales(cable, guess), (4, 5), k3.UPPER, target, (0, 4, 5))

@@ -6,18 +6,23 @@ the positions are the integral of ``(1 + e) t`` from the first end (:func:`model
 so the contact force at a node depends on every state between it and the first end. Newton then
 uses the full Jacobian
 
-    J = J_band + (dR/dr) (dr/dx)
+    J = J_band + (dR/dr) (dr/dx)     (solved as a low-rank update of the band: Woodbury's formula)
 
 with ``J_band`` the kernels' banded Jacobian at frozen positions, ``dR/dr`` the residual's
 derivative by the positions in the nodal data (one-sided finite differences towards lower
 coordinates, into the seabed where contact acts; nodes of one parity at a time: an interval's
 rows see one node of each parity), and ``dr/dx`` the positions' exact
-derivative (dense, lower block-triangular). It runs once per run, from the statics solution,
-and costs a dense solve per iteration (0.1 s at 300 nodes).
+derivative (dense, lower block-triangular). Only the positions the residual sees (nodes near
+the seabed, a surface buoy) make columns of ``dR/dr``, so ``J`` is the band plus a product of rank
+``k`` (their count times 3): one banded factorization with ``k`` right-hand sides and a ``k x k``
+dense solve per iteration. A fixed far end held by its position replaces its velocity rows:
+rows of the identity in the band, the position's derivative in the low-rank part. It runs once
+per run, from the statics solution.
 """
 from __future__ import annotations
 
 import numpy as np
+from scipy.linalg import solve_banded
 
 from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 
@@ -25,13 +30,15 @@ POSITION_STEP = 1e-7      # m: finite-difference step on node positions (contact
 MAX_ANGLE_STEP = 0.3      # rad: a Newton step turning any angle further is scaled down
 
 
-def _band_to_dense(band: np.ndarray, width: int) -> np.ndarray:
+def _pinning_rows(band: np.ndarray, width: int, rows: np.ndarray, columns: np.ndarray) -> np.ndarray:
+    """``band`` with ``rows`` replaced by unit rows on ``columns`` (``row i`` -> ``x[columns[i]]``)."""
+    out = band.copy()
     n = band.shape[1]
-    dense = np.zeros((n, n))
-    for offset in range(-width, width + 1):          # band[width + row - col, col]
-        cols = np.arange(max(0, -offset), min(n, n - offset))
-        dense[cols + offset, cols] = band[width + offset, cols]
-    return dense
+    for row, column in zip(rows, columns):
+        for col in range(max(0, row - width), min(n, row + width + 1)):
+            out[width + row - col, col] = 0.0
+        out[width + row - column, column] = 1.0
+    return out
 
 
 def _position_sensitivity(residual, x, env, res, columns, nv: int) -> np.ndarray:
@@ -51,8 +58,17 @@ def _position_sensitivity(residual, x, env, res, columns, nv: int) -> np.ndarray
     return out
 
 
+def _woodbury(band, width, U, V, rhs):
+    """Solve ``(B + U V) x = rhs`` with ``B`` banded: ``x = w - Z (I + V Z)^-1 V w``, ``w = B^-1 rhs``,
+    ``Z = B^-1 U`` (one banded factorization, ``k`` columns of ``U``, a ``k x k`` dense solve)."""
+    solved = solve_banded((width, width), band, np.column_stack([rhs, U]), check_finite=False)
+    w, Z = solved[:, 0], solved[:, 1:]
+    small = np.eye(U.shape[1]) + V @ Z
+    return w - Z @ np.linalg.solve(small, V @ w)
+
+
 def steady_with_positions(guess, layout, columns, residual, derivative, scale, angles, width: int,
-                          target=None) -> np.ndarray:
+                          target=None, pinned=()) -> np.ndarray:
     """Newton's method on the steady rows with positions tied to the states (module docstring).
 
     Parameters
@@ -77,6 +93,10 @@ def steady_with_positions(guess, layout, columns, residual, derivative, scale, a
         its velocity rows are replaced by ``r_N(x) = target``. Without them a cable between two
         fixed points has no steady equation for where it ends (its velocities are zero for any
         shape), so its steady state would be a family.
+    pinned : sequence of int
+        With ``target``: the far node's unknowns (tension and angles) that span that family. The
+        band is factorized with its far-end rows pinning them (so it is regular), and the
+        target rows enter through the low-rank part.
     """
     x = guess.copy()
     n, nv = x.shape
@@ -87,17 +107,28 @@ def steady_with_positions(guess, layout, columns, residual, derivative, scale, a
         res, band = residual(x, env)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the steady residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
-        dense = _band_to_dense(band, width)
-        drdx = derivative(x)
-        dense += _position_sensitivity(residual, x, env, res, columns, nv) @ drdx.reshape(-1, x.size)
-        if target is not None:
-            rows = slice(x.size - nv // 2, x.size - nv // 2 + len(columns))
+        drdx = derivative(x).reshape(-1, x.size)
+        sensitivity = _position_sensitivity(residual, x, env, res, columns, nv)
+        used = np.flatnonzero(np.any(sensitivity != 0.0, axis=0))          # positions the residual sees
+        U, V = sensitivity[:, used], drdx[used]
+        if target is not None:                                             # the far end held by position
+            rows = np.arange(x.size - nv // 2, x.size - nv // 2 + len(columns))
+            weight = scale[0] / max(np.max(np.abs(target)), 1.0)
             res = res.copy()
-            res[rows] = (layout(x)[1][-1] - target) * scale[0] / max(np.max(np.abs(target)), 1.0)
-            dense[rows] = drdx[-1] * scale[0] / max(np.max(np.abs(target)), 1.0)
+            res[rows] = (layout(x)[1][-1] - target) * weight
+            pins = nv * (n - 1) + np.asarray(pinned)
+            band = _pinning_rows(band, width, rows, pins)     # J rows = pinning rows + (target - pinning)
+            U = U.copy()
+            U[rows] = 0.0
+            picks = np.zeros((x.size, len(rows)))
+            picks[rows, np.arange(len(rows))] = 1.0
+            pinning = np.zeros((len(rows), x.size))
+            pinning[np.arange(len(rows)), pins] = 1.0
+            V = np.vstack([V, drdx[-len(columns):] * weight - pinning])
+            U = np.column_stack([U, picks])
         try:
-            dx = np.linalg.solve(dense, -res).reshape(x.shape)
-        except np.linalg.LinAlgError:
+            dx = _woodbury(band, width, U, V, -res).reshape(x.shape)
+        except (np.linalg.LinAlgError, ValueError):
             raise NewtonFailure("the steady Newton matrix is singular", int(np.argmax(np.abs(res)) // nv)) from None
         turn = np.max(np.abs(dx[:, angles])) if angles else 0.0
         if turn > MAX_ANGLE_STEP:

@@ -191,7 +191,7 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
         return res, band
     target = np.asarray(cable.end.position, dtype=float) if anchored else None
     return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),
-                                 scales(cable, guess), (3,), width, target)
+                                 scales(cable, guess), (3,), width, target, (0, 3))
 
 
 SEABED_MARGIN = 0.01

@@ -19,7 +19,7 @@ from scipy.integrate import solve_bvp
 
 from kanat.errors import SolverError
 from kanat.statics.guess3d import grounding_guess, still_water_force
-from kanat.statics.shooting3d import Path, _integrate, _solution
+from kanat.statics.shooting3d import Path, _integrate, _solution, stands_up
 from kanat.statics.solution import CableSolution
 from kanat.statics.spatial import CableBVP3, Fixed3, Piece, check_solvable, end_residual, grounded_states, jump, rhs
 
@@ -104,12 +104,17 @@ def solve_collocation3(problem: CableBVP3, s_out=None) -> CableSolution:
     check_solvable(problem)
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
     anchor = problem.grounding_anchor()
-    if anchor is not None:
+    if anchor is not None and not stands_up(problem):
         try:
             return _grounded(problem, s_out, anchor)
         except SolverError:
             pass
-    solution, fine_z, fine_x = _suspended(problem, s_out)
+    try:
+        solution, fine_z, fine_x = _suspended(problem, s_out)
+    except SolverError:
+        if anchor is None:
+            raise
+        return _grounded(problem, s_out, anchor)
     if anchor is not None and np.any(fine_z < problem.seabed.height(fine_x) - 1e-9 * problem.length):
         return _grounded(problem, s_out, anchor)
     return solution

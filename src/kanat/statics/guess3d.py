@@ -24,7 +24,7 @@ def equivalent_line(problem: CableBVP3) -> tuple[float, float]:
     return weight, 1.0 / compliance if compliance > 0 else math.inf
 
 
-def _lift(problem: CableBVP3) -> np.ndarray:
+def lift(problem: CableBVP3) -> np.ndarray:
     """Total constant upward pull of every body (net buoyancy and constant force) [N] (3,)."""
     total = np.zeros(3)
     for _, load in problem.joints:
@@ -46,7 +46,7 @@ def still_water_force(problem: CableBVP3, at: int) -> np.ndarray:
     if all(isinstance(e, Fixed3) for e in (problem.start, problem.end)):
         return catenary_force(problem, at)
     weight = sum(p.line.weight * p.length for p in problem.pieces)
-    net = _lift(problem) - weight * UP
+    net = lift(problem) - weight * UP
     force = net if at == 0 else -net
     floor = 1e-3 * problem.reference_force()
     if np.linalg.norm(force) < floor:
@@ -92,10 +92,10 @@ def grounding_guess(problem: CableBVP3, anchor: int) -> np.ndarray:
                                stiffness, seabed=True, n_points=2)
         return np.array([max(cat.horizontal_tension, 1e-3 * problem.reference_force()),
                          min(cat.grounded_length, 0.95 * length), psi])
-    lift = float(_lift(problem)[2])
-    hanging = min(max(lift / max(weight, 1e-9), 0.05 * length), 0.95 * length)
+    up = float(lift(problem)[2])
+    hanging = min(max(up / max(weight, 1e-9), 0.05 * length), 0.95 * length)
     flow = problem.flow.at(root[2] + 0.5 * hanging)
     psi = math.atan2(flow[1], flow[0]) if math.hypot(flow[0], flow[1]) > 0 else 0.0
     drag = sum(0.5 * p.line.water_density * p.line.diameter * p.line.drag_normal for p in problem.pieces[-1:]) \
         * float(np.sum(flow[:2] ** 2)) * hanging
-    return np.array([max(drag, 0.05 * lift, 1e-3 * problem.reference_force()), length - hanging, psi])
+    return np.array([max(drag, 0.05 * up, 1e-3 * problem.reference_force()), length - hanging, psi])

@@ -23,7 +23,7 @@ from scipy.optimize import root, root_scalar
 
 from kanat.errors import SolverError
 from kanat.statics.guess3d import grounding_guess, still_water_force
-from kanat.statics.spatial import Body3, CableBVP3, Fixed3, check_solvable, end_residual, grounded_states, jump, rhs
+from kanat.statics.spatial import Body3, CableBVP3, Fixed3, check_solvable, end_residual, grounded_states, jump, rhs_point
 from kanat.statics.solution import CableSolution
 
 RTOL = 1e-12          # ODE tolerance: far below the 1e-6 the solvers must agree to, and rotations leave
@@ -83,7 +83,7 @@ def _integrate(problem: CableBVP3, s_from: float, y_from, s_to: float, path: Pat
         def slack(s, state):
             return np.sqrt(state[3] ** 2 + state[4] ** 2 + state[5] ** 2) - floor
         slack.terminal = True
-        sol = solve_ivp(lambda s, state, piece=piece: rhs(piece, problem.flow, state[:, None])[:, 0], (here, stop), y,
+        sol = solve_ivp(lambda s, state, piece=piece: rhs_point(piece, problem.flow, state), (here, stop), y,
                         method="DOP853", rtol=RTOL, atol=RTOL * scale, dense_output=True, events=slack)
         if sol.status == 1:
             raise SolverError(f"the tension vanishes at s = {sol.t_events[0][0]:.6g} m: the cable is slack there "
@@ -153,18 +153,34 @@ def solve_shooting3(problem: CableBVP3, s_out=None) -> CableSolution:
     check_solvable(problem)
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
     anchor = problem.grounding_anchor()
-    if anchor is not None:
+    if anchor is not None and not stands_up(problem):
         try:
             return _shoot_grounded(problem, s_out, anchor)
         except SolverError:
             pass                                   # the line may not touch the seabed after all
-    if any(isinstance(e, Body3) for e in (problem.start, problem.end)):
-        solution, path = _shoot_from_body(problem, s_out)
-    else:
-        solution, path = _shoot_free(problem, s_out)
+    try:
+        if any(isinstance(e, Body3) for e in (problem.start, problem.end)):
+            solution, path = _shoot_from_body(problem, s_out)
+        else:
+            solution, path = _shoot_free(problem, s_out)
+    except SolverError:
+        if anchor is None:
+            raise
+        return _shoot_grounded(problem, s_out, anchor)
     if anchor is not None and _below_seabed(problem, path):
         return _shoot_grounded(problem, s_out, anchor)
     return solution
+
+
+def stands_up(problem: CableBVP3) -> bool:
+    """True when a body end lifts more than the whole line weighs in water (a subsurface mooring): the
+    line stands up from its anchor, and only a current could lay it down (tried second)."""
+    from kanat.statics.guess3d import lift
+
+    bodies = [e.load for e in (problem.start, problem.end) if isinstance(e, Body3)]
+    if not bodies or any(load.waterplane > 0 for load in bodies):      # a surface buoy's lift is its draft's
+        return False
+    return float(lift(problem)[2]) > sum(p.line.weight * p.length for p in problem.pieces)
 
 
 def _below_seabed(problem: CableBVP3, path: Path) -> bool:

