@@ -16,9 +16,11 @@ neither (the default)                  a running Dask cluster named in Dask's co
 The local cluster is kanat's own: worker processes forked from the study's process (on
 Linux; spawned elsewhere), each running one case at a time in its main thread and sending
 its record back through a pipe. Forked workers start in milliseconds with everything
-imported, where a Dask ``LocalCluster`` takes 1-3 s to start and close and its workers'
-event loop and profiler slow each case by 5-15 % (``benchmarks/RESULTS.md``); Dask remains
-the engine for clusters that already run, on this machine or many.
+imported (33 ms to start two, run a trivial case on each and stop them), where a Dask
+``LocalCluster`` of spawned workers takes about 3 s to start, import and close, and its
+workers' sampling profiler adds about 5 % to each case's CPU time
+(``benchmarks/RESULTS.md``); Dask remains the engine for clusters that already run, on this
+machine or many.
 
 **The rule (default engine).** The first two cases run one after the other in a child
 process. The second one's wall time ``t`` estimates every remaining case's; the first
