@@ -287,10 +287,21 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         raise KanatError(f"model '{name}' is not available in kanat {__version__} (available: "
                          f"{', '.join(MODELS)}).{hint}")
     require_supported(case, name)
-    if isinstance(entry, Steady):
-        return _steady(entry, case, name, output, method)
     if resume and output is None:
         raise KanatError("resume needs the result file of the run to continue (output)")
+    if output is None:
+        return _run(entry, case, name, None, scheme, resume, progress, checkpoint_every, observers, method)
+    from kanat.io.outputs import OutputLock, check_output_file
+
+    output = check_output_file(output)
+    with OutputLock(output):                    # a second run on this output is refused, not interleaved
+        return _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method)
+
+
+def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method) -> Outcome:
+    """:func:`run` once the output (if any) is checked and locked."""
+    if isinstance(entry, Steady):
+        return _steady(entry, case, name, output, method)
     from kanat.io.results import case_sha256
     from kanat.io.stream import ResultStream
 
@@ -302,7 +313,8 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         sinks.append(checkpointer)
     if progress is not None:
         sinks.append(dynamics.Progress(progress))
-    summary = dynamics.run(lambda: entry.build(case, scheme), [*sinks, *observers], resume=checkpointer if resume else None, output=output)
+    summary = dynamics.run(lambda: entry.build(case, scheme), [*sinks, *observers],
+                           resume=checkpointer if resume else None, output=output)
     dataset = recorder.dataset() if recorder is not None else None
     if not summary.ok:
         warnings.warn(f"the run stopped: {summary.status}", RunFailedWarning, stacklevel=2)

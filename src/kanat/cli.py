@@ -95,6 +95,7 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
             fail(error, debug, "cannot read the case of the result")
     else:
         loaded = load(case, debug, max_output)
+    _check_outputs(output, plot, case, debug)
     if isinstance(api.MODELS.get(loaded.model), api.Steady):
         _steady(loaded, case, output, plot, debug, model=loaded.model)
         return
@@ -148,12 +149,25 @@ def pitch(case: Path = typer.Argument(..., help="Case file with a pitch block.")
     _steady(load(case, debug), case, output, plot, debug, model="pitch")
 
 
+def _check_outputs(output: Path, plot: Optional[Path], case: Path, debug: bool) -> None:
+    """Refuse, before any work, an output that is an input, a directory or unwritable."""
+    from kanat.io.outputs import check_output_file
+
+    try:
+        check_output_file(output, inputs=[case])
+        if plot is not None:
+            check_output_file(plot, inputs=[case, output], flag="--plot", example="picture.png")
+    except KanatError as error:
+        fail(error, debug, "cannot write there")
+
+
 def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool, model: str,
             method: str = "auto") -> None:
     """Solve a steady model (statics, pitch), write its result and, optionally, its pictures."""
     from kanat import api
-    from kanat.errors import CaseError, KanatError
+    from kanat.errors import CaseError
 
+    _check_outputs(output, plot, case, debug)
     try:
         with console.status(f"solving {model} of {case.name} ..."):
             outcome = api.run(loaded, output=output, model=model, method=method)

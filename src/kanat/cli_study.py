@@ -50,15 +50,21 @@ def sweep(case: Path = typer.Argument(..., help="Base case file (YAML)."),
                                          "uniform(a,b,n,seed) | normal(mean,std,n,seed). Repeat per key."),
           output: Path = typer.Option(..., "-o", "--output", help="Study directory (resumed if it exists)."),
           scheduler: Optional[str] = typer.Option(None, "--scheduler",
-                                                  help="Dask scheduler address, or 'serial' (default: local cluster)."),
-          workers: Optional[int] = typer.Option(None, "--workers", help="Local cluster worker processes."),
+                                                  help="serial, a Dask scheduler address, or a scheduler .json file "
+                                                       "(default: serial, or a local pool when it pays)."),
+          workers: Optional[int] = typer.Option(None, "--workers",
+                                                help="Always start a local pool of this many worker processes."),
           window: Optional[str] = typer.Option(None, "--window", help="START:END of the summary statistics [s]."),
           report: Optional[Path] = typer.Option(None, "--report", help="Also write the study's HTML report."),
           debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run a parameter study: every combination of the varied values, one result file per case."""
+    from kanat.io.outputs import check_output_file
+    from kanat.report.html_report import report_inputs
     from kanat.sweep import sweep as run_sweep
 
     try:
+        if report is not None:
+            check_output_file(report, inputs=[case, *report_inputs(output)], flag="--report", example="study.html")
         result = run_sweep(case, parse_vary(vary), output, scheduler=scheduler, workers=workers, progress=True,
                            window=parse_window(window))
     except KeyboardInterrupt:
@@ -68,6 +74,7 @@ def sweep(case: Path = typer.Argument(..., help="Base case file (YAML)."),
         fail(error, debug, "study failed to start")
     out.print(f"{result.total} cases in {result.out_dir}: {result.ran} run now, {result.skipped} already done, "
               f"{result.failed} failed; summary: {result.out_dir / 'summary.nc'}")
+    out.print(f"engine: {result.engine}")
     if result.failed:
         summary = result.summary
         for name, status, message in zip(summary["name"].values, summary["status"].values, summary["message"].values):
@@ -106,10 +113,12 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
                    only: Optional[List[str]] = typer.Option(None, "--only", help="Run only these check ids."),
                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run the fast validation cases of SPEC §7 and write their report (exit 1 if any fails)."""
+    from kanat.io.outputs import check_output_file
     from kanat.report.html_validation import validation_report as write_validation_report
     from kanat.validation import run_suite
 
     try:
+        check_output_file(output, example="validation.html")
         with console.status("running the validation suite ..."):
             results = run_suite(only)
         path = write_validation_report(results, output)

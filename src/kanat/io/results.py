@@ -7,7 +7,6 @@ back to disk (h5netcdf).
 from __future__ import annotations
 
 import hashlib
-import os
 from pathlib import Path
 
 import numpy as np
@@ -72,11 +71,12 @@ def write_result(ds: xr.Dataset, path) -> Path:
     """
     import h5netcdf
 
+    from kanat.io.outputs import atomic_path
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".part")
     extra = [name for name in ds.coords if name not in ds.dims]
-    with h5netcdf.File(tmp, "w") as f:
+    with atomic_path(path) as tmp, h5netcdf.File(tmp, "w") as f:
         f.dimensions = dict(ds.sizes)
         for name, var in ds.variables.items():
             values = np.asarray(var.values)
@@ -90,7 +90,6 @@ def write_result(ds: xr.Dataset, path) -> Path:
                 attrs["coordinates"] = " ".join(near)
             created.attrs.update(attrs)
         f.attrs.update({k: netcdf_attr(v) for k, v in ds.attrs.items()})
-    os.replace(tmp, path)
     return path
 
 

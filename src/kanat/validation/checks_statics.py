@@ -103,8 +103,8 @@ def lumped_catenary():
     line = dict(diameter=0.05, mass=20.0, weight_in_water=weight, axial_stiffness=ea)
     case = Case.model_validate(dict(model="lumped", line_types={"c": line}, simulation=dict(duration=1, dt=0.01),
                                     cables=[{"name": "line", "line_type": "c", "length": length,
-                                             "segments": segments, "from": "anchor:[0,0,0]",
-                                             "to": f"anchor:[{span},0,{rise}]"}]))
+                                             "segments": segments, "from": "anchor:[0,0,-200]",
+                                             "to": f"anchor:[{span},0,{rise - 200}]"}]))   # under water
     net = build_network(case)
     x, _ = equilibrium(net, case)
     exact = elastic_catenary(span, rise, length, weight, ea, n_points=2 * segments + 1)
