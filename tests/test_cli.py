@@ -72,3 +72,34 @@ def test_statics_method_option(method, tmp_path):
     result = runner.invoke(app, ["statics", str(EXAMPLES / "towed_body.yaml"), "-o", str(out), "--method", method])
     assert result.exit_code == 0, result.output
     assert read_result(out).attrs["method_tow"] == method
+
+
+def test_a_second_run_on_the_same_output_is_refused_and_the_first_completes(tmp_path):
+    import subprocess
+    import sys
+    import time
+
+    from helpers import short_case
+
+    case = tmp_path / "case.yaml"
+    case.write_text(short_case(duration=600, segments=60))
+    out = tmp_path / "same.nc"
+    first = subprocess.Popen([sys.executable, "-m", "kanat.cli", "run", str(case), "-o", str(out)],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    lock = tmp_path / ".same.nc.lock"
+    deadline = time.time() + 60
+    while not lock.exists() and time.time() < deadline and first.poll() is None:
+        time.sleep(0.02)
+    second = runner.invoke(app, ["run", str(case), "-o", str(out)])
+    stdout, stderr = first.communicate(timeout=600)
+    assert second.exit_code == 1 and "in use by another kanat run" in plain(second.output)
+    assert first.returncode == 0, stdout + stderr
+    assert read_result(out).attrs["status"] == "ok" and not lock.exists()
+
+
+def test_an_output_that_is_the_input_is_refused(tmp_path):
+    case = tmp_path / "case.yaml"
+    case.write_text((EXAMPLES / "towed_body.yaml").read_text())
+    result = runner.invoke(app, ["statics", str(case), "-o", str(case)])
+    assert result.exit_code == 1 and case.read_text().startswith("#")
+    assert "Traceback" not in result.output
