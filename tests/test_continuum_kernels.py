@@ -28,10 +28,13 @@ def setup(seed, end_kind):
     return x, y, d, env, np.tile(p, (N, 1)), b0, b1
 
 
-def run(kernel, args):
+def run(kernel, args, extras=None):
     x = args[0]
     res, band = np.empty(x.size), np.empty((11, x.size))
-    kernel(*args, res, band)
+    if kernel is k.assemble:
+        kernel(*args, res, band, extras)
+    else:
+        kernel(*args, res, band)
     return res, band
 
 
@@ -53,6 +56,8 @@ def test_analytic_jacobian_matches_complex_step(end, inertia):
     res2, band2 = run(oracle2d.jacobian_complex_step, args)
     np.testing.assert_allclose(res, res2, rtol=1e-13, atol=1e-10)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
+    res3, band3 = run(k.assemble, args, np.zeros(1))          # the full version, on a plain cable
+    assert np.array_equal(res, res3) and np.array_equal(band, band3)
 
 
 def test_jacobian_matches_central_differences():

@@ -50,7 +50,7 @@ expressions, slice copies or ``@`` -- which keeps numba's compile short (:mod:`k
 from __future__ import annotations
 
 import numpy as np
-from kanat.jit import kernel
+from kanat.jit import inner, kernel
 from kanat.physics.contact import DAMPING_RAMP, SLIP_VELOCITY
 
 # Parameter row of an interval (see :func:`kanat.continuum.model2d.parameters`).
@@ -84,7 +84,7 @@ def bandwidth(nv: int) -> int:
     return nv // 2 + nv - 1
 
 
-@kernel
+@inner
 def _law_segment(T, p):
     """Knot ``(t0, e0)`` and slope of the law's segment holding ``T`` (the last knot below it)."""
     n = int(p[LAW])
@@ -132,7 +132,7 @@ def node_load(T, u, v, phi, ucx, ucz, p):
     return ft, fn
 
 
-@kernel
+@inner
 def node_load_jacobian(T, u, v, phi, ucx, ucz, p, jac):
     """:func:`node_load` (real) and its derivatives ``jac[i, q] = d f_i / d (T, u, v, phi)_q`` (2, 4).
 
@@ -186,7 +186,7 @@ def seabed_force(vx, vz, rx, rz, p):
     return normal * n0 + friction * n1, normal * n1 - friction * n0
 
 
-@kernel
+@inner
 def seabed_force_jacobian(vx, vz, rx, rz, p, g):
     """:func:`seabed_force` (real) and ``g[i, j] = dF_i / dV_j`` (2, 2)."""
     g[0, 0] = g[0, 1] = g[1, 0] = g[1, 1] = 0.0
@@ -229,7 +229,7 @@ def extra_load(T, u, v, phi, env, p):
     return ft, fn
 
 
-@kernel
+@inner
 def extra_load_jacobian(T, u, v, phi, env, p, jac):
     """:func:`extra_load` (real) and ``jac[i, q] = d f_i / d (T, u, v, phi)_q`` (2, 4).
 
@@ -279,7 +279,7 @@ def weighted(x, y, d, p):
     return m, k, r
 
 
-@kernel
+@inner
 def surface_buoyancy(z, b):
     """Buoyancy of a surface buoy's waterplane, ``rho g A_w clip(eta - z, 0, h)``, and its derivative by ``z``."""
     immersion = b[B_ETA] - z
@@ -290,8 +290,8 @@ def surface_buoyancy(z, b):
     return b[B_WPA] * immersion, -b[B_WPA]
 
 
-@kernel
-def end_jacobian(x, y, d, env, p, b, side, out, jac):
+@inner
+def end_jacobian(x, y, d, env, p, b, side, out, jac, extras):
     """The ``nv / 2`` rows of one end (module docstring) into ``out`` and their derivatives by
     the end node's unknowns ``x`` into ``jac`` (nv/2, nv), real.
 
@@ -300,7 +300,9 @@ def end_jacobian(x, y, d, env, p, b, side, out, jac):
     velocity ``w`` has the derivative ``b (|w| I + w w^T / |w|)`` (zero at rest).
     """
     nv = x.shape[0]
-    bend = nv == 6
+    bend = False
+    if extras is not None:                 # None: a plain cable (rows2d docstring); its branches compile away
+        bend = nv == 6
     for i in range(nv // 2):
         for q in range(nv):
             jac[i, q] = 0.0
@@ -331,9 +333,10 @@ def end_jacobian(x, y, d, env, p, b, side, out, jac):
             jac[0, 0], jac[1, 4], jac[2, 5] = 1.0 / p[EA], 1.0 / p[EA], 1.0 / p[EA]
             return
         load = np.empty((2, 4))
-        extra = np.empty((2, 4))
+        extra = np.zeros((2, 4))
         fn = node_load_jacobian(k0, k1, k2, k3, env[UX], env[UZ], p, load)[1]
-        fn += extra_load_jacobian(k0, k1, k2, k3, env, p, extra)[1]
+        if extras is not None:
+            fn += extra_load_jacobian(k0, k1, k2, k3, env, p, extra)[1]
         mn = p[INERTIA] * (p[M] + p[MA])
         out[0] = x[0] / p[EA]
         out[1] = mn * (r2 + m1 * r3) - fn
@@ -348,8 +351,9 @@ def end_jacobian(x, y, d, env, p, b, side, out, jac):
     wn = -env[UX] * s + env[UZ] * c - k2
     at, an = env[AX] * c + env[AZ] * s, -env[AX] * s + env[AZ] * c
     speed = np.sqrt(wt * wt + wn * wn)
-    z = env[RZ] + p[PRED] * (k1 * s + k2 * c)
-    lift, dlift = surface_buoyancy(z, b)
+    lift = dlift = 0.0
+    if extras is not None:
+        lift, dlift = surface_buoyancy(env[RZ] + p[PRED] * (k1 * s + k2 * c), b)
     buoy = b[B_BUOY] + lift
     shear = k0 * 0.0
     if bend:

@@ -81,7 +81,7 @@ def node_load3(T, u, v, w, phi, theta, cur, up, p):
     return ft, fn, fb
 
 
-@kernel
+@inner
 def node_load3_jacobian(y, cur, up, p, jac):
     """:func:`node_load3` (real) at the state ``y`` (6,) and ``jac[i, q] = d f_i / d y_q`` (3, 6).
 
@@ -240,7 +240,7 @@ def seabed_force3(vel, rp, axis, p):
     return (normal * n0 + fa * a0 + fl * l0, normal * n1 + fa * a1 + fl * l1, normal * n2 + fa * a2 + fl * l2)
 
 
-@kernel
+@inner
 def seabed_force3_jacobian(vel, rp, axis, p, force, g):
     """:func:`seabed_force3` (real) into ``force`` (3,) and ``g[i, j] = dF_i / dV_j`` (3, 3)."""
     for i in range(3):
@@ -346,7 +346,7 @@ def _add_projection(force, dforce_dv, y, e, dv, jac):
     jac[2, 5] += cp * comp[0] - sp * comp[1]
 
 
-@kernel
+@inner
 def extra_load3_jacobian(y, env, p, jac):
     """:func:`extra_load3` (real) at ``y`` (6,) and ``jac[i, q] = d f_i / d y_q`` (3, 6)."""
     for i in range(3):
@@ -377,7 +377,7 @@ def extra_load3_jacobian(y, env, p, jac):
     return f0, f1, f2
 
 
-@kernel
+@inner
 def surface_buoyancy3(z, b):
     """Buoyancy of a surface buoy's waterplane ``rho g A_w clip(eta - z, 0, h)`` and its derivative by ``z``."""
     immersion = b[B3_ETA] - z
@@ -388,8 +388,8 @@ def surface_buoyancy3(z, b):
     return b[B3_WPA] * immersion, -b[B3_WPA]
 
 
-@kernel
-def end_jacobian3(x, y, d, env, up, p, b, side, out, jac):
+@inner
+def end_jacobian3(x, y, d, env, up, p, b, side, out, jac, extras):
     """The three rows of one end (SPEC §2.3; :mod:`kernels2d` docstring) into ``out`` (3,) and
     their derivatives by ``x`` into ``jac`` (3, 6), real.
 
@@ -433,16 +433,18 @@ def end_jacobian3(x, y, d, env, up, p, b, side, out, jac):
     force, dforce = np.empty(3), np.zeros((3, 6))     # external force on the node in (t, n, b), d/dk
     if kind == FREE:
         mass = p[INERTIA] * (p[M] + p[MA])
-        extra = np.empty((3, 6))
+        extra = np.zeros((3, 6))
         f0, f1, f2 = node_load3_jacobian(k, env[UX3:UX3 + 3], up, p, dforce)
-        e0, e1, e2 = extra_load3_jacobian(k, env, p, extra)
+        e0 = e1 = e2 = 0.0
+        if extras is not None:
+            e0, e1, e2 = extra_load3_jacobian(k, env, p, extra)
         force[0], force[1], force[2] = f0 + e0, f1 + e1, f2 + e2
         for i in range(3):
             for q in range(6):
                 dforce[i, q] += extra[i, q]
     else:
         mass = p[INERTIA] * b[B3_MASS]
-        _body_force3(k, env, up, p, b, side, force, dforce)
+        _body_force3(k, env, up, p, b, side, force, dforce, extras)
     first = 1 if kind == FREE else 0
     if kind == FREE:
         out[0] = x[0] / p[EA]
@@ -454,7 +456,7 @@ def end_jacobian3(x, y, d, env, up, p, b, side, out, jac):
 
 
 @inner
-def _body_force3(k, env, up, p, b, side, force, dforce):
+def _body_force3(k, env, up, p, b, side, force, dforce, extras):
     """Force on an end body in (t, n, b) at the weighted state ``k`` and its derivative by ``k``: the
     cable's tension ``-side T t``, drag of the relative water, buoyancy (a surface buoy's with its
     immersion), constant force and wave inertia."""
@@ -463,10 +465,12 @@ def _body_force3(k, env, up, p, b, side, force, dforce):
     _frame_rows(k[4], k[5], e)
     dv = np.empty((6, 3))
     _velocity_derivatives(k, e, dv)
-    z = 0.0
-    for j in range(3):
-        z += up[j] * (env[RX3 + j] + p[PRED] * (k[1] * e[0, j] + k[2] * e[1, j] + k[3] * e[2, j]))
-    lift_z, dlift = surface_buoyancy3(z, b)
+    lift_z = dlift = 0.0
+    if extras is not None:                     # None: a plain cable, no surface buoy (rows3d docstring)
+        z = 0.0
+        for j in range(3):
+            z += up[j] * (env[RX3 + j] + p[PRED] * (k[1] * e[0, j] + k[2] * e[1, j] + k[3] * e[2, j]))
+        lift_z, dlift = surface_buoyancy3(z, b)
     total = np.empty(3)                                 # buoyancy + force + wave inertia (chart)
     for j in range(3):
         total[j] = (b[B3_BUOY] + lift_z) * up[j] + b[B3_F0 + j] + b[B3_WAVE] * env[AX3 + j]

@@ -105,6 +105,15 @@ class CableGrid:
         p[k.DS] = self.length / self.segments
         return np.tile(p, (self.segments, 1))
 
+    def extras(self):
+        """The kernels' ``extras`` argument: None for a plain cable (no seabed, waves, inline bodies,
+        bending stiffness or surface buoy: the kernels' short version), else a marker array
+        (:mod:`kanat.continuum.rows2d` docstring)."""
+        grid = self.grid
+        plain = (self.seabed is None and self.sea is None and getattr(self.end, "waterplane", 0.0) == 0.0
+                 and (grid is None or (not grid.junctions and not grid.bending)))
+        return None if plain else np.zeros(1)
+
     def current_at(self, z) -> np.ndarray:
         """Current at heights ``z`` (n,): linear between rows, constant beyond -> (n, components)."""
         return np.column_stack([np.interp(z, self.current_z, column) for column in self.current_rows.T])
@@ -199,7 +208,7 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                                  f"{len(case.cables)} (networks run with model: lumped)")])
     cable = case.cables[0]
     env = case.environment
-    seabed = seabed_contact(env)
+    seabed = within_reach(seabed_contact(env), case)
     grid = cable_grid(case, 0, seabed)
     start = _end(case, cable.from_, "cables[0].from", first=True)
     end = _end(case, cable.to, "cables[0].to", first=False)
@@ -214,6 +223,22 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     plain = grid.uniform and not grid.bending and seabed is None and winch is None
     return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
                        None if plain else grid, sea_from_model(env), seabed, winch)
+
+
+REACH = 1.1
+"""A cable reaches at most this many times its length from its ends (stretch included)."""
+
+
+def within_reach(seabed: SeabedContact | None, case) -> SeabedContact | None:
+    """``seabed``, or None when the cable cannot touch it: a flat seabed deeper than every end's
+    height less :data:`REACH` times the cable's length (then the model runs without contact)."""
+    if seabed is None or seabed.slope_deg != 0.0:
+        return seabed
+    cable = case.cables[0]
+    heights = [case.vessel.tow_point[2] if e.kind == "vessel" else e.position[2] for e in cable.ends
+               if e.kind in ("vessel", "anchor")]
+    lowest = min(heights) - REACH * cable.length
+    return seabed if lowest < -seabed.depth + 1.0 else None
 
 
 def _end(case, end, key: str, first: bool) -> EndCondition:

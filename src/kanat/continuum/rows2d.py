@@ -30,6 +30,12 @@ the water relative to it), and with bending ``M_a = M_b = 0`` (a pinned connecti
 tension and angle jump across it by exactly the body's load.
 
 All derivatives are written out; :mod:`kanat.continuum.oracle2d` checks them by complex step.
+
+The last argument of :func:`assemble`, ``extras``, is None for a plain cable (no seabed within
+reach, no waves, no inline bodies, no bending stiffness, no surface buoy) and an array otherwise:
+numba prunes the ``extras is not None`` branches of the plain version at compile time, so a
+plain run compiles none of that code (``kanat.jit``'s compile budget); the two versions give the
+same numbers where both apply (the tests compare them).
 """
 from __future__ import annotations
 
@@ -40,7 +46,7 @@ from kanat.continuum import kernels2d as k
 
 
 @kernel
-def assemble(x, y, d, env, P, b0, b1, res, band):
+def assemble(x, y, d, env, P, b0, b1, res, band, extras):
     """Residual ``res`` (nv (N+1),) and banded Jacobian ``band`` at unknowns ``x`` (N+1, nv).
 
     ``x, y, d`` are (N+1, nv): new state, old state, old rate; ``env`` (N+1, NENV) the nodal
@@ -62,19 +68,22 @@ def assemble(x, y, d, env, P, b0, b1, res, band):
             wm[j, i] = (1.0 - am) * x[j, i] + am * y[j, i]
             wk[j, i] = (1.0 - ak) * x[j, i] + ak * y[j, i]
             wr[j, i] = (1.0 - am) * rate + am * d[j, i]
-    load, dload = _node_loads(wk, env, P)
+    load, dload = _node_loads(wk, env, P, extras)
     chain = np.empty(3)
     chain[0], chain[1], chain[2] = 1.0 - am, 1.0 - ak, (1.0 - am) / (gamma * dt)
     for j in range(n_nodes - 1):
-        if P[j, k.KIND] == k.JUNCTION:
-            _junction_rows(j, x, wm, wk, wr, env, P[j], chain, width, res, band)
-        else:
-            _interval_rows(j, wm, wk, wr, load, dload, P[j], chain, width, res, band)
-    _end_rows(x, y, d, env, P, b0, b1, width, res, band)
+        junction = False
+        if extras is not None:
+            junction = P[j, k.KIND] == k.JUNCTION
+            if junction:
+                _junction_rows(j, x, wm, wk, wr, env, P[j], chain, width, res, band)
+        if not junction:
+            _interval_rows(j, wm, wk, wr, load, dload, P[j], chain, width, res, band, extras)
+    _end_rows(x, y, d, env, P, b0, b1, width, res, band, extras)
 
 
 @inner
-def _node_loads(wk, env, P):
+def _node_loads(wk, env, P, extras):
     """Loads (f_t, f_n) at every node as the left (use 0) and right (use 1) node of its intervals,
     each with that interval's parameters, and their derivatives by the node's states.
 
@@ -97,19 +106,24 @@ def _node_loads(wk, env, P):
                 continue
             p = P[row]
             ft, fn = k.node_load_jacobian(wk[j, 0], wk[j, 1], wk[j, 2], wk[j, 3], env[j, k.UX], env[j, k.UZ], p, jac)
-            et, en = k.extra_load_jacobian(wk[j, 0], wk[j, 1], wk[j, 2], wk[j, 3], env[j], p, extra)
+            et = en = 0.0
+            if extras is not None:
+                et, en = k.extra_load_jacobian(wk[j, 0], wk[j, 1], wk[j, 2], wk[j, 3], env[j], p, extra)
             load[j, use, 0], load[j, use, 1] = ft + et, fn + en
             for i in range(2):
                 for q in range(4):
-                    dload[j, use, i, q] = jac[i, q] + extra[i, q]
+                    dload[j, use, i, q] = jac[i, q]
+            if extras is not None:
+                for i in range(2):
+                    for q in range(4):
+                        dload[j, use, i, q] += extra[i, q]
     return load, dload
 
 
 @inner
-def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band):
+def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band, extras):
     """Rows of cable interval ``j`` (module docstring) and their exact derivatives."""
     nv = wm.shape[1]
-    bend = nv == 6
     l, r = j, j + 1
     c, ds, conv = p[k.INERTIA], p[k.DS], p[k.CONV]
     mass, normal_mass = p[k.M], p[k.M] + p[k.MA]
@@ -127,15 +141,16 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band):
     res[row + 2] = c * flex * r0 - g1 + kb2 * g3
     res[row + 3] = c * stretch * r3 - g2 - kb1 * g3
     kb4 = g4 = kb5 = g5 = stretch_k = flex_k = 0.0
-    if bend:
-        kb4, kb5 = 0.5 * (wk[l, 4] + wk[r, 4]), 0.5 * (wk[l, 5] + wk[r, 5])
-        g4, g5 = (wk[r, 4] - wk[l, 4]) / ds, (wk[r, 5] - wk[l, 5]) / ds
-        tk, ek, flex_k = k._law_segment(kb0, p)
-        stretch_k = 1.0 + ek + flex_k * (kb0 - tk)
-        res[row] += kb4 * g3
-        res[row + 1] -= g4
-        res[row + 4] = p[k.EI] * g3 - kb5
-        res[row + 5] = g5 + stretch_k * kb4
+    if extras is not None:
+        if nv == 6:
+            kb4, kb5 = 0.5 * (wk[l, 4] + wk[r, 4]), 0.5 * (wk[l, 5] + wk[r, 5])
+            g4, g5 = (wk[r, 4] - wk[l, 4]) / ds, (wk[r, 5] - wk[l, 5]) / ds
+            tk, ek, flex_k = k._law_segment(kb0, p)
+            stretch_k = 1.0 + ek + flex_k * (kb0 - tk)
+            res[row] += kb4 * g3
+            res[row + 1] -= g4
+            res[row + 4] = p[k.EI] * g3 - kb5
+            res[row + 5] = g5 + stretch_k * kb4
     dm = np.zeros((nv, nv))          # dR[row i] / d(weighted state of one node)[q], for m, k, r
     dk = np.zeros((nv, nv))
     dr = np.zeros((nv, nv))
@@ -163,15 +178,16 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band):
         dk[3, 1] = -0.5 * g3
         dk[3, 2] = -sign / ds
         dk[3, 3] = -kb1 * sign / ds
-        if bend:
-            dk[0, 4] = 0.5 * g3
-            dk[0, 3] += kb4 * sign / ds
-            dk[1, 4] = -sign / ds
-            dk[4, 3] = p[k.EI] * sign / ds
-            dk[4, 5] = -0.5
-            dk[5, 5] = sign / ds
-            dk[5, 4] = 0.5 * stretch_k
-            dk[5, 0] = 0.5 * flex_k * kb4
+        if extras is not None:
+            if nv == 6:
+                dk[0, 4] = 0.5 * g3
+                dk[0, 3] += kb4 * sign / ds
+                dk[1, 4] = -sign / ds
+                dk[4, 3] = p[k.EI] * sign / ds
+                dk[4, 5] = -0.5
+                dk[5, 5] = sign / ds
+                dk[5, 4] = 0.5 * stretch_k
+                dk[5, 0] = 0.5 * flex_k * kb4
         for q in range(nv):
             dk[0, q] -= 0.5 * dload[node, use, 0, q]
             dk[1, q] -= 0.5 * dload[node, use, 1, q]
@@ -270,7 +286,7 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
 
 
 @inner
-def _end_rows(x, y, d, env, P, b0, b1, width, res, band):
+def _end_rows(x, y, d, env, P, b0, b1, width, res, band, extras):
     """The rows of each end and their derivatives (:func:`kernels2d.end_jacobian`) into ``res``, ``band``."""
     nv = x.shape[1]
     half = nv // 2
@@ -280,7 +296,7 @@ def _end_rows(x, y, d, env, P, b0, b1, width, res, band):
     for end in range(2):
         node, side, row = (0, -1.0, 0) if end == 0 else (last, 1.0, nv * last + half)
         p = P[0] if end == 0 else P[last - 1]
-        k.end_jacobian(x[node], y[node], d[node], env[node], p, b0 if end == 0 else b1, side, out, jac)
+        k.end_jacobian(x[node], y[node], d[node], env[node], p, b0 if end == 0 else b1, side, out, jac, extras)
         for i in range(half):
             res[row + i] = out[i]
             for q in range(nv):

@@ -7,6 +7,8 @@ and a junction interval carries an inline body: velocity continuity ``V_a = V_b`
 level) and the body's momentum in chart components (3 rows)
 
     c0 (M_b + M_a) A_a^[am] - (T_b t_b - T_a t_a)^[ak] - B z - D - F - (M_a + rho Vol) a_w = 0.
+
+``extras``: None for a plain cable (its branches compile away), as in :mod:`kanat.continuum.rows2d`.
 """
 from __future__ import annotations
 
@@ -18,7 +20,7 @@ from kanat.continuum import kernels3d as k3
 
 
 @kernel
-def assemble3(x, y, d, env, up, P, b0, b1, res, band):
+def assemble3(x, y, d, env, up, P, b0, b1, res, band, extras):
     """Residual (6(N+1),) and banded Jacobian (17, 6(N+1)) of one step at unknowns ``x`` (N+1, 6).
 
     ``y, d``: old state and rate; ``env`` (N+1, NENV3) the nodal data in chart coordinates;
@@ -36,18 +38,21 @@ def assemble3(x, y, d, env, up, P, b0, b1, res, band):
             wk[j, i] = (1.0 - ak) * x[j, i] + ak * y[j, i]
             wr[j, i] = (1.0 - am) * ((x[j, i] - y[j, i]) / (gamma * dt) - (1.0 - gamma) / gamma * d[j, i]) \
                 + am * d[j, i]
-    load, dload = _node_loads3(wk, env, up, P)
+    load, dload = _node_loads3(wk, env, up, P, extras)
     scratch, vectors = np.empty((6, 6, 6)), np.empty((2, 6))
     for j in range(n_nodes - 1):
-        if P[j, k.KIND] == k.JUNCTION:
-            _junction_rows3(j, x, wm, wk, wr, env, up, P[j], res, band)
-        else:
+        junction = False
+        if extras is not None:
+            junction = P[j, k.KIND] == k.JUNCTION
+            if junction:
+                _junction_rows3(j, x, wm, wk, wr, env, up, P[j], res, band)
+        if not junction:
             _interval_rows3(j, wm, wk, wr, load, dload, P[j], scratch, vectors, res, band)
-    _end_rows3(x, y, d, env, up, P, b0, b1, res, band)
+    _end_rows3(x, y, d, env, up, P, b0, b1, res, band, extras)
 
 
 @inner
-def _node_loads3(wk, env, up, P):
+def _node_loads3(wk, env, up, P, extras):
     """Loads (n, 2 uses, 3) at the ``[ak]`` states, each with its interval's row, and their
     derivatives (n, 2, 3, 6) (:func:`kernels3d.node_load3_jacobian`, :func:`kernels3d.extra_load3_jacobian`)."""
     n_nodes = wk.shape[0]
@@ -67,11 +72,17 @@ def _node_loads3(wk, env, up, P):
                 continue
             p = P[row]
             f0, f1, f2 = k3.node_load3_jacobian(wk[j], env[j, k3.UX3:k3.UX3 + 3], up, p, jac)
-            e0, e1, e2 = k3.extra_load3_jacobian(wk[j], env[j], p, extra)
+            e0 = e1 = e2 = 0.0
+            if extras is not None:
+                e0, e1, e2 = k3.extra_load3_jacobian(wk[j], env[j], p, extra)
             load[j, use, 0], load[j, use, 1], load[j, use, 2] = f0 + e0, f1 + e1, f2 + e2
             for i in range(3):
                 for q in range(6):
-                    dload[j, use, i, q] = jac[i, q] + extra[i, q]
+                    dload[j, use, i, q] = jac[i, q]
+            if extras is not None:
+                for i in range(3):
+                    for q in range(6):
+                        dload[j, use, i, q] += extra[i, q]
     return load, dload
 
 
@@ -207,14 +218,14 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
 
 
 @inner
-def _end_rows3(x, y, d, env, up, P, b0, b1, res, band):
+def _end_rows3(x, y, d, env, up, P, b0, b1, res, band, extras):
     """The three rows of each end and their derivatives (:func:`kernels3d.end_jacobian3`) into ``res``, ``band``."""
     out, jac = np.empty(3), np.empty((3, 6))
     last = x.shape[0] - 1
     for end in range(2):
         node, side, row = (0, -1.0, 0) if end == 0 else (last, 1.0, 6 * last + 3)
         p = P[0] if end == 0 else P[last - 1]
-        k3.end_jacobian3(x[node], y[node], d[node], env[node], up, p, b0 if end == 0 else b1, side, out, jac)
+        k3.end_jacobian3(x[node], y[node], d[node], env[node], up, p, b0 if end == 0 else b1, side, out, jac, extras)
         for i in range(3):
             res[row + i] = out[i]
             for q in range(6):

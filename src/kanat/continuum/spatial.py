@@ -100,9 +100,10 @@ def _solve(cable, x0, y, rate, env, up, P, b0, b1):
     n = x.size
     res, band = np.empty(n), np.empty((k3.LOWER + k3.UPPER + 1, n))
     scale = np.tile(spatial_scales(cable, y), len(x))
+    extras = cable.extras()
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k3.assemble3(x, y, rate, env, up, P, b0, b1, res, band)
+        k3.assemble3(x, y, rate, env, up, P, b0, b1, res, band, extras)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // 6))
         try:
@@ -208,7 +209,7 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
 
     def residual(x, e):
         res, band = np.empty(x.size), np.empty((k3.LOWER + k3.UPPER + 1, x.size))
-        k3.assemble3(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band)
+        k3.assemble3(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band, cable.extras())
         return res, band
 
     def derivative(x):

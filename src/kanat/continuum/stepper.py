@@ -83,6 +83,7 @@ def scales(cable, y: np.ndarray) -> np.ndarray:
 
 def solve(cable, x0, y, rate, env, P, b0, b1):
     """Newton's method for the new state; returns ``(x, iterations)`` or raises NewtonFailure."""
+    extras = cable.extras()
     x = x0.copy()
     n, nv = x.size, x.shape[1]
     width = k.bandwidth(nv)
@@ -91,7 +92,7 @@ def solve(cable, x0, y, rate, env, P, b0, b1):
     scale = np.tile(scales(cable, y), len(x))
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k.assemble(x, y, rate, env, P, b0, b1, res, band)
+        k.assemble(x, y, rate, env, P, b0, b1, res, band, extras)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         try:
@@ -187,7 +188,7 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
 
     def residual(x, e):
         res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
-        k.assemble(x, x, np.zeros_like(x), e, P, b0, b1, res, band)
+        k.assemble(x, x, np.zeros_like(x), e, P, b0, b1, res, band, cable.extras())
         return res, band
     target = np.asarray(cable.end.position, dtype=float) if anchored else None
     return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),
