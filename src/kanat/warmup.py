@@ -22,17 +22,19 @@ from kanat.lumped import fast, fast_implicit, kernels
 _LUMPED = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None))
 
 FAMILIES = {f.name: f for f in (
-    Family("continuum-2d", ((kernels2d.assemble, None),), 2.3),
-    Family("continuum-3d", ((kernels3d.assemble3, None),), 4.3),
-    Family("factorized-2d", ((kernels2d.assemble, None), (sweeps_compiled._factorized_step, planar)), 9.0),
-    Family("factorized-3d", ((kernels3d.assemble3, None), (sweeps_compiled._factorized_step, spatial)), 12.0),
-    Family("wave-factorized-2d", ((kernels2d.assemble, None), (waves_compiled._assemble_block, planar)), 5.5),
-    Family("wave-factorized-3d", ((kernels3d.assemble3, None), (waves_compiled._assemble_block, spatial)), 8.0),
-    Family("lumped-rk4", _LUMPED + ((fast.rk4_steps, None),), 5.0),
-    Family("lumped-abm4", _LUMPED + ((fast.abm4_steps, None),), 5.0),
-    Family("lumped-implicit", _LUMPED + ((fast_implicit.steps, None),), 7.5),
+    Family("continuum-2d", ((kernels2d.assemble, None),), 3.5),
+    Family("continuum-3d", ((kernels3d.assemble3, None),), 6.0),
+    Family("factorized-2d", ((kernels2d.assemble, None), (sweeps_compiled._factorized_step, planar)), 16.0),
+    Family("factorized-3d", ((kernels3d.assemble3, None), (sweeps_compiled._factorized_step, spatial)), 20.0),
+    Family("wave-factorized-2d", ((kernels2d.assemble, None), (waves_compiled._assemble_block, planar)), 9.0),
+    Family("wave-factorized-3d", ((kernels3d.assemble3, None), (waves_compiled._assemble_block, spatial)), 13.0),
+    Family("lumped-rk4", _LUMPED + ((fast.rk4_steps, None),), 6.5),
+    Family("lumped-abm4", _LUMPED + ((fast.abm4_steps, None),), 6.5),
+    Family("lumped-implicit", _LUMPED + ((fast_implicit.steps, None),), 11.0),
 )}
-"""Every family, by name; ``compile_s`` from benchmarks/RESULTS.md (cold cache, idle 2-core machine)."""
+"""Every family, by name; ``compile_s``: CPU seconds of the first run's compile measured by
+``benchmarks/bench_compile.py`` (benchmarks/RESULTS.md; factorized-3d and lumped-abm4 estimated
+from their siblings)."""
 
 _SCHEME_FAMILY = {"generalized-alpha": "continuum", "box": "continuum", "backward-euler": "continuum",
                   "generalized-trapezoidal": "continuum", "factorized": "factorized", "factorized-4": "factorized",

@@ -102,17 +102,21 @@ def check_bodies(case: Case, out: Findings) -> None:
 
 
 def check_anchors(case: Case, out: Findings) -> None:
-    """Anchors lie between the seabed and the free surface."""
+    """Anchors lie between the seabed (a sloped one where ``seabed.slope_deg``) and the free surface."""
+    from ..physics.seabed import seabed_of
+
     depth = case.environment.depth
+    seabed = seabed_of(case.environment)
     for i, cable in enumerate(case.cables):
         for key, end in (("from", cable.from_), ("to", cable.to)):
             if end.kind != "anchor":
                 continue
             z = end.position[2]
-            if depth is not None and z < -depth * (1 + 1e-9):
+            floor = None if seabed is None else float(seabed.height(end.position[0], end.position[1]))
+            if floor is not None and z < floor - 1e-9 * depth:
                 out.error(("cables", i, key),
-                          f"anchor at z = {fmt(z)} m is below the seabed at z = {fmt(-depth)} m "
-                          f"(depth {fmt(depth)} m)")
+                          f"anchor at z = {fmt(z)} m is below the seabed at z = {fmt(floor)} m "
+                          f"(depth {fmt(depth)} m at x = 0)")
             elif z > 0:
                 out.warning(("cables", i, key),
                             f"anchor at z = {fmt(z)} m is above the free surface z = 0")
@@ -389,6 +393,7 @@ def check_attachments(case: Case, out: Findings) -> None:
     if not case.cables:
         return
     used = {(e.kind, e.name) for c in case.cables for e in c.ends}
+    used |= {("body", a.body) for c in case.cables for a in c.attachments}
     for group, kind, items in (("bodies", "body", case.bodies), ("points", "point", case.points)):
         for name in items:
             if (kind, name) not in used:
