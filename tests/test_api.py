@@ -110,3 +110,15 @@ def test_case_replace_gives_a_validated_variant():
         case.replace({"cables[3].length": 10})
     with pytest.raises(CaseError, match="drag_nromal"):
         case.replace({"line_types.towcable.drag_nromal": 1.0})        # an unknown key is named
+
+
+def test_report_of_a_result_in_memory_is_the_report_of_its_file(tmp_path):
+    ds = kanat.simulate(kanat.load_case(short_case(duration=20, segments=10)))
+    ds.to_netcdf(tmp_path / "r.nc")
+    memory = kanat.report(ds, tmp_path / "memory.html")
+    from_file = kanat.report(tmp_path / "r.nc", tmp_path / "file.html")
+    page = memory.read_text(encoding="utf-8")
+    assert "a result in memory" in page
+    assert page.replace("a result in memory", str(tmp_path / "r.nc")) == from_file.read_text(encoding="utf-8")
+    with pytest.raises(KanatError, match="directory"):
+        kanat.report(ds, tmp_path)

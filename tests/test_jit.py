@@ -101,3 +101,21 @@ def test_the_warmup_cases_are_tiny_and_valid():
         parsed = load_case(case)
         assert warmup.family_name(parsed.simulation.scheme, parsed.simulation.dimensions or 2) == name
         assert sum(c.segments for c in parsed.cables) <= 5
+
+
+def test_kanat_warmup_compiles_a_family_once(tmp_path):
+    """``kanat warmup FAMILY`` in a fresh process with an empty kernel cache compiles it; run again
+    it finds everything cached (numba's cache index, read by :func:`kanat.jit.pending`)."""
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache")}
+    command = [sys.executable, "-m", "kanat.cli", "warmup", "lumped-rk4"]
+    first = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
+    assert first.returncode == 0, first.stderr
+    assert "lumped-rk4: compiled in" in first.stdout and "compiling lumped-rk4 kernels once" in first.stderr
+    again = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
+    assert "lumped-rk4: already compiled" in again.stdout, again.stdout + again.stderr
+    bad = subprocess.run([*command[:-1], "lumped-rk5"], env=env, capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 1 and "valid: continuum-2d" in bad.stderr

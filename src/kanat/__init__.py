@@ -12,13 +12,15 @@ run(case, ...) -> Outcome
     The same, with the run summary and its text (what ``kanat run`` prints).
 read_result(path) -> xarray.Dataset
     A result file.
+report(result | path | study_dir, html_path) -> Path
+    One self-contained HTML page (:mod:`kanat.report`, whose package is callable).
 
 The names are loaded on first use, so ``import kanat`` stays light.
 """
 from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
-__all__ = ["__version__", *_API]
+__all__ = ["__version__", *_API, "report"]
 
 
 def __getattr__(name):
@@ -26,4 +28,8 @@ def __getattr__(name):
         from kanat import api
 
         return getattr(api, name)
+    if name == "report":
+        import kanat.report  # noqa: F401 - binds the (callable) package kanat.report
+
+        return globals()["report"]
     raise AttributeError(f"module 'kanat' has no attribute {name!r}")

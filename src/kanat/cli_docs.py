@@ -1,9 +1,10 @@
-"""The documentation verbs of the ``kanat`` command line: ``schema`` and ``export``.
+"""The documentation and set-up verbs of the ``kanat`` command line: ``schema``, ``export``, ``warmup``.
 
 ``kanat.cli`` calls :func:`register` to add them to its Typer app. ``kanat schema`` prints
 the case file's JSON Schema (:func:`kanat.model.reference.json_schema`) or its Markdown
 reference; ``kanat export`` turns a result file into files for other tools
-(:mod:`kanat.io.export`: VTK for ParaView, tidy CSV).
+(:mod:`kanat.io.export`: VTK for ParaView, tidy CSV); ``kanat warmup`` compiles the kernel
+families ahead of the first run (:mod:`kanat.warmup`).
 
 This module also joins the two halves of the reference page (:func:`reference_page`): the
 case format, from the models, and the result names, from :mod:`kanat.io.schema`, which sit
@@ -158,9 +159,40 @@ def export(result: Path = typer.Argument(..., help="Result file (netCDF) of kana
         fail(error, debug, "export failed")
 
 
+def warmup(families: Optional[list[str]] = typer.Argument(
+        None, help="Kernel families to compile (default all): continuum-2d, continuum-3d, factorized-2d, "
+                   "factorized-3d, wave-factorized-2d, wave-factorized-3d, lumped-rk4, lumped-abm4, "
+                   "lumped-implicit.")):
+    """Compile the numba kernels once, ahead of the first run (cached on disk for every later run)."""
+    import logging
+    import warnings
+
+    import kanat
+    from kanat import warmup as kernels
+
+    log = logging.getLogger("kanat")
+    unknown = [name for name in families or () if name not in kernels.FAMILIES]
+    if unknown:
+        from kanat.errors import KanatError
+
+        fail(KanatError(f"no kernel family {', '.join(map(repr, unknown))}; valid: {', '.join(kernels.FAMILIES)}"),
+             False, "warmup")
+
+    def simulate(case):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            kanat.simulate(kanat.load_case(case))
+
+    spent = kernels.warmup(simulate, families or None,
+                           lambda name, estimate: log.warning(f"compiling {name} kernels once, ~{estimate:.0f} s"))
+    for name, seconds in spent.items():
+        out.print(f"{name}: {'already compiled' if seconds == 0.0 else f'compiled in {seconds:.1f} s'}")
+
+
 def register(app: typer.Typer) -> None:
-    """Add ``schema`` and ``export`` to the ``kanat`` app."""
+    """Add ``schema``, ``export`` and ``warmup`` to the ``kanat`` app."""
     from kanat.cli_common import CONTEXT
 
     app.command(context_settings=CONTEXT)(schema)
     app.command(context_settings=CONTEXT)(export)
+    app.command(context_settings=CONTEXT)(warmup)

@@ -26,7 +26,7 @@ def report_inputs(source) -> list[Path]:
 
 
 def write_report(source, output, nodes=None, window=None, bodies=None) -> Path:
-    """Write the HTML report of a result file or of a study directory.
+    """Write the HTML report of a result (in memory or a file) or of a study directory.
 
     The output is checked first (:func:`kanat.io.outputs.check_output_file`: it may not be
     the source or any file of the study, a directory, or in a missing or read-only
@@ -35,8 +35,9 @@ def write_report(source, output, nodes=None, window=None, bodies=None) -> Path:
 
     Parameters
     ----------
-    source : path-like
-        A result file (netCDF) or a study directory (with ``summary.nc``).
+    source : xarray.Dataset or path-like
+        A result (as :func:`kanat.simulate` returns it), a result file (netCDF) or a study
+        directory (with ``summary.nc``).
     output : path-like
         The HTML file to write.
     nodes : sequence of int or str, optional
@@ -53,6 +54,12 @@ def write_report(source, output, nodes=None, window=None, bodies=None) -> Path:
     """
     from kanat.io.outputs import OutputLock, check_output_file
 
+    if hasattr(source, "data_vars"):                     # an xarray.Dataset: a result in memory
+        from kanat.report.html_result import result_report
+
+        output = check_output_file(output, example="report.html")
+        with OutputLock(output):
+            return result_report(source, output, "a result in memory", nodes, window, bodies)
     source = Path(source)
     if not source.exists():
         raise KanatError(f"{source} does not exist; give a result file (.nc) or a study directory")
