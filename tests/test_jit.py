@@ -103,19 +103,30 @@ def test_the_warmup_cases_are_tiny_and_valid():
         assert sum(c.segments for c in parsed.cables) <= 5
 
 
-def test_kanat_warmup_compiles_a_family_once(tmp_path):
-    """``kanat warmup FAMILY`` in a fresh process with an empty kernel cache compiles it; run again
-    it finds everything cached (numba's cache index, read by :func:`kanat.jit.pending`)."""
+def test_a_cold_run_says_it_compiles_and_kanat_warmup_finds_it_done(tmp_path):
+    """In fresh processes with an empty kernel cache: ``kanat run`` says it compiles (before it
+    does), ``kanat warmup`` then finds the family cached (numba's cache index, read by
+    :func:`kanat.jit.pending`), and a second run compiles nothing and says nothing of it."""
     import os
     import subprocess
     import sys
 
+    import yaml
+
+    case = tmp_path / "tiny.yaml"
+    case.write_text(yaml.safe_dump(warmup.CASES["lumped-rk4"]))
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache")}
-    command = [sys.executable, "-m", "kanat.cli", "warmup", "lumped-rk4"]
-    first = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
-    assert first.returncode == 0, first.stderr
-    assert "lumped-rk4: compiled in" in first.stdout and "compiling lumped-rk4 kernels once" in first.stderr
-    again = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
-    assert "lumped-rk4: already compiled" in again.stdout, again.stdout + again.stderr
-    bad = subprocess.run([*command[:-1], "lumped-rk5"], env=env, capture_output=True, text=True, timeout=60)
-    assert bad.returncode == 1 and "valid: continuum-2d" in bad.stderr
+
+    def kanat(*args):
+        done = subprocess.run([sys.executable, "-m", "kanat.cli", *args], env=env, capture_output=True,
+                              text=True, timeout=300)
+        return done.returncode, done.stdout, done.stderr
+
+    code, _, err = kanat("run", str(case), "-o", str(tmp_path / "a.nc"))
+    assert code == 0 and "compiling the lumped-rk4 kernels once" in err, err
+    code, out, _ = kanat("warmup", "lumped-rk4")
+    assert code == 0 and "lumped-rk4: already compiled" in out, out
+    code, out, err = kanat("run", str(case), "-o", str(tmp_path / "b.nc"))
+    assert code == 0 and "compiling" not in err and "compiling 0.00 s" in out, out + err
+    code, _, err = kanat("warmup", "lumped-rk5")
+    assert code == 1 and "valid: continuum-2d" in err

@@ -14,6 +14,7 @@ and the parameter studies call these functions and nothing below them.
 """
 from __future__ import annotations
 
+import logging
 import time
 import warnings
 from dataclasses import dataclass
@@ -313,12 +314,31 @@ def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, 
         sinks.append(checkpointer)
     if progress is not None:
         sinks.append(dynamics.Progress(progress))
-    summary = dynamics.run(lambda: entry.build(case, scheme), [*sinks, *observers],
+    def build():
+        model = entry.build(case, scheme)
+        _announce_compile(model)
+        return model
+
+    summary = dynamics.run(build, [*sinks, *observers],
                            resume=checkpointer if resume else None, output=output)
     dataset = recorder.dataset() if recorder is not None else None
     if not summary.ok:
         warnings.warn(f"the run stopped: {summary.status}", RunFailedWarning, stacklevel=2)
     return Outcome(summary.status, summary.summary(), dataset, None if output is None else Path(output), summary)
+
+
+def _announce_compile(model) -> None:
+    """Log "compiling ... kernels once, ~N s" before a run whose kernels are not cached yet
+    (:func:`kanat.warmup.pending` reads numba's cache index: milliseconds)."""
+    from kanat import warmup
+
+    cable_model = getattr(model, "cable_model", None)
+    family = warmup.family_name(model.scheme.name, getattr(cable_model, "dimensions", 2))
+    estimate = warmup.pending(family)
+    if estimate is not None:
+        logging.getLogger("kanat").warning(
+            f"compiling the {family} kernels once (cached for later runs; `kanat warmup` does it ahead), "
+            f"~{estimate:.0f} s of CPU")
 
 
 def simulate(case: Case, scheme=None, output=None, resume: bool = False, progress=None):

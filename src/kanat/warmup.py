@@ -13,28 +13,43 @@ from __future__ import annotations
 import time
 from typing import Callable, Iterable
 
-from kanat.continuum import kernels2d, kernels3d
-from kanat.continuum.factorized import sweeps_compiled, waves_compiled
 from kanat.jit import Family, planar, spatial
 from kanat.jit import pending as family_pending
-from kanat.lumped import fast, fast_implicit, kernels
 
-_LUMPED = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None))
-
-FAMILIES = {f.name: f for f in (
-    Family("continuum-2d", ((kernels2d.assemble, None),), 3.5),
-    Family("continuum-3d", ((kernels3d.assemble3, None),), 6.0),
-    Family("factorized-2d", ((kernels2d.assemble, None), (sweeps_compiled._factorized_step, planar)), 16.0),
-    Family("factorized-3d", ((kernels3d.assemble3, None), (sweeps_compiled._factorized_step, spatial)), 20.0),
-    Family("wave-factorized-2d", ((kernels2d.assemble, None), (waves_compiled._assemble_block, planar)), 9.0),
-    Family("wave-factorized-3d", ((kernels3d.assemble3, None), (waves_compiled._assemble_block, spatial)), 13.0),
-    Family("lumped-rk4", _LUMPED + ((fast.rk4_steps, None),), 6.5),
-    Family("lumped-abm4", _LUMPED + ((fast.abm4_steps, None),), 6.5),
-    Family("lumped-implicit", _LUMPED + ((fast_implicit.steps, None),), 11.0),
-)}
-"""Every family, by name; ``compile_s``: CPU seconds of the first run's compile measured by
+FAMILIES = {
+    "continuum-2d": 3.5, "continuum-3d": 6.0, "factorized-2d": 16.0, "factorized-3d": 20.0,
+    "wave-factorized-2d": 9.0, "wave-factorized-3d": 13.0, "lumped-rk4": 6.5, "lumped-abm4": 6.5,
+    "lumped-implicit": 11.0,
+}
+"""Every family's name and its ``compile_s``: CPU seconds of the first run's compile measured by
 ``benchmarks/bench_compile.py`` (benchmarks/RESULTS.md; factorized-3d and lumped-abm4 estimated
 from their siblings)."""
+
+
+def family(name: str) -> Family:
+    """The :class:`kanat.jit.Family` ``name`` of :data:`FAMILIES`, importing only its own kernel
+    modules (a continuum run asking whether it will compile does not load the lumped model)."""
+    if name.startswith("lumped"):
+        from kanat.lumped import fast, fast_implicit, kernels
+
+        step = {"lumped-rk4": fast.rk4_steps, "lumped-abm4": fast.abm4_steps, "lumped-implicit": fast_implicit.steps}
+        entries = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None),
+                   (step[name], None))
+        return Family(name, entries, FAMILIES[name])
+    from kanat.continuum import kernels2d, kernels3d
+
+    flat = name.endswith("2d")
+    entries = ((kernels2d.assemble if flat else kernels3d.assemble3, None),)
+    if name.startswith("factorized"):
+        from kanat.continuum.factorized import sweeps_compiled
+
+        entries += ((sweeps_compiled._factorized_step, planar if flat else spatial),)
+    elif name.startswith("wave-factorized"):
+        from kanat.continuum.factorized import waves_compiled
+
+        entries += ((waves_compiled._assemble_block, planar if flat else spatial),)
+    return Family(name, entries, FAMILIES[name])
+
 
 _SCHEME_FAMILY = {"generalized-alpha": "continuum", "box": "continuum", "backward-euler": "continuum",
                   "generalized-trapezoidal": "continuum", "factorized": "factorized", "factorized-4": "factorized",
@@ -55,8 +70,7 @@ def family_name(scheme: str, dimensions: int = 2) -> str | None:
 def pending(name: str | None) -> float | None:
     """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached
     (or no such family). Reads the cache index only: costs milliseconds."""
-    family = FAMILIES.get(name) if name is not None else None
-    return None if family is None else family_pending(family)
+    return None if name not in FAMILIES else family_pending(family(name))
 
 
 # --- tiny cases, one per family ---------------------------------------------------------------------
