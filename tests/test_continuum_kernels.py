@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum import oracle2d
+from kanat.continuum import oracle_complex_step2d
 from kanat.continuum.model2d import EndCondition, parameters
-from kanat.continuum.reference2d import interval_residuals
+from kanat.continuum.oracle_numpy2d import interval_residuals
 
 N = 12
 
@@ -53,7 +53,7 @@ def test_analytic_jacobian_matches_complex_step(end, inertia):
     args = setup(2, end)
     args[4][:, k.INERTIA] = inertia
     res, band = run(k.assemble, args)
-    res2, band2 = run(oracle2d.jacobian_complex_step, args)
+    res2, band2 = run(oracle_complex_step2d.jacobian_complex_step, args)
     np.testing.assert_allclose(res, res2, rtol=1e-13, atol=1e-10)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
     res3, band3 = run(k.assemble, args, np.zeros(1))          # the full version, on a plain cable

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from kanat.continuum import derivation3d as d3
+from kanat.continuum import oracle_sympy3d as d3
 from kanat.physics.drag import cable_drag
 
 CONSTANTS = d3.CableConstants(mass=1.12, added_mass=0.24, axial_stiffness=2.0e5, weight_in_water=8.89,

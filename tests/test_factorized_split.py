@@ -20,7 +20,7 @@ from kanat.continuum.factorized.dense import sweep, sweep_numpy
 from kanat.continuum.factorized.system import CableSystem
 from kanat.continuum.model2d import parameters
 from kanat.continuum.models import model_for
-from kanat.continuum.reference2d import loads, mass_matrix, stiffness_matrix
+from kanat.continuum.oracle_numpy2d import loads, mass_matrix, stiffness_matrix
 from kanat.continuum.schemes import Factorized, Factorized4
 from kanat.io import parse_case
 

@@ -5,8 +5,8 @@ import pytest
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
-from kanat.continuum import oracle3d
-from kanat.continuum.derivation3d import CableConstants, numeric_system
+from kanat.continuum import oracle_complex_step3d
+from kanat.continuum.oracle_sympy3d import CableConstants, numeric_system
 from kanat.continuum.model2d import parameters
 
 CONSTANTS = dict(mass=1.12, added_mass=0.24, axial_stiffness=1.2717e7, weight_in_water=8.89,
@@ -58,7 +58,7 @@ def test_spatial_jacobian_matches_complex_step(end):
     res, band = np.empty(x.size), np.empty((17, x.size))
     res2, band2 = np.empty(x.size), np.empty((17, x.size))
     k3.assemble3(x, base, d, env, up, P, b0, b1, res, band, None)
-    oracle3d.jacobian_complex_step3(x, base, d, env, up, P, b0, b1, res2, band2)
+    oracle_complex_step3d.jacobian_complex_step3(x, base, d, env, up, P, b0, b1, res2, band2)
     np.testing.assert_allclose(res, res2, rtol=1e-12, atol=1e-9)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
     res3, band3 = np.empty(x.size), np.empty((17, x.size))

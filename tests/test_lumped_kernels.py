@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from kanat.lumped import kernels, twins
+from kanat.lumped import kernels, oracle_numpy
 from kanat.lumped.network import build_network
 from kanat.model import Case
 
@@ -52,7 +52,7 @@ def test_force_kernel_matches_its_numpy_twin(law, dimensional):
     x, v, uw, aw = random_state(net)
     mass = net.node_mass + net.node_added_mass
     got = run_forces(net, x, v, uw, aw, mass)
-    want = twins.forces_numpy(net, x, v, uw, aw, mass)
+    want = oracle_numpy.forces_numpy(net, x, v, uw, aw, mass)
     for a, b in zip(got, want):
         np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-9)
     assert np.all(got[2] >= 0.0)                                  # never compressive
@@ -75,7 +75,7 @@ def test_elastic_law_kernel_matches_twin(law):
     for row in range(len(net.law_kind)):
         args = (net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row])
         got = np.array([kernels.elastic(*args, ei) for ei in e])
-        f, df = twins.elastic_numpy(*args, e)
+        f, df = oracle_numpy.elastic_numpy(*args, e)
         np.testing.assert_allclose(got[:, 0], f, rtol=1e-12, atol=1e-9)
         np.testing.assert_allclose(got[:, 1], df, rtol=1e-12)
 
@@ -88,13 +88,13 @@ def test_mass_solves_match_twins():
     a0 = np.random.default_rng(2).normal(size=(net.n_nodes, 3))
     a = a0.copy()
     kernels.lumped_solve(M, F, net.free, a)
-    np.testing.assert_allclose(a, twins.lumped_solve_numpy(M, F, net.free, a0), rtol=1e-11)
+    np.testing.assert_allclose(a, oracle_numpy.lumped_solve_numpy(M, F, net.free, a0), rtol=1e-11)
     B = np.empty((net.n_elements, 3, 3))
     kernels.consistent_blocks(x, net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, B)
     a = a0.copy()
     iterations = kernels.consistent_solve(B, net.el_i, net.el_j, mass, F, net.free, a)
     assert iterations < 40
-    np.testing.assert_allclose(a, twins.consistent_solve_numpy(net, x, mass, F, net.free, a0), rtol=1e-9, atol=1e-10)
+    np.testing.assert_allclose(a, oracle_numpy.consistent_solve_numpy(net, x, mass, F, net.free, a0), rtol=1e-9, atol=1e-10)
 
 
 def test_consistent_matvec_is_the_sparse_matrix():
@@ -105,7 +105,7 @@ def test_consistent_matvec_is_the_sparse_matrix():
     a = np.random.default_rng(5).normal(size=(net.n_nodes, 3))
     y = np.empty_like(a)
     kernels.consistent_matvec(B, net.el_i, net.el_j, net.node_mass, a, y)
-    np.testing.assert_allclose(y.ravel(), twins.consistent_matrix(net, x, net.node_mass) @ a.ravel(), rtol=1e-12)
+    np.testing.assert_allclose(y.ravel(), oracle_numpy.consistent_matrix(net, x, net.node_mass) @ a.ravel(), rtol=1e-12)
 
 
 @pytest.mark.parametrize("law", LAWS, ids=["kelvin-voigt", "polynomial", "table"])

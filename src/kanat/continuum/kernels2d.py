@@ -44,7 +44,7 @@ Ends (SPEC §2.3), ``side`` = -1 at ``s = 0`` and +1 at ``s = L``:
 
 Every function here has its exact derivative beside it (``*_jacobian``); the complex-capable
 residuals (``|x| x`` written ``x sqrt(x x)``) and the all-complex-step oracle live in
-:mod:`kanat.continuum.oracle2d`, compiled by the tests only. Scalar loops only -- no array
+:mod:`kanat.continuum.oracle_complex_step2d`, compiled by the tests only. Scalar loops only -- no array
 expressions, slice copies or ``@`` -- which keeps numba's compile short (:mod:`kanat.jit`).
 """
 from __future__ import annotations

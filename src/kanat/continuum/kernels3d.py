@@ -14,7 +14,7 @@ momentum and compatibility on ``(t, n, b)`` gives ``M(Y) Y_t + K(Y) Y_s = F(Y)``
 
 (``mn = m + m_a``; frame identities ``t_phi = n``, ``t_theta = -cos(phi) b``, ``n_phi = -t``,
 ``n_theta = sin(phi) b``, ``b_theta = cos(phi) t - sin(phi) n``). For ``w = 0`` and constant
-``theta`` rows 0, 1, 3, 4 are the planar equations of SPEC §2.1; :mod:`derivation3d` derives
+``theta`` rows 0, 1, 3, 4 are the planar equations of SPEC §2.1; :mod:`.oracle_sympy3d` derives
 the same system symbolically and the tests compare. ``M`` is singular where ``cos(phi) = 0``
 (the tangent along the pole): the driver re-charts the pole before that happens.
 
@@ -32,7 +32,7 @@ Box method and generalized-α exactly as the planar kernels, with the two-node a
 sub- and super-diagonals. All derivatives are written out -- ``M(m) r`` and ``K(k) g``
 (:func:`d_mass_times`, :func:`d_stiffness_times`), the nodal loads (:func:`node_load3_jacobian`,
 :func:`extra_load3_jacobian`) and the ends (:func:`end_jacobian3`) -- so a run compiles real
-kernels only; the complex-step oracle (:mod:`kanat.continuum.oracle3d`) is compiled by the tests.
+kernels only; the complex-step oracle (:mod:`kanat.continuum.oracle_complex_step3d`) is compiled by the tests.
 As in :mod:`kernels2d`, scalar loops only (no array expressions, slice copies or ``@``).
 """
 from __future__ import annotations

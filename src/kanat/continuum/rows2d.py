@@ -29,7 +29,7 @@ the body's momentum in global components
 the water relative to it), and with bending ``M_a = M_b = 0`` (a pinned connection). The
 tension and angle jump across it by exactly the body's load.
 
-All derivatives are written out; :mod:`kanat.continuum.oracle2d` checks them by complex step.
+All derivatives are written out; :mod:`kanat.continuum.oracle_complex_step2d` checks them by complex step.
 
 The last argument of :func:`assemble`, ``extras``, is None for a plain cable (no seabed within
 reach, no waves, no inline bodies, no bending stiffness, no surface buoy) and an array otherwise:

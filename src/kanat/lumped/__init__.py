@@ -12,6 +12,11 @@ equilibrium(net, case) -> (x, info)
     The initial static state (:mod:`.equilibrium`).
 LumpedSystem
     The equations of motion (:mod:`.system`); schemes in :mod:`.integrators`.
+
+A test-only oracle (an independent twin of compiled kernels that only the tests import) is a
+module ``oracle_<method><dim>.py`` in the package whose kernels it checks, ``<method>`` saying how
+it is written (``complex_step``, ``numpy``, ``sympy``) and ``<dim>`` the ``2d``/``3d`` of those
+kernels where the package has both: here :mod:`.oracle_numpy`.
 """
 from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.equilibrium import equilibrium

@@ -23,7 +23,7 @@ MoorDyn's VOF); ``phi = 1`` once its top is half a diameter below the surface. `
 of the undisturbed wave on the displaced volume (MoorDyn, OrcaFlex).
 The added-mass matrix is taken at the current tangent (its ``dM/dq`` terms in Lagrange's
 equations are neglected, as in MoorDyn). Each kernel has a plain NumPy twin in
-:mod:`kanat.lumped.twins` that the tests compare it with.
+:mod:`kanat.lumped.oracle_numpy` that the tests compare it with.
 
 One element loop, :func:`element_forces`, serves both the step-by-step Python path
 (:func:`forces`) and the fused compiled paths (:mod:`kanat.lumped.fast`), so a run compiles it
