@@ -374,6 +374,28 @@ def test_a_network_in_a_current_goes_to_the_lumped_equilibrium():
     assert errors[-1] < 0.02 and 3.5 < errors[0] / errors[1] < 4.5
 
 
+def test_a_network_on_the_seabed_in_a_current_reports_its_grounded_length_and_anchor_pull():
+    """The three-leg buoy on the seabed in a faint current (1 mm/s) goes to the lumped model's
+    equilibrium; its seabed contact length (half an element per touching node: first order)
+    and anchor forces (second order) converge to network statics' catenary without current,
+    and the seabed, not the anchor, carries the resting chain's weight (no uplift)."""
+    text = (DATA / "network" / "buoy_3leg_seabed.yaml").read_text()
+    exact = kanat.solve_statics(load(text))
+    grounded, pull = [], []
+    for segments in (20, 40, 80):
+        data = yaml.safe_load(text.replace("segments: 40", f"segments: {segments}"))
+        data["environment"]["current"] = {"velocity": [1.0e-3, 0.0, 0.0]}
+        ds = kanat.solve_statics(load(data))
+        assert ds.attrs["status"] == "ok" and ds.attrs["scheme"] == "lumped equilibrium"
+        grounded.append(np.max(np.abs(ds.seabed_contact_length.values - exact.seabed_contact_length.values)))
+        assert grounded[-1] < 640.0 / segments                         # within an element
+        force = ds.anchor_force.values
+        pull.append(np.max(np.abs(force[:, :2] - exact.anchor_force.values[:, :2])))
+        assert np.all(np.abs(force[:, 2]) < 1e-4 * np.abs(force[:, 0]))
+    assert all(1.7 < a / b < 2.3 for a, b in zip(grounded, grounded[1:]))
+    assert all(3.5 < a / b < 4.5 for a, b in zip(pull, pull[1:]))
+
+
 def test_statics_refuses_what_the_table_says():
     """A network in a current over a seabed, which the lumped equilibrium cannot take yet, and
     a nonlinear elastic law: errors at their keys, from the support table and the solver alike."""

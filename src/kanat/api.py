@@ -89,6 +89,7 @@ def _statics_dataset(case: Case, method: str = "auto"):
 def _lumped_statics(case: Case, reason: str):
     """Network statics by the lumped model's equilibrium (statics may not import the lumped model)."""
     from kanat.lumped.equilibrium import equilibrium
+    from kanat.lumped.mooring_outputs import anchor_forces, anchors_on_seabed, attitudes, contact_length
     from kanat.lumped.network import build_network
     from kanat.statics.network_result import result_from_positions
 
@@ -97,8 +98,16 @@ def _lumped_statics(case: Case, reason: str):
     cables = {name: x[net.node_index[net.node_cable == name]] for name in net.cable_names}
     bodies = {name: x[node] for name, node in zip(net.body_names, net.body_node)}
     points = {name: x[node] for name, node in net.names.items() if name in case.points}
+    seabed = case.environment.seabed
+    on_seabed = anchors_on_seabed(net, case.environment)
+    grounded = contact_length(net, info["normal_force"], on_seabed)
+    anchors = anchor_forces(net, info["loads"], info["normal_force"], on_seabed,
+                            0.0 if seabed is None else seabed.friction)
     return result_from_positions(case, cables, bodies, points, "lumped equilibrium", info["iterations"],
-                                 [f"solved by the lumped model's equilibrium: {reason}"])
+                                 [f"solved by the lumped model's equilibrium: {reason}"],
+                                 grounded=dict(zip(net.cable_names, grounded)),
+                                 anchor_forces=dict(zip(net.anchor_names, anchors)),
+                                 attitudes=dict(zip(net.body_names, attitudes(net, x))))
 
 
 def _pitch_dataset(case: Case, method: str = "auto"):

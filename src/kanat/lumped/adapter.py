@@ -36,6 +36,7 @@ from kanat.lumped.integrators import SCHEMES, state_positions
 from kanat.lumped.mooring_outputs import (
     allowed_penetration,
     anchor_forces,
+    anchors_on_seabed,
     attitudes,
     contact_length,
     line_forces,
@@ -83,10 +84,8 @@ class LumpedModel:
         self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
         self.penetration = allowed_penetration(self.net, case.environment)
-        seabed = seabed_of(case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
-        self._anchors_on_seabed = (np.zeros(len(self.net.anchor_nodes), bool) if seabed is None else
-                                   seabed.penetration(self.net.anchor_position) > -1e-6 * seabed.depth)
+        self._anchors_on_seabed = anchors_on_seabed(self.net, case.environment)
 
     def _choose(self, scheme):
         sim = self.case.simulation
@@ -141,7 +140,7 @@ class LumpedModel:
             try:
                 x = equilibrium(self.net, self.case)[0]
             except SolverError as error:
-                raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed (SPEC §4). "
+                raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed. "
                                   "Give bodies and points a position near where they settle (a guess), or start "
                                   "from the given geometry with simulation.initial_state: as_given") from None
         else:

@@ -205,7 +205,9 @@ def _solve(net, case, x0, velocity, max_iterations):
     x : ndarray, shape (n, 3)
         Equilibrium positions (prescribed nodes at their t = 0 places).
     info : dict
-        ``iterations``, ``residual`` [N].
+        ``iterations``, ``residual`` [N]; ``loads`` (n, 3), the nodal forces at the solution
+        (eq. (1) without inertia: the prescribed nodes' are the pull they must resist), and
+        ``normal_force`` (n,), the seabed's push on each node [N].
 
     Raises
     ------
@@ -253,4 +255,7 @@ def _solve(net, case, x0, velocity, max_iterations):
     x = net.x_guess.copy()
     x[system.free_index] = xf
     system.prescribed(0.0, x, np.zeros_like(x))
-    return x, {"iterations": iteration, "residual": float(norm)}
+    full, v, _, heading = system.full(0.0, xf, np.zeros_like(xf))
+    loads, _ = system.loads(0.0, full, v, heading)
+    return x, {"iterations": iteration, "residual": float(norm), "loads": loads,
+               "normal_force": system.normal_force.copy()}

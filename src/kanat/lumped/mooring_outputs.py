@@ -88,6 +88,16 @@ def anchor_forces(net, F, normal_force, on_seabed, friction: float = 0.0) -> np.
     return out
 
 
+def anchors_on_seabed(net, environment) -> np.ndarray:
+    """Whether each anchor (n_anchor,) lies on the seabed (within 1e-6 of the depth), none without one."""
+    from kanat.physics.seabed import seabed_of
+
+    seabed = seabed_of(environment)
+    if seabed is None:
+        return np.zeros(len(net.anchor_nodes), bool)
+    return seabed.penetration(net.anchor_position) > -1e-6 * seabed.depth
+
+
 def allowed_penetration(net, environment) -> np.ndarray:
     """Penetration below the seabed each node may reach before a run fails (n,) [m]."""
     block = environment.seabed

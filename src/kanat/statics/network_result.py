@@ -323,7 +323,8 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
 # --------------------------------------------------------------------------- from node positions
 
 def result_from_positions(case, cables: dict, bodies: dict, points: dict, method: str,
-                          iterations: int = 0, notes=()) -> NetworkResult:
+                          iterations: int = 0, notes=(), grounded=None, anchor_forces=None,
+                          attitudes=None) -> NetworkResult:
     """A :class:`NetworkResult` from the node positions of a discretized equilibrium.
 
     For a network in a current, which the catenary lines cannot carry, the front door solves
@@ -334,6 +335,10 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
     fixed end carries its end element's pull ``T_e u_e`` and half the element's weight and
     drag, as a lumped node does; a body carries what balances its own loads (net buoyancy,
     constant force, drag in the relative flow). The stiffness is not computed (left empty).
+    What only the discretized model knows — the length of each cable on the seabed, the
+    anchors' forces with the seabed's share taken off, the 6-DOF bodies' attitudes — is given
+    by the caller (``grounded``, ``anchor_forces``, ``attitudes``); without a seabed the
+    lengths are zero and the anchors carry their end elements' pull.
 
     Parameters
     ----------
@@ -344,8 +349,17 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
     method : str
     iterations : int
     notes : sequence of str
+    grounded : dict of str to float, optional
+        Unstretched length of each cable resting on the seabed [m].
+    anchor_forces : dict of str to ndarray, shape (3,), optional
+        Force of the line on each anchor, named by cable end (``line1.from``) [N].
+    attitudes : dict of str to ndarray, shape (3,), optional
+        Roll, pitch, yaw of each body [rad] (zeros for point bodies).
     """
     from kanat.physics.drag import body_drag
+
+    if case.environment.seabed is not None and (grounded is None or anchor_forces is None):
+        raise ValueError("a network on a seabed needs the model's grounded lengths and anchor forces")
 
     env = case.environment
     ship = np.array([case.vessel.initial_speed, 0.0, 0.0])         # every node moves with the vessel
@@ -356,7 +370,7 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
         node_T = np.concatenate([[T[0]], 0.5 * (T[:-1] + T[1:]), [T[-1]]])
         angle = np.arctan2(unit[:, 2], np.hypot(unit[:, 0], unit[:, 1]))
         node_angle = np.concatenate([[angle[0]], 0.5 * (angle[:-1] + angle[1:]), [angle[-1]]])
-        out[cable.name] = NetworkCable(s, r, node_T, node_angle, 0.0, method)
+        out[cable.name] = NetworkCable(s, r, node_T, node_angle, (grounded or {}).get(cable.name, 0.0), method)
         for label, end, pull in zip(("from", "to"), cable.ends, ends):
             if end.kind == "anchor":
                 anchors[f"{cable.name}.{label}"] = pull
@@ -366,7 +380,9 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
         own = np.asarray(body.force, dtype=float) + np.array([0.0, 0.0, body.net_buoyancy])
         forces[name] = -(own + body_drag(env.current.at(r[2]) - ship, body.drag_area, env.water_density))
     zeros = {name: np.zeros(3) for name in bodies}
-    return NetworkResult(case, method, out, {k: np.asarray(v, float) for k, v in bodies.items()}, zeros,
+    turned = {name: np.asarray((attitudes or {}).get(name, np.zeros(3)), float) for name in bodies}
+    anchors = anchors if anchor_forces is None else {k: np.asarray(v, float) for k, v in anchor_forces.items()}
+    return NetworkResult(case, method, out, {k: np.asarray(v, float) for k, v in bodies.items()}, turned,
                          {k: np.asarray(v, float) for k, v in points.items()}, forces, dict(zeros), anchors, {},
                          iterations, 0, 0.0, tuple(notes))
 
