@@ -1,4 +1,5 @@
-"""The package's layers point down only (STYLE rule 13): import-linter's contract in pyproject.toml."""
+"""The package's layers point down only (STYLE rule 13) and no package's modules import each other in a
+cycle: import-linter's contracts in pyproject.toml."""
 import shutil
 import subprocess
 import sys

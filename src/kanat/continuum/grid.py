@@ -101,6 +101,25 @@ def parameters(mass, added_mass, weight, stiffness, diameter, drag_normal, drag_
     return p
 
 
+def elastic_law_knots(law, max_strain: float = 0.5, samples: int = 400):
+    """Knots ``(tensions, strains)`` of a case's ``elastic_law`` for :func:`parameters`.
+
+    A table is used as given, through (0, 0). A polynomial ``f(e) = c1 e + c2 e^2 + ...`` is
+    sampled on ``0 <= e <= max_strain`` and must increase there (so that ``e(T)`` exists);
+    beyond the last knot the law continues with its last slope.
+    """
+    if law.table is not None:
+        rows = np.array([(0.0, 0.0), *law.table], dtype=float)
+        strains, tensions = rows[:, 0], rows[:, 1]
+    else:
+        strains = np.linspace(0.0, max_strain, samples + 1)
+        tensions = sum(c * strains ** (i + 1) for i, c in enumerate(law.polynomial))
+    if np.any(np.diff(tensions) <= 0):
+        raise CaseError([Problem("line_types.elastic_law", "the tension of the elastic law must increase with "
+                                 f"strain up to {max_strain:g} for the continuum model (it inverts the law)")])
+    return tensions, strains
+
+
 def with_seabed(p: np.ndarray, seabed: SeabedContact | None) -> np.ndarray:
     """``p`` with the seabed's entries set (planar normal: components x and z in slots 0 and 1)."""
     p = p.copy()
@@ -154,8 +173,6 @@ class Grid:
 
 
 def _line_row(case, line_type: str, index: int, seabed) -> np.ndarray:
-    from kanat.continuum.model2d import elastic_law_knots      # one home for the law's inversion
-
     env = case.environment
     lt = case.line_types[line_type]
     law = elastic_law_knots(lt.elastic_law) if getattr(lt, "elastic_law", None) is not None else None

@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum.grid import Grid, SeabedContact, cable_grid, parameters, seabed_contact  # noqa: F401
+from kanat.continuum.grid import (Grid, SeabedContact, cable_grid, elastic_law_knots,  # noqa: F401
+                                  parameters, seabed_contact)
 from kanat.continuum.winch import Winch
 from kanat.errors import CaseError, Problem
 from kanat.model.plane import out_of_plane
@@ -155,25 +156,6 @@ class PlanarCable(CableGrid):
     sea: object = None
     seabed: SeabedContact | None = None
     winch: object = None
-
-
-def elastic_law_knots(law, max_strain: float = 0.5, samples: int = 400):
-    """Knots ``(tensions, strains)`` of a case's ``elastic_law`` for :func:`parameters`.
-
-    A table is used as given, through (0, 0). A polynomial ``f(e) = c1 e + c2 e^2 + ...`` is
-    sampled on ``0 <= e <= max_strain`` and must increase there (so that ``e(T)`` exists);
-    beyond the last knot the law continues with its last slope.
-    """
-    if law.table is not None:
-        rows = np.array([(0.0, 0.0), *law.table], dtype=float)
-        strains, tensions = rows[:, 0], rows[:, 1]
-    else:
-        strains = np.linspace(0.0, max_strain, samples + 1)
-        tensions = sum(c * strains ** (i + 1) for i, c in enumerate(law.polynomial))
-    if np.any(np.diff(tensions) <= 0):
-        raise CaseError([Problem("line_types.elastic_law", "the tension of the elastic law must increase with "
-                                 f"strain up to {max_strain:g} for the continuum model (it inverts the law)")])
-    return tensions, strains
 
 
 def strain_of(tension, params) -> np.ndarray:

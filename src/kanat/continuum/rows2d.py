@@ -42,7 +42,7 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import inner, kernel
 
-from kanat.continuum import kernels2d as k
+from kanat.continuum import loads2d as k
 
 
 @kernel

@@ -15,8 +15,8 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import inner, kernel
 
-from kanat.continuum import kernels2d as k
-from kanat.continuum import kernels3d as k3
+from kanat.continuum import loads2d as k
+from kanat.continuum import loads3d as k3
 
 
 @kernel

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.linalg import solve_banded
 
-from kanat.continuum.stepper import MAX_ITERATIONS, TOLERANCE, NewtonFailure
+from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 
 POSITION_STEP = 1e-7      # m: finite-difference step on node positions (contact is linear in them)
 MAX_ANGLE_STEP = 0.3      # rad: a Newton step turning any angle further is scaled down

@@ -14,11 +14,10 @@ from scipy.linalg import solve_banded
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import PlanarCable, positions
+from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
+from kanat.continuum.steady import steady_with_positions
 from kanat.continuum.water import elevation, kinematics_time, planar_water
-from kanat.errors import SolverError
 
-MAX_ITERATIONS = 20
-TOLERANCE = 1e-10        # on increments scaled by (tension scale, speed scale, speed scale, 1 rad)
 MAX_CUTS = 4             # a failed step is retried as 2, 4, 8, 16 substeps
 
 
@@ -48,14 +47,6 @@ class State:
     xz: np.ndarray
     rows: np.ndarray | None = None
     s: np.ndarray | None = None
-
-
-class NewtonFailure(SolverError):
-    """Newton did not converge; ``node`` is where the largest residual sits."""
-
-    def __init__(self, message: str, node: int):
-        super().__init__(message)
-        self.node = node
 
 
 def converged(size: float, previous: float) -> bool:
@@ -176,7 +167,6 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
             cable.end.waterplane == 0.0 and not anchored:
         x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
         return x
-    from kanat.continuum.steady import steady_with_positions
 
     def layout(x):
         r = positions(cable, x, xz[0], rows)

@@ -139,3 +139,18 @@ def load_case(path: str | PathLike[str], *,
     if text is None:
         raise CaseError(problems)
     return _accept(*_check(text, str(path), max_output_bytes, solver))
+
+
+def import_moordyn(path: str | PathLike[str]):
+    """Read, map and validate a MoorDyn input file.
+
+    Returns
+    -------
+    kanat.model.Case
+
+    Raises
+    ------
+    CaseError
+        With every problem, when the file cannot be imported or the case is invalid.
+    """
+    return load_case(path)

@@ -4,7 +4,7 @@
 ``docs/case-format.md``) with the MoorDyn line of every item, so that validation reports
 problems at the MoorDyn row. :func:`moordyn_document` is the hook
 :mod:`kanat.io.case_file` uses (``kanat validate``, ``load_case`` and every verb accept a
-MoorDyn file), :func:`import_moordyn` returns the validated :class:`~kanat.model.Case`,
+MoorDyn file), :func:`kanat.io.case_file.import_moordyn` returns the validated :class:`~kanat.model.Case`,
 and :func:`case_yaml` writes the data as a YAML case (``kanat import FILE -o case.yaml``).
 
 Names follow MoorDyn's numbers: cables ``line1``, ``line2``, ...; free points ``point3``;
@@ -57,7 +57,6 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
 from __future__ import annotations
 
 import math
-from os import PathLike
 from pathlib import Path as FilePath
 
 import yaml
@@ -78,8 +77,7 @@ from .moordyn_map import (
 from .moordyn_text import looks_like_moordyn, split
 from .yaml_loader import YamlDocument
 
-__all__ = ["Imported", "case_yaml", "import_moordyn", "looks_like_moordyn", "moordyn_document",
-           "read_moordyn"]
+__all__ = ["Imported", "case_yaml", "looks_like_moordyn", "moordyn_document", "read_moordyn"]
 
 
 def read_moordyn(text: str, file: str | None = None) -> Imported:
@@ -104,23 +102,6 @@ def moordyn_document(text: str, file: str | None = None) -> YamlDocument:
     """A MoorDyn file as the :class:`YamlDocument` the case reader validates."""
     imported = read_moordyn(text, file)
     return YamlDocument(imported.data, imported.lines, imported.problems)
-
-
-def import_moordyn(path: str | PathLike[str]):
-    """Read, map and validate a MoorDyn input file.
-
-    Returns
-    -------
-    kanat.model.Case
-
-    Raises
-    ------
-    CaseError
-        With every problem, when the file cannot be imported or the case is invalid.
-    """
-    from .case_file import load_case
-
-    return load_case(path)
 
 
 def case_yaml(imported: Imported, source: str) -> str:
