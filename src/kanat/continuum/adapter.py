@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum import kernels2d as k
+from kanat.continuum.courant import check_step
 from kanat.continuum.models import model_for
 from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
@@ -118,13 +119,15 @@ class ContinuumModel:
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
         try:
-            return (self.start_from or self.cable_model).initial()
+            state = (self.start_from or self.cable_model).initial()
         except SolverError as error:
             raise SolverError(
                 f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
                 "continuum model needs a taut cable from the start (bending stiffness lets a line go slack); a "
                 "slack or compressed line runs with model: lumped, which carries slack (kanat statics CASE "
                 "shows the steady shape)") from None
+        check_step(self.scheme, self.cable_model, state, self.dt)     # seed 000's schemes: their known range
+        return state
 
     def save(self, state) -> dict:
         return {"t": np.array(state.t), **self.cable_model.save(state)}
