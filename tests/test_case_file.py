@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from pydantic import ValidationError
+from scipy.constants import knot
 
 from kanat.errors import CaseError
 from kanat.io import CaseWarning, check_case, load_case, parse_case
@@ -133,7 +134,7 @@ def test_track_speeds_in_knots_and_initial_speed():
                            {"accelerate": {"to_speed_kn": 15, "acceleration": 0.01}}])
     assert vessel.initial_speed == pytest.approx(5.14444)
     assert isinstance(vessel.track[1], Accelerate)
-    assert vessel.track[1].to_speed_ms == pytest.approx(15 * 0.514444)
+    assert vessel.track[1].to_speed_ms == pytest.approx(15 * knot)
     assert Vessel().initial_speed == 0.0
     assert Vessel(track=[{"accelerate": {"to_speed": 1.5, "acceleration": 0.9}}]).initial_speed == 0
     assert Straight(duration=3).speed_ms is None

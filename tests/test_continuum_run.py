@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scipy.constants import knot
 from typer.testing import CliRunner
 
 from kanat.cli import app
@@ -112,7 +113,7 @@ def test_free_tail_trails_at_the_critical_angle_and_stays_steady(tmp_path, dims)
     assert np.abs(ds.tension.values[-1] - ds.tension.values[0]).max() < 1e-6 * ds.tension.values[0, 0]
     tail = ds.position.values[0, -1] - ds.position.values[0, -2]
     angle = np.degrees(np.arctan2(-tail[2], -tail[0]))
-    w, r = 2.0, 0.5 * 1025 * 0.08 * 1.2 * (8 * 0.514444) ** 2
+    w, r = 2.0, 0.5 * 1025 * 0.08 * 1.2 * (8 * knot) ** 2
     critical = np.degrees(np.arccos((-w + np.sqrt(w * w + 4 * r * r)) / (2 * r)))
     assert angle == pytest.approx(critical, abs=0.05)
 

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scipy.constants import knot
 from typer.testing import CliRunner
 
 from kanat.cli import app
@@ -59,7 +60,7 @@ def test_shooting_and_collocation_agree_on_every_example(name):
 def test_towed_body_balance_at_the_body():
     case = load_case(EXAMPLES / "towed_body.yaml")
     sol = solve_statics(case).cables["tow"]
-    speed = 6 * 0.514444
+    speed = 6 * knot
     drag = 0.5 * 1025 * 0.3276 * speed**2                     # body drag, flow astern
     assert sol.force[-1] == pytest.approx([-drag, -6686.0], rel=1e-9)
     assert sol.z[-1] < -300.0 and sol.x[-1] < -900.0           # trails astern and deep

@@ -110,6 +110,17 @@ def test_statics_picture_from_a_dataset_and_from_the_solver_agree():
     np.testing.assert_allclose(from_ds["tension/tow"].get_ydata(), ds["tension"].values / 1e3)
 
 
+@pytest.mark.parametrize("speed, title", [("speed_kn: 6", "tow speed 6 kn"), ("speed: 3.0", "tow speed 3 m/s")])
+def test_statics_picture_gives_the_tow_speed_in_the_unit_of_its_case(speed, title):
+    import kanat
+
+    text = (ROOT / "examples" / "towed_body.yaml").read_text()
+    assert "speed_kn: 6" in text
+    ds = kanat.solve_statics(kanat.load_case(text.replace("speed_kn: 6", speed)))
+    elevation = _axes(plot_statics(ds), "elevation")
+    assert elevation.get_title().endswith(title)
+
+
 def test_sphere_result_is_drawn_from_its_dataset():
     import kanat
 

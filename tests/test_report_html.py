@@ -36,6 +36,21 @@ def embedded(html: str, element_id: str):
     return json.loads(match.group(1))
 
 
+def table_headers(html: str) -> set:
+    """Every table column header of the page."""
+    return {re.sub(r"<[^>]+>", "", h).strip() for h in re.findall(r"<th[^>]*>(.*?)</th>", html, re.S)}
+
+
+def summary_rows(html: str) -> dict:
+    """The summary statistics table: ``statistic -> (unit, value)``."""
+    rows = {}
+    for row in re.findall(r"<tr>(.*?)</tr>", html, re.S):
+        cells = [re.sub(r"<[^>]+>", "", c).strip() for c in re.findall(r"<td[^>]*>(.*?)</td>", row, re.S)]
+        if len(cells) == 3:
+            rows[cells[0]] = (cells[2], cells[1])
+    return rows
+
+
 def app():
     cli = typer.Typer()
     cli.command("noop")(lambda: None)
@@ -52,7 +67,14 @@ def test_result_page_is_self_contained_and_holds_the_statistics(result, tmp_path
     ds = read_result(result)
     stats = node_statistics(ds, nodes=["tow@0", "tow@500"], window=(20, None))
     for value in (*stats["max"].values, *stats["mpm"].values):
-        assert f"{value:.5g}" in html                                # the statistics table
+        assert f"{value / 1e3:.5g}" in html                          # the statistics table, in kN
+    headers = table_headers(html)
+    for name in ("min", "max", "mean", "std", "MPM"):
+        assert f"{name} [kN]" in headers and f"{name} [m]" in headers    # node tension, body depth
+    assert "tension at the chosen nodes [N]" not in html
+    in_window = ds["tension"].values[ds["time"].values >= 20]
+    assert summary_rows(html)["tension_max"] == ("kN", f"{float(in_window.max()) / 1e3:.5g}")
+    assert summary_rows(html)["depth_mean_sled"][0] == "m"
     animation = embedded(html, "kanat-animation")
     assert animation["times"] == list(ds["time"].values) and animation["nodes"] == ds.sizes["node"]
     assert "window 20 to 60 s" in html
@@ -69,7 +91,8 @@ def test_statics_result_page(tmp_path):
     result = write_result(statics_dataset(solve_statics(load_case(EXAMPLES / "towed_body.yaml"))), tmp_path / "s.nc")
     html = write_report(result, tmp_path / "s.html").read_text()
     assert "plot-shape" in embedded(html, "kanat-figures")
-    assert f"{float(read_result(result)['tension'].max()):.5g}" in html
+    assert summary_rows(html)["tension_max"] == ("kN", f"{float(read_result(result)['tension'].max()) / 1e3:.5g}")
+    assert "value" in table_headers(html) and "unit" in table_headers(html)
 
 
 def test_report_errors_name_the_problem(tmp_path, result):

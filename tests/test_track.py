@@ -3,12 +3,13 @@ import math
 
 import numpy as np
 import pytest
+from scipy.constants import knot
 
 from kanat.errors import CaseError
 from kanat.io import parse_case
 from kanat.vessel.track import VesselTrack
 
-KN = 0.514444
+KN = knot
 
 
 def track(segments: str, tow_point="[0, 0, 0]") -> VesselTrack:

@@ -1,8 +1,10 @@
 """The ``kanat`` command line: verbs mapped to :mod:`kanat.api` and the studies, nothing else.
 
-Output goes through :mod:`logging` (a rich handler on standard error; ``--quiet``,
-``--verbose``, ``--log-file``); results and tables are printed on standard output,
-never hard-wrapped when it is not a terminal.
+Messages go through :mod:`logging` to standard error (rich on a terminal, plain
+``kanat: level: message`` lines elsewhere): warnings by default, also what each step does
+with ``--verbose``, errors only with ``--quiet``; ``--log-file`` keeps every record from
+INFO up. Results and tables are printed on standard output (nothing with ``--quiet``),
+never hard-wrapped when it is not a terminal. Every run ends with a ``status:`` line.
 """
 from __future__ import annotations
 
@@ -13,7 +15,8 @@ from typing import Optional
 
 import typer
 
-from kanat.cli_common import MAX_OUTPUT_HELP, CONTEXT, console, fail, load, out, print_problems, setup_logging
+from kanat.cli_common import (LOG_FILE_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP, CONTEXT, console, describe,
+                              fail, load, print_problems, setup_logging, show)
 from kanat.errors import KanatError
 
 log = logging.getLogger("kanat")
@@ -34,9 +37,9 @@ def _version(value: bool):
 @app.callback()
 def main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
                                       help="Print the version and exit."),
-         quiet: bool = typer.Option(False, "--quiet", "-q", help="Only errors."),
-         verbose: bool = typer.Option(False, "--verbose", "-v", help="Also what each step does."),
-         log_file: Optional[Path] = typer.Option(None, "--log-file", help="Also write the log to this file.")):
+         quiet: bool = typer.Option(False, "--quiet", "-q", help=QUIET_HELP),
+         verbose: bool = typer.Option(False, "--verbose", "-v", help=VERBOSE_HELP),
+         log_file: Optional[Path] = typer.Option(None, "--log-file", help=LOG_FILE_HELP)):
     """kanat: towed cables and bodies, moorings and cable networks."""
     setup_logging(quiet, verbose, log_file)
 
@@ -58,7 +61,7 @@ def validate(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn i
     if errors:
         log.error(f"{case}: {errors} error(s), {warnings} warning(s)")
         raise typer.Exit(1)
-    out.print(f"{case}: valid ({warnings} warning(s))")
+    show(f"{case}: valid ({warnings} warning(s))")
 
 
 @app.command()
@@ -93,6 +96,7 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
             loaded, case = api.case_of(from_result), from_result
         except Exception as error:  # noqa: BLE001 - reported by fail
             fail(error, debug, "cannot read the case of the result")
+        log.info(f"the case of {from_result}: {describe(loaded)}")
     else:
         loaded = load(case, debug, max_output)
     _check_outputs(output, plot, case, debug)
@@ -113,13 +117,13 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
     if not outcome.ok:
         fail(KanatError(f"{outcome.status}\n\nThe results up to the failure are in {output}."), debug,
              "run stopped")
-    out.print(outcome.text)
-    out.print(f"wrote {output}")
+    show(outcome.text)
+    show(f"wrote {output}")
     if plot is not None:
         from kanat.report.run_plot import plot_run
 
         plot_run(outcome.dataset, plot)
-        out.print(f"wrote {plot}")
+        show(f"wrote {plot}")
 
 
 def _with_progress(duration: float, start):
@@ -177,10 +181,24 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
         fail(error, debug, f"{model} failed")
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, f"{model} failed")
-    out.print(outcome.text)
+    _log_solved(model, outcome.dataset)
+    show(outcome.text)
+    show(f"status: {outcome.status}")           # as a dynamic run's summary ends
     if plot is not None:
         _draw(model, outcome.solution, plot)
-    out.print(f"wrote {output}" + (f" and {plot}" if plot is not None else ""))
+    show(f"wrote {output}" + (f" and {plot}" if plot is not None else ""))
+
+
+def _log_solved(model: str, ds) -> None:
+    """Log how a steady model was solved: the method asked for, and the one of each cable (statics) or
+    stabilizer mode (pitch)."""
+    attrs = ds.attrs
+    methods = {k[len("method_"):]: v for k, v in attrs.items() if k.startswith("method_")}
+    nodes = f", {ds.sizes['node']} nodes" if "node" in ds.sizes else ""
+    part = "cable" if model == "statics" else "mode"
+    solved = "; ".join(f"{part} {name} by {how}" for name, how in methods.items())
+    log.info(f"{model} solved (method {attrs.get('scheme', '')}{nodes})" + (f": {solved}" if solved else "")
+             + f" in {float(attrs.get('wall_time_s', 0.0)):.2f} s")
 
 
 def _draw(model: str, solution, plot: Path) -> None:

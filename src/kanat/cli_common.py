@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import logging
+import sys
 import warnings
 from pathlib import Path
 
@@ -19,22 +20,95 @@ out = Console(soft_wrap=True, highlight=False)
 """Results and tables (standard output); soft-wrapped: a pipe gets whole lines."""
 log = logging.getLogger("kanat")
 
+QUIET_HELP = ("Print only errors: no warnings, no summary, no 'wrote FILE' line; the exit status tells "
+              "success (0). --log-file still receives everything.")
+VERBOSE_HELP = "Also log what each step does (case, model, scheme, step, method, initial state)."
+LOG_FILE_HELP = ("Also write the log to this file: every record from INFO up (DEBUG with -v), the summary "
+                 "included, with timestamps; -q does not apply to it.")
+LOG_FILE_FORMAT = "%(asctime)s %(levelname)s %(name)s: %(message)s"
+
+
+class _PlainFormatter(logging.Formatter):
+    """``kanat: warning: message`` on one line per line of the message (no wrapping, no padding)."""
+
+    def format(self, record: logging.LogRecord) -> str:
+        text = f"kanat: {record.levelname.lower()}: {record.getMessage()}"
+        if record.exc_info:
+            text += "\n" + self.formatException(record.exc_info)
+        return text
+
+
+class _Stderr(logging.StreamHandler):
+    """A stream handler writing to whatever ``sys.stderr`` is when a record comes."""
+
+    @property
+    def stream(self):
+        return sys.stderr
+
+    @stream.setter
+    def stream(self, value) -> None:
+        """Ignored: the stream is always the current ``sys.stderr``."""
+
+
+def _not_shown(record: logging.LogRecord) -> bool:
+    """False for records the user has already seen (a summary line on standard output, an error
+    panel): they go to the log file only."""
+    return not getattr(record, "shown", False)
+
 
 def setup_logging(quiet: bool = False, verbose: bool = False, log_file: Path | None = None) -> None:
-    """Send the ``kanat`` logger to standard error through rich, and to ``log_file`` if given."""
-    from rich.logging import RichHandler
+    """Route the ``kanat`` logger (and its children, ``kanat.dynamics``, ...).
 
-    level = logging.ERROR if quiet else logging.DEBUG if verbose else logging.INFO
+    Standard error shows warnings and errors (``verbose``: also INFO and DEBUG;
+    ``quiet``: errors only, and standard output is silenced too). On a terminal it goes
+    through rich; elsewhere (a pipe, a file, a CI log) as plain ``kanat: level: message``
+    lines, never wrapped. ``log_file`` receives every record from INFO up (DEBUG with
+    ``verbose``), the run summary included, whatever ``quiet`` says.
+    """
+    shown = logging.ERROR if quiet else logging.DEBUG if verbose else logging.WARNING
+    for old in log.handlers:
+        old.close()
     log.handlers.clear()
-    log.setLevel(min(level, logging.DEBUG) if log_file else level)
-    handler = RichHandler(console=console, show_time=False, show_path=False, markup=False)
-    handler.setLevel(level)
+    out.quiet = quiet
+    if console.is_terminal:
+        from rich.logging import RichHandler
+
+        handler: logging.Handler = RichHandler(console=console, show_time=False, show_path=False, markup=False)
+    else:
+        handler = _Stderr()
+        handler.setFormatter(_PlainFormatter())
+    handler.setLevel(shown)
+    handler.addFilter(_not_shown)
     log.addHandler(handler)
+    level = shown
     if log_file is not None:
-        to_file = logging.FileHandler(log_file)
-        to_file.setFormatter(logging.Formatter("%(asctime)s %(levelname)s %(message)s"))
+        kept = logging.DEBUG if verbose else logging.INFO
+        to_file = logging.FileHandler(log_file, encoding="utf-8")
+        to_file.setLevel(kept)
+        to_file.setFormatter(logging.Formatter(LOG_FILE_FORMAT))
         log.addHandler(to_file)
+        level = min(level, kept)
+    log.setLevel(level)
     log.propagate = False
+
+
+def show(text: str | Text) -> None:
+    """Print a result line on standard output (nothing with ``--quiet``) and keep it in the log file."""
+    out.print(text, markup=False, emoji=False)
+    log.info(text.plain if isinstance(text, Text) else text, extra={"shown": True})
+
+
+def describe(case) -> str:
+    """One line on a loaded case: its model, cables, segments, bodies, points, and scheme and step."""
+    segments = sum(cable.segments for cable in case.cables)
+    parts = [f"model {case.model}",
+             f"{len(case.cables)} cable(s) of {segments} segment(s) in all",
+             f"{len(case.bodies)} bod{'y' if len(case.bodies) == 1 else 'ies'}, {len(case.points)} point(s)"]
+    sim = case.simulation
+    if sim is not None:
+        step = f"dt {sim.dt:g} s" if sim.dt is not None else "dt chosen by the model"
+        parts.append(f"scheme {sim.scheme or 'the model default'}, {step}, duration {sim.duration:g} s")
+    return f"case '{case.name}' is valid: " + "; ".join(parts)
 
 
 def fail(error: Exception, debug: bool, title: str) -> None:
@@ -55,15 +129,23 @@ def fail(error: Exception, debug: bool, title: str) -> None:
 
 
 def _explain(text: str, title: str) -> None:
-    """A red panel on a terminal; plain, unwrapped lines elsewhere (a log file, a pipe)."""
+    """A red panel on a terminal, a plain unwrapped ``kanat: error: TITLE: ...`` elsewhere (a pipe, a
+    CI log); the log file keeps it either way."""
     if console.is_terminal:
         console.print(Panel(Text(text, overflow="fold"), title=title, border_style="red", expand=False))
     else:
-        console.print(Text(f"{title}: {text}"))
+        console.print(Text(f"kanat: error: {title}: {text}"))
+    if log.handlers:                            # set up by the command line: the log file keeps it
+        log.error(f"{title}: {text}", extra={"shown": True})
 
 
 def print_problems(problems) -> None:
-    """A table of case problems: where, key, severity, what is wrong (one line each off a terminal)."""
+    """A table of case problems: where, key, severity, what is wrong (one line each off a terminal);
+    errors only with ``--quiet``."""
+    if out.quiet:
+        problems = [p for p in problems if p.severity == "error"]
+    if not problems:
+        return
     if not console.is_terminal:
         for p in problems:
             console.print(Text(str(p)))
@@ -94,4 +176,5 @@ def load(case: Path, debug: bool, max_output: str | None = None, solver: str | N
         fail(error, debug, "cannot read the case")
     for warning in caught:
         log.warning(str(warning.message))
+    log.info(f"{case}: {describe(loaded)}")
     return loaded

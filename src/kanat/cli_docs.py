@@ -17,7 +17,7 @@ from typing import Optional
 
 import typer
 
-from kanat.cli_common import fail, out
+from kanat.cli_common import fail, show
 
 ATTRIBUTES = {
     "kanat_version": "version of kanat that wrote the file",
@@ -130,7 +130,7 @@ def schema(output: Optional[Path] = typer.Option(None, "-o", "--output",
         from kanat.errors import KanatError
 
         fail(KanatError(f"cannot write {output}: {error.strerror}"), False, "schema")
-    out.print(f"wrote {output}")
+    show(f"wrote {output}")
 
 
 def export(result: Path = typer.Argument(..., help="Result file (netCDF) of kanat run or statics."),
@@ -149,10 +149,10 @@ def export(result: Path = typer.Argument(..., help="Result file (netCDF) of kana
         ds = read_result(result)
         if vtk is not None:
             pvd = export_vtk(ds, vtk)
-            out.print(f"wrote {pvd} (open it in ParaView)")
+            show(f"wrote {pvd} (open it in ParaView)")
         if csv is not None:
             files = export_csv(ds, csv)
-            out.print(f"wrote {len(files)} CSV files to {csv}")
+            show(f"wrote {len(files)} CSV files to {csv}")
     except FileNotFoundError:
         fail(KanatError(f"{result}: no such file"), debug, "export failed")
     except Exception as error:  # noqa: BLE001 - reported by fail
@@ -186,7 +186,7 @@ def warmup(families: Optional[list[str]] = typer.Argument(
     spent = kernels.warmup(simulate, families or None,
                            lambda name, estimate: log.warning(f"compiling {name} kernels once, ~{estimate:.0f} s"))
     for name, seconds in spent.items():
-        out.print(f"{name}: {'already compiled' if seconds == 0.0 else f'compiled in {seconds:.1f} s'}")
+        show(f"{name}: {'already compiled' if seconds == 0.0 else f'compiled in {seconds:.1f} s'}")
 
 
 def register(app: typer.Typer) -> None:

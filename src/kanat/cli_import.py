@@ -10,23 +10,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.console import Console
-from rich.table import Table
 from rich.text import Text
 
-console = Console(stderr=True)
-out = Console()
-
-
-def _print_problems(problems) -> None:
-    table = Table(show_header=True, header_style="bold", expand=False)
-    for column in ("where", "key", "severity", "problem"):
-        table.add_column(column, overflow="fold")
-    for p in problems:
-        where = f"{p.file or '<file>'}:{p.line}" if p.line else (p.file or "<file>")
-        style = "red" if p.severity == "error" else "yellow"
-        table.add_row(Text(where), Text(p.key), Text(p.severity, style=style), Text(p.message))
-    console.print(table)
+from kanat.cli_common import console, log, print_problems, show
 
 
 def import_file(source: Path, output: Path) -> int:
@@ -62,19 +48,18 @@ def import_file(source: Path, output: Path) -> int:
         imported.data, str(source), imported.lines)
     errors = [p for p in imported.problems + problems if p.severity == "error"]
     if case is None or errors:
-        _print_problems(sorted(imported.problems + problems, key=lambda p: p.line or 0))
-        console.print(f"[red]{source}: not imported ({len(errors)} error(s))[/red]")
+        print_problems(sorted(imported.problems + problems, key=lambda p: p.line or 0))
+        console.print(Text(f"{source}: not imported ({len(errors)} error(s))", style="red"))
         return 1
     write_text_atomic(target, case_yaml(imported, source.name))
     notes = [p for p in imported.problems if p.severity == "warning"]
-    out.print(f"wrote {target}: MoorDyn v{imported.version}, {len(case.cables)} line(s), "
+    show(f"wrote {target}: MoorDyn v{imported.version}, {len(case.cables)} line(s), "
               f"{len(case.points)} point(s), {len(case.bodies)} bod{'y' if len(case.bodies) == 1 else 'ies'}"
               + (f"; {len(notes)} MoorDyn setting(s) not imported (listed in its header)" if notes else ""))
     missing = [p for p in unsupported(case, case.model) if p.severity == "error"]
     if missing:
-        console.print(f"[yellow]note: model '{case.model}' cannot run it as it is ({len(missing)} "
-                      f"use(s) of features it does not support; kanat validate {target} lists "
-                      "them)[/yellow]")
+        log.warning(f"model '{case.model}' cannot run it as it is ({len(missing)} use(s) of features it "
+                    f"does not support; kanat validate {target} lists them)")
     return 0
 
 

@@ -13,7 +13,7 @@ from typing import List, Optional
 import typer
 from rich.text import Text
 
-from kanat.cli_common import CONTEXT, console, fail, load, out
+from kanat.cli_common import CONTEXT, console, fail, load, log, show
 from kanat.errors import KanatError
 
 study = typer.Typer(no_args_is_help=True, rich_markup_mode=None, context_settings=CONTEXT,
@@ -68,13 +68,13 @@ def sweep(case: Path = typer.Argument(..., help="Base case file (YAML)."),
         result = run_sweep(case, parse_vary(vary), output, scheduler=scheduler, workers=workers, progress=True,
                            window=parse_window(window))
     except KeyboardInterrupt:
-        console.print(f"[yellow]interrupted; rerun the same command to resume {output}[/yellow]")
+        log.warning(f"interrupted; rerun the same command to resume {output}")
         raise typer.Exit(130) from None
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "study failed to start")
-    out.print(f"{result.total} cases in {result.out_dir}: {result.ran} run now, {result.skipped} already done, "
+    show(f"{result.total} cases in {result.out_dir}: {result.ran} run now, {result.skipped} already done, "
               f"{result.failed} failed; summary: {result.out_dir / 'summary.nc'}")
-    out.print(f"engine: {result.engine}")
+    show(f"engine: {result.engine}")
     if result.failed:
         summary = result.summary
         for name, status, message in zip(summary["name"].values, summary["status"].values, summary["message"].values):
@@ -92,7 +92,7 @@ def _report(source: Path, output: Path, nodes, window, debug: bool, bodies=None)
             path = write_report(source, output, nodes=nodes, window=window, bodies=bodies)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "report failed")
-    out.print(f"wrote {path} ({path.stat().st_size / 1e6:.1f} MB)")
+    show(f"wrote {path} ({path.stat().st_size / 1e6:.1f} MB)")
 
 
 def report(source: Path = typer.Argument(..., help="Result file (.nc) or study directory."),
@@ -126,9 +126,9 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
         fail(error, debug, "validation suite failed")
     for r in results:
         style = "green" if r.passed else "red"
-        out.print(Text(f"{'pass' if r.passed else 'FAIL'}  {r.check_id:<28} {r.measured_text}", style=style))
+        show(Text(f"{'pass' if r.passed else 'FAIL'}  {r.check_id:<28} {r.measured_text}", style=style))
     failed = sum(not r.passed for r in results)
-    out.print(f"{len(results) - failed}/{len(results)} checks pass; wrote {path}")
+    show(f"{len(results) - failed}/{len(results)} checks pass; wrote {path}")
     if failed:
         raise typer.Exit(1)
 
@@ -162,20 +162,20 @@ def seed000(comparison: str = typer.Argument(..., help="accel | planar80 | spati
     table.to_csv(output / f"seed000_{comparison}.csv", index=False)
     if comparison == "accel":
         plot_accel(table, output / "seed000_accel.png")
-        out.print(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
-                                                                 values=["distance", "depth"]).round(4).to_string())
+        show(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
+                                                            values=["distance", "depth"]).round(4).to_string())
     elif comparison == "planar80":
         plot_planar80(table, output / "seed000_planar80.png")
-        out.print(table.round(4).to_string(index=False))
-        out.print(f"speed-up of the wave-factorized scheme: {table.attrs['speedup']}")
+        show(table.round(4).to_string(index=False))
+        show(f"speed-up of the wave-factorized scheme: {table.attrs['speedup']}")
     else:
         history.to_csv(output / "seed000_spatial100_history.csv", index=False)
         plot_spatial100(table, history, output / "seed000_spatial100.png")
-        out.print(table.T.round(4).to_string())
-        out.print(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
+        show(table.T.round(4).to_string())
+        show(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
     if "wall_time_s" in table.attrs:
-        out.print(f"solver time [s]: { {k: round(v, 2) for k, v in table.attrs['wall_time_s'].items()} }")
-    out.print(f"wrote {output}")
+        show(f"solver time [s]: { {k: round(v, 2) for k, v in table.attrs['wall_time_s'].items()} }")
+    show(f"wrote {output}")
 
 
 @study.command("compare-schemes")
@@ -191,7 +191,7 @@ def compare_schemes(case: Path = typer.Argument(..., help="Continuum case file."
             rows = compare(loaded, output)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "comparison failed")
-    out.print(table(rows))
+    show(table(rows))
 
 
 @study.command("stability")
@@ -219,7 +219,7 @@ def stability(case: Path = typer.Argument(..., help="Continuum case file."),
             plot_stability_map(ds, plot)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "stability sweep failed")
-    out.print(summary(ds))
+    show(summary(ds))
 
 
 @study.command("seed004")
@@ -244,7 +244,7 @@ def seed004(cases: List[Path] = typer.Argument(..., help="Seed 004 case files (e
             continue
         plot_seed004(ds, output / f"{path.stem}.png")
         (output / f"{path.stem}.md").write_text(text)
-        out.print(text)
+        show(text)
     if failed:
         raise typer.Exit(1)
 
@@ -270,8 +270,8 @@ def pitch_tow(case: Path = typer.Argument(..., help="Continuum tow case with a v
         plot_coupled(summary, Path(output) / "coupled.png")
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "coupled run failed")
-    out.print(comparison.table())
-    out.print(f"wrote {output}/<mode>.nc, summary.nc, coupled.png")
+    show(comparison.table())
+    show(f"wrote {output}/<mode>.nc, summary.nc, coupled.png")
 
 
 def register(app: typer.Typer) -> None:

@@ -37,6 +37,7 @@ output passed the checks.
 """
 from __future__ import annotations
 
+import logging
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -49,6 +50,8 @@ from kanat.errors import SolverError
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
 from kanat.schemes import label
+
+log = logging.getLogger(__name__)
 
 CHECKPOINT_WALL_S = 5.0
 """Wall time between checkpoints [s] (every model; ``checkpoint_every`` counts outputs instead)."""
@@ -361,11 +364,15 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
     start = time.perf_counter()
     with compile_clock() as compiled:
         model = build()
+        _log_setup(model)
         try:
             index, state, done = _first(model, resume)
         except SolverError as error:
             return _failed_start(model, observers, error, start, compiled[0], output)
         layout = model.layout()
+        log.info(("initial state found" if resume is None else
+                  f"resumed from the checkpoint at t = {index * model.output_interval:.6g} s")
+                 + f" ({_counts(layout)}) after {time.perf_counter() - start:.2f} s")
         for observer in observers:
             observer.start(layout, None if resume is None else index + 1)
         setup = time.perf_counter() - start
@@ -400,6 +407,21 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
                            extra)
     _finish(observers, summary, final)
     return summary
+
+
+def _log_setup(model) -> None:
+    """Log what the model decided: scheme, step, outputs, and its notes."""
+    log.info(f"{model.name} model, scheme {label(model.scheme)}, dt {model.dt:.4g} s, an output every "
+             f"{model.output_interval:g} s to t = {model.duration:g} s")
+    for note in model.notes:
+        log.info(f"note: {note}")
+
+
+def _counts(layout: Layout) -> str:
+    """``101 nodes, 1 body``: the sizes of a result's node, segment and body dimensions."""
+    sizes = layout.sizes()
+    plural = {"node": "nodes", "segment": "segments", "body": "bodies"}
+    return ", ".join(f"{sizes[d]} {d if sizes[d] == 1 else plural[d]}" for d in plural if sizes.get(d))
 
 
 def _first(model, resume: Checkpointer | None):

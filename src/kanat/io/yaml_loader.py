@@ -13,6 +13,13 @@ alias uses and the number of values after expanding aliases (a "billion laughs" 
 is refused from its few hundred bytes, never expanded). Values that the YAML
 constructors cannot build (a 5000-digit integer, a 13th month) are reported at their
 line. :func:`load_yaml` never raises for the content of the text.
+
+Why not ruamel.yaml (its round-trip loader keeps line numbers too): the work has to be
+bounded on the event stream, before a node graph is composed or aliased data is walked,
+which neither library's loaders do; the line table here is by key path, the form every
+validation message uses, not positions hung on ruamel's own container types; PyYAML's
+safe loader, already a dependency, does the parsing and constructing; and ruamel's YAML
+1.2 default reads some YAML 1.1 values differently (``yes``, ``on``, ``010``).
 """
 from __future__ import annotations
 

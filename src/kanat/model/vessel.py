@@ -10,13 +10,14 @@ from __future__ import annotations
 from typing import Annotated, Any, ClassVar, Union
 
 from pydantic import Discriminator, Field, Tag, computed_field, model_validator
+from scipy.constants import knot
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
 from .operations import VesselMotion
 from .problems import PitchModel
 
-KNOT = 0.514444
-"""One knot in m/s."""
+KNOT = knot
+"""One knot in m/s (1852 m / 3600 s, ``scipy.constants.knot``)."""
 
 
 def _one_speed(speed: float | None, speed_kn: float | None, key: str) -> float | None:
@@ -244,3 +245,22 @@ class Vessel(KanatModel):
         first = self.track[0]
         speed = getattr(first, "speed_ms", None)
         return float(speed) if speed is not None else 0.0
+
+    @property
+    def speed_unit(self) -> str:
+        """The unit the case gives its speeds in: ``"kn"`` when the first segment that sets a speed
+        uses a knots key (``speed_kn``, ``to_speed_kn``), else ``"m/s"`` (what messages and
+        pictures show speeds in)."""
+        for segment in self.track:
+            for key in ("speed", "to_speed"):
+                if getattr(segment, f"{key}_kn", None) is not None:
+                    return "kn"
+                if getattr(segment, key, None) is not None:
+                    return "m/s"
+        return "m/s"
+
+    def speed_as_given(self, speed: float) -> tuple[float, str]:
+        """A speed [m/s] as ``(value, unit)`` in the unit of the case (:attr:`speed_unit`):
+        ``(6.0, "kn")`` for 3.0867 m/s in a case written in knots."""
+        unit = self.speed_unit
+        return (speed / KNOT if unit == "kn" else speed), unit

@@ -72,6 +72,31 @@ def tow_frame(ds) -> Frame:
     return Frame(shift, moved)
 
 
+def embedded_case(ds):
+    """The case embedded in the result (``case_yaml``), or None when it carries none or it
+    does not load (a picture with less on it rather than none)."""
+    text = ds.attrs.get("case_yaml")
+    if not text:
+        return None
+    import warnings
+
+    from kanat.api import load_case
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return load_case(str(text))
+    except Exception:  # noqa: BLE001 - see the docstring
+        return None
+
+
+def speed_text(ds, speed: float) -> str:
+    """A speed [m/s] written in the unit its case used (``6 kn`` for a case in knots, else m/s)."""
+    case = embedded_case(ds)
+    value, unit = case.vessel.speed_as_given(speed) if case is not None else (speed, "m/s")
+    return f"{value:.3g} {unit}"
+
+
 def fixed_points(ds) -> dict[str, np.ndarray]:
     """Anchors and the tow point of the case embedded in the result (``case_yaml``).
 
@@ -83,18 +108,8 @@ def fixed_points(ds) -> dict[str, np.ndarray]:
         the result carries no case.
     """
     found = {"anchor": np.zeros((0, 3)), "depth": np.nan, "towed": True}
-    text = ds.attrs.get("case_yaml")
-    if not text:
-        return found
-    import warnings
-
-    from kanat.api import load_case
-
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            case = load_case(str(text))
-    except Exception:  # noqa: BLE001 - a picture without anchors rather than none
+    case = embedded_case(ds)
+    if case is None:
         return found
     anchors = [end.position for cable in case.cables for end in cable.ends if end.kind == "anchor"]
     found["anchor"] = np.array(anchors, dtype=float).reshape(-1, 3)

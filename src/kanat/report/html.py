@@ -26,6 +26,36 @@ from markupsafe import Markup
 
 import kanat
 
+SHOWN_UNITS = {"N": ("kN", 1e-3), "N/s": ("kN/s", 1e-3)}
+"""Units shown in another unit, and the factor to it: forces in kN, as in the plots and on the
+terminal (docs/concepts.md)."""
+
+
+def shown(value, unit: str):
+    """``(value, unit)`` as the report shows them: a force in N as kN (:data:`SHOWN_UNITS`)."""
+    if unit not in SHOWN_UNITS:
+        return value, unit
+    to, factor = SHOWN_UNITS[unit]
+    return value * factor, to
+
+
+def header(name: str, unit: str) -> str:
+    """A column header with its unit, ``max [kN]`` (the name alone without a unit, or for a count)."""
+    return f"{name} [{unit}]" if unit and unit not in ("1", "-") else name
+
+
+def with_units(frame, units: dict):
+    """A DataFrame's columns named in ``units`` (``column -> unit`` as stored, ``N``) shown in the
+    report's units with the unit in the header (:func:`shown`, :func:`header`)."""
+    frame = frame.copy()
+    names = {}
+    for column, unit in units.items():
+        if column in frame.columns:
+            frame[column], to = shown(frame[column], unit)
+            names[column] = header(column, to)
+    return frame.rename(columns=names)
+
+
 STATUS_CELLS = {"ok": "ok", "pass": "ok", "failed": "failed", "FAIL": "failed", "pass (not run)": "failed"}
 """Cells with these texts are coloured (class ``ok`` or ``failed``)."""
 

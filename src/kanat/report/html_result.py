@@ -10,16 +10,21 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 import xarray as xr
 
 from kanat.analysis import (body_depth_excursions, body_statistics, cable_names, first_nodes, has_events,
                             node_statistics, range_graph, select_nodes, snap_events, snap_summary,
                             statistic_units, summary_statistics, tension_spectrum, time_window)
 from kanat.errors import KanatError
-from kanat.report.html import Page, frame_table, macros, plot_text, table
+from kanat.report.geometry import embedded_case
+from kanat.report.html import Page, frame_table, header, macros, plot_text, shown, table, with_units
 from kanat.report.html_animation import animation_section, thin
 
+STATISTICS = ("min", "max", "mean", "std", "mpm")
+"""Columns of the node and body statistics tables (``mpm`` shown as MPM)."""
+EVENT_UNITS = {"time": "s", "peak_tension": "N", "rise_rate": "N/s", "peak_tension_max": "N",
+               "rise_rate_max": "N/s", "first_time": "s", "last_time": "s"}
+"""Units of the snap-event tables' columns (:func:`kanat.analysis.snap_events`, ``snap_summary``)."""
 MAX_HISTORY_POINTS = 5000
 """Samples per time-history trace (evenly thinned beyond)."""
 EVENT_ROWS = 200
@@ -43,21 +48,28 @@ def _provenance(ds: xr.Dataset, source: str):
         str(ds.attrs.get("status", "")), dims, table(["attribute", "value"], rows, text_columns=("attribute", "value")))
 
 
+def summary_table(stats: dict):
+    """The summary statistics, one row each with its unit (forces in kN)."""
+    rows = [(name, *shown(value, statistic_units(name))) for name, value in stats.items()]
+    return table(["statistic", "value", "unit"], rows, text_columns=("statistic", "unit"))
+
+
+def _stats_table(first: str, labels, stats, unit: str):
+    """Rows ``label, min, max, mean, std, MPM`` in the report's unit, the unit in every header."""
+    rows = [(label, *(shown(stats[k].values[j], unit)[0] for k in STATISTICS)) for j, label in enumerate(labels)]
+    to = shown(0.0, unit)[1]
+    return table([first, *(header("MPM" if k == "mpm" else k, to) for k in STATISTICS)], rows, text_columns=(first,))
+
+
 def _statistics(ds: xr.Dataset, chosen: xr.Dataset, nodes, window):
     """The summary statistics, the chosen nodes' tension and the bodies' depth statistics."""
-    stats = summary_statistics(ds, window)
-    summary = table(["statistic", "value", "units"], [(name, value, statistic_units(name)) for name, value in
-                                                      stats.items()], text_columns=("statistic", "units"))
+    summary = summary_table(summary_statistics(ds, window))
     stats = node_statistics(chosen, "tension", nodes, window)
-    rows = [(_label(chosen, int(i)), *(stats[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
-            for j, i in enumerate(stats["node"].values)]
-    node_table = table(["node", "min", "max", "mean", "std", "MPM"], rows, text_columns=("node",))
+    node_table = _stats_table("node", [_label(chosen, int(i)) for i in stats["node"].values], stats, "N")
     bodies = body_statistics(chosen, window)
     body_table = None
     if "body" in bodies.coords:
-        rows = [(str(b), *(bodies[k].values[j] for k in ("min", "max", "mean", "std", "mpm")))
-                for j, b in enumerate(bodies["body"].values)]
-        body_table = table(["body", "min", "max", "mean", "std", "MPM"], rows, text_columns=("body",))
+        body_table = _stats_table("body", [str(b) for b in bodies["body"].values], bodies, "m")
     span = stats.attrs["window"]
     return macros("result.html.j2").statistics(summary, node_table, body_table, (f"{span[0]:g}", f"{span[1]:g}"))
 
@@ -75,13 +87,15 @@ def _histories(page: Page, ds: xr.Dataset, nodes):
     tension.update_layout(title={"text": "tension at the chosen nodes"}, xaxis_title="time [s]",
                           yaxis_title="tension [kN]", height=400)
     first = page.figure(tension, "plot-tension-history")
-    motion = make_subplots(rows=1, cols=2, subplot_titles=("body depth [m]", "vessel speed over ground [m/s]"))
+    case = embedded_case(ds)
+    to_unit, unit = case.vessel.speed_as_given(1.0) if case is not None else (1.0, "m/s")
+    motion = make_subplots(rows=1, cols=2, subplot_titles=("body depth [m]", f"vessel speed over ground [{unit}]"))
     for k, name in enumerate(ds["body"].values if ds.sizes.get("body", 0) else []):
         motion.add_trace(go.Scatter(x=t, y=-ds["body_position"].values[keep, k, 2], name=plot_text(f"{name} depth")),
                          1, 1)
     v = ds["vessel_position"].values
     speed = np.hypot(*np.gradient(v[:, :2], ds["time"].values, axis=0).T) if len(v) > 1 else np.zeros(len(v))
-    motion.add_trace(go.Scatter(x=t, y=speed[keep], name="vessel speed"), 1, 2)
+    motion.add_trace(go.Scatter(x=t, y=speed[keep] * to_unit, name="vessel speed"), 1, 2)
     motion.update_yaxes(autorange="reversed", row=1, col=1)
     motion.update_xaxes(title_text="time [s]")
     motion.update_layout(height=380)
@@ -123,8 +137,9 @@ def _events(page: Page, ds: xr.Dataset, window):
     fig.update_layout(title={"text": f"{len(events)} snap events"}, xaxis_title="time [s]",
                       yaxis_title="peak tension [kN]", height=380)
     return parts.events(True, page.figure(fig, "plot-snap-events"),
-                        frame_table(snap_summary(ds, window).set_index("cable"), text_columns=("cable",)),
-                        frame_table(events, text_columns=("cable",), limit=EVENT_ROWS))
+                        frame_table(with_units(snap_summary(ds, window), EVENT_UNITS).set_index("cable"),
+                                    text_columns=("cable",)),
+                        frame_table(with_units(events, EVENT_UNITS), text_columns=("cable",), limit=EVENT_ROWS))
 
 
 def _spectra(page: Page, ds: xr.Dataset, nodes, window):
@@ -144,7 +159,7 @@ def _excursions(ds: xr.Dataset, window):
     ex = body_depth_excursions(ds, window)
     if not ex.sizes.get("body", 0):
         return macros("result.html.j2").excursions(None)
-    frame = ex.to_dataframe()
+    frame = with_units(ex.to_dataframe(), {name: ex[name].attrs.get("units", "") for name in ex.data_vars})
     frame.index = frame.index.astype(str)
     return macros("result.html.j2").excursions(frame_table(frame, text_columns=("body",)))
 
@@ -198,13 +213,13 @@ def static_page(ds: xr.Dataset, source: str) -> Page:
         fig = go.Figure()
         for name in cable_names(ds):
             sel = ds["cable"].values == name
+            hover = [f"T = {t / 1e3:.4g} kN" for t in ds["tension"].values[sel]]
             fig.add_trace(go.Scatter(x=ds["position"].values[sel, 0], y=ds["position"].values[sel, 2],
-                                     name=plot_text(name), text=[f"T = {t:.4g} N" for t in ds["tension"].values[sel]]))
+                                     name=plot_text(name), text=hover))
         fig.update_layout(title={"text": "shape (hover: tension)"}, xaxis_title="x [m]", yaxis_title="z [m]",
                           yaxis_scaleanchor="x")
         page.section("shape", "Shape and tension", page.figure(fig, "plot-shape"))
-    stats = pd.Series(summary_statistics(ds))
-    page.section("statistics", "Summary", frame_table(stats.to_frame("value"), text_columns=("index",)))
+    page.section("statistics", "Summary", summary_table(summary_statistics(ds)))
     return page
 
 

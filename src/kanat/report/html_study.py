@@ -19,7 +19,7 @@ import xarray as xr
 
 from kanat.analysis import first_nodes, statistic_units
 from kanat.io.results import read_result
-from kanat.report.html import Page, frame_table, macros, plot_text, table
+from kanat.report.html import Page, frame_table, macros, plot_text, shown, table, with_units
 from kanat.report.html_animation import thin
 
 MAX_OVERLAY_CASES = 60
@@ -32,13 +32,16 @@ def _json_column(values: np.ndarray) -> list:
 
 
 def study_data(summary: xr.Dataset, keys: list, stats: list) -> dict:
-    """The summary as columns for the page's explorer script."""
+    """The summary as columns for the page's explorer script (forces in kN)."""
     keys = [k for k in keys if k in summary]
     numeric = [s for s in stats if s in summary and summary[s].dtype.kind in "fiu"
                and np.isfinite(summary[s].values).any()]
-    columns = {name: _json_column(summary[name].values) for name in ["name", "status", *keys, *numeric]}
+    columns = {name: _json_column(summary[name].values) for name in ["name", "status", *keys]}
+    units = {}
+    for name in numeric:
+        values, units[name] = shown(summary[name].values, statistic_units(name))
+        columns[name] = _json_column(np.asarray(values))
     preferred = next((s for s in ("top_tension_max", "tension_max") if s in numeric), numeric[0] if numeric else "")
-    units = {s: statistic_units(s) for s in numeric}
     return {"keys": keys, "stats": numeric, "columns": columns, "units": units, "preferred": preferred}
 
 
@@ -114,7 +117,7 @@ def study_report(study_dir, output) -> Path:
     page.data["kanat-study"] = study_data(summary, keys, stats)
     page.section("study", "Study", _definition(summary, _manifest(study_dir)))
     page.section("explorer", "Statistics against the varied parameters", parts.explorer(len(keys) >= 2))
-    frame = summary.to_dataframe().drop(columns=["message"])
+    frame = with_units(summary.to_dataframe().drop(columns=["message"]), {s: statistic_units(s) for s in stats})
     page.section("table", "Summary table", parts.scroll(frame_table(frame, text_columns=("name", "status"))))
     overlay = _overlay(page, summary, study_dir)
     if overlay:

@@ -18,7 +18,8 @@ from types import SimpleNamespace
 import numpy as np
 from matplotlib.figure import Figure
 
-from kanat.report.geometry import KN, MIN_RELATIVE_SPAN, at_least, cable_nodes, fixed_points, is_planar, surface_and_seabed
+from kanat.report.geometry import (KN, MIN_RELATIVE_SPAN, at_least, cable_nodes, fixed_points, is_planar, speed_text,
+                                   surface_and_seabed)
 
 DPI = 120
 
@@ -90,7 +91,8 @@ def plot_statics(result, path=None) -> Figure:
     surface_and_seabed(elevation, fixed["depth"], float(z.min()), float(np.ptp(z)))
     elevation.legend(fontsize=8, loc="best")
     speed = float(np.hypot(*ds["velocity"].values[0, :2])) if "velocity" in ds else 0.0
-    elevation.set(xlabel="x [m]", ylabel="z [m]", title="elevation (x–z)" + (f", tow speed {speed:.3g} m/s" if speed else ""))
+    elevation.set(xlabel="x [m]", ylabel="z [m]",
+                  title="elevation (x–z)" + (f", tow speed {speed_text(ds, speed)}" if speed else ""))
     if not planar:
         plan = fig.add_subplot(grid[1, 0])
         _view(plan, ds, nodes, fixed, 0, 1, "plan")

@@ -1,6 +1,7 @@
 """Statics of a case: one registry of methods, one entry point (SPEC §3)."""
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -24,6 +25,8 @@ METHODS = {
 }
 """Steady-cable solvers by name; each is ``f(problem, s_out) -> CableSolution``."""
 
+log = logging.getLogger(__name__)
+
 
 def solve_cable(problem: CableBVP, method: str = "auto", s_out=None) -> CableSolution:
     """Solve one steady cable with a named method.
@@ -42,12 +45,15 @@ def solve_cable(problem: CableBVP, method: str = "auto", s_out=None) -> CableSol
         return solver(problem, s_out)
     fixed = all(isinstance(e, FixedEnd) for e in (problem.start, problem.end))
     if fixed and not np.any(problem.flow.velocity) and problem.line.weight > 0:
+        log.debug("statics method auto: catenary (two fixed ends, still water, a line heavier than water)")
         return solve_catenary(problem, s_out)
-    first, second = (solve_collocation, solve_shooting) if fixed else (solve_shooting, solve_collocation)
+    first, second = ("collocation", "shooting") if fixed else ("shooting", "collocation")
+    log.debug(f"statics method auto: {first} ({'two fixed ends in a flow' if fixed else 'a cable ending at a body'})")
     try:
-        return first(problem, s_out)
-    except SolverError:
-        return second(problem, s_out)
+        return METHODS[first](problem, s_out)
+    except SolverError as error:
+        log.info(f"statics: {first} did not solve the cable ({error}); trying {second}")
+        return METHODS[second](problem, s_out)
 
 
 @dataclass(frozen=True)
@@ -143,7 +149,9 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
     require_supported(case, "statics")
     if needs_network(case):
         if has_drag(case) and single_cable(case):
+            log.debug("statics: one cable in 3-D (sections, attachments or a cross current)")
             return _solve_single_3d(case, method)
+        log.debug("statics: a network (points, shared bodies, fairleads or sections), solved as a whole")
         return _solve_network(case, method)
     problems = cable_problems(case)
     solutions, bodies = {}, {}

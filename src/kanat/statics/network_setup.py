@@ -192,7 +192,8 @@ def _check_still_water(case) -> None:
     rows = current.profile or ((0.0, *(current.velocity or (0.0, 0.0, 0.0))),)
     speed = case.vessel.initial_speed
     if any(any(r[1:]) for r in rows) or speed:
-        what = (f"the vessel's initial speed of {speed:g} m/s" if speed else "the current")
+        value, unit = case.vessel.speed_as_given(speed)
+        what = (f"the vessel's initial speed of {value:.4g} {unit}" if speed else "the current")
         raise NeedsDrag(f"{what} drags on the lines, which the catenary (weight only) cannot carry")
 
 
