@@ -52,7 +52,10 @@ class Entry:
 
 
 def description(path: Path) -> str:
-    """The first paragraph of the leading comment of a case file (``#`` lines)."""
+    """The first paragraph of the leading comment of a case file (``#`` lines); for a MoorDyn
+    file, its free text between the title line and the first section (``---`` line)."""
+    if path.suffix == ".dat":
+        return _moordyn_description(path)
     lines = []
     for line in path.read_text(encoding="utf-8").splitlines():
         if not line.startswith(("#", "!")) and line.strip():
@@ -65,6 +68,16 @@ def description(path: Path) -> str:
     from kanat.model.reference import plain_text
 
     return plain_text(" ".join(lines))
+
+
+def _moordyn_description(path: Path) -> str:
+    """The lines after a MoorDyn file's title line, up to its first section or blank line."""
+    lines = []
+    for line in path.read_text(encoding="utf-8").splitlines()[1:]:
+        if not line.strip() or line.lstrip().startswith("-"):
+            break
+        lines.append(line.strip())
+    return " ".join(lines)
 
 
 def _quiet(call, *args, **kwargs):

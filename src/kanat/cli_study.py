@@ -112,7 +112,7 @@ def report(source: Path = typer.Argument(..., help="Result file (.nc) or study d
 def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML file."),
                    only: Optional[List[str]] = typer.Option(None, "--only", help="Run only these check ids."),
                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Run the fast validation cases of SPEC §7 and write their report (exit 1 if any fails)."""
+    """Run the fast validation cases and write their report (exit 1 if any fails)."""
     from kanat.io.outputs import check_output_file
     from kanat.report.html_validation import validation_report as write_validation_report
     from kanat.validation import run_suite

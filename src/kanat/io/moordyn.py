@@ -1,7 +1,7 @@
 """Import MoorDyn input files (v1 and v2 text formats) as kanat cases.
 
 :func:`read_moordyn` maps a MoorDyn file to case data (the YAML keys of
-``docs/case-format.md``) with the MoorDyn line of every item, so that validation reports
+``docs/reference/case-format.md``) with the MoorDyn line of every item, so that validation reports
 problems at the MoorDyn row. :func:`moordyn_document` is the hook
 :mod:`kanat.io.case_file` uses (``kanat validate``, ``load_case`` and every verb accept a
 MoorDyn file), :func:`kanat.io.case_file.import_moordyn` returns the validated :class:`~kanat.model.Case`,

@@ -1,7 +1,7 @@
 """The problem as validated data: line types, cables, bodies, environment, vessel.
 
 Every class is a frozen pydantic model whose field names are the keys of the YAML
-case format (``docs/case-format.md``); read case files with
+case format (``docs/reference/case-format.md``); read case files with
 :func:`kanat.io.case_file.load_case`.
 """
 from .cable import Attachment, Cable, CableEnd, CableSection

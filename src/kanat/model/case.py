@@ -52,7 +52,7 @@ def _resolve_named_ends(data: dict[str, Any], bodies: list[str], points: list[st
 
 
 class Case(KanatModel):
-    """A validated case (see ``docs/case-format.md``).
+    """A validated case (see ``docs/reference/case-format.md``).
 
     Attributes
     ----------

@@ -1,4 +1,4 @@
-"""Figure of the coupled tow (issue 6.5): top tension per stabilizer mode of the tow vessel.
+"""Figure of the tow from a pitching vessel: top tension per stabilizer mode of the tow vessel.
 
 Draws on a new :class:`matplotlib.figure.Figure` (no pyplot state) from the summary dataset
 of :func:`kanat.studies.pitch_tow.summary_dataset`.

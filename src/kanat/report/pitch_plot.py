@@ -55,7 +55,7 @@ def plot_period(result, path=None, modes=("off", "sinusoidal", "rectangular")) -
 
     Parameters
     ----------
-    result : kanat.vessel.PitchResult
+    result : kanat.vessel.pitch.PitchResult
     path : path-like, optional
         PNG to write.
     modes : sequence of str
@@ -219,8 +219,8 @@ def plot_pitch_case(result, data, target) -> list[Path]:
 
     Parameters
     ----------
-    result : kanat.vessel.PitchResult
-    data : kanat.vessel.pitch_scan.FigureData
+    result : kanat.vessel.pitch.PitchResult
+    data : kanat.studies.pitch.FigureData
     target : path-like
         A directory, or a ``.png`` file for fig. 2 with the others beside it
         (:func:`figure_paths`).

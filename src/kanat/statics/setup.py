@@ -94,7 +94,7 @@ def _end(case, end, key: str):
     reason = {"free": "a free end carries no tension, so its steady direction is undefined; "
                       "end the cable at a body (a small drogue) to solve its statics",
               "point": f"point '{end.name}' joins a network of cables; network statics arrive "
-                       "with the lumped model's equilibrium (SPEC §4)"}[end.kind]
+                       "with the lumped model's equilibrium"}[end.kind]
     raise CaseError([Problem(key, reason)])
 
 

@@ -223,7 +223,7 @@ def pitch_fourier_vs_time():
 
 
 @check("pitch-rectangular-mean", "7.9", "seed 003: mean pitch offset of the rectangular mode",
-       "M0 / (2 I_y omega_0^2) (the mean of f_2 = M0/2, SPEC §6.2)", Tolerance(rel=1e-3), "rad")
+       "M0 / (2 I_y omega_0^2) (the mean of f_2 = M0/2)", Tolerance(rel=1e-3), "rad")
 def pitch_rectangular_mean():
     from kanat.vessel.pitch import PitchSystem, Rectangular, solve_mode
 

@@ -46,7 +46,7 @@ def seed001_case2():
 
 
 @check("critical-angle", "7.4", "long towed cable reaches the critical angle",
-       "cos(phi_c) = (-w + sqrt(w^2 + 4 R^2)) / (2 R), R = 0.5 rho d C_n U^2 (SPEC §7.4); worst of "
+       "cos(phi_c) = (-w + sqrt(w^2 + 4 R^2)) / (2 R), R = 0.5 rho d C_n U^2; worst of "
        "3 speeds × 2 solvers", Tolerance(abs=0.1), "deg")
 def critical_angle():
     from kanat.statics import BodyEnd, CableBVP, FixedEnd, FlowProfile, LineProperties

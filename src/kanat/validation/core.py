@@ -125,7 +125,7 @@ NOT_IN_SUITE = [
      "minutes of runs on refined grids"),
     ("7.7", "seed 000: full vs factorized algorithms, 2- vs 3-block wave factorization, CFL ranges, speed-ups",
      "long runs (benchmarks)"),
-    ("7.8", "seed 002: the 375° turn with the four time schemes (kanat compare-schemes)", "a 740 s 3-D run per scheme"),
+    ("7.8", "seed 002: the 375° turn with the four time schemes (kanat study compare-schemes)", "a 740 s 3-D run per scheme"),
     ("7.9", "seed 003: the M0 surfaces", "a scan over M0 (kanat pitch --plot)"),
     ("7.10", "seed 004: the branched trawl findings; energy conservation of the lumped model over 100 periods",
      "tests/test_lumped_oracles.py (slow marker), examples/seed004_*"),
