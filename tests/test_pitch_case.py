@@ -102,3 +102,24 @@ def test_plot_to_a_png_file_puts_fig2_there_and_the_rest_beside(tmp_path):
     assert paths["period"] == tmp_path / "out.png"
     assert paths["sinusoidal"] == tmp_path / "out_fig3_sinusoidal.png"
     assert figure_paths(tmp_path)["band"] == tmp_path / "pitch_omega0_band.png"
+
+
+def test_kanat_study_pitch_writes_the_scan_that_passes_through_the_solved_modes(ran, tmp_path):
+    """``kanat study pitch``: the omega_0 scan, read back from scan.csv and interpolated at the
+    case's omega_0 = 0.876 rad/s, gives the amplitudes of the modes solved on their own (the
+    result file's), within the scan's grid error; the five figures are written beside it."""
+    from typer.testing import CliRunner
+
+    from kanat.cli import app
+
+    result = CliRunner().invoke(app, ["study", "pitch", str(EXAMPLE), "-o", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    table = np.genfromtxt(tmp_path / "scan.csv", delimiter=",", names=True)
+    assert len(table) == 701
+    _, ds, _ = ran
+    for mode in ("off", "sinusoidal", "rectangular"):
+        scanned = np.interp(0.876, table["omega0_rad_s"], table[f"amplitude_{mode}_rad"])
+        solved = float(ds.amplitude.sel(mode=mode))
+        assert scanned == pytest.approx(solved, rel=2e-3), mode
+    assert sorted(p.name for p in tmp_path.glob("*.png")) == sorted(FILES.values())
+    assert "more than halves the amplitude" in result.output

@@ -384,6 +384,23 @@ def read_result(path):
 
     A file whose ``status`` is ``ok`` but which holds a non-finite value is refused: it
     cannot be a sound result.
+
+    Parameters
+    ----------
+    path : path-like
+        A netCDF file written by ``kanat run``, ``kanat statics``, :func:`simulate` or
+        :func:`solve_statics` (names: ``docs/reference/case-format.md``, "Result file").
+
+    Returns
+    -------
+    xarray.Dataset
+        With coordinates ``time`` (dynamic results), ``s`` and ``cable`` (per node) and the
+        case in ``attrs["case_yaml"]``.
+
+    Raises
+    ------
+    kanat.errors.KanatError
+        The file is missing, is not a kanat result, or is marked ``ok`` but holds a NaN.
     """
     from kanat.io.results import read_result as read
 

@@ -17,7 +17,8 @@ from kanat.cli_common import CONTEXT, console, fail, load, log, show
 from kanat.errors import KanatError
 
 study = typer.Typer(no_args_is_help=True, rich_markup_mode=None, context_settings=CONTEXT,
-                    help="The source papers' studies: seed 000, 002 and 004 comparisons, stability, pitch-tow.")
+                    help="The source papers' studies: seed 000, 002 and 004 comparisons, stability, seed 003's "
+                         "pitch, pitch-tow.")
 def parse_window(text: Optional[str]):
     """``"100:600"`` -> (100.0, 600.0); either side may be empty (``"100:"``)."""
     if not text:
@@ -247,6 +248,44 @@ def seed004(cases: List[Path] = typer.Argument(..., help="Seed 004 case files (e
         show(text)
     if failed:
         raise typer.Exit(1)
+
+
+@study.command("pitch")
+def pitch_scan(case: Path = typer.Argument(..., help="Case file with a pitch block (examples/pitch_seed003.yaml)."),
+               output: Path = typer.Option(..., "-o", "--output", help="Folder for scan.csv and the figures."),
+               debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Seed 003's pitch studies: the steady pitch per mode, the (t, M0) surfaces, the omega_0 scan
+    and the band where the stabilizer more than halves the amplitude."""
+    import numpy as np
+
+    from kanat import api
+    from kanat.extras import require
+    from kanat.studies.pitch import figure_data
+
+    loaded = load(case, debug)
+    try:
+        require("plot", "matplotlib", "kanat study pitch")
+        from kanat.report.pitch_plot import plot_pitch_case
+
+        output.mkdir(parents=True, exist_ok=True)
+        with console.status("solving the pitch modes and scanning omega_0 ..."):
+            outcome = api.run(loaded, model="pitch")
+            solution, data = outcome.solution, figure_data(outcome.solution)
+        scan = data.scan
+        modes = list(scan.amplitude)
+        rows = np.column_stack([scan.natural_frequency, *(scan.amplitude[m] for m in modes),
+                                *(scan.max_abs[m] for m in modes)])
+        header = ",".join(["omega0_rad_s", *(f"amplitude_{m}_rad" for m in modes),
+                           *(f"max_abs_{m}_rad" for m in modes)])
+        np.savetxt(output / "scan.csv", rows, delimiter=",", header=header, comments="")
+        figures = plot_pitch_case(solution, data, output)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "pitch study failed")
+    show(outcome.text)
+    if data.band is not None:
+        show(f"the stabilizer more than halves the amplitude for {data.band[0]:.3g} < omega_0 <= "
+             f"{data.band[1]:.3g} rad/s")
+    show(f"wrote {output / 'scan.csv'} and {len(figures)} figures to {output}")
 
 
 @study.command("pitch-tow")
