@@ -26,7 +26,9 @@ PLANE_MARGIN = 0.1
 
 def _axes(fig: Figure):
     ax = fig.add_subplot(projection="3d")
-    ax.set(xlabel="x [m]", ylabel="y [m] (port)", zlabel="z [m] (up)")
+    ax.set_xlabel("x [m]", labelpad=14)          # clear of the tick labels
+    ax.set_ylabel("y [m] (port)", labelpad=14)
+    ax.set_zlabel("z [m] (up)", labelpad=10)
     return ax
 
 
@@ -43,12 +45,18 @@ def _planes(ax, points: np.ndarray, depth: float) -> None:
         ax.plot_surface(gx, gy, np.full_like(gx, -depth), color="saddlebrown", alpha=0.18, linewidth=0)
 
 
+THIN_AXIS = 0.2
+"""An axis spans at least this fraction of the largest one (a nearly planar system's thin axis
+would otherwise collapse into a sliver of overlapping tick labels); limits and box grow
+together, so the scales stay equal."""
+
+
 def _equal(ax, points: np.ndarray) -> None:
     """Equal scales on the three axes around ``points``."""
     low, high = points.min(axis=0), points.max(axis=0)
     span = max(float(np.max(high - low)), 1.0)
     centre = 0.5 * (low + high)
-    ranges = np.maximum(high - low, 0.02 * span)
+    ranges = np.maximum(high - low, THIN_AXIS * span)
     for name, c, r in zip("xyz", centre, ranges):
         getattr(ax, f"set_{name}lim")(c - 0.55 * r, c + 0.55 * r)
     ax.set_box_aspect(tuple(ranges))
