@@ -92,3 +92,9 @@ def test_pitch_moves_a_stern_tow_point_with_consistent_derivatives():
         v = [tr.state(t + k * h).velocity for k in (-1, 0, 1)]
         assert np.allclose(tr.state(t).velocity, (p[2] - p[0]) / (2 * h), atol=1e-6)
         assert np.allclose(tr.state(t).acceleration, (v[2] - v[0]) / (2 * h), atol=1e-5)
+
+
+def test_the_knot_is_scipys():
+    from kanat.model.vessel import KNOT
+
+    assert KNOT == knot

@@ -1,7 +1,4 @@
-"""The installed version of kanat (``0+unknown`` in a source tree that was never installed)."""
-from importlib.metadata import PackageNotFoundError, version
+"""The version of kanat: the one place it is written (``pyproject.toml`` reads it from here,
+so reading it costs no ``importlib.metadata`` scan of the installed packages)."""
 
-try:
-    __version__ = version("kanat")
-except PackageNotFoundError:  # running from a source tree that was never installed
-    __version__ = "0+unknown"
+__version__ = "0.1.0"
