@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 
 from kanat.analysis import summary_statistics
 from kanat.io import parse_case
@@ -82,16 +83,25 @@ def test_each_variant_is_the_case_edited_by_hand(serial, tmp_path):
     assert stored.attrs["case_sha256"] == read_result(tmp_path / "direct.nc").attrs["case_sha256"]
 
 
-def test_killed_study_resumes_with_every_case_once(base, serial, tmp_path):
+TIMING = ("wall_time_s", "setup_time_s", "solver_time_s", "compile_time_s")
+
+
+@pytest.mark.parametrize("after", [0, 3], ids=["while-the-first-cases-run", "after-3-records"])
+def test_killed_study_resumes_with_every_case_once_bit_for_bit(after, base, serial, tmp_path):
+    """kill -9 of the study and its workers while the first cases run (no record yet) or after
+    3 records, then resume: every case once, every result file equal to the uninterrupted
+    study's bit for bit (timings aside), the summary too."""
     script = ("import sys; from kanat.sweep import sweep; "
               f"sweep(sys.argv[1], {VARY!r}, sys.argv[2], workers=2)")
     log = (tmp_path.parent / f"{tmp_path.name}.log").open("w+")
     proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path)], start_new_session=True,
                             stdout=subprocess.DEVNULL, stderr=log)
-    records = tmp_path / "records"
+    records, results = tmp_path / "records", tmp_path / "results"
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and proc.poll() is None:
-        if records.exists() and len(list(records.glob("*.json"))) >= 2:
+        done = len(list(records.glob("*.json"))) if records.exists() else 0
+        running = results.exists() and any(results.glob("*.part"))
+        if done >= after and (after > 0 or running):
             break
         time.sleep(0.02)
     assert proc.poll() is None, log.seek(0) or log.read()[-2000:]
@@ -99,22 +109,26 @@ def test_killed_study_resumes_with_every_case_once(base, serial, tmp_path):
     proc.wait()
     log.close()
     finished = len(list(records.glob("*.json")))
-    assert 2 <= finished < 8
-    partial, _, _ = read_summary(tmp_path)       # the summary kept up with the records (a kill may fall
-    names = {p.stem for p in records.glob("*.json")}  # between a record and the summary's rewrite)
-    assert set(partial["name"].values) <= names and partial.sizes["case"] >= finished - 1
+    assert after <= finished < 8
+    if finished:
+        partial, _, _ = read_summary(tmp_path)   # the summary kept up with the records (a kill may fall
+        names = {p.stem for p in records.glob("*.json")}  # between a record and the summary's rewrite)
+        assert set(partial["name"].values) <= names and partial.sizes["case"] >= finished - 1
 
     result = sweep(base, VARY, tmp_path, scheduler="serial")
     assert result.skipped == finished and result.ran == 8 - finished and result.failed == 0
     assert sorted(result.summary["case"].values) == list(range(8))
     assert len(list(records.glob("*.json"))) == 8
-    results = sorted((tmp_path / "results").glob("*.nc"))
-    assert len(results) == 8 and not list(tmp_path.rglob("*.part"))
-    for path in results:
-        ds = read_result(path)
+    files = sorted(results.glob("*.nc"))
+    assert len(files) == 8 and not list(tmp_path.rglob("*.part"))
+    for path in files:
+        ds, reference = read_result(path), read_result(serial.out_dir / "results" / path.name)
         assert ds.attrs["status"] == "ok" and ds.sizes["time"] == 61
+        xr.testing.assert_identical(ds.drop_attrs(), reference.drop_attrs())
+        assert {k: v for k, v in ds.attrs.items() if k not in TIMING} == \
+            {k: v for k, v in reference.attrs.items() if k not in TIMING}
     for name, values in table(serial.summary).items():
-        np.testing.assert_allclose(result.summary[name].values, values, rtol=1e-9, err_msg=name)
+        np.testing.assert_array_equal(result.summary[name].values, values, err_msg=name)
 
 
 def test_failing_cases_are_recorded_and_the_others_complete(base, client, tmp_path):
