@@ -20,7 +20,7 @@ from kanat.io.results import read_result
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 TOWED = EXAMPLES / "towed_body.yaml"                     # one cable, statics, speed_kn: 6
 NETWORK = EXAMPLES / "mooring_3leg.yaml"                 # three legs on a buoy, network statics
-MOORDYN = EXAMPLES / "moordyn" / "clump_and_float.dat"   # long warnings, then a failing statics
+MOORDYN = Path(__file__).parent / "data" / "moordyn" / "float_surfaces.dat"   # long warnings, then a failing statics
 LONG_WARNING = ("lateral seabed friction is not applied by model 'statics'", "supported by: continuum, lumped")
 runner = CliRunner()
 

@@ -177,7 +177,7 @@ def test_kanat_statics_of_a_moordyn_file_matches_moorpy(name, tmp_path):
 
 
 def test_a_float_that_would_surface_is_refused_with_the_reason(tmp_path):
-    result = CliRunner().invoke(app, ["statics", str(ROOT / "examples/moordyn/clump_and_float.dat"), "-o",
+    result = CliRunner().invoke(app, ["statics", str(DATA / "moordyn" / "float_surfaces.dat"), "-o",
                                       str(tmp_path / "out.nc")])
     assert result.exit_code != 0
     assert "point3" in result.output and "above the water surface" in " ".join(result.output.split())

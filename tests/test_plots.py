@@ -20,6 +20,7 @@ from kanat.report.statics_plot import plot_statics
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
+MOORDYN = sorted((ROOT / "examples" / "moordyn").glob("*.dat"))      # drawn at their steady state
 
 
 def _lines(fig) -> dict:
@@ -154,7 +155,7 @@ def test_short_turn_run_picture_matches_its_result(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", EXAMPLES + MOORDYN, ids=lambda p: p.name)
 def test_every_example_picture_matches_its_result(path, tmp_path):
     import kanat
 
@@ -163,10 +164,12 @@ def test_every_example_picture_matches_its_result(path, tmp_path):
         case = kanat.load_case(path)
         if case.model == "pitch":
             pytest.skip("the pitch model has no cables; its figures are kanat.report.pitch_plot's")
-        ds = kanat.simulate(case)
+        ds = kanat.solve_statics(case) if path.suffix == ".dat" else kanat.simulate(case)
     fig = plot_run(ds, tmp_path / "picture.png")
     if "time" in ds.dims:
         check_run_picture(ds, fig)
     elif "position" in ds and "alpha" not in ds:
         for cable, index in cable_nodes(ds).items():
-            np.testing.assert_allclose(_lines(fig)[f"elevation/{cable}"].get_xdata(), ds["position"].values[index, 0])
+            line = _lines(fig)[f"elevation/{cable}"]
+            np.testing.assert_allclose(line.get_xdata(), ds["position"].values[index, 0])
+            np.testing.assert_allclose(line.get_ydata(), ds["position"].values[index, 2])
