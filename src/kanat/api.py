@@ -312,7 +312,7 @@ def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, 
     """:func:`run` once the output (if any) is checked and locked."""
     if isinstance(entry, Steady):
         return _steady(entry, case, name, output, method)
-    from kanat.io.results import case_sha256
+    from kanat.io.provenance import case_sha256
     from kanat.io.stream import ResultStream
 
     recorder = dynamics.Recorder() if output is None else None
@@ -420,7 +420,7 @@ def case_of(result) -> Case:
     kanat.errors.KanatError
         When the result does not carry its case (written before kanat embedded it).
     """
-    from kanat.io.results import case_sha256
+    from kanat.io.provenance import case_sha256
 
     attrs = result.attrs if hasattr(result, "attrs") else read_result(result).attrs
     text = attrs.get("case_yaml")

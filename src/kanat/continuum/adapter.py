@@ -26,7 +26,7 @@ from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure, Steps
 from kanat.errors import CaseError, Problem, SolverError
-from kanat.io.results import provenance
+from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.schemes import get_scheme
 

@@ -6,44 +6,14 @@ back to disk (h5netcdf).
 """
 from __future__ import annotations
 
-import hashlib
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
 from kanat.errors import KanatError
+from kanat.io.provenance import case_sha256, case_yaml, provenance  # noqa: F401 - their home is provenance
 from kanat.io.schema import COORDINATE_NAMES, VARIABLES, netcdf_attr
-from kanat.version import __version__
-
-def case_sha256(case) -> str:
-    """SHA-256 of the case's canonical JSON form (insensitive to YAML layout and comments)."""
-    return hashlib.sha256(case.model_dump_json(by_alias=True).encode()).hexdigest()
-
-
-def case_yaml(case) -> str:
-    """The case as YAML text that loads back to the same case (same :func:`case_sha256`)."""
-    import yaml
-
-    return yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_unset=True), sort_keys=False)
-
-
-def provenance(case, *, model: str, scheme: str, wall_time_s: float = 0.0, status: str = "running", **extra) -> dict:
-    """Global attributes every result file carries (case-format.md), the case itself included
-    (``case_yaml``), so that a result alone reproduces its run."""
-    attrs = {
-        "kanat_version": __version__,
-        "case_name": case.name or "",
-        "case_sha256": case_sha256(case),
-        "case_yaml": case_yaml(case),
-        "model": model,
-        "scheme": scheme,
-        "wall_time_s": float(wall_time_s),
-        "status": status,
-        "Conventions": "CF-1.10",
-    }
-    attrs.update(extra)
-    return attrs
 
 
 def annotate(ds: xr.Dataset) -> xr.Dataset:

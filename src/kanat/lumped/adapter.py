@@ -23,7 +23,7 @@ import numpy as np
 
 from kanat.dynamics import StepFailure, Steps
 from kanat.errors import SolverError
-from kanat.io.results import provenance
+from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.lumped import kernels, stepping
 from kanat.lumped.advance import advance

@@ -372,7 +372,7 @@ KINEMATIC_VARS = {
 
 def summary_dataset(comparison: Comparison, case) -> xr.Dataset:
     """``summary.nc``: per-mode statistics and the top tension and pitch histories ``(mode, time)``."""
-    from kanat.io.results import provenance
+    from kanat.io.provenance import provenance
 
     modes = list(comparison.runs)
     runs = comparison.runs.values()
