@@ -2,7 +2,9 @@
 
 Test modules import from here, never from each other.
 """
+import os
 import re
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -97,3 +99,18 @@ def front(s, values, level):
     """Arclength where ``values`` first falls through ``level`` walking from s = 0."""
     i = np.argmax(values < level)
     return s[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (s[i] - s[i - 1])
+
+
+class quiet:
+    """Silence MoorDyn's console output (C-level stdout)."""
+
+    def __enter__(self):
+        sys.stdout.flush()
+        self.saved = os.dup(1)
+        self.null = open(os.devnull, "w")
+        os.dup2(self.null.fileno(), 1)
+
+    def __exit__(self, *exc):
+        os.dup2(self.saved, 1)
+        os.close(self.saved)
+        self.null.close()

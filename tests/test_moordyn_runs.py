@@ -11,8 +11,6 @@ MoorDyn-C (PyPI ``moordyn``) run side by side on the same file.
   and 14-26 %: its numerical damping flattens the tension's peaks; benchmarks/RESULTS.md).
 """
 import math
-import os
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -24,6 +22,8 @@ from kanat.cli import app
 from kanat.io import load_case
 from kanat.io.results import read_result
 from kanat.lumped.adapter import LumpedModel
+
+from helpers import quiet
 
 FILES = Path(__file__).resolve().parents[1] / "examples" / "moordyn"
 CHAIN = FILES / "three_leg_chain_50.dat"
@@ -54,21 +54,6 @@ def test_kanat_run_takes_a_moordyn_file(name, tmp_path, monkeypatch):
 
 def moordyn_or_skip():
     return pytest.importorskip("moordyn")
-
-
-class quiet:
-    """Silence MoorDyn's console output (C-level stdout)."""
-
-    def __enter__(self):
-        sys.stdout.flush()
-        self.saved = os.dup(1)
-        self.null = open(os.devnull, "w")
-        os.dup2(self.null.fileno(), 1)
-
-    def __exit__(self, *exc):
-        os.dup2(self.saved, 1)
-        os.close(self.saved)
-        self.null.close()
 
 
 def test_the_static_state_agrees_with_moordyns_initial_condition(tmp_path):

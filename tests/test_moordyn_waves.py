@@ -48,8 +48,6 @@ line (-96 %, -85 %), a range of 1.84 kN on the inclined one (-48 %), and midpoin
 smaller — against tolerances of 1.5 %.
 """
 import math
-import os
-import sys
 import warnings
 
 import numpy as np
@@ -59,6 +57,8 @@ from kanat import api
 from kanat.errors import CaseWarning
 from kanat.io import load_case
 from kanat.physics.waves import sea_from_model
+
+from helpers import quiet
 
 pytestmark = pytest.mark.slow
 
@@ -99,21 +99,6 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 """
 MOORDYN_ONLY = "1          WaveKin\n1          disableOutput\n1          disableOutTime\n"
 """Options kanat's importer refuses or warns about: externally driven waves, no output files."""
-
-
-class quiet:
-    """Silence MoorDyn's console output (C-level stdout)."""
-
-    def __enter__(self):
-        sys.stdout.flush()
-        self.saved = os.dup(1)
-        self.null = open(os.devnull, "w")
-        os.dup2(self.null.fileno(), 1)
-
-    def __exit__(self, *exc):
-        os.dup2(self.saved, 1)
-        os.close(self.saved)
-        self.null.close()
 
 
 def moordyn_text(geometry: str, moordyn_only: str = "") -> str:
