@@ -8,16 +8,24 @@ never hard-wrapped when it is not a terminal. Every run ends with a ``status:`` 
 """
 from __future__ import annotations
 
-import logging
-import warnings
-from pathlib import Path
-from typing import Optional
+import os
 
-import typer
+# One BLAS thread unless the user says otherwise: kanat's linear systems are small banded ones,
+# where OpenBLAS's extra threads only spin (15 % more CPU for the same wall time on the main
+# example; docs/performance.md). Set before anything imports NumPy.
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
 
-from kanat.cli_common import (LOG_FILE_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP, CONTEXT, console, describe,
+import logging  # noqa: E402
+import warnings  # noqa: E402
+from pathlib import Path  # noqa: E402
+from typing import Optional  # noqa: E402
+
+import typer  # noqa: E402
+
+from kanat.cli_common import (LOG_FILE_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP, CONTEXT, console, describe,  # noqa: E402
                               fail, load, print_problems, setup_logging, show)
-from kanat.errors import KanatError
+from kanat.errors import KanatError  # noqa: E402
 
 log = logging.getLogger("kanat")
 
