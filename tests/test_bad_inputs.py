@@ -11,6 +11,7 @@ exits 1 without a traceback, and all of it within a few seconds.
 """
 from __future__ import annotations
 
+import math
 import os
 import textwrap
 import time
@@ -383,6 +384,33 @@ CLASSES: dict[str, Bad] = {
                                           ("names both a body and a point",)),
     "dimensions 2 with a turn": Bad(base("output_dt: 1.0", "output_dt: 1.0\n  dimensions: 2"),
                                     ("x-z plane only",), 31),
+    # --- what a dynamic model would refuse when the run is set up -------------------------
+    "an unknown scheme": Bad(base("output_dt: 1.0", "output_dt: 1.0\n  scheme: rk9"),
+                             ("unknown continuum scheme 'rk9'", "generalized-alpha"), 31),
+    "a scheme of the other model": Bad(base("output_dt: 1.0", "output_dt: 1.0\n  scheme: rk4"),
+                                       ("'rk4' is a lumped scheme",), 31),
+    "a factorized scheme in waves": Bad(edits(
+        ("# waves go here", "waves: {type: regular, height: 2.0, period: 8.0}"),
+        ("output_dt: 1.0", "output_dt: 1.0\n  scheme: factorized")), ("uniform flexible cable only",), 6),
+    "a turn of given radius after a stop": Bad(base("speed: 3.0", "speed: 0"), ("needs a speed > 0",), 19),
+    "a 6-DOF body without its position": Bad(edits(("model: continuum", "model: lumped"), (
+        "sled: {mass: 1135, net_buoyancy: -4448, drag_area: 0.33}",
+        "sled: {mass: 1135, net_buoyancy: -4448, dof: 6, inertia: [100, 100, 100]}")),
+        ("needs its position",), 14),
+    "an attachment at a cable end": Bad(edits(
+        ("bodies:", "bodies:\n  clump: {mass: 10, net_buoyancy: -50}"),
+        ("    to: sled\n", "    to: sled\n    attachments: [{body: clump, s: 0}]\n")), ("is that end's body",)),
+    "an elastic law the continuum model cannot invert": Bad(base(
+        "axial_stiffness: 1.2717e7", "axial_stiffness: 1.2717e7\n    elastic_law: {polynomial: [1e6, -3e6]}"),
+        ("must increase with strain",), 13),
+    "a JONSWAP gamma beyond its formula": Bad(base("# waves go here", "waves: {type: jonswap, hs: 2.0, tp: 8.0, "
+                                                   "gamma: 100}"), ("spectrum negative",), 6),
+    "a seabed too soft to hold the line": Bad(base("depth: 2000", "depth: 2000\n  seabed: {stiffness: 1e-9}"),
+                                              ("more than the depth",), 5),
+    "an undamped pitch on a harmonic beyond the series": Bad(text(edit(
+        "harmonics: 50", "harmonics: 5", edit("damping_ratio: 0.1", "damping_ratio: 0", edit(
+            "natural_frequency: 1.0", f"natural_frequency: {7 * 2 * math.pi / 10!r}", PITCH)))),
+        ("beyond the 5 harmonics computed", "unbounded"), 5),
 }
 
 

@@ -9,8 +9,15 @@ returns a :class:`~kanat.model.Case` or raises :class:`~kanat.errors.CaseError` 
 at least one error that names the file; any other exception (or a ``RuntimeWarning``
 from kanat, which the test configuration turns into an error) fails the test.
 
+A second property holds the reader to what the dynamic models accept: every mutant of a
+continuum or lumped example that the reader (``kanat validate``) finds valid is set up by
+its model (:func:`kanat.api.dynamic_model`) without an error; a
+:class:`~kanat.errors.CaseError` there is a refusal that validation missed.
+
 The default run is derandomized (the same examples every time): 5000 mutants, 3000 of
-the data and 2000 of the text, in about a minute. More, with a random seed::
+the data and 2000 of the text, in about a minute; and 2500 mutants of the data of the
+dynamic examples (some 450 of them valid, each then set up by its model) in about 30 s.
+More, with a random seed (N mutants for the reader, 3 N / 10 more for the models)::
 
     KANAT_FUZZ_EXAMPLES=100000 python -m pytest -q tests/test_fuzz_cases.py
 """
@@ -26,10 +33,12 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from kanat.api import dynamic_model
 from kanat.errors import CaseError, Problem
 from kanat.io import CaseWarning, parse_case
 from kanat.io.yaml_loader import LineLoader
 from kanat.model import Case
+from kanat.model.case import DYNAMIC_MODELS
 
 EXAMPLES = sorted((Path(__file__).resolve().parents[1] / "examples").glob("*.yaml"))
 BASES = {p.name: yaml.load(p.read_text(), Loader=LineLoader) for p in EXAMPLES}  # noqa: S506
@@ -39,6 +48,7 @@ FILE = "fuzz.yaml"
 _REQUESTED = int(os.environ.get("KANAT_FUZZ_EXAMPLES", "0") or 0)
 DATA_EXAMPLES = _REQUESTED * 3 // 5 if _REQUESTED else 3000
 TEXT_EXAMPLES = _REQUESTED - DATA_EXAMPLES if _REQUESTED else 2000
+SETUP_EXAMPLES = _REQUESTED * 3 // 10 if _REQUESTED else 2500
 FUZZ = dict(deadline=None, database=None, derandomize=not _REQUESTED, print_blob=True,
             suppress_health_check=list(HealthCheck))
 
@@ -231,6 +241,33 @@ def test_mutated_case_text_is_an_error_or_a_case(name, count, data):
     for _ in range(count):
         text = mutate_text(text, data.draw)
     assert_contract(text)
+
+
+# --- validation and the dynamic models accept the same cases ----------------------------
+
+DYNAMIC = sorted(name for name, tree in BASES.items()
+                 if isinstance(tree, dict) and tree.get("model") in DYNAMIC_MODELS)
+
+
+def assert_set_up(text: str) -> None:
+    """A mutant that validates is set up by its dynamic model without an error."""
+    outcome = read(text)
+    if not isinstance(outcome, Case) or outcome.model not in DYNAMIC_MODELS:
+        return
+    try:
+        dynamic_model(outcome)
+    except CaseError as error:
+        pytest.fail(f"kanat validate accepts this case but its {outcome.model} model refuses it:\n"
+                    f"{error}\n--- the case ---\n{text}")
+
+
+@settings(max_examples=SETUP_EXAMPLES, **FUZZ)
+@given(st.sampled_from(DYNAMIC), st.integers(1, 3), st.data())
+def test_a_mutant_that_validates_is_set_up_by_its_model(name, count, data):
+    tree = copy_tree(BASES[name])
+    for _ in range(count):
+        tree = mutate(data, tree, data.draw)
+    assert_set_up(dump(tree))
 
 
 @pytest.mark.parametrize("name", sorted(TEXTS))

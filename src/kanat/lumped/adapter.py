@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.dynamics import StepFailure, Steps
-from kanat.errors import SolverError
+from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.lumped import kernels, stepping
@@ -97,8 +97,8 @@ class LumpedModel:
             spec = chosen.name
         chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
         if rigid and not chosen.explicit:
-            raise SolverError(f"scheme {chosen.name} does not take bodies with dof: 6 yet (body "
-                              f"'{self.net.rigid.names[0]}'); use simulation.scheme: rk4 or abm4")
+            raise CaseError([Problem("simulation.scheme", f"scheme {chosen.name} does not take bodies with dof: 6 "
+                                     f"yet (body '{self.net.rigid.names[0]}'); use simulation.scheme: abm4 or rk4")])
         return chosen
 
     def _step_size(self) -> float:

@@ -35,6 +35,7 @@ import numpy as np
 from kanat.errors import CaseError, Problem
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
+from kanat.model.paths import key_path
 from kanat.physics.motion import rotation_matrix
 from kanat.physics.seabed import seabed_of
 
@@ -235,8 +236,8 @@ class _Builder:
         if end.kind == "body" and self.case.bodies[end.name].dof == 6:
             return self._fairlead(end, where)
         if end.offset is not None:
-            raise CaseError([Problem(where, f"a fairlead offset needs a rigid body: body '{end.name}' is a "
-                                            "point (dof 3); add dof: 6 and its inertia, or drop the offset")])
+            raise CaseError([Problem(key_path(where), f"a fairlead offset needs a rigid body: body '{end.name}' "
+                                     "is a point (dof 3); add dof: 6 and its inertia, or drop the offset")])
         if end.name not in self.named:
             item = (self.case.bodies if end.kind == "body" else self.case.points)[end.name]
             self.named[end.name] = self.node(end.kind, getattr(item, "position", None))
@@ -245,7 +246,7 @@ class _Builder:
     def _fairlead(self, end, where) -> int:
         body = self.case.bodies[end.name]
         if body.position is None:
-            raise CaseError([Problem(("bodies", end.name, "position"),
+            raise CaseError([Problem(key_path(("bodies", end.name, "position")),
                                      "a dof: 6 body needs its position (the reference point) in the lumped "
                                      "model")])
         offset = np.zeros(3) if end.offset is None else np.asarray(end.offset, float)
@@ -259,15 +260,15 @@ class _Builder:
     def attach(self, name: str, node: int, where: tuple) -> None:
         body = self.case.bodies[name]
         if name in self.named:
-            raise CaseError([Problem(where, f"body '{name}' is already placed (a cable end or another "
-                                            "attachment); each attached body needs its own body entry")])
+            raise CaseError([Problem(key_path(where), f"body '{name}' is already placed (a cable end or "
+                                     "another attachment); each attached body needs its own body entry")])
         if body.dof == 6:
-            raise CaseError([Problem(where, f"body '{name}' has dof: 6; an inline attachment is a point "
-                                            "(dof 3)")])
+            raise CaseError([Problem(key_path(where), f"body '{name}' has dof: 6; an inline attachment is a "
+                                     "point (dof 3)")])
         if self.kinds[node] not in ("cable", "free"):
-            raise CaseError([Problem(where, f"body '{name}' is attached at a cable end that is a "
-                                            f"{self.kinds[node]}; attach it inside the cable or end the "
-                                            "cable at the body")])
+            raise CaseError([Problem(key_path(where), f"body '{name}' is attached at a cable end that is a "
+                                     f"{self.kinds[node]}; attach it inside the cable or end the "
+                                     "cable at the body")])
         self.kinds[node] = "body"
         self.named[name] = node
 

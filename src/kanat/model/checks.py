@@ -21,6 +21,7 @@ from .case import Case
 from .environment import JonswapWaves, RegularWaves
 from . import limits
 from .paths import Path, key_path, line_of
+from .setup_checks import check_continuum_cable, check_lumped_network, check_scheme, check_sea, check_track
 from .support import check_support
 from .vessel import Heading, Turn
 
@@ -373,12 +374,15 @@ def _check_one_pitch(where: tuple, pitch, out: Findings) -> None:
     r = n * omega / omega0
     denominator = np.hypot(1 - r**2, 2 * zeta * r)
     worst = int(np.argmin(denominator))
+    nearest = max(1, round(omega0 / omega))  # every harmonic counts, also beyond the truncation
     text = (f"harmonic n = {n[worst]} of the wave frequency ({n[worst]} × {omega:.4g} = "
             f"{n[worst] * omega:.4g} rad/s) ")
-    if zeta == 0 and abs(n[worst] * omega - omega0) <= RESONANCE_RTOL * omega0:
-        out.error((*where, key), text + f"is within {100 * RESONANCE_RTOL:g} % of the natural frequency "
-                  f"{omega0:.4g} rad/s and there is no damping: the steady state is unbounded; change "
-                  f"{key} or give damping_ratio > 0")
+    if zeta == 0 and abs(nearest * omega - omega0) / omega0 <= RESONANCE_RTOL:  # the solver's test
+        beyond = f" (beyond the {pitch.harmonics} harmonics computed)" if nearest > pitch.harmonics else ""
+        out.error((*where, key), f"harmonic n = {nearest} of the wave frequency ({nearest} × {omega:.4g} = "
+                  f"{nearest * omega:.4g} rad/s){beyond} is within {100 * RESONANCE_RTOL:g} % of the natural "
+                  f"frequency {omega0:.4g} rad/s and there is no damping: the steady state is unbounded; "
+                  f"change {key} or give damping_ratio > 0")
     elif 1 / denominator[worst] > RESONANCE_GAIN:
         out.warning((*where, key), text + f"is close to the natural frequency {omega0:.4g} "
                     f"rad/s: its response is amplified {1 / denominator[worst]:.3g} times")
@@ -520,7 +524,7 @@ CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
     check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
     check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
-    check_support,
+    check_support, check_scheme, check_track, check_sea, check_continuum_cable, check_lumped_network,
 )
 
 

@@ -7,6 +7,7 @@ degrees, positive to port (counter-clockwise seen from above).
 """
 from __future__ import annotations
 
+import math
 from typing import Annotated, Any, ClassVar, Union
 
 from pydantic import Discriminator, Field, Tag, computed_field, model_validator
@@ -184,6 +185,39 @@ def _segment_key(value: Any) -> str | None:
 AnySegment = Annotated[
     Union[tuple(Annotated[cls, Tag(key)] for key, cls in SEGMENT_TYPES.items())],
     Discriminator(_segment_key)]
+
+
+def start_speeds(track) -> list[float]:
+    """The speed [m/s] at which each segment of ``track`` runs from its start.
+
+    A segment's own ``speed`` (straight, turn) if it gives one, else the speed the segment
+    before it ended at (0 before the first: from rest). A speed step ends at its target; a ramp
+    at its target, or where its ``duration`` cut it short. The arithmetic is that of
+    :func:`kanat.vessel.track.compile_phases` (a ramp ends at ``v + a t``), so the case checks
+    see the speeds the run will.
+
+    Parameters
+    ----------
+    track : sequence of TrackSegment
+
+    Returns
+    -------
+    list of float, one per segment
+    """
+    speeds, v = [], 0.0
+    for segment in track:
+        own = getattr(segment, "speed_ms", None)
+        v = v if own is None else own
+        speeds.append(v)
+        if isinstance(segment, SpeedStep):
+            v = segment.to_speed_ms
+        elif isinstance(segment, Accelerate):
+            change = segment.to_speed_ms - v
+            ramp = abs(change) / segment.acceleration
+            if segment.duration is not None:
+                ramp = min(ramp, segment.duration)
+            v = v + (math.copysign(segment.acceleration, change) if change else 0.0) * ramp
+    return speeds
 
 
 class VesselPitch(PitchModel):

@@ -201,7 +201,7 @@ def _turn(seg, index, t, x, y, psi, v) -> Phase:
         rate = math.copysign(math.radians(seg.rate_deg_s), change)
         return Phase(t, abs(change / rate), x, y, psi, v, 0.0, rate)
     if seg.radius is not None:
-        if v <= 0.0:
+        if v / seg.radius <= 0.0:         # also a speed so small that the turn rate underflows to 0
             raise CaseError([Problem(key, "a turn of given radius needs a speed > 0; give the turn a speed "
                                           "or a rate_deg_s")])
         rate = math.copysign(v / seg.radius, seg.angle_deg)
