@@ -24,7 +24,7 @@ from kanat.statics.solution import CableSolution
 from kanat.statics.spatial import CableBVP3, Fixed3, Piece, check_solvable, end_residual, grounded_states, jump, rhs
 
 TOL = 1e-8
-MAX_NODES = 100_000
+MAX_NODES = 5_000        # finer means no smooth solution (a slack line): fail in seconds, not minutes
 CONTINUATION_STEPS = 4
 MAX_HALVINGS = 6
 MESH = 41
