@@ -117,11 +117,12 @@ def _shoot_from_body(problem: CableBVP, s_out, body_index: int) -> CableSolution
     return CableSolution(s_out, y[0], y[1], y[2:4].T.copy(), "shooting", 0.0, iterations)
 
 
-def _solve_continued(residual, unknowns, scale, label: str):
+def _solve_continued(residual, unknowns, scale, label: str, name: str = "shooting"):
     """Root-find ``residual(x, factor) = 0`` at ``factor = 1``, continuing from 0 if needed.
 
     ``unknowns`` is the solution at ``factor = 0`` (the drag-free guess). Returns the
-    root and the number of residual evaluations.
+    root and the number of residual evaluations. ``name`` names the solver in messages
+    (the planar and the 3-D shooting solvers share this continuation).
     """
     evaluations = 0
 
@@ -141,7 +142,7 @@ def _solve_continued(residual, unknowns, scale, label: str):
         return direct, evaluations
     current, factor, step, halvings = attempt(0.0, unknowns), 0.0, 1.0 / CONTINUATION_STEPS, 0
     if current is None:
-        raise SolverError(f"shooting ({label}) failed even without current; check the end positions "
+        raise SolverError(f"{name} ({label}) failed even without current; check the end positions "
                           "against the cable length, or use the collocation solver")
     while factor < 1.0:
         trial = min(1.0, factor + step)
@@ -149,7 +150,7 @@ def _solve_continued(residual, unknowns, scale, label: str):
         if found is None:
             step, halvings = step / 2, halvings + 1
             if halvings > MAX_HALVINGS:
-                raise SolverError(f"shooting ({label}) lost the solution at {100 * trial:.1f} % of the flow speed; "
+                raise SolverError(f"{name} ({label}) lost the solution at {100 * trial:.1f} % of the flow speed; "
                                   "the steady state may not exist (line blown onto the seabed or slack); "
                                   "try the collocation solver or a longer line")
             continue

@@ -19,19 +19,18 @@ import math
 
 import numpy as np
 from scipy.integrate import solve_ivp
-from scipy.optimize import root, root_scalar
+from scipy.optimize import root_scalar
 
 from kanat.errors import SolverError
 from kanat.statics.guess3d import grounding_guess, still_water_force
 from kanat.statics.spatial import Body3, CableBVP3, Fixed3, check_solvable, end_residual, grounded_states, jump, rhs_point
+from kanat.statics.shooting import _solve_continued
 from kanat.statics.solution import CableSolution
 
 RTOL = 1e-12          # ODE tolerance: far below the 1e-6 the solvers must agree to, and rotations leave
                       # tensions to 1e-9 (the integrator takes other steps in turned coordinates)
 RESIDUAL_TOL = 1e-10  # end residual, relative to the cable length / reference force
 MIN_TENSION = 1e-9    # relative; below this the cable is slack and the equations break down
-CONTINUATION_STEPS = 4
-MAX_HALVINGS = 8
 
 
 class Path:
@@ -98,42 +97,6 @@ def _integrate(problem: CableBVP3, s_from: float, y_from, s_to: float, path: Pat
             y = jump(problem, stop, y, forward)
         here = stop
     return y
-
-
-def _solve(residual, unknowns, scale, label: str):
-    """Root-find ``residual(q, factor) = 0`` at ``factor = 1``, continuing from 0 if needed."""
-    evaluations = 0
-
-    def attempt(factor, start):
-        nonlocal evaluations
-        try:
-            sol = root(lambda q: residual(q * scale, factor), start / scale, method="hybr", options={"xtol": 1e-13})
-        except SolverError:
-            return None
-        evaluations += sol.nfev
-        if np.max(np.abs(sol.fun)) > RESIDUAL_TOL or not np.all(np.isfinite(sol.x)):
-            return None
-        return sol.x * scale
-
-    direct = attempt(1.0, unknowns)
-    if direct is not None:
-        return direct, evaluations
-    current, factor, step, halvings = attempt(0.0, unknowns), 0.0, 1.0 / CONTINUATION_STEPS, 0
-    if current is None:
-        raise SolverError(f"3-D shooting ({label}) failed even without current; check the end positions against "
-                          "the cable length, or use the collocation solver")
-    while factor < 1.0:
-        trial = min(1.0, factor + step)
-        found = attempt(trial, current)
-        if found is None:
-            step, halvings = step / 2, halvings + 1
-            if halvings > MAX_HALVINGS:
-                raise SolverError(f"3-D shooting ({label}) lost the solution at {100 * trial:.1f} % of the flow "
-                                  "speed; the steady state may not exist (line slack or blown onto the seabed); "
-                                  "try the collocation solver")
-            continue
-        current, factor = found, trial
-    return current, evaluations
 
 
 def solve_shooting3(problem: CableBVP3, s_out=None) -> CableSolution:
@@ -231,7 +194,8 @@ def _shoot_free(problem: CableBVP3, s_out):
                          else [reference] * 3)
         return end_residual(flowed, 1 - fixed, y) / scale
 
-    force, evaluations = _solve(residual, still_water_force(problem, fixed), np.full(3, reference), "suspended line")
+    force, evaluations = _solve_continued(residual, still_water_force(problem, fixed), np.full(3, reference), "suspended line",
+                                         "3-D shooting")
     path = Path()
     _integrate(problem, s_fixed, np.concatenate([origin, force]), s_other, path)
     y = path.sample(problem, s_out)
@@ -258,7 +222,8 @@ def _shoot_grounded(problem: CableBVP3, s_out, anchor: int) -> CableSolution:
         return end_residual(flowed, 1 - anchor, shoot(unknowns, flowed)) / scale
 
     guess = grounding_guess(problem, anchor)
-    unknowns, evaluations = _solve(residual, guess, np.array([reference, length, 1.0]), "line on the seabed")
+    unknowns, evaluations = _solve_continued(residual, guess, np.array([reference, length, 1.0]), "line on the seabed",
+                                               "3-D shooting")
     tension, grounded, psi = unknowns
     path = Path()
     path.ground = (anchor, tension, grounded, psi)
