@@ -33,7 +33,8 @@ SIX_DOF_ONLY = ("inertia", "center_of_gravity", "center_of_buoyancy", "orientati
 
 
 class SurfaceBuoy(KanatModel):
-    """Hydrostatics of a surface-piercing buoy (vertical cylinder; SPEC §5, lumped model).
+    """Hydrostatics of a surface-piercing buoy (vertical cylinder, SPEC §5) at cable ends: in the
+    lumped model, and in the continuum model at the cable's far end (never inside a cable).
 
     The body's node is the buoy's keel. Its immersion ``d = clip(eta(x, y, t) - z, 0,
     height)`` adds the buoyancy ``rho g waterplane_area d`` to the body's constant
@@ -105,7 +106,8 @@ class Body(KanatModel):
         0.0, unit="N", description="otter board force F0, horizontal and perpendicular to the "
                                    "vessel heading, positive to port (lumped model)")
     surface_buoy: SurfaceBuoy | None = Field(
-        None, description="a buoy riding the wave surface (lumped model)")
+        None, description="a buoy riding the wave surface on its waterplane, at cable ends, not as an "
+                          "attachment (lumped model; continuum model: the cable's far end)")
     position: Vector3 | None = quantity(
         None, unit="m", description="initial guess of the position for the network "
                                     "equilibrium (lumped model); None: guessed. For dof: 6, "

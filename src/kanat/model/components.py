@@ -26,7 +26,7 @@ working range of synthetic ropes, five times the breaking strain of steel)."""
 
 class ElasticLaw(KanatModel):
     """A nonlinear elastic part ``f(e)`` of the tension law ``T = (f(e) + C_E2 de/dt) H(e)``
-    (SPEC §5; lumped model). Give exactly one form.
+    (SPEC §5), in the lumped and continuum models. Give exactly one form.
 
     Attributes
     ----------
@@ -107,12 +107,13 @@ class LineType(KanatModel):
         None, unit="kg/m^2", ge=0,
         description="seed 004 dimensional tangential drag C_t: force per length C_t |v_t| v_t")
     elastic_law: ElasticLaw | None = Field(
-        None, description="nonlinear elastic part of the tension (lumped model); "
-                          "default: linear axial_stiffness * strain")
+        None, description="nonlinear elastic part of the tension (lumped and continuum models; "
+                          "statics uses axial_stiffness); default: linear axial_stiffness * strain")
     bending_stiffness: float = quantity(
         0.0, unit="N m^2", ge=0,
-        description="bending stiffness EI; 0: a perfectly flexible line. Line ends stay "
-                    "moment-free (pinned) unless a body end says otherwise")
+        description="bending stiffness EI (continuum model, planar runs); 0: a perfectly flexible "
+                    "line. The cable's ends and inline bodies are pinned (moment-free), a free end "
+                    "carries no shear either; no case key clamps an end")
     max_strain: float | None = quantity(
         None, unit="-", gt=0, le=1,
         description="largest strain the line may take (a limit checked on results); None: "
