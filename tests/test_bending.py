@@ -123,10 +123,12 @@ def test_compression_beyond_a_segments_euler_load_stops_the_run():
     values["tension"] = values["tension"].copy()
     euler = np.pi**2 * 50.0 / (2 * 50.0) ** 2
     values["tension"][5] = -0.5 * euler                        # within the rod's reach
+    values["tension"][-1] = -0.5 * euler                       # the end nodes too
     assert model.check(state, values) is None
     values["tension"][5] = -2.0 * euler - 1e-3 * np.max(values["tension"])
     message = model.check(state, values)
-    assert "compression" in message and "Euler load of one segment" in message and "more segments" in message
+    assert "compression" in message and "Euler load of one segment" in message and "use more segments" in message
+    assert "(at most 35.4 m long, now 50 m)" in message          # 1/sqrt(2) as long: twice the Euler load
     flexible = ContinuumModel(kanat.load_case(STEP_CASE.replace("segments: 100", "segments: 20")))
     values["tension"][5] = -0.01 * np.max(values["tension"])
     assert "perfectly flexible cable cannot carry" in flexible.check(flexible.initial(), values)
@@ -141,3 +143,56 @@ def test_a_bending_case_runs_and_stays_steady():
     assert ds.attrs["status"] == "ok"
     drift = np.max(np.abs(ds.tension.values[-1] - ds.tension.values[0])) / ds.tension.values.max()
     assert drift < 1e-9
+
+
+STOP = """
+name: tow-stops
+model: continuum
+line_types:
+  towcable: {diameter: 0.0173, mass: 1.12, weight_in_water: 8.89, axial_stiffness: 1.2717e7, added_mass: 0.24,
+             drag_normal: 1.5, drag_tangential: 0.01, bending_stiffness: 50}
+bodies:
+  sled: {mass: 1135, net_buoyancy: -6686, drag_area: 0.3276}
+vessel:
+  tow_point: [0, 0, 0]
+  track:
+    - {straight: {speed_kn: 10, duration: 5}}
+    - {speed_step: {to_speed_kn: 0}}
+    - {straight: {duration: 60}}
+cables:
+  - {name: tow, line_type: towcable, length: 200, segments: SEG, from: vessel, to: sled}
+simulation: {scheme: generalized-alpha, duration: 60, dt: 0.5, output_dt: 0.5, dimensions: 2}
+"""
+
+
+@pytest.mark.parametrize("segments, grid", [(20, "0.151 m, now 10 m"), (200, "0.118 m, now 1 m")])
+def test_a_tow_stopping_dead_goes_slack_and_the_run_says_so(segments, grid):
+    """A 10 kn tow stopping dead in 0.5 s: the sled runs on up the cable, kilonewtons of compression in a line of
+    EI = 50 N m^2 whose segments' Euler loads are 1.2 N (10 m) and 123 N (1 m). No grid carries that (at 1000
+    segments the compression is still -5168 N, at 2000 Newton fails): the run stops and says the line goes
+    slack, for the lumped model, not "more segments". Measured: T = -5415 N with 20 segments (a segment of
+    0.151 m would carry it: 66 times shorter), -8940 N with 200 (0.118 m: 6.8 diameters)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(kanat.load_case(STOP.replace("SEG", str(segments))))
+    status = ds.attrs["status"]
+    assert status.startswith("failed: the cable went into compression") and "at t = 5 s" in status
+    assert float(status.split("(T = ")[1].split(" N")[0]) < -5000.0
+    assert "the line goes slack" in status and "more segments cannot resolve" in status
+    assert "model: lumped, which carries slack" in status and "use more segments" not in status
+    assert "times the Euler load of the whole line (pi^2 EI / L^2 = 0.0123 N)" in status
+    assert f"segments of {grid}" in status
+    assert ds.time.values[-1] == 5.0 and np.all(ds.tension.values[0] > 0)      # kept up to the failure
+
+
+
+def test_the_stop_on_a_grid_of_2000_segments_fails_newton_and_points_to_the_lumped_model():
+    """At 10 cm segments (Euler load 12.3 kN) the rod carries the stop's -5167 N, and Newton then fails:
+    the message names the compression and the lumped model, not "bending stiffness" the line already has."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(kanat.load_case(STOP.replace("SEG", "2000")))
+    status = ds.attrs["status"]
+    assert status.startswith("failed: ") and "even with the step cut to dt/16" in status
+    assert "the cable was in compression (T = -51" in status and "Euler load of one segment (1.234e+04 N" in status
+    assert "model: lumped, which carries slack" in status and "(or bending stiffness)" not in status

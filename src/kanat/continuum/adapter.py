@@ -8,7 +8,8 @@ saying where and what to try. Its checks of every output:
 
 * compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
   stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``
-  (beyond it the grid no longer resolves the buckled shape);
+  (beyond it the grid no longer resolves the buckled shape: :func:`rod_advice` says how fine a
+  grid would, or that the line goes slack);
 * strain within the line type's range;
 * seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
   penetration ``w / (k_b d)`` below the seabed (a node falling through it).
@@ -32,6 +33,12 @@ from kanat.schemes import get_scheme
 
 COMPRESSION_TOLERANCE = 1e-3
 """Compression beyond this fraction of the largest tension (or of the cable's weight) fails a run."""
+REFINEMENT_REACH = 10.0
+"""Finest grid a compression message suggests, as a divisor of the segment length: a compression beyond
+the Euler load of a segment this many times shorter is a line going slack, not a grid too coarse."""
+SLENDER_SEGMENT = 10.0
+"""Shortest segment, in diameters, whose Euler load a compression message counts on: Euler's load is a
+slender column's, and two segments of 10 diameters are 80 radii of gyration (d/4) long."""
 PENETRATION_FACTOR = 10.0
 """A node deeper below the seabed than this many static penetrations (plus 1 mm) fails a run."""
 TIME_VARIABLES = ("position", "velocity", "tension", "body_position", "vessel_position", "vessel_heading",
@@ -123,9 +130,11 @@ class ContinuumModel:
         except SolverError as error:
             raise SolverError(
                 f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
-                "continuum model needs a taut cable from the start (bending stiffness lets a line go slack); a "
-                "slack or compressed line runs with model: lumped, which carries slack (kanat statics CASE "
-                "shows the steady shape)") from None
+                "continuum model needs a taut cable from the start: it starts from the steady shape of a "
+                "perfectly flexible line, with or without bending stiffness (which carries compression only up "
+                "to about the Euler load of one segment), so a slack line, such as a grounded one in still "
+                "water, runs with model: lumped, which carries slack (kanat statics CASE shows the steady "
+                "shape)") from None
         check_step(self.scheme, self.cable_model, state, self.dt)     # seed 000's schemes: their known range
         return state
 
@@ -170,12 +179,19 @@ class ContinuumModel:
         node = min(max(failure.node, 0), len(s) - 1)
         message = (f"{failure} at t = {state.t:.6g} s on cable '{cable.name}' near node {node} "
                    f"(s = {s[node]:.4g} m), even with the step cut to dt/{2 ** MAX_CUTS}; ")
+        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
+        allowed = euler_loads(rows)[0]
         lowest = int(np.argmin(state.y[:, 0]))
-        if state.y[lowest, 0] < 0.0:
+        if state.y[lowest, 0] < 0.0 and allowed[lowest] == 0:
             return message + (f"the cable went into compression (T = {state.y[lowest, 0]:.4g} N at node "
                               f"{lowest}), which a cable cannot carry: the continuum model needs it taut (or "
                               "bending stiffness). Slack and snapping cables run with model: lumped; or soften the "
                               "manoeuvre")
+        if state.y[lowest, 0] < 0.0:
+            return message + (f"the cable was in compression (T = {state.y[lowest, 0]:.4g} N at node {lowest}), "
+                              "which its bending stiffness carries only up to the Euler load of one segment "
+                              f"({allowed[lowest]:.4g} N there): a line going slack runs with model: lumped, which "
+                              f"carries slack; or soften the manoeuvre, or try a smaller dt (now {self.dt:g} s)")
         return message + (f"try a smaller dt (now {self.dt:g} s), a more dissipative scheme (lambda_inf closer "
                           "to 0) or more segments")
 
@@ -219,21 +235,18 @@ class ContinuumModel:
         tension, t = values["tension"], state.t
         scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
         rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
-        allowed = np.zeros(len(tension))
-        if np.any(rows[:, k.EI] > 0):
-            buckling = np.pi**2 * rows[:, k.EI] / np.maximum(2 * rows[:, k.DS], 1e-300) ** 2
-            allowed[:-1] = np.where(rows[:, k.DS] > 0, buckling, np.inf)
-            allowed[1:] = np.minimum(allowed[1:], np.where(rows[:, k.DS] > 0, buckling, np.inf))
+        allowed, interval = euler_loads(rows)
         low = int(np.argmin(tension + allowed))
-        if tension[low] + allowed[low] < -COMPRESSION_TOLERANCE * scale:
-            what = ("which a perfectly flexible cable cannot carry (give the line bending_stiffness to model it as "
-                    "a rod)" if allowed[low] == 0 else
-                    f"beyond the Euler load of one segment ({allowed[low]:.4g} N): the grid no longer resolves the "
-                    "buckled line; use more segments")
-            return (f"the cable went into compression (T = {tension[low]:.4g} N) at t = {t:.6g} s on cable "
-                    f"'{cable.name}' at node {low} (s = {self._s(state)[low]:.4g} m), {what}; slack and snapping cables "
-                    "run with model: lumped, or refine the grid (more segments) or soften the manoeuvre")
-        return None
+        if tension[low] + allowed[low] >= -COMPRESSION_TOLERANCE * scale:
+            return None
+        where = (f"the cable went into compression (T = {tension[low]:.4g} N) at t = {t:.6g} s on cable "
+                 f"'{cable.name}' at node {low} (s = {self._s(state)[low]:.4g} m), ")
+        if allowed[low] == 0:
+            return where + ("which a perfectly flexible cable cannot carry (give the line bending_stiffness to model "
+                            "it as a rod); slack and snapping cables run with model: lumped, or refine the grid (more "
+                            "segments) or soften the manoeuvre")
+        excess = -tension[low] - COMPRESSION_TOLERANCE * scale
+        return where + rod_advice(rows[interval[low]], excess, float(np.sum(rows[:, k.DS])))
 
     def _strain(self, state, values) -> str | None:
         cable = self.cable_model.cable
@@ -276,3 +289,62 @@ class ContinuumModel:
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state) -> tuple[dict, dict]:
         return {}, {}
+
+
+def rod_advice(row: np.ndarray, excess: float, length: float) -> str:
+    """What to do about a compression beyond the Euler load of a segment of a line with bending stiffness.
+
+    More segments resolve a finer buckle, and so carry more compression, only within reason: when the
+    segment whose Euler load ``pi^2 EI / (2 ds)^2`` is ``excess`` is more than :data:`REFINEMENT_REACH`
+    times shorter than the grid's, or shorter than :data:`SLENDER_SEGMENT` diameters, the line is
+    going slack (a tow stopping: kilonewtons against a few newtons) and the advice is the lumped model.
+
+    Parameters
+    ----------
+    row : ndarray, shape (P,)
+        The parameter row of the interval that sets the limit (:mod:`kanat.continuum.grid`).
+    excess : float
+        Compression beyond the tolerated [N], > 0.
+    length : float
+        Unstretched length of the cable [m].
+    """
+    ds, ei, diameter = row[k.DS], row[k.EI], row[k.DIAM]
+    euler = np.pi**2 * ei / (2 * ds) ** 2
+    finer = ds * np.sqrt(euler / excess)                           # the segment whose Euler load it is
+    if ds / finer <= REFINEMENT_REACH and finer >= SLENDER_SEGMENT * diameter:
+        return (f"beyond the Euler load of one segment ({euler:.4g} N): the grid no longer resolves the buckled "
+                f"line; use more segments (at most {finer:.3g} m long, now {ds:.3g} m), or soften the manoeuvre; "
+                "slack and snapping cables run with model: lumped")
+    whole = np.pi**2 * ei / length**2
+    return (f"{excess / whole:.3g} times the Euler load of the whole line (pi^2 EI / L^2 = {whole:.3g} N), beyond "
+            f"that of one segment ({euler:.4g} N) and of any reasonable grid (it would take segments of "
+            f"{finer:.3g} m, now {ds:.3g} m, diameter {diameter:.3g} m): the line goes slack, which bending "
+            "stiffness does not carry and more segments cannot resolve; slack and snapping cables run with "
+            "model: lumped, which carries slack, or soften the manoeuvre")
+
+
+def euler_loads(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Compression each node may carry: the Euler load ``pi^2 EI / (2 ds)^2`` of the weaker of its two
+    intervals (a junction's zero-length interval sets no limit).
+
+    Parameters
+    ----------
+    rows : ndarray, shape (n - 1, P)
+        The grid's parameter rows (:mod:`kanat.continuum.grid`), one per interval.
+
+    Returns
+    -------
+    allowed : ndarray, shape (n,)
+        [N]; 0 at nodes of a line without bending stiffness.
+    interval : ndarray of int, shape (n,)
+        The interval that sets it.
+    """
+    n = len(rows) + 1
+    ds = rows[:, k.DS]
+    if not np.any(rows[:, k.EI] > 0):
+        return np.zeros(n), np.minimum(np.arange(n), n - 2)
+    load = np.where(ds > 0, np.pi**2 * rows[:, k.EI] / np.maximum(2 * ds, 1e-300) ** 2, np.inf)
+    after, before = np.append(load, np.inf), np.insert(load, 0, np.inf)
+    interval = np.where(after <= before, np.arange(n), np.arange(n) - 1)
+    allowed = np.minimum(after, before)
+    return np.where(np.isfinite(allowed), allowed, 0.0), interval
