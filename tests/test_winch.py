@@ -1,7 +1,8 @@
 """The winch (SPEC §4; WHOI Cable's pay-out): the first interval grows from the winch and is split
 every segment length, or shrinks and merges when hauling in. Oracles: the length (and mass) of cable in
-the water is the schedule's, a slow lowering follows the statics at each length within 0.5 %, and a
-checkpoint restores the moving grid exactly."""
+the water is the schedule's, a slow lowering follows the statics at each length within 0.5 %, a tow
+paying out settles on the statics of its final length, and a checkpoint restores the moving grid
+exactly."""
 import warnings
 
 import numpy as np
@@ -50,6 +51,31 @@ def test_slow_lowering_follows_the_statics_at_each_length():
     depth = -ds.body_position.sel(body="sled", xyz="z").values
     stretch = np.array([np.sum(8.89 * np.linspace(0, L, 1001) + 6686.0) * L / 1001 / 1.2717e7 for L in length])
     assert np.max(np.abs(depth - (length + stretch))) < 0.005 * length.min()
+
+
+TOW_PAYOUT = LOWERING.replace("speed: 0, duration: 3000", "speed_kn: 6, duration: 1500").replace(
+    "length: 500, segments: 50", "length: 600, segments: 60").replace(
+    "{start: 10, duration: 2000, rate: 0.1}", "{start: 10, duration: 200, rate: 1.0}").replace(
+    "duration: 2100, dt: 1.0, output_dt: 100", "duration: 1500, dt: 1.0, output_dt: 100")
+
+
+def test_a_tow_paying_out_settles_on_the_statics_of_the_final_length():
+    """A 6 kn tow pays out 600 -> 800 m at 1 m/s, then tows on: the sled sinks from 224.5 m past its new
+    depth (318 m at the end of the pay-out) and settles on the statics of an 800 m cable, within 0.1 %
+    (measured after 1500 s: top tension 11158.1 vs 11157.0 N, 0.009 %; depth 277.045 vs 277.077 m, -0.012 %)."""
+    ds = run(TOW_PAYOUT)
+    assert ds.attrs["status"] == "ok"
+    assert ds.winch_length.values[-1] == pytest.approx(800.0, rel=1e-12)
+    statics_text = TOW_PAYOUT.replace("model: continuum", "model: statics").replace(
+        "length: 600, segments: 60", "length: 800, segments: 80").replace(
+        "winch:\n  - {start: 10, duration: 200, rate: 1.0}\n", "")
+    statics = kanat.solve_statics(kanat.load_case(statics_text))
+    tension, depth = ds.winch_tension.values, -ds.body_position.sel(body="sled", xyz="z").values
+    expected_depth = -float(statics.body_position.sel(body="sled", xyz="z"))
+    assert depth[0] < expected_depth - 50.0 and depth.max() > expected_depth + 30.0   # it moved, and overshot
+    assert tension[-1] == pytest.approx(float(statics.tension.values[0]), rel=1e-3)
+    assert depth[-1] == pytest.approx(expected_depth, rel=1e-3)
+    assert abs(tension[-1] / tension[-2] - 1) < 1e-4                                   # settled
 
 
 PAYOUT_AND_HAUL = LOWERING.replace("  - {start: 10, duration: 2000, rate: 0.1}\n",
