@@ -185,8 +185,8 @@ def test_surface_mooring_in_waves_agrees_with_the_lumped_model(monkeypatch):
     continuum's steady state, which is the shape of its own equilibrium to discretization error.
 
     Measured, continuum vs lumped, t = 40-100 s: top tension mean 4038.2 vs 4038.7 N (0.013 %), 3494.4-4644.0
-    vs 3477.8-4653.5 N (range 1149.5 vs 1175.7 N, 2.2 %: the lumped model's undamped axial ringing moves its
-    extremes by some 15 N a period), buoy heave -1.1471-0.3578 vs -1.1461-0.3584 m, mean -0.3876 m both
+    vs 3477.8-4653.5 N (range 1149.5 vs 1175.7 N, 2.2 %: the lumped model's extremes scatter by
+    some 15 N a period), buoy heave -1.1471-0.3578 vs -1.1461-0.3584 m, mean -0.3876 m both
     (continuum 3 s, lumped 30 s of wall time).
     """
     with warnings.catch_warnings():
