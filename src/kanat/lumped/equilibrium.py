@@ -124,7 +124,10 @@ def _newton(J, F, xf, forces, length):
 def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
     """One pseudo-transient step, eq. (1), clipped to MAX_STEP_FRACTION; None if it blows up."""
     A = sp.block_diag(list(M / dtau**2), format="csc") - J
-    dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
+    try:
+        dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
+    except RuntimeError:                                         # singular: the caller shortens dtau
+        return None
     biggest = np.max(np.linalg.norm(dx, axis=1))
     if biggest > MAX_STEP_FRACTION * length:
         dx *= MAX_STEP_FRACTION * length / biggest
