@@ -263,3 +263,35 @@ def test_steady_line_in_sheared_current_matches_the_statics_solver(name, tmp_pat
     assert abs(body[1]) < 1e-9
     positions = ds["position"].values[:, :, [0, 2]] - ds["vessel_position"].values[:, None, [0, 2]] * (name == "tow")
     assert np.max(np.abs(positions[-1] - positions[0])) < 1e-3 * cable.length   # and it stays there
+
+
+@pytest.mark.parametrize("length, above", [(40.0, None), (80.0, 30.0)])
+def test_a_float_out_of_the_water_stops_the_run(length, above):
+    """A float (5 kN net buoyancy, no waterplane) on a tether from an anchor 50 m down stands
+    straight above it at z = -50 m + L (1 + T / EA). On 40 m it floats 10 m under water and the
+    run is ok; on 80 m it would stand 30 m above the surface, still buoyed by this model: the
+    run fails at t = 0 and says by how much."""
+    import warnings
+
+    import kanat
+
+    case = kanat.load_case({
+        "name": "tethered-float", "model": "lumped",
+        "line_types": {"rope": {"diameter": 0.02, "mass": 0.3, "axial_stiffness": 1.0e8}},
+        "bodies": {"float": {"mass": 100.0, "net_buoyancy": 5000.0, "drag_area": 0.5}},
+        "cables": [{"name": "tether", "line_type": "rope", "length": length, "segments": 8,
+                    "from": "anchor:[0, 0, -50]", "to": "float"}],
+        "simulation": {"duration": 1.0, "dt": 0.01, "output_dt": 0.5}})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(case)
+    if above is None:
+        assert ds.attrs["status"] == "ok"
+        tension = float(ds.tension.isel(time=0).values[-1])
+        assert float(ds.body_position.isel(time=0).values[0, 2]) == pytest.approx(
+            -50.0 + length * (1 + tension / 1.0e8), abs=1e-3)
+    else:
+        status = ds.attrs["status"]
+        assert status.startswith("failed: body 'float' is") and "above the water surface at t = 0 s" in status
+        height = float(status.split(" is ")[1].split(" m above")[0])
+        assert height == pytest.approx(above, abs=0.05)
