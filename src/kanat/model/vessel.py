@@ -192,9 +192,9 @@ def start_speeds(track) -> list[float]:
 
     A segment's own ``speed`` (straight, turn) if it gives one, else the speed the segment
     before it ended at (0 before the first: from rest). A speed step ends at its target; a ramp
-    at its target, or where its ``duration`` cut it short. The arithmetic is that of
-    :func:`kanat.vessel.track.compile_phases` (a ramp ends at ``v + a t``), so the case checks
-    see the speeds the run will.
+    at its target, or where its ``duration`` cut it short (``v + a t``). The one source of these
+    speeds: :func:`kanat.vessel.track.compile_phases` builds the run's phases on them, so the
+    case checks see the speeds the run will.
 
     Parameters
     ----------

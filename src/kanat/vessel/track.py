@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.errors import CaseError, Problem
+from kanat.model.vessel import start_speeds
 
 
 @dataclass(frozen=True)
@@ -160,15 +161,14 @@ class VesselTrack:
 def compile_phases(segments) -> list[Phase]:
     """Turn track segments (kanat.model.vessel) into contiguous phases.
 
-    The initial speed is the first segment's own speed (0 when it has none: from rest).
+    Each segment starts at the speed :func:`kanat.model.vessel.start_speeds` gives it (the case
+    checks read the same speeds): its own, else where the one before ended (0 at first: from rest).
     """
     phases = [Phase(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)]
-    for index, seg in enumerate(segments):
+    for index, (seg, v) in enumerate(zip(segments, start_speeds(segments))):
         last = phases[-1]
         t = last.start + last.duration
-        x, y, psi, v = last.at(last.duration)
-        speed = getattr(seg, "speed_ms", None)
-        v = v if speed is None else speed
+        x, y, psi, _ = last.at(last.duration)
         if seg.kind == "straight":
             new = [Phase(t, seg.duration, x, y, psi, v)]
         elif seg.kind == "speed_step":
