@@ -396,6 +396,28 @@ def test_a_network_on_the_seabed_in_a_current_reports_its_grounded_length_and_an
     assert all(3.5 < a / b < 4.5 for a, b in zip(pull, pull[1:]))
 
 
+@pytest.mark.parametrize("length", [40.0, 80.0])
+def test_a_network_in_a_current_never_leaves_a_float_above_the_water(length):
+    """A float on two taut ropes from anchors 50 m down and 40 m apart, in a faint current (the
+    lumped equilibrium): it stands at z = -50 + sqrt(L^2 - 20^2). On 40 m ropes that is 15.36 m
+    under water (ok); on 80 m ropes it would be 27.46 m above it, still buoyed by the model: an
+    error saying so, not a result."""
+    data = {"name": "float-network", "model": "statics",
+            "environment": {"current": {"velocity": [0.1, 0.0, 0.0]}},
+            "line_types": {"rope": {"diameter": 0.02, "mass": 0.3, "axial_stiffness": 1.0e8, "drag_normal": 1.2}},
+            "bodies": {"float": {"mass": 100.0, "net_buoyancy": 5000.0, "drag_area": 0.5}},
+            "cables": [{"name": name, "line_type": "rope", "length": length, "segments": 8,
+                        "from": f"anchor:[{x}, 0, -50]", "to": "float"} for name, x in (("a", -20), ("b", 20))]}
+    height = -50.0 + math.sqrt(length ** 2 - 20.0 ** 2)
+    if height < 0:
+        ds = kanat.solve_statics(load(data))
+        assert ds.attrs["scheme"] == "lumped equilibrium"
+        assert ds.body_position.values[0, 2] == pytest.approx(height, abs=0.01)
+    else:
+        with pytest.raises(SolverError, match=f"body 'float' is {height:.4g} m above the water surface"):
+            kanat.solve_statics(load(data))
+
+
 def test_statics_refuses_what_the_table_says():
     """A network in a current over a seabed, which the lumped equilibrium cannot take yet, and
     a nonlinear elastic law: errors at their keys, from the support table and the solver alike."""

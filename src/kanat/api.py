@@ -23,7 +23,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from kanat import dynamics
-from kanat.errors import CaseError, KanatError
+from kanat.errors import CaseError, KanatError, SolverError
 from kanat.model import Case
 from kanat.model.support import require_supported
 from kanat.schemes import registry
@@ -89,12 +89,16 @@ def _statics_dataset(case: Case, method: str = "auto"):
 def _lumped_statics(case: Case, reason: str):
     """Network statics by the lumped model's equilibrium (statics may not import the lumped model)."""
     from kanat.lumped.equilibrium import equilibrium
-    from kanat.lumped.mooring_outputs import anchor_forces, anchors_on_seabed, attitudes, contact_length
+    from kanat.lumped.mooring_outputs import (anchor_forces, anchors_on_seabed, attitudes, contact_length,
+                                              out_of_water)
     from kanat.lumped.network import build_network
     from kanat.statics.network_result import result_from_positions
 
     net = build_network(case)
     x, info = equilibrium(net, case)
+    floating = out_of_water(case, net, x, None, 0.0)
+    if floating is not None:
+        raise SolverError(f"no steady state: {floating}")
     cables = {name: x[net.node_index[net.node_cable == name]] for name in net.cable_names}
     bodies = {name: x[node] for name, node in zip(net.body_names, net.body_node)}
     points = {name: x[node] for name, node in net.names.items() if name in case.points}

@@ -17,7 +17,6 @@ element's tension and the half element's loads — uplift is its +z part), ``bod
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,6 +40,7 @@ from kanat.lumped.mooring_outputs import (
     attitudes,
     contact_length,
     line_forces,
+    out_of_water,
 )
 from kanat.physics.contact import PENETRATION_MARGIN
 from kanat.physics.seabed import seabed_of
@@ -57,11 +57,6 @@ class LumpedState:
 
     scheme: dict
     snaps: SnapTracker
-
-
-SURFACE_MARGIN = 1.0
-"""A buoyant body's center may rise this far [m] (or its diameter) above the wave surface
-before the run stops: beyond it the body is out of the water (:meth:`LumpedModel.check`)."""
 
 
 class LumpedModel:
@@ -218,26 +213,7 @@ class LumpedModel:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
                     f"{t:.6g} s in {net.element_where(k)} (tension {values['segment_tension'][k]:.4g} N); check "
                     "axial_stiffness and the loads, or reduce dt, or set line_types.<name>.max_strain")
-        return self._below_seabed(x, t) or self._above_surface(x, t)
-
-    def _above_surface(self, x, t) -> str | None:
-        """A buoyant body or point out of the water keeps its full buoyancy in this model (only a
-        ``surface_buoy`` or a 6-DOF body has a waterplane): its center more than
-        :data:`SURFACE_MARGIN` (or its diameter) above the local wave surface fails the run."""
-        case, net, sea = self.case, self.net, self.system.sea
-        held = [(f"body '{name}'", node, math.sqrt(case.bodies[name].drag_area / math.pi))
-                for name, node in zip(net.body_names, net.body_node)
-                if case.bodies[name].surface_buoy is None and name not in net.rigid.names]
-        held += [(f"point '{name}'", net.names[name], (0.75 * point.volume / math.pi) ** (1.0 / 3.0))
-                 for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
-        for label, node, radius in held:
-            r = x[node]
-            eta = float(sea.elevation(np.array([r[0]]), np.array([r[1]]), t)[0]) if sea is not None else 0.0
-            if r[2] - eta > max(SURFACE_MARGIN, 2.0 * radius):
-                return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
-                        "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
-                        "to ride the surface, or lines that hold it under water")
-        return None
+        return self._below_seabed(x, t) or out_of_water(self.case, self.net, x, self.system.sea, t)
 
     def _below_seabed(self, x, t) -> str | None:
         seabed = seabed_of(self.case.environment)

@@ -20,6 +20,9 @@ import numpy as np
 from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
 
 NO_CONTACT_RTOL = 1e-9     # below the seabed by more than this fraction of the depth fails without contact
+SURFACE_MARGIN = 1.0
+"""A buoyant body's center may rise this far [m] (or its diameter) above the wave surface before
+:func:`out_of_water` says it is out of the water."""
 
 
 def contact_length(net, normal_force: np.ndarray, anchors_on_seabed=None) -> np.ndarray:
@@ -106,3 +109,24 @@ def allowed_penetration(net, environment) -> np.ndarray:
     area = net.node_contact_area
     static = np.where(area > 0, net.node_weight / (block.stiffness * np.maximum(area, 1e-300)), 0.0)
     return PENETRATION_MARGIN * static + PENETRATION_FLOOR
+
+
+def out_of_water(case, net, x, sea, t: float) -> str | None:
+    """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
+    gives it its full buoyancy wherever it is (only a ``surface_buoy`` or a 6-DOF body has a
+    waterplane), so its center more than :data:`SURFACE_MARGIN` (or its diameter, from
+    ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
+    is refused; None when every one is in the water."""
+    held = [(f"body '{name}'", node, np.sqrt(case.bodies[name].drag_area / np.pi))
+            for name, node in zip(net.body_names, net.body_node)
+            if case.bodies[name].surface_buoy is None and name not in net.rigid.names]
+    held += [(f"point '{name}'", net.names[name], np.cbrt(0.75 * point.volume / np.pi))
+             for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
+    for label, node, radius in held:
+        r = x[node]
+        eta = float(sea.elevation(np.array([r[0]]), np.array([r[1]]), t)[0]) if sea is not None else 0.0
+        if r[2] - eta > max(SURFACE_MARGIN, 2.0 * radius):
+            return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
+                    "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
+                    "to ride the surface, or lines that hold it under water")
+    return None
