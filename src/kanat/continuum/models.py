@@ -30,7 +30,8 @@ from kanat.continuum.model2d import planar_cable, positions
 from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.stepper import State, steady, step
 from kanat.model.plane import out_of_plane
-from kanat.statics import CableSolution, solve_cable
+from kanat.statics import CableSolution
+from kanat.statics.march import steady_guess
 from kanat.statics.setup import cable_problems
 from kanat.vessel.track import VesselTrack
 
@@ -61,7 +62,7 @@ def _static_shape(case, name, s) -> CableSolution:
         from kanat.statics.solve3d import solve_cable3
 
         return solve_cable3(cable_problem3(case), "auto", s)
-    return solve_cable(cable_problems(case)[name], "auto", s)
+    return steady_guess(cable_problems(case)[name], s)
 
 
 def free_tail_guess(case, s) -> CableSolution:
