@@ -275,7 +275,7 @@ def test_v1_point_forces_and_connect_points():
     ("3   Coupled", "3   Turbine1", "POINTS 3.Attachment", "'Turbine1' points cannot be imported"),
     ("110       11", "110       x", "LINES 2.NumSegs", "'x' is not a whole number"),
     ("80        WtrDpth", "bathy.txt WtrDpth", "OPTIONS.WtrDpth", "a bathymetry file cannot be imported"),
-    ("9.8       g\n", "9.8       g\n2         WaveKin\n", "OPTIONS.WaveKin", "wave kinematics"),
+    ("9.8       g\n", "9.8       g\n1         WaveKin\n", "OPTIONS.WaveKin", "ExternalWaveKinSet"),
     ("1   Fixed       -300   10    -80    0     0       0    0",
      "1   Fixed       -300   10    -80    0     0       0", "POINTS", "8 values on this row"),
 ])

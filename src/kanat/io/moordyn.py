@@ -51,8 +51,12 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
   -> ``water_density``, ``g``/``gravity`` -> ``gravity``, ``dtM`` -> ``dt``, ``TMax`` ->
   ``duration`` (then ``model: lumped``, else ``model: statics``), ``dtOut`` -> ``output_dt``.
   Solver settings without a kanat counterpart (``dtIC``, ``TmaxIC``, ``tScheme``, ...) are
-  reported as warnings, never dropped silently; features kanat cannot express (rods, wave
-  and current inputs, bathymetry files, failures) are errors.
+  reported as warnings, never dropped silently; features kanat cannot express (rods,
+  bathymetry files, failures) are errors.
+* Water kinematics: ``WaveKin`` 2, 3 and 7 read MoorDyn's wave files beside the input file
+  into ``environment.waves`` (``type: components``), ``Currents 1`` its current profile into
+  ``environment.current.profile``; ``WaveKin 1`` (waves set through MoorDyn's API) and the
+  other modes are errors (:mod:`kanat.io.moordyn_waves`).
 """
 from __future__ import annotations
 
@@ -75,6 +79,7 @@ from .moordyn_map import (
     file_version,
 )
 from .moordyn_text import looks_like_moordyn, split
+from .moordyn_waves import import_water
 from .yaml_loader import YamlDocument
 
 __all__ = ["Imported", "case_yaml", "looks_like_moordyn", "moordyn_document", "read_moordyn"]
@@ -148,7 +153,7 @@ def map_moordyn(reader: Reader, name: str) -> dict | None:
     points = read_points(reader, bodies)
     cables = _cables(reader, types, points, bodies)
     data: dict = {"name": name, "model": "lumped" if "duration" in reader.options else "statics",
-                  "environment": _environment(reader)}
+                  "environment": _environment(reader, _positions(points, bodies))}
     data["line_types"] = {k: v[0] for k, v in types.items()}
     for type_name, (_, _, line) in types.items():
         reader.lines[("line_types", type_name)] = line
@@ -162,9 +167,16 @@ def map_moordyn(reader: Reader, name: str) -> dict | None:
     return data
 
 
-def _environment(reader: Reader) -> dict:
+def _positions(points, bodies) -> list[tuple[float, float, float]]:
+    """Initial positions of the points and bodies (a body's points at the body: for extents)."""
+    out = [p.xyz for p in points.values() if p.kind != "body"]
+    return out + [b.xyz for b in bodies.values()]
+
+
+def _environment(reader: Reader, positions) -> dict:
     opts, lines = reader.options, reader.option_lines
     env = {"water_density": reader.rho, "gravity": reader.g}
+    env.update(import_water(reader, positions))
     for key, option in (("water_density", "rho"), ("gravity", "g"), ("depth", "depth")):
         if option in lines:
             reader.lines[("environment", key)] = lines[option]

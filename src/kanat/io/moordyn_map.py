@@ -12,7 +12,7 @@ from .moordyn_text import MoorDynText, Row
 
 ANGLE_TOL = 1e-12
 
-DEFAULTS = {"g": 9.81, "rho": 1025.0, "kbot": 3.0e6, "cbot": 3.0e5}
+DEFAULTS = {"g": 9.80665, "rho": 1025.0, "kbot": 3.0e6, "cbot": 3.0e5}
 """MoorDyn-C v2's defaults of the options kanat maps."""
 OPTION_KEYS = {
     "wtrdpth": "depth", "depth": "depth", "waterdepth": "depth",
@@ -21,19 +21,19 @@ OPTION_KEYS = {
     "kbot": "kbot", "kb": "kbot", "cbot": "cbot", "cb": "cbot",
     "frictioncoefficient": "friction", "mu_ka": "friction_axial", "mu_kt": "friction_lateral",
     "dtm": "dt", "tmax": "duration", "dtout": "output_dt",
+    "wavekin": "wave_kin", "dtwave": "dt_wave", "currents": "currents",
 }
 """MoorDyn option names (lower case) -> what the importer maps them to."""
 SETTINGS = frozenset({
     "writelog", "echo", "dtic", "tmaxic", "cdscaleic", "threshic", "icdfac", "icthresh",
     "ictmax", "icgendynamic", "disableoutput", "disableouttime", "writeunits", "tscheme", "cfl",
     "fricdamp", "statdynfricscale", "cv", "mc", "inertialf", "inertialf_rampt", "outswitch",
-    "dtwave", "unifycurrentgrid", "wavekin_rampt", "numturbines"})
+    "unifycurrentgrid", "wavekin_rampt", "numturbines"})
 """MoorDyn solver settings without a kanat counterpart: imported as warnings."""
-REFUSED = {"wavekin": "wave kinematics from MoorDyn's input files",
-           "waterkin": "wave kinematics from MoorDyn's input files",
-           "currents": "currents from MoorDyn's input files",
+REFUSED = {"waterkin": "MoorDyn-F's water kinematics input file",
            "seafloorfile": "a bathymetry file"}
-"""MoorDyn options kanat cannot express when they are switched on."""
+"""MoorDyn options kanat cannot express when they are switched on (``WaveKin`` and ``Currents``:
+:mod:`kanat.io.moordyn_waves`)."""
 LINE_TYPE_COLUMNS = {1: ("Diam", "MassDen", "EA", "BA", "Can", "Cat", "Cdn", "Cdt"),
                      2: ("Diam", "MassDen", "EA", "BA", "EI", "Cd", "Ca", "CdAx", "CaAx")}
 

@@ -109,7 +109,66 @@ class JonswapWaves(KanatModel):
     seed: int = Field(0, ge=0, description="random seed of the phases (numpy takes no negative seed)")
 
 
-Waves = Annotated[Union[RegularWaves, JonswapWaves], Field(discriminator="type")]
+def _as_component(value: Any) -> Any:
+    if not isinstance(value, (list, tuple)) or len(value) != 4:
+        got = f"{len(value)} values" if isinstance(value, (list, tuple)) else repr(value)
+        raise ValueError("each component must be 4 numbers [omega, amplitude, phase_deg, heading_deg] "
+                         f"(got {got})")
+    return tuple(value)
+
+
+ComponentRow = Annotated[tuple[float, float, float, float], BeforeValidator(_as_component)]
+
+
+class ComponentWaves(KanatModel):
+    """A sea given component by component: a sum of linear (Airy) waves.
+
+    The elevation is ``eta = sum a cos(k (x cos b + y sin b) - omega t + phase)`` with ``k``
+    from the finite-depth dispersion relation (:mod:`kanat.physics.waves`, eqs. 1-5); each
+    row ``[omega, amplitude, phase_deg, heading_deg]`` is one component. ``kanat import``
+    writes a MoorDyn file's wave files (``WaveKin`` 2, 3 and 7) in this form.
+
+    Attributes
+    ----------
+    components : tuple of rows (omega, amplitude, phase_deg, heading_deg)
+        Angular frequency [rad/s] (> 0), amplitude [m] (>= 0), phase [deg] and the direction
+        the component travels to [deg], from +x, counter-clockwise seen from above.
+    """
+
+    type: Literal["components"] = Field(
+        "components", description="components: a sum of linear waves given one by one (as kanat "
+                                  "import writes a MoorDyn file's wave files)")
+    components: tuple[ComponentRow, ...] = quantity(
+        unit="rad/s, m, deg, deg",
+        description="one row [omega, amplitude, phase_deg, heading_deg] per component: angular "
+                    "frequency (> 0), amplitude (>= 0), phase and the direction it travels to (from +x, "
+                    "counter-clockwise); eta = sum a cos(k (x cos b + y sin b) - omega t + phase)")
+
+    @field_validator("components")
+    @classmethod
+    def _check_components(cls, rows: tuple[ComponentRow, ...]) -> tuple[ComponentRow, ...]:
+        if not rows:
+            raise ValueError("needs at least one row [omega, amplitude, phase_deg, heading_deg]")
+        for index, (omega, amplitude, _, _) in enumerate(rows):
+            if omega <= 0:
+                raise ValueError(f"row {index}: omega {fmt(omega)} rad/s; each component's angular "
+                                 "frequency must be > 0")
+            if amplitude < 0:
+                raise ValueError(f"row {index}: amplitude {fmt(amplitude)} m; amplitudes are >= 0 "
+                                 "(a phase of 180 deg turns a component over)")
+        if not any(row[1] > 0 for row in rows):
+            raise ValueError("every amplitude is 0 (still water): remove environment.waves instead")
+        return rows
+
+    @property
+    def heading_deg(self) -> float:
+        """The heading [deg] of the component farthest from the x axis (the one the x-z plane
+        checks look at); the common heading when all components share one."""
+        return max((row[3] for row in self.components),
+                   key=lambda h: abs(np.sin(np.radians(h))))
+
+
+Waves = Annotated[Union[RegularWaves, JonswapWaves, ComponentWaves], Field(discriminator="type")]
 
 
 MAX_SLOPE_DEG = 45.0
@@ -157,7 +216,9 @@ class Environment(KanatModel):
                           "slope); needs depth. None: the models' own treatment of the "
                           "seabed at z = -depth (see kanat.model.support)")
     current: Current = Field(default_factory=Current)
-    waves: Waves | None = None
+    waves: Waves | None = Field(
+        None, description="regular (Airy) waves, irregular (JONSWAP) waves, or a sea given component "
+                          "by component; none: still water")
 
     @field_validator("seabed")
     @classmethod

@@ -1,4 +1,5 @@
-"""Linear (Airy) wave kinematics: regular waves and JONSWAP seas (SPEC §5).
+"""Linear (Airy) wave kinematics: regular waves, JONSWAP seas and seas given component by
+component (SPEC §5).
 
 A sea is a sum of linear components ``j`` with amplitude ``a_j``, angular frequency
 ``omega_j``, wavenumber ``k_j`` (finite-depth dispersion), direction ``beta_j`` (the
@@ -199,6 +200,24 @@ def jonswap_sea(hs: float, tp: float, gamma: float = 3.3, heading_deg: float = 0
                      np.full(components, math.radians(heading_deg)), phase, depth)
 
 
+def component_sea(rows, *, depth: float | None = None, gravity: float = 9.81) -> LinearSea:
+    """A sea of components given one by one (eq. 2 with each component as written).
+
+    Parameters
+    ----------
+    rows : array_like, shape (n, 4)
+        ``[omega, amplitude, phase_deg, heading_deg]`` per component: angular frequency
+        [rad/s] (> 0), amplitude ``a`` [m], phase ``phi`` [deg] and direction ``beta`` [deg]
+        of eq. (2).
+    depth, gravity : float
+        Water depth [m] (None: deep water) and gravity [m/s^2] of the dispersion relation (1).
+    """
+    table = np.asarray(rows, dtype=float).reshape(-1, 4)
+    omega = table[:, 0]
+    return LinearSea(table[:, 1].copy(), omega.copy(), wavenumber(omega, gravity, depth),
+                     np.radians(table[:, 3]), np.radians(table[:, 2]), depth)
+
+
 def sea_from_model(environment) -> LinearSea | None:
     """The sea of a case's ``environment`` (:class:`kanat.model.Environment`), or None."""
     waves = environment.waves
@@ -207,4 +226,6 @@ def sea_from_model(environment) -> LinearSea | None:
     common = {"depth": environment.depth, "gravity": environment.gravity}
     if waves.type == "regular":
         return regular_wave(waves.height, waves.period, waves.heading_deg, **common)
+    if waves.type == "components":
+        return component_sea(waves.components, **common)
     return jonswap_sea(waves.hs, waves.tp, waves.gamma, waves.heading_deg, seed=waves.seed, **common)
