@@ -26,6 +26,7 @@ run on the same files.
   Tolerances: 0.05 % on the mean, 1 % on the rest. The wave-induced mean (0.05 % of the tension)
   is where Wheeler stretching shows: MoorDyn fed the same sea unstretched (``WaveKin 1``) gives
   119.8 N, within 3 % of kanat's (asserted).
+* The continuum model runs a one-row component sea as the regular wave it is (same tensions).
 * Errors name the file, line and key: WaveKin 1 (set through MoorDyn's API), modes MoorDyn does
   not implement, missing and malformed wave files; Currents 1 is the current profile.
 """
@@ -175,6 +176,21 @@ def test_one_component_is_the_regular_wave():
     for t in (0.0, 2.5):
         np.testing.assert_allclose(ours.velocity(points, t), regular.velocity(points, t), atol=1e-12)
         np.testing.assert_allclose(ours.acceleration(points, t), regular.acceleration(points, t), atol=1e-12)
+
+
+def test_the_continuum_model_runs_a_component_sea_as_the_regular_wave():
+    """The continuum model takes ``type: components``: one row equal to the example's regular wave
+    gives the same tensions (4 s of examples/surface_mooring_waves.yaml)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = load_case(EXAMPLE.parents[1] / "surface_mooring_waves.yaml").replace({"simulation.duration": 4.0})
+    waves = case.environment.waves
+    row = [2 * math.pi / waves.period, waves.height / 2, 0.0, waves.heading_deg]
+    same = case.replace({"environment.waves": {"type": "components", "components": [row]}})
+    assert case.model == "continuum"
+    ours, regular = api.run(same).dataset, api.run(case).dataset
+    assert ours.attrs["status"] == regular.attrs["status"] == "ok"
+    np.testing.assert_allclose(ours.tension.values, regular.tension.values, rtol=1e-12, atol=1e-9)
 
 
 def problems(path: Path) -> list:
