@@ -7,7 +7,7 @@ case format (``docs/reference/case-format.md``); read case files with
 from .cable import Attachment, Cable, CableEnd, CableSection
 from .case import Case
 from .components import Body, ElasticLaw, LineType, Point, SurfaceBuoy
-from .environment import Current, Environment, JonswapWaves, RegularWaves, Seabed, Waves
+from .environment import ComponentWaves, Current, Environment, JonswapWaves, RegularWaves, Seabed, Waves
 from .operations import HarmonicMotion, VesselMotion, WinchStep
 from .problems import (
                        PitchModel,
@@ -32,7 +32,7 @@ from .vessel import (
 
 __all__ = [
     "Accelerate", "Attachment", "Body", "Cable", "CableEnd", "CableSection", "Case", "Current",
-    "ElasticLaw", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT", "LineType",
+    "ComponentWaves", "ElasticLaw", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT", "LineType",
     "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
     "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy", "Stabilizer",
     "Straight", "TrackSegment", "Turn", "Vessel", "VesselMotion", "VesselPitch", "Waves", "WinchStep",
