@@ -1,6 +1,6 @@
 """Bending stiffness in the planar continuum model (Gobat & Grosenbaugh's curvature term, SPEC §4):
 a cantilever's deflection, a beam-string's natural frequencies, the flexible limit, and what the
-model does with compression and in 3-D."""
+model does with compression (3-D: tests/test_bending3d.py)."""
 import warnings
 
 import numpy as np
@@ -13,7 +13,6 @@ from kanat.continuum.model2d import EndCondition, PlanarCable, positions
 from kanat.continuum.models import model_for
 from kanat.continuum.schemes import Box
 from kanat.continuum.stepper import State, steady, step
-from kanat.errors import CaseError
 
 from helpers import EXAMPLES
 
@@ -103,12 +102,6 @@ def test_vanishing_bending_stiffness_converges_to_the_flexible_model():
         differences.append(np.max(np.abs(stiff.y[:, 0] - flexible.y[:, 0])) / flexible.y[:, 0].max())
     assert differences[2] < 1e-7
     assert differences[0] / differences[1] > 8 and differences[1] / differences[2] > 8
-
-
-def test_bending_stiffness_in_a_3d_run_is_refused_by_name():
-    text = with_bending((EXAMPLES / "turn_360_3d.yaml").read_text(), 100.0)
-    with pytest.raises(CaseError, match="line_types.towcable.bending_stiffness"):
-        kanat.load_case(text)
 
 
 def test_compression_beyond_a_segments_euler_load_stops_the_run():

@@ -58,14 +58,18 @@ def needs_rechart(y: np.ndarray) -> bool:
 
 
 def rechart(y: np.ndarray, rate: np.ndarray, chart: np.ndarray, new: np.ndarray):
-    """State and rate (n, 6) rewritten from ``chart`` into the ``new`` chart (exact).
+    """State and rate (n, nv) rewritten from ``chart`` into the ``new`` chart (exact).
 
     Velocity ``V``, acceleration ``dV/dt`` and tangent rate ``dt/dt = phi_t n - cos(phi) theta_t b``
-    are physical vectors; the new components and angle rates follow from them.
+    are physical vectors; the new components and angle rates follow from them. With bending
+    stiffness (nv = 10) so are the shear ``S = S_n n + S_b b`` and the moment ``M = M_n n + M_b b``
+    (normal to ``t``, which a re-chart keeps) and their rates: ``S'_n = S.n'`` and
+    ``d(S'_n)/dt = dS/dt.n' + S.dn'/dt`` with ``dn/dt = -phi_t t + sin(phi) theta_t b``,
+    ``db/dt = theta_t (cos(phi) t - sin(phi) n)``.
     """
     t, n, b = frames(y, chart)
-    T, u, v, w, phi, _ = y.T
-    Td, ud, vd, wd, phid, thetad = rate.T
+    T, u, v, w, phi = y[:, 0], y[:, 1], y[:, 2], y[:, 3], y[:, 4]
+    Td, ud, vd, wd, phid, thetad = rate[:, :6].T
     cp, sp = np.cos(phi), np.sin(phi)
     velocity = u[:, None] * t + v[:, None] * n + w[:, None] * b
     accel = ((ud - v * phid + w * cp * thetad)[:, None] * t + (vd + u * phid - w * sp * thetad)[:, None] * n
@@ -83,4 +87,18 @@ def rechart(y: np.ndarray, rate: np.ndarray, chart: np.ndarray, new: np.ndarray)
     rate2 = np.column_stack([Td, dot(accel, t2) + v2 * phid2 - w2 * c2 * thetad2,
                              dot(accel, n2) - u2 * phid2 + w2 * s2 * thetad2,
                              dot(accel, b2) + u2 * c2 * thetad2 - v2 * s2 * thetad2, phid2, thetad2])
-    return y2, rate2
+    if y.shape[1] == 6:
+        return y2, rate2
+    dn = -phid[:, None] * t + (sp * thetad)[:, None] * b                  # dn/dt, db/dt (old frame)
+    db = thetad[:, None] * (cp[:, None] * t - sp[:, None] * n)
+    dn2 = -phid2[:, None] * t2 + (s2 * thetad2)[:, None] * b2               # dn'/dt, db'/dt
+    db2 = thetad2[:, None] * (c2[:, None] * t2 - s2[:, None] * n2)
+    extra, extra_rate = [], []
+    for first in (6, 8):                                                   # the shear, then the moment
+        a_n, a_b = y[:, first], y[:, first + 1]
+        vector = a_n[:, None] * n + a_b[:, None] * b
+        change = (rate[:, first, None] * n + a_n[:, None] * dn + rate[:, first + 1, None] * b
+                  + a_b[:, None] * db)
+        extra += [dot(vector, n2), dot(vector, b2)]
+        extra_rate += [dot(change, n2) + dot(vector, dn2), dot(change, b2) + dot(vector, db2)]
+    return np.column_stack([y2, *extra]), np.column_stack([rate2, *extra_rate])

@@ -24,8 +24,9 @@ contact with Coulomb friction along the line and across it: with ``a`` the line'
 the seabed (from the previous step, in the nodal data) and ``l = n_b x a``,
 ``F = N n_b - mu_a N tanh(V.a / v_s) a - mu_l N tanh(V.l / v_s) l``. Inline bodies, the winch and
 the parameter rows per interval are :mod:`kanat.continuum.rows3d`'s; the ends add a surface
-buoy's waterplane, the body's wave inertia and the winch's pay-out as in the plane (bending
-stiffness is planar only).
+buoy's waterplane, the body's wave inertia and the winch's pay-out as in the plane. Bending
+stiffness adds four unknowns per node and its own kernel, :mod:`kanat.continuum.bending3d`, which
+only a case with bending stiffness compiles.
 
 Box method and generalized-α exactly as the planar kernels, with the two-node averages of
 ``M``, ``K`` and ``F``; rows are ``[start (3); interval 0 (6); ...; far end (3)]``, a band of 8

@@ -100,6 +100,22 @@ def bending_guess(cable, y: np.ndarray) -> np.ndarray:
     return np.column_stack([y, np.zeros(len(y)), nodes])
 
 
+def bending_guess3(cable, y: np.ndarray) -> np.ndarray:
+    """Shear 0 and moment ``EI kappa`` (node averages of the intervals' ``M_n = EI cos(phi) theta_s``,
+    ``M_b = EI phi_s``) appended to a flexible spatial guess (n, 6) when the cable has bending stiffness."""
+    if cable.nv == 6:
+        return y
+    rows = cable.rows()
+    ds = np.where(rows[:, k.DS] > 0, rows[:, k.DS], 1.0)
+    ei = np.where(rows[:, k.DS] > 0, rows[:, k.EI], 0.0) / ds
+    mean_cos = 0.5 * (np.cos(y[:-1, 4]) + np.cos(y[1:, 4]))
+    moments = np.column_stack([ei * mean_cos * np.diff(y[:, 5]), ei * np.diff(y[:, 4])])
+    nodes = np.zeros((len(y), 2))
+    nodes[:-1] += 0.5 * moments
+    nodes[1:] += 0.5 * moments
+    return np.column_stack([y, np.zeros((len(y), 2)), nodes])
+
+
 class PlanarModel:
     """Adapter of the planar model (:mod:`model2d`, :mod:`stepper`).
 
@@ -217,7 +233,7 @@ class SpatialModel:
         t, n, b = frames(guess, chart)
         v0 = self.velocities(0.0)[0]
         guess[:, 1:4] = np.column_stack([t @ v0, n @ v0, b @ v0])
-        y, xyz = guess, static.position
+        y, xyz = bending_guess3(cable, guess), static.position
         for _ in range(STEADY_PASSES):               # the current is taken at the steady state's own nodes
             y = steady3(cable, y, chart, self.velocities(0.0), xyz)
             moved, xyz = xyz, positions3(cable, y, chart, self.origin(0.0))
@@ -288,21 +304,14 @@ def spatial_cable(case) -> SpatialCable:
 
     z, rows = case.environment.current.table()
     grid = planar.grid
-    if grid is not None and grid.bending:
-        from kanat.errors import CaseError, Problem
-
-        name = next(lt for lt in grid.sections if case.line_types[lt].bending_stiffness > 0)
-        raise CaseError([Problem(f"line_types.{name}.bending_stiffness", "bending stiffness is modelled by the "
-                                 "planar continuum model only; this case leaves the x-z plane (a 3-D run): set "
-                                 "bending_stiffness: 0, or keep the case in the plane (simulation.dimensions: 2)")])
     if grid is None:
         from kanat.continuum.grid import cable_grid
 
         grid = cable_grid(case, 0, planar.seabed)
+    plain = grid.uniform and not grid.bending and planar.seabed is None and planar.winch is None
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows,
-                        None if grid.uniform and planar.seabed is None and planar.winch is None else grid, planar.sea,
-                        planar.seabed, planar.winch)
+                        None if plain else grid, planar.sea, planar.seabed, planar.winch)
 
 
 def model_for(case):

@@ -166,3 +166,116 @@ def _end_complex_step3(x, y, d, env, up, p, b, side, row, col0, res, band):
         end_residual3(z, y, d, env, up, p, b, side, zout)
         for i in range(3):
             band[k3.UPPER + row + i - (col0 + q), col0 + q] = zout[i].imag / k.STEP
+
+
+# --- bending stiffness (:mod:`kanat.continuum.bending3d`): ten unknowns per node --------------------
+
+@kernel
+def _shear(y):
+    """``S = S_n n + S_b b`` in chart components (complex-capable)."""
+    t, n, b = k3.frame(y[4], y[5])
+    return (y[6] * n[0] + y[7] * b[0], y[6] * n[1] + y[7] * b[1], y[6] * n[2] + y[7] * b[2])
+
+
+@kernel
+def interval_residual3_bending(xl, xr, yl, yr, dl, dr, el, er, up, p, out):
+    """The ten rows of a cable interval with bending stiffness (bending3d docstring), complex-capable:
+    the flexible rows of the first six unknowns, then the rod's terms at the interval's midpoint."""
+    interval_residual3(xl[:6], xr[:6], yl[:6], yr[:6], dl[:6], dr[:6], el, er, up, p, out[:6])
+    kl = k.weighted(xl, yl, dl, p)[1]
+    kr = k.weighted(xr, yr, dr, p)[1]
+    kb = 0.5 * (kl + kr)
+    g = (kr - kl) / p[k.DS]
+    c, s = np.cos(kb[4]), np.sin(kb[4])
+    stretch = 1.0 + k.strain(kb[0], p)
+    sn, sb, mn, mb = kb[6], kb[7], kb[8], kb[9]
+    out[0] += sn * g[4] - sb * c * g[5]
+    out[1] += -g[6] + sb * s * g[5]
+    out[2] += -g[7] - sn * s * g[5]
+    out[6] = p[k.EI] * c * g[5] - mn
+    out[7] = p[k.EI] * g[4] - mb
+    out[8] = g[8] - mb * s * g[5] - stretch * sb
+    out[9] = g[9] + mn * s * g[5] + stretch * sn
+
+
+@kernel
+def junction_residual3_bending(xa, xb, ya, yb, da, db, ea, up, p, out):
+    """An inline body's ten rows with bending: the shear of both sides on it, ``M = 0`` at both nodes."""
+    junction_residual3(xa[:6], xb[:6], ya[:6], yb[:6], da[:6], db[:6], ea, up, p, out[:6])
+    ka = k.weighted(xa, ya, da, p)[1]
+    kb = k.weighted(xb, yb, db, p)[1]
+    sa, sb = _shear(ka), _shear(kb)
+    for i in range(3):
+        out[3 + i] -= sb[i] - sa[i]
+    out[6], out[7], out[8], out[9] = xa[8], xa[9], xb[8], xb[9]
+
+
+@kernel
+def end_residual3_bending(x, y, d, env, up, p, b, side, out):
+    """The five rows of one end with bending stiffness, complex-capable."""
+    kind = int(b[k3.B3_KIND])
+    if kind == k.FREE:
+        out[0], out[1], out[2], out[3], out[4] = x[0] / p[k.EA], x[6] / p[k.EA], x[7] / p[k.EA], \
+            x[8] / p[k.EA], x[9] / p[k.EA]
+        return
+    end_residual3(x[:6], y[:6], d[:6], env, up, p, b, side, out[:3])
+    if kind != k.VELOCITY:
+        kk = k.weighted(x, y, d, p)[1]
+        out[1] += side * kk[6]
+        out[2] += side * kk[7]
+    if kind == k.VELOCITY and b[k3.NBPAR3] != 0.0:
+        out[3], out[4] = x[4] - b[k3.NBPAR3 + 1], x[5] - b[k3.NBPAR3 + 2]
+    else:
+        out[3], out[4] = x[8], x[9]
+
+
+@kernel
+def jacobian_complex_step3_bending(x, y, d, env, up, P, b0, b1, res, band):
+    """The residual and Jacobian of :func:`bending3d.assemble3_bending`, every entry by complex step."""
+    n_nodes, nv = x.shape[0], 10
+    width = (band.shape[0] - 1) // 2
+    band[:, :] = 0.0
+    out = np.empty(nv)
+    zout = np.empty(nv, dtype=np.complex128)
+    zl = np.empty(nv, dtype=np.complex128)
+    zr = np.empty(nv, dtype=np.complex128)
+    for j in range(n_nodes - 1):
+        row = 5 + nv * j
+        junction = P[j, k.KIND] == k.JUNCTION
+        if junction:
+            junction_residual3_bending(x[j], x[j + 1], y[j], y[j + 1], d[j], d[j + 1], env[j], up, P[j], out)
+        else:
+            interval_residual3_bending(x[j], x[j + 1], y[j], y[j + 1], d[j], d[j + 1], env[j], env[j + 1], up,
+                                       P[j], out)
+        res[row:row + nv] = out
+        for side in range(2):
+            for q in range(nv):
+                zl[:] = x[j]
+                zr[:] = x[j + 1]
+                if side == 0:
+                    zl[q] += 1j * k.STEP
+                else:
+                    zr[q] += 1j * k.STEP
+                if junction:
+                    junction_residual3_bending(zl, zr, y[j], y[j + 1], d[j], d[j + 1], env[j], up, P[j], zout)
+                else:
+                    interval_residual3_bending(zl, zr, y[j], y[j + 1], d[j], d[j + 1], env[j], env[j + 1], up,
+                                               P[j], zout)
+                col = nv * (j + side) + q
+                for i in range(nv):
+                    band[width + row + i - col, col] = zout[i].imag / k.STEP
+    last = n_nodes - 1
+    for end in range(2):
+        node, side, row = (0, -1.0, 0) if end == 0 else (last, 1.0, nv * last + 5)
+        p, b = (P[0], b0) if end == 0 else (P[last - 1], b1)
+        o = np.empty(5)
+        zo = np.empty(5, dtype=np.complex128)
+        z = np.empty(nv, dtype=np.complex128)
+        end_residual3_bending(x[node], y[node], d[node], env[node], up, p, b, side, o)
+        res[row:row + 5] = o
+        for q in range(nv):
+            z[:] = x[node]
+            z[q] += 1j * k.STEP
+            end_residual3_bending(z, y[node], d[node], env[node], up, p, b, side, zo)
+            for i in range(5):
+                band[width + row + i - (nv * node + q), nv * node + q] = zo[i].imag / k.STEP

@@ -57,6 +57,13 @@ Loads. Write ``z_hat = z1 e1 + z2 e2 + z3 p`` (``z1 = e1.z_hat`` ...) and likewi
     f_n = -w0 z_n - 0.5 rho d C_n sqrt(v_r^2 + w_r^2) v_r sqrt(1 + e)
     f_b = -w0 z_b - 0.5 rho d C_n sqrt(v_r^2 + w_r^2) w_r sqrt(1 + e)
 
+Bending stiffness
+-----------------
+``derive(bending=True)`` adds the rod of :mod:`kanat.continuum.bending3d`: unknowns ``S_n, S_b,
+M_n, M_b`` (the shear ``S = S_n n + S_b b`` and moment ``M = M_n n + M_b b``), the force
+``T t + S`` in the momentum rows and four rows, ``EI t x t_s - M`` and ``dM/ds + (1 + e) t x F``
+projected on ``n`` and ``b`` (torsion left out); the tests compare the kernel's rows with them.
+
 Characteristic speeds and singularities
 ---------------------------------------
 ``det(K - lam M) = cos(phi) / EA * (m lam^2 - EA) (T - (m + m_a)(1 + e) lam^2)^2``,
@@ -83,6 +90,8 @@ import sympy as sp
 STATE_NAMES = ("T", "u", "v", "w", "phi", "theta")
 ROW_NAMES = ("momentum_t", "momentum_n", "momentum_b",
              "compatibility_t", "compatibility_n", "compatibility_b")
+BENDING_STATE_NAMES = STATE_NAMES + ("S_n", "S_b", "M_n", "M_b")
+BENDING_ROW_NAMES = ROW_NAMES + ("curvature_n", "curvature_b", "moment_n", "moment_b")
 TRIAD_TOLERANCE = 1e-9      # |p| = |e1| = 1 and p.e1 = 0 must hold to this (unit vectors given in floats)
 
 
@@ -192,21 +201,32 @@ def _loads(tv, nv, bv, T, u, v, w, constants, current, pole, e1):
     return f_t, f_n, f_b
 
 
-@lru_cache(maxsize=1)
-def derive() -> Derivation:
+@lru_cache(maxsize=2)
+def derive(bending: bool = False) -> Derivation:
     """Derive the six projected equations and their matrix form (module docstring).
 
     sympy differentiates the frame through ``phi(s, t)``, ``theta(s, t)``; the loads ``f``
     are built as ``f_t t + f_n n + f_b b`` and projected with the frame's Gram matrix.
     Cached: the first call takes about a second.
+
+    ``bending=True``: the rod of :mod:`kanat.continuum.bending3d`, ten unknowns
+    (:data:`BENDING_STATE_NAMES`, constants with ``EI`` last) and ten rows
+    (:data:`BENDING_ROW_NAMES`) from the vector equations with the force ``F = T t + S_n n + S_b b``
+    and the moment ``M = M_n n + M_b b``:
+
+        m dV/dt + m_a (dV/dt - (dV/dt . t) t) - dF/ds - f = 0       (momentum; t, n, b)
+        d/dt[(1 + e) t] - dV/ds                           = 0       (compatibility; t, n, b)
+        EI t x t_s - M                                    = 0       (curvature; n, b)
+        dM/ds + (1 + e) t x F                             = 0       (moment balance; n, b)
     """
     s, time = sp.symbols("s t", real=True)
-    fields = [sp.Function(name, real=True)(s, time) for name in STATE_NAMES]
-    T, u, v, w, phi, theta = fields
-    state = sp.symbols("T u v w phi theta", real=True)
-    rates = sp.symbols("T_t u_t v_t w_t phi_t theta_t", real=True)
-    slopes = sp.symbols("T_s u_s v_s w_s phi_s theta_s", real=True)
-    constants = sp.symbols("m m_a EA w_0 rho d C_n C_t", positive=True)
+    names = BENDING_STATE_NAMES if bending else STATE_NAMES
+    fields = [sp.Function(name, real=True)(s, time) for name in names]
+    T, u, v, w, phi, theta = fields[:6]
+    state = sp.symbols(" ".join(names), real=True)
+    rates = sp.symbols(" ".join(f"{name}_t" for name in names), real=True)
+    slopes = sp.symbols(" ".join(f"{name}_s" for name in names), real=True)
+    constants = sp.symbols("m m_a EA w_0 rho d C_n C_t" + (" EI" if bending else ""), positive=True)
     current = sp.symbols("U_x U_y U_z", real=True)
     pole = sp.symbols("p_x p_y p_z", real=True)
     e1 = sp.symbols("e1_x e1_y e1_z", real=True)
@@ -216,13 +236,21 @@ def derive() -> Derivation:
     tv, nv, bv = frame
     V = u * tv + v * nv + w * bv
     acc = V.diff(time)
-    momentum = m * acc + m_a * (acc - acc.dot(tv) * tv) - (T * tv).diff(s)
+    force = T * tv
+    if bending:
+        force = force + fields[6] * nv + fields[7] * bv
+    momentum = m * acc + m_a * (acc - acc.dot(tv) * tv) - force.diff(s)
     compatibility = ((1 + T / EA) * tv).diff(time) - V.diff(s)
     kinematic = [_reduce(vec.dot(axis)) for vec in (momentum, compatibility) for axis in frame]
+    if bending:
+        moment = fields[8] * nv + fields[9] * bv
+        curvature = constants[8] * tv.cross(tv.diff(s)) - moment
+        balance = moment.diff(s) + (1 + T / EA) * tv.cross(force)
+        kinematic += [_reduce(vec.dot(axis)) for vec in (curvature, balance) for axis in (nv, bv)]
 
     # f = f_t t + f_n n + f_b b projected on (t, n, b) through the frame's Gram matrix,
     # which sympy reduces to the identity (orthonormality is derived, not assumed).
-    loads = _loads(tv, nv, bv, T, u, v, w, constants, current, pole, e1)
+    loads = _loads(tv, nv, bv, T, u, v, w, constants[:8], current, pole, e1)
     gram = [[_reduce(a.dot(b)) for b in frame] for a in frame]
     f = [sum(gram[i][j] * loads[j] for j in range(3)) for i in range(3)]
     rows = [kinematic[i] - f[i] for i in range(3)] + kinematic[3:]
@@ -311,12 +339,31 @@ def frame(phi, theta, pole, e1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return t, n, b
 
 
-@lru_cache(maxsize=1)
-def _lambdified():
-    """One numpy function of all 26 arguments returning the 78 entries of ``M, K, F``."""
-    d = derive()
+@lru_cache(maxsize=2)
+def _lambdified(bending: bool = False):
+    """One numpy function of all arguments returning the entries of ``M, K, F`` (78; 210 with bending)."""
+    d = derive(bending)
     entries = list(d.M) + list(d.K) + list(d.F)
     return sp.lambdify(d.arguments, entries, modules="numpy", cse=True)
+
+
+def numeric_bending_system(pole, e1):
+    """As :func:`numeric_system` for the rod (``derive(bending=True)``): ``system(Y, constants,
+    bending_stiffness, current) -> (M, K, F)`` with ``Y`` (..., 10) in the order of
+    :data:`BENDING_STATE_NAMES`, ``M, K`` (..., 10, 10) and ``F`` (..., 10)."""
+    a1, _, p = triad(pole, e1)
+    fun = _lambdified(True)
+
+    def system(state, constants: CableConstants, bending_stiffness: float, current=(0.0, 0.0, 0.0)):
+        Y = np.asarray(state, dtype=float)
+        U = np.asarray(current, dtype=float)
+        shape = np.broadcast_shapes(Y.shape[:-1], U.shape[:-1])
+        args = [*np.moveaxis(Y, -1, 0), *constants.values(), bending_stiffness, *np.moveaxis(U, -1, 0), *p, *a1]
+        out = np.stack([np.broadcast_to(np.asarray(x, dtype=float), shape) for x in fun(*args)], axis=-1)
+        return (out[..., :100].reshape(shape + (10, 10)), out[..., 100:200].reshape(shape + (10, 10)),
+                out[..., 200:])
+
+    return system
 
 
 def numeric_system(pole, e1):

@@ -1,8 +1,9 @@
 """The spatial continuum cable: its data, its state and one Newton step (SPEC §2.2–2.4).
 
 Same structure as the planar model (:mod:`model2d`, :mod:`stepper`) with six unknowns per
-node and the angles in a chart (:mod:`chart`) that the step re-charts when a tangent nears
-its pole. Vectors are global (x, y, z) outside the kernels and chart coordinates inside.
+node (ten with bending stiffness: :mod:`bending3d`) and the angles in a chart (:mod:`chart`)
+that the step re-charts when a tangent nears its pole. Vectors are global (x, y, z) outside
+the kernels and chart coordinates inside.
 """
 from __future__ import annotations
 
@@ -13,7 +14,8 @@ from scipy.linalg import solve_banded
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
-from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
+from kanat.continuum import bending3d
+from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch
 from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, step_rows
@@ -37,13 +39,19 @@ class SpatialEnd:
     wave_mass: float = 0.0
     waterplane: float = 0.0
     height: float = 0.0
+    clamped: bool = False
+    tangent: tuple = (1.0, 0.0, 0.0)
 
     def array(self, velocity, chart: np.ndarray, density: float, eta: float = 0.0, payout: float = 0.0) -> np.ndarray:
-        """Kernel end vector (kernels3d.NBPAR3), vectors rotated into ``chart``."""
+        """Kernel end vector (bending3d.NBPAR3_BENDING: kernels3d.NBPAR3 and the clamp), vectors rotated
+        into ``chart``. ``clamped`` (with bending stiffness) holds the cable's global unit ``tangent``
+        there instead of leaving the end moment-free: its angles in ``chart`` (no case key clamps one)."""
         v = np.asarray(velocity, dtype=float) @ chart
         f = np.asarray(self.force, dtype=float) @ chart
+        phi, theta = angles(np.asarray([self.tangent], dtype=float), chart)
         return np.array([self.kind, *v, self.mass, self.net_buoyancy, 0.5 * density * self.drag_area, *f,
-                         self.wave_mass, self.waterplane, self.height, eta, payout])
+                         self.wave_mass, self.waterplane, self.height, eta, payout, float(self.clamped), phi[0],
+                         theta[0]])
 
 
 @dataclass(frozen=True)
@@ -63,10 +71,15 @@ class SpatialCable(CableGrid):
     seabed: SeabedContact | None = None
     winch: object = None
 
+    @property
+    def nv(self) -> int:
+        """Unknowns per node: 6 (10 with bending stiffness, :mod:`kanat.continuum.bending3d`)."""
+        return 10 if self.grid is not None and self.grid.bending else 6
+
 
 @dataclass(frozen=True)
 class SpatialState:
-    """The spatial cable at one instant: ``y`` (N+1, 6) and ``rate`` in ``chart``, ``xyz`` global;
+    """The spatial cable at one instant: ``y`` (N+1, nv) and ``rate`` in ``chart``, ``xyz`` global;
     ``rows`` the interval rows and ``s`` the nodes' material arclength when they change in time (a winch)."""
 
     t: float
@@ -89,34 +102,47 @@ def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin, ro
 
 
 def spatial_scales(cable, y) -> np.ndarray:
-    """Increment scales (6,): tension, three speeds, two angles."""
+    """Increment scales (nv,): tension, three speeds, two angles (and two shears, two moments with
+    bending stiffness)."""
     tension = max(np.max(np.abs(y[:, 0])), abs(cable.params[k.W0]) * cable.length, 1.0)
     speed = max(np.max(np.abs(y[:, 1:4])), 1.0)
+    if y.shape[1] == bending3d.NV:
+        moment = tension * cable.length
+        return np.array([tension, speed, speed, speed, 1.0, 1.0, tension, tension, moment, moment])
     return np.array([tension, speed, speed, speed, 1.0, 1.0])
+
+
+def kernel_of(nv: int):
+    """``(assemble, bandwidth)`` of the kernels for ``nv`` unknowns per node: :func:`kernels3d.assemble3`
+    (6), or with bending stiffness :func:`bending3d.assemble3_bending` (10), compiled only when used."""
+    if nv == bending3d.NV:
+        return bending3d.assemble3_bending, bending3d.WIDTH
+    return k3.assemble3, k3.UPPER
 
 
 def _solve(cable, x0, y, rate, env, up, P, b0, b1):
     x = x0.copy()
-    n = x.size
-    res, band = np.empty(n), np.empty((k3.LOWER + k3.UPPER + 1, n))
+    n, nv = x.size, x.shape[1]
+    assemble, width = kernel_of(nv)
+    res, band = np.empty(n), np.empty((2 * width + 1, n))
     scale = np.tile(spatial_scales(cable, y), len(x))
     extras = cable.extras()
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k3.assemble3(x, y, rate, env, up, P, b0, b1, res, band, extras)
+        assemble(x, y, rate, env, up, P, b0, b1, res, band, extras)
         if not np.all(np.isfinite(res)):
-            raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // 6))
+            raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         try:
-            dx = solve_banded((k3.LOWER, k3.UPPER), band, -res, check_finite=False)
+            dx = solve_banded((width, width), band, -res, check_finite=False)
         except (np.linalg.LinAlgError, ValueError):
-            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // 6)) from None
+            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv)) from None
         x += dx.reshape(x.shape)
         size = np.max(np.abs(dx) / scale)
         if converged(size, previous):
             return x, iteration
         previous = size
     raise NewtonFailure(f"Newton did not converge in {MAX_ITERATIONS} iterations",
-                        int(np.argmax(np.abs(dx) / scale) // 6))
+                        int(np.argmax(np.abs(dx) / scale) // nv))
 
 
 def velocities3(y: np.ndarray, chart: np.ndarray) -> np.ndarray:
@@ -184,7 +210,7 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
 
 
 def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocities, xyz) -> np.ndarray:
-    """The discrete steady state (no inertia) in ``chart``, from ``guess`` (N+1, 6); with a seabed or
+    """The discrete steady state (no inertia) in ``chart``, from ``guess`` (N+1, nv); with a seabed or
     a surface buoy, Newton on the dense system (:mod:`kanat.continuum.steady`)."""
     rows = cable.rows()
     P = chart_rows(step_rows(rows, (0.0, 0.0, 1.0), 1.0, inertia=0.0), cable, chart)
@@ -207,13 +233,15 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
         e[:, k3.RX3:k3.RX3 + 3] = r @ chart
         return e, r @ chart
 
+    assemble, width = kernel_of(guess.shape[1])
+
     def residual(x, e):
-        res, band = np.empty(x.size), np.empty((k3.LOWER + k3.UPPER + 1, x.size))
-        k3.assemble3(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band, cable.extras())
+        res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
+        assemble(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band, cable.extras())
         return res, band
 
     def derivative(x):
-        n = len(x)
+        n, nv = x.shape
         left, right = interval_stretch(x[:, 0], rows)
         from kanat.continuum.stepper import interval_compliance
 
@@ -222,14 +250,14 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
         t, nn, b = t @ chart, nn @ chart, b @ chart            # chart coordinates
         cp = np.cos(x[:, 4])
         half = 0.5 * rows[:, k.DS]
-        a = np.zeros((n, 3, n * 6))
+        a = np.zeros((n, 3, n * nv))
         i = np.arange(n - 1)
         for node, stretch, flex in ((i, left, flex_l), (i + 1, right, flex_r)):
             for c in range(3):
-                a[i + 1, c, 6 * node] = half * flex * t[node, c]
-                a[i + 1, c, 6 * node + 4] = half * stretch * nn[node, c]
-                a[i + 1, c, 6 * node + 5] = -half * stretch * cp[node] * b[node, c]
+                a[i + 1, c, nv * node] = half * flex * t[node, c]
+                a[i + 1, c, nv * node + 4] = half * stretch * nn[node, c]
+                a[i + 1, c, nv * node + 5] = -half * stretch * cp[node] * b[node, c]
         return np.cumsum(a, axis=0)
     target = np.asarray(cable.end.position, dtype=float) @ chart if anchored else None
     return steady_with_positions(guess, layout, tuple(range(k3.RX3, k3.RX3 + 3)), residual, derivative,
-                                 spatial_scales(cable, guess), (4, 5), k3.UPPER, target, (0, 4, 5))
+                                 spatial_scales(cable, guess), (4, 5), width, target, (0, 4, 5))

@@ -261,19 +261,6 @@ def _inline_surface_buoys(case: Case) -> list[Use]:
             for j, a in enumerate(c.attachments) if a.body in case.bodies and case.bodies[a.body].surface_buoy is not None]
 
 
-def _bending_in_3d(case: Case) -> list[Use]:
-    """Bending stiffness in a continuum run that leaves the x-z plane (the 3-D model has none)."""
-    from .plane import out_of_plane
-
-    sim = case.simulation
-    wanted = sim.dimensions if sim is not None else "auto"
-    if wanted == 2 or (wanted == "auto" and not out_of_plane(case)):
-        return []
-    used = {t for c in case.cables for t in c.line_types}
-    return [(("line_types", name, "bending_stiffness"), "") for name, line in case.line_types.items()
-            if name in used and line.bending_stiffness > 0]
-
-
 def _vessel_motion(case: Case) -> list[Use]:
     return [(("vessel", "motion"), "")] if case.vessel.motion.is_used else []
 
@@ -414,9 +401,6 @@ FEATURES: tuple[Feature, ...] = (
             statics=IGNORED, continuum=YES, lumped=NO,
             note={"statics": "statics finds the steady shape of a perfectly flexible line (the continuum "
                              "model starts from it and adds the bending)"}),
-    Feature("bending_3d", "bending stiffness in a 3-D run", _bending_in_3d,
-            statics=YES, continuum=NO, lumped=YES, pitch=YES,
-            note="the continuum model carries bending stiffness in the x-z plane only"),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
             statics=IGNORED, continuum=YES, lumped=YES,
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),
