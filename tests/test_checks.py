@@ -113,6 +113,11 @@ BAD = {
     "regular wave steeper than 1/7": (
         "period: 8.0", "period: 1.0", "environment.waves.height", "warning", "waves:",
         ["height 2 m over the wavelength 1.561 m", "steepness of 1.28", "1/7"]),
+    "one wave component steeper than 1/7": (
+        "waves: {type: regular, height: 2.0, period: 8.0}",
+        "waves: {type: components, components: [[0.7854, 1.0, 0, 0], [6.283185307, 1.0, 0, 0]]}",
+        "environment.waves.components", "warning", "waves:",
+        ["components 2 m over the wavelength 1.561 m", "period 2 pi/omega 1 s", "steepness of 1.28"]),
     "towed cable without a track": (
         "  track:\n    - {straight: {speed: 2.0, duration: 100}}\n", "  tow_point: [0, 0, 0]\n",
         "vessel.track", "warning", "vessel:", ["vessel has no track", "0 m/s"]),

@@ -273,6 +273,10 @@ def check_waves(case: Case, out: Findings) -> None:
         height, period, keys = waves.height, waves.period, ("height", "period")
     elif isinstance(waves, JonswapWaves):
         height, period, keys = waves.hs, waves.tp, ("hs", "tp")
+    elif waves is not None:        # components: the steepest one, as a regular wave of height 2a
+        omega, amplitude = max(waves.components, key=lambda row: row[1] / wavelength(2 * math.pi / row[0],
+                                                                                         env.gravity, env.depth))[:2]
+        height, period, keys = 2 * amplitude, 2 * math.pi / omega, ("components", "period 2 pi/omega")
     else:
         return
     length = wavelength(period, env.gravity, env.depth)
