@@ -74,16 +74,17 @@ def test_the_continuum_start_is_the_steady_state_the_shooting_guess_gives(exampl
     assert np.max(np.abs(marched.xz - shot.xz)) < 1e-12 * case.cables[0].length
 
 
-RUN_PATH = ("scipy.integrate", "scipy.optimize", "xarray", "kanat.statics.driver")
+RUN_PATH = ("scipy.integrate", "scipy.optimize", "xarray", "kanat.statics.driver", "kanat.io.moordyn")
 """Modules a plain 2-D run does not need: SciPy's solvers (the statics of the start), xarray (the
-result is streamed by h5netcdf) and the statics driver."""
+result is streamed by h5netcdf), the statics driver and the MoorDyn reader (a YAML case)."""
 
 
-def test_a_plain_run_does_not_import_the_statics_solvers(tmp_path):
+@pytest.mark.parametrize("verb", ["run", "validate"])
+def test_a_plain_run_and_its_validation_import_no_solver_they_do_not_use(verb, tmp_path):
+    command = [verb, str(EXAMPLES / "speed_step_2d.yaml")] + (["-o", str(tmp_path / "out.nc")] if verb == "run" else [])
     code = ("import sys; from kanat.cli import app\n"
             "try:\n    app(%r)\nexcept SystemExit as done:\n    assert not done.code, done.code\n"
-            "print(' '.join(m for m in %r if m in sys.modules))"
-            % (["run", str(EXAMPLES / "speed_step_2d.yaml"), "-o", str(tmp_path / "out.nc")], RUN_PATH))
+            "print('imported:', *(m for m in %r if m in sys.modules))" % (command, RUN_PATH))
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr
-    assert done.stdout.splitlines()[-1] == "", f"imported on the run path: {done.stdout.splitlines()[-1]}"
+    assert done.stdout.splitlines()[-1] == "imported:", done.stdout.splitlines()[-1]

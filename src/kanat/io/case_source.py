@@ -12,7 +12,7 @@ from pathlib import Path as FilePath
 
 from ..errors import Problem
 from ..model import Case
-from .moordyn import looks_like_moordyn, moordyn_document
+from .moordyn_text import looks_like_moordyn
 from .tables import resolve_tables
 from .yaml_loader import YamlDocument, load_yaml
 
@@ -43,6 +43,8 @@ def read_document(text: str, file: str | None = None) -> YamlDocument:
         Its path: names problems; relative table files are read next to it.
     """
     if looks_like_moordyn(text):
+        from .moordyn import moordyn_document       # the MoorDyn reader, only for MoorDyn files
+
         return moordyn_document(text, file)
     doc = load_yaml(text, file)
     if doc.refused:  # too large, binary, too deep, billion laughs: its own message says why
