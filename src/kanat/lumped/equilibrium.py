@@ -3,8 +3,12 @@ speed, current and the mean (wave-free) surface.
 
 In the frame moving with the vessel's initial velocity ``U`` every node moves at ``U``;
 the free node positions ``q`` solve ``F(q) = 0`` (:class:`~kanat.lumped.system.LumpedSystem`
-with ``steady_velocity = U``). Slack cables make the tangent singular, so Newton's method
-is regularized as a pseudo-transient continuation (implicit dynamic relaxation; Kelley &
+with ``steady_velocity = U``). Newton's method is first run on the taut residual, where slack
+elements resist compression (:mod:`kanat.lumped.taut_newton`): from a start near the
+equilibrium it converges in a few iterations where a stiff chain sits at strains of 1e-5 and
+every iterate leaves some of its elements slack. If that does not meet the tolerance (a
+start far off, or a line that is slack at the equilibrium), slack cables make the tangent
+singular, so Newton's method is regularized as a pseudo-transient continuation (implicit dynamic relaxation; Kelley &
 Keyes 1998, SIAM J. Numer. Anal. 35, 508)::
 
     (1)  (M / dtau^2 - dF/dq) dq = F(q),    dtau_k+1 = dtau_k ||F_k-1|| / ||F_k||   (SER)
@@ -23,6 +27,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.lumped.system import LumpedSystem
+from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
 
 MAX_ITERATIONS = 400
 DIRECT_ITERATIONS = 150        # before stiffness continuation takes over
@@ -68,9 +73,9 @@ def distance2_colouring(net) -> np.ndarray:
     return colour
 
 
-def _jacobian(system, t, xf, colour, step, neighbours_of):
-    """Sparse ``dF/dq`` (3 n_free square) by coloured central differences."""
-    free = system.free_index
+def _jacobian(force, free, xf, colour, step, neighbours_of):
+    """Sparse ``dF/dq`` (3 n_free square) of ``force(xf)`` by coloured central differences;
+    ``free`` the free nodes' indices."""
     position = {node: k for k, node in enumerate(free)}
     rows, cols, vals = [], [], []
     zero = np.zeros_like(xf)
@@ -79,7 +84,7 @@ def _jacobian(system, t, xf, colour, step, neighbours_of):
         for r in range(3):
             dx = zero.copy()
             dx[group, r] = step
-            dF = (system.acceleration_free_force(t, xf + dx) - system.acceleration_free_force(t, xf - dx)) / (2 * step)
+            dF = (force(xf + dx) - force(xf - dx)) / (2 * step)
             for k in group:
                 for node in neighbours_of[free[k]]:
                     if node in position:
@@ -208,7 +213,8 @@ def _solve(net, case, x0, velocity, max_iterations):
     x : ndarray, shape (n, 3)
         Equilibrium positions (prescribed nodes at their t = 0 places).
     info : dict
-        ``iterations``, ``residual`` [N]; ``loads`` (n, 3), the nodal forces at the solution
+        ``iterations``, ``residual`` [N], ``taut_iterations`` (those of the taut phase that
+        solved it, or 0); ``loads`` (n, 3), the nodal forces at the solution
         (eq. (1) without inertia: the prescribed nodes' are the pull they must resist), and
         ``normal_force`` (n,), the seabed's push on each node [N].
 
@@ -221,20 +227,23 @@ def _solve(net, case, x0, velocity, max_iterations):
         velocity = LumpedSystem(net, case, waves=False).vessel(0.0)[1]
     system = LumpedSystem(net, case, waves=False, steady_velocity=velocity)
     forces = _SteadyForces(system)
-    system.acceleration_free_force = lambda t, xf: forces(t, xf)[0]
+    free = system.free_index
     colour = distance2_colouring(net)
     neighbours = node_graph(net)
-    xf = np.array((net.x_guess if x0 is None else x0)[system.free_index], dtype=float)
+    xf = np.array((net.x_guess if x0 is None else x0)[free], dtype=float)
     tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)
     step = FD_STEP * length
+    taut = _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours)
+    if taut is not None:
+        return _finish(net, system, *taut)
     dtau = INITIAL_PSEUDO_PERIOD * np.sqrt(np.max(net.el_length) * len(net.el_length) / case.environment.gravity)
     F, M = forces(0.0, xf)
     norm = np.max(np.abs(F))
     for iteration in range(1, max_iterations + 1):
         if norm <= tolerance:
             break
-        J = _jacobian(system, 0.0, xf, colour, step, neighbours)
+        J = _jacobian(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
         trials = [t for t in (_pseudo_transient(J, M, F, xf, forces, length, dtau, norm),
                               _newton(J, F, xf, forces, length)) if t is not None]
         trial = min(trials, key=lambda t: np.max(np.abs(t[1]))) if trials else None   # the better of the two
@@ -255,10 +264,36 @@ def _solve(net, case, x0, velocity, max_iterations):
                           f"(largest force residual {norm:.3g} N near {net.where(worst)}); give bodies "
                           "and points a 'position' near their expected place, or use "
                           "simulation.initial_state: as_given")
+    return _finish(net, system, xf, iteration, {"taut_iterations": 0})
+
+
+def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours):
+    """:func:`kanat.lumped.taut_newton.taut_newton` from ``xf``: ``(xf, iterations, info)`` or None."""
+    free = system.free_index
+    stiffness = onset_stiffness(net)
+    zero = np.zeros_like(xf)
+
+    def taut_forces(q):
+        F = forces(0.0, q)[0]
+        return F + compression_forces(net, system.full(0.0, q, zero)[0], stiffness)[free]
+
+    def jacobian(q):
+        return _jacobian(taut_forces, free, q, colour, FD_STEP * np.min(net.el_length), neighbours)
+
+    solved = taut_newton(lambda q: forces(0.0, q)[0], jacobian, xf, tolerance,
+                         MAX_STEP_FRACTION * np.min(net.el_length), SeabedGuard(net, case, free), taut_forces)
+    if solved is None:
+        return None
+    return solved[0], solved[1], {"taut_iterations": solved[1]}
+
+
+def _finish(net, system, xf, iterations, extra):
+    """The equilibrium's positions (n, 3) and info (:func:`_solve`)."""
     x = net.x_guess.copy()
     x[system.free_index] = xf
     system.prescribed(0.0, x, np.zeros_like(x))
     full, v, _, heading = system.full(0.0, xf, np.zeros_like(xf))
     loads, _ = system.loads(0.0, full, v, heading)
-    return x, {"iterations": iteration, "residual": float(norm), "loads": loads,
-               "normal_force": system.normal_force.copy()}
+    residual = float(np.max(np.abs(loads[system.free_index])))
+    return x, {"iterations": iterations, "residual": residual, "loads": loads,
+               "normal_force": system.normal_force.copy(), **extra}
