@@ -5,9 +5,9 @@ statics of the cable (:mod:`kanat.continuum.models`). That guess need not be the
 statics: the box equations differ from the continuous ones by ``O(ds^2)`` anyway, and Newton
 corrects both the same way. For a cable ending at a body, the statics is a march from the
 body (where the tension is the body's load) to the fixed end, and classical RK4 with steps of at
-most :data:`MAX_STEP` of the length, in NumPy, gives it to about ``1e-8`` of the tension in a few
-milliseconds, without SciPy's ODE solver and root finders (whose imports cost a run more than
-the march and the steady Newton together). With a current varying with depth, the body's depth
+most :data:`MAX_STEP` of the length, in Python floats, follows the shooting solver to about
+``1e-6`` of the tension and ``1e-7`` of the length on the examples, in 1.5-5.5 ms against its
+60 ms, without SciPy's ODE solver and root finders (whose imports cost a run 0.2 s of CPU). With a current varying with depth, the body's depth
 is found by the secant method, as :mod:`kanat.statics.shooting` does.
 
 Whatever the march cannot give (both ends fixed, a slack cable, a body depth not found) is
@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from kanat.statics.problem import BodyEnd, CableBVP, steady_rhs
+from kanat.statics.problem import BodyEnd, CableBVP
 from kanat.statics.solution import CableSolution
 
 MAX_STEP = 1.0 / 200.0
@@ -29,6 +29,7 @@ MIN_TENSION = 1e-9
 DEPTH_TOLERANCE = 1e-9
 """The secant on the body's depth stops when the fixed end is met within this fraction of the length."""
 MAX_SECANT = 50
+"""Most evaluations of the secant on the body's depth (the shooting solver's own limit)."""
 
 
 def steady_guess(problem: CableBVP, s_out) -> CableSolution:
