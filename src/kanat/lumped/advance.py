@@ -71,6 +71,9 @@ class FusedArrays:
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
                        np.zeros((n, 3, 3)))
         self.band = np.zeros((3 * len(system.free_index), 2 * self.bandwidth + 1))
+        self.tangent = np.zeros(3)          # fast_implicit.steps: the step of the factors in band (0: none), and
+        self.in_contact = np.zeros(n, dtype=np.bool_)             # the time and step of the history previous
+        self.previous = np.zeros((len(system.free_index), 3))
 
 
 def sea_arrays(sea) -> tuple:
@@ -126,6 +129,10 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
         return state, steps
     state = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
     taken = 0
+    if isinstance(scheme, GeneralizedAlphaLumped):        # each call starts afresh: a run resumed from a
+        arrays = _arrays(system)                           # checkpoint takes the very same iterations
+        arrays.tangent[:] = 0.0
+        arrays.in_contact[:] = False
     while taken < steps and isinstance(scheme, ABM4) and len(state["history"]) < 4:
         state = scheme.step(system, state, h)                     # RK4 start-up, in Python
         tracker.update(state["t"], tensions(state))
@@ -172,7 +179,7 @@ def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool
     done, iterations, count, failed = fast_implicit.steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
         arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
-        arrays.blocks, arrays.band, tracker.kernel_arrays(), arrays.events)
+        arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events)
     tracker.absorb(arrays.events[:count].copy())
     state.update(t=t0 + done * h, x=x, v=v, a=a, iterations=state["iterations"] + iterations)
     system.evaluations += iterations

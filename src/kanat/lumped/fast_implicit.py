@@ -8,8 +8,10 @@ force evaluation (:func:`kanat.lumped.fast.loads`), the tangent blocks
 tangent is stored as a band matrix over the free nodes in a bandwidth-reducing order
 (reverse Cuthill–McKee, :func:`band_order`) and factorized by LU without pivoting — the
 matrix is dominated by its mass blocks, and its geometric and drag parts are positive
-semidefinite — at ``O(n b^2)``. (A chord iteration, reusing a step's first factors, needed
-twice the iterations on moorings: each iteration is full Newton.) A step whose Newton iteration fails is
+semidefinite — at ``O(n b^2)``. The iteration is modified Newton (:func:`newton_step`): the
+factors are reused across iterations and steps while they contract the increments fast, and
+rebuilt where they do not or where the seabed contact changed, so most iterations cost a force
+evaluation and a band substitution. A step whose Newton iteration fails is
 handed back; :mod:`kanat.lumped.advance` then takes it with the Python scheme, which halves it.
 The Python path is this module's twin (tests).
 """
@@ -24,6 +26,8 @@ from kanat.lumped import fast, kernels
 from kanat.physics.contact import contact_tangent
 
 ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
+CONTRACTION = 0.1           # an increment above this fraction of the one before rebuilds the tangent (0.25: 15 %
+                            # more iterations on the three-leg mooring at 0.0125 s; a rebuild costs ~4 iterations)
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -65,14 +69,16 @@ def band_add(A, bw, pi, pj, block, scale):
 
 @kernel
 def band_factor(A, bw):
-    """LU factors of ``A`` (band storage (n, 2 bw + 1)) in place, without pivoting. Returns False on
-    a zero or non-finite pivot."""
+    """LU factors of ``A`` (band storage (n, 2 bw + 1)) in place, without pivoting, the diagonal
+    holding the pivots' reciprocals (the substitution then multiplies). Returns False on a zero or
+    non-finite pivot."""
     n = A.shape[0]
     for k in range(n):
         pivot = A[k, bw]
         if pivot == 0.0 or not np.isfinite(pivot):
             return False
         inv = 1.0 / pivot
+        A[k, bw] = inv
         top = min(n, k + bw + 1)
         for i in range(k + 1, top):
             factor = A[i, k - i + bw] * inv
@@ -89,14 +95,16 @@ def band_factor(A, bw):
 def band_substitute(A, bw, b):
     """Solve ``L U x = b`` in place with the factors of :func:`band_factor`."""
     n = A.shape[0]
-    for k in range(n):
-        for i in range(k + 1, min(n, k + bw + 1)):
-            b[i] -= A[i, k - i + bw] * b[k]
+    for i in range(1, n):                         # row by row: L's row i is A[i, :bw] (contiguous)
+        s = b[i]
+        for k in range(max(0, i - bw), i):
+            s -= A[i, k - i + bw] * b[k]
+        b[i] = s
     for k in range(n - 1, -1, -1):
         s = b[k]
         for j in range(k + 1, min(n, k + bw + 1)):
             s -= A[k, j - k + bw] * b[j]
-        b[k] = s / A[k, bw]
+        b[k] = s * A[k, bw]
 
 
 @kernel
@@ -161,20 +169,44 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
 
 
 @inner
+def contact_changed(contact, normal_force, in_contact):
+    """Whether a node touched or left the seabed since ``in_contact`` was recorded (then record it);
+    False (and nothing compiled) when ``contact`` is None."""
+    changed = False
+    if contact is not None:
+        for a in range(normal_force.shape[0]):
+            now = normal_force[a] > 0.0
+            if now != in_contact[a]:
+                in_contact[a] = now
+                changed = True
+    return changed
+
+
+@inner
 def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_pos, vm_vel, vm_head,
-                position, bw, nodes, el, bodies, env, work, blocks, A, out_x, out_v, out_a):
-    """One generalized-α step (implicit.py eqs. 1-3); returns the Newton iterations used, or
-    ``-iterations`` when it did not converge."""
+                position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, out_x, out_v, out_a):
+    """One generalized-α step (implicit.py eqs. 1-3) by modified Newton from the predictor in
+    ``out_a``; returns the iterations used, or ``-iterations`` when it did not converge.
+
+    The factors of eq. (3) in ``A`` are kept across iterations and steps (``tangent[0]`` holds
+    the step they were built for, 0 for none) and rebuilt at the current iterate only where they
+    no longer serve: a new step size, a node that touched or left the seabed (its contact
+    stiffness is many times its inertia term), or an increment larger than :data:`CONTRACTION`
+    times the one before (the tangent has drifted from the state). With the contraction rate
+    ``q = |da_k| / |da_k-1|`` of two increments under one matrix, the iterate's remaining error
+    is estimated as ``q / (1 - q) |da_k|`` (Hairer & Wanner, Solving ODEs II, 2nd ed., IV.8
+    eq. 8.10); the step is accepted when that estimate, or the increment itself, is below
+    ``tolerance * max(1 m/s^2, max |a_1|)`` — the criterion of the full Newton in implicit.py,
+    which the converged steps therefore match to the tolerance."""
     am, af, gamma, beta = coefficients
     nf = x0.shape[0]
     free_index = nodes[0]
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
     F, M = work[2], work[3]
-    a1 = out_a
-    for f in range(nf):
-        for r in range(3):
-            a1[f, r] = a0[f, r]
+    a1 = out_a                                             # holds the predictor on entry
     tm = t + (1.0 - af) * h
+    refresh = tangent[0] != h
+    previous = 0.0
     for iteration in range(1, max_iterations + 1):
         for f in range(nf):
             for r in range(3):
@@ -192,11 +224,19 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
                     s += M[node, fast.PACKED[r][q]] * ((1.0 - am) * a1[f, q] + am * a0[f, q])
                 rhs[3 * p + r] = -s
         if not fast.finite(rhs):
+            tangent[0] = 0.0
             return -iteration
-        assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
-                 (1.0 - af) * beta * h * h)
-        if not band_solve(A, bw, rhs):
-            return -iteration
+        if contact_changed(bodies[8], work[18], in_contact):
+            refresh = True
+        refreshed = refresh
+        if refresh:
+            assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
+                     (1.0 - af) * beta * h * h)
+            tangent[0] = h if band_factor(A, bw) else 0.0
+            if tangent[0] == 0.0:
+                return -iteration
+            refresh = False
+        band_substitute(A, bw, rhs)
         biggest, scale = 0.0, ACCELERATION_SCALE
         for f in range(nf):
             p = position[free_index[f]]
@@ -204,21 +244,33 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
                 a1[f, r] += rhs[3 * p + r]
                 biggest = max(biggest, abs(rhs[3 * p + r]))
                 scale = max(scale, abs(a1[f, r]))
-        if biggest <= tolerance * scale:
+        measured = iteration > 1 and not refreshed              # the same iteration matrix as the last increment
+        rate = biggest / previous if measured else 1.0
+        if biggest <= tolerance * scale or (rate < 1.0 and rate / (1.0 - rate) * biggest <= tolerance * scale):
             for f in range(nf):
                 for r in range(3):
                     out_x[f, r] = x0[f, r] + h * v0[f, r] + h * h * ((0.5 - beta) * a0[f, r] + beta * a1[f, r])
                     out_v[f, r] = v0[f, r] + h * ((1.0 - gamma) * a0[f, r] + gamma * a1[f, r])
             return iteration
+        if measured and rate > CONTRACTION:
+            refresh = True
+        previous = biggest
+    tangent[0] = 0.0
     return -max_iterations
 
 
 @kernel
 def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
-          position, bw, nodes, el, bodies, env, work, blocks, A, snap, events):
+          position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, previous, snap, events):
     """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
     Returns (steps done, Newton iterations, events, failed): it stops before a step whose
-    Newton iteration fails, before the event buffer could overflow, or on a non-finite state."""
+    Newton iteration fails, before the event buffer could overflow, or on a non-finite state.
+
+    ``tangent`` (3,): the step of the factors in ``A`` (:func:`newton_step`), and the time and
+    step of the acceleration history ``previous`` (the acceleration one step before that time);
+    ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
+    calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
+    state and step, else ``a_1 = a``."""
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
     y = np.empty(6 * nf)
@@ -226,16 +278,23 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     for step in range(count):
         if n_events + work[4].shape[0] > events.shape[0]:
             return step, iterations, n_events, False
+        t = t0 + step * h
+        extrapolate = tangent[1] == t and tangent[2] == h        # previous holds a(t - h)
+        for f in range(nf):
+            for r in range(3):
+                na[f, r] = 2.0 * a[f, r] - previous[f, r] if extrapolate else a[f, r]
         used = newton_step(t0 + step * h, h, coefficients, max_iterations, tolerance, x, v, a,
                            mid_samples[0][step], mid_samples[1][step], mid_samples[2][step],
-                           position, bw, nodes, el, bodies, env, work, blocks, A, nx, nv, na)
+                           position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, nx, nv, na)
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
         for f in range(nf):
             for r in range(3):
+                previous[f, r] = a[f, r]
                 x[f, r], v[f, r], a[f, r] = nx[f, r], nv[f, r], na[f, r]
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
+        tangent[1], tangent[2] = t + h, h
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
         n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
         if not fast.finite(y):
