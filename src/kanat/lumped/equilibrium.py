@@ -160,13 +160,16 @@ def equilibrium(net, case, x0=None, velocity=None):
 
     Parameters and returns as :func:`_solve`.
     """
+    start = "given" if x0 is not None else "network"
     if x0 is None and velocity is None:
-        x0 = statics_guess(net, case)
+        x0, start = first_guess(net, case)
     stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
     if stiffest <= CONTINUATION_START:
-        return _solve(net, case, x0, velocity, MAX_ITERATIONS)
+        x, info = _solve(net, case, x0, velocity, MAX_ITERATIONS)
+        return x, {**info, "first_guess": start}
     try:
-        return _solve(net, case, x0, velocity, DIRECT_ITERATIONS)
+        x, info = _solve(net, case, x0, velocity, DIRECT_ITERATIONS)
+        return x, {**info, "first_guess": start}
     except SolverError:
         pass
     factors = CONTINUATION_START / stiffest * 10.0 ** np.arange(int(np.ceil(np.log10(stiffest / CONTINUATION_START))))
@@ -175,7 +178,22 @@ def equilibrium(net, case, x0=None, velocity=None):
         soft = dataclasses.replace(net, law_y=net.law_y * factor)
         x, info = _solve(soft, case, x, velocity, MAX_ITERATIONS)
     info["continuation_stages"] = len(factors) + 1
+    info["first_guess"] = start
     return x, info
+
+
+def first_guess(net, case):
+    """The start of the equilibrium without positions given: ``(x, source)``, the first of
+    :func:`statics_guess` (``"statics"``), the still-water catenaries of network statics
+    (:func:`kanat.lumped.catenary_guess.catenary_guess`, ``"catenary"``), or None for the
+    network's own guess ``net.x_guess`` (``"network"``)."""
+    from kanat.lumped.catenary_guess import catenary_guess
+
+    x = statics_guess(net, case)
+    if x is not None:
+        return x, "statics"
+    x = catenary_guess(net, case)
+    return (x, "catenary") if x is not None else (None, "network")
 
 
 def statics_guess(net, case):

@@ -43,6 +43,7 @@ POLYNOMIAL, TABLE = 0, 1
 GUESS_STRETCH = 1.0 + 1e-4   # the first guess stretches every cable by this factor
 VESSEL_GUESS_DIRECTION = np.array([-1.0, 0.0, -1.0]) / math.sqrt(2.0)  # astern and down
 PRESCRIBED = ("vessel", "anchor", "fairlead")
+BUOY_GUESS_DEPTH = 0.02      # a submerged float's first guess is at least this fraction of the depth down
 
 
 @dataclass(frozen=True, eq=False)
@@ -281,15 +282,54 @@ def _vessel_guess(case, arm) -> np.ndarray:
     return VesselTrack.from_model(case.vessel).state(0.0, arm).position
 
 
+def _buoyant(builder: _Builder, node: int) -> bool:
+    """True for a body or point at ``node`` that floats: a surface buoy, or a net upward load."""
+    case = builder.case
+    env = case.environment
+    for name, at in builder.named.items():
+        if at != node:
+            continue
+        if name in case.bodies:
+            body = case.bodies[name]
+            return body.surface_buoy is not None or body.net_buoyancy + body.force[2] > 0.0
+        if name in case.points:
+            point = case.points[name]
+            return point.net_buoyancy(env.water_density, env.gravity) + point.force[2] > 0.0
+    return False
+
+
+def _float_guess(builder: _Builder, node: int, known: np.ndarray, length: float) -> np.ndarray:
+    """A floating end's place ``0.9 length`` of line from ``known``, laid as an L: a rise as high
+    as that reaches, up to BUOY_GUESS_DEPTH of the depth (a surface buoy: its keel half its
+    height down), and the rest of the length as a run along the surface current, or astern in
+    still water (the line between them then sags onto the seabed, as a grounded chain lies)."""
+    case = builder.case
+    env = case.environment
+    name = next(k for k, v in builder.named.items() if v == node)
+    buoy = case.bodies[name].surface_buoy if name in case.bodies else None
+    depth = env.depth if env.depth is not None else -float(known[2]) + length
+    top = -0.5 * buoy.height if buoy is not None else -BUOY_GUESS_DEPTH * depth
+    reach = 0.9 * length
+    rise = min(max(top - float(known[2]), 0.0), reach)
+    flow = np.asarray(env.current.at(0.0), float)[:2]
+    direction = flow / np.linalg.norm(flow) if np.linalg.norm(flow) > 0.0 else np.array([-1.0, 0.0])
+    run = reach - rise
+    return known + np.array([run * direction[0], run * direction[1], rise])
+
+
 def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> None:
-    """Place unknown end nodes a cable length from a known one, astern and down."""
+    """Place unknown end nodes a cable length from a known one: astern and down, or up towards
+    the surface and along the current for a floating body or point (:func:`_float_guess`)."""
     pos = builder.positions
     for _ in range(len(ends) + 1):
         changed = False
         for a, b, length in ends:
             for known, unknown in ((a, b), (b, a)):
                 if pos[known] is not None and pos[unknown] is None:
-                    pos[unknown] = pos[known] + 0.9 * length * VESSEL_GUESS_DIRECTION
+                    if _buoyant(builder, unknown):
+                        pos[unknown] = _float_guess(builder, unknown, pos[known], length)
+                    else:
+                        pos[unknown] = pos[known] + 0.9 * length * VESSEL_GUESS_DIRECTION
                     changed = True
         if not changed:
             break
