@@ -10,7 +10,6 @@ import kanat
 from kanat.continuum.adapter import ContinuumModel
 from kanat.continuum.schemes import GeneralizedAlpha
 from kanat.continuum.stepper import State
-from kanat.lumped import adapter as lumped_adapter
 from kanat.physics.drag import cable_drag
 from kanat.physics.waves import sea_from_model, wavenumber
 
@@ -174,15 +173,14 @@ SURFACE_MOORING = (EXAMPLES / "surface_mooring_waves.yaml").read_text().replace(
 
 
 @pytest.mark.slow
-def test_surface_mooring_in_waves_agrees_with_the_lumped_model(monkeypatch):
+def test_surface_mooring_in_waves_agrees_with_the_lumped_model():
     """examples/surface_mooring_waves.yaml (chain on the seabed, nylon up to a surface buoy; waves of 1.5 m,
     10 s and a current) against the lumped model (RK4) on the same case, over 6 wave periods after a 40 s
     transient: mean, extremes and range of the top tension and the buoy's heave.
 
-    The lumped model's equilibrium does not converge from its default first guess here (the buoy guessed on
-    the seabed, 114 m on the wrong side of the anchor), and ``initial_state: as_given`` lays the line through
-    the seabed, a transient still felt after 100 s (tension maxima 17 N high). So its equilibrium is solved
-    from the continuum's steady shape (6 taut Newton iterations, kanat.lumped.taut_newton).
+    The lumped model starts from its own equilibrium, first guessed by the still-water catenaries of network
+    statics corrected once for the current's drag (kanat.lumped.catenary_guess), then 23 taut Newton
+    iterations (kanat.lumped.taut_newton).
 
     Measured, continuum vs lumped, t = 40-100 s: top tension mean 4038.2 vs 4038.7 N (0.013 %), 3494.4-4644.0
     vs 3477.8-4653.5 N (range 1149.5 vs 1175.7 N, 2.2 %: the lumped model's extremes scatter by
@@ -192,14 +190,6 @@ def test_surface_mooring_in_waves_agrees_with_the_lumped_model(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         continuum = kanat.simulate(kanat.load_case(SURFACE_MOORING))
-        steady = continuum.position.isel(time=0).values
-        solve = lumped_adapter.equilibrium
-
-        def from_the_continuum(net, case):
-            start = net.x_guess.copy()
-            start[net.node_index] = steady
-            return solve(net, case, start)
-        monkeypatch.setattr(lumped_adapter, "equilibrium", from_the_continuum)
         lumped = kanat.simulate(kanat.load_case(SURFACE_MOORING.replace("model: continuum", "model: lumped").replace(
             "scheme: generalized-alpha", "scheme: rk4")))
     assert continuum.attrs["status"] == lumped.attrs["status"] == "ok"
