@@ -18,7 +18,13 @@ Rules that keep compiling short (docs/performance.md has the measurements): scal
 no array expressions, slice copies (``a[:] = b``), ``@`` or ``np.linalg`` in kernels a run
 uses; no complex variants in a run (complex-step oracles are compiled by the tests only);
 no ``inline="always"``; no integer constant passed straight to another kernel (numba
-compiles a separate version for the literal) — pass a variable or restructure.
+compiles a separate version for the literal) — pass a variable or restructure. Scratch
+arrays come from ``np.empty`` with a float (or int64) dtype, zeroed by ``a[:] = 0.0`` where
+needed: every ``np.zeros``, ``.copy()`` or other dtype spelling compiles numba's own
+implementation of it once more (30–60 ms each). Every kernel's machine code includes all its
+callees again (numba links and re-optimizes them into each caller's module), so a deep call
+tree pays for its leaves at every level: ``benchmarks/profile_compile.py`` shows where a
+family's seconds go, function by function.
 """
 from __future__ import annotations
 
@@ -29,8 +35,9 @@ from numba import njit, types
 
 # error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
 # non-finite results) instead of a check and an exception on every division, which costs
-# compile time and stops vectorization.
-kernel = njit(cache=True, error_model="numpy")
+# compile time and stops vectorization. no_cfunc_wrapper: numba otherwise builds a C-callable
+# wrapper of every kernel for use as a first-class function value, which kanat never does.
+kernel = njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 inner = njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
 

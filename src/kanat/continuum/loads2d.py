@@ -66,14 +66,14 @@ def strain(T, p):
     A linear law ``e = T / EA`` is the two knots ``(0, 0), (EA, 1)``. Within a segment the law
     is linear in ``T``, so complex-step derivatives pass through it exactly.
     """
-    t0, e0, slope = _law_segment(T, p)
+    t0, e0, slope = _law_segment(T.real, p)         # the segment depends on Re T only: one version
     return e0 + slope * (T - t0)
 
 
 @kernel
 def compliance(T, p):
     """``de/dT`` of the elastic law at ``T`` [1/N] (piecewise constant)."""
-    return _law_segment(T, p)[2]
+    return _law_segment(T.real, p)[2]
 
 
 @kernel
@@ -288,19 +288,21 @@ def end_jacobian(x, y, d, env, p, b, side, out, jac, extras):
             out[0], out[1], out[2] = x[0] / p[EA], x[4] / p[EA], x[5] / p[EA]
             jac[0, 0], jac[1, 4], jac[2, 5] = 1.0 / p[EA], 1.0 / p[EA], 1.0 / p[EA]
             return
-        load = np.empty((2, 4))
-        extra = np.zeros((2, 4))
-        fn = node_load_jacobian(k0, k1, k2, k3, env[UX], env[UZ], p, load)[1]
+        # the load's derivatives go through jac (2, 4) as scratch: no allocation in the plain version
+        fn = node_load_jacobian(k0, k1, k2, k3, env[UX], env[UZ], p, jac)[1]
+        d0, d1, d2, d3 = jac[1, 0], jac[1, 1], jac[1, 2], jac[1, 3]
         if extras is not None:
+            extra = np.empty((2, 4))
             fn += extra_load_jacobian(k0, k1, k2, k3, env, p, extra)[1]
+            d0, d1, d2, d3 = d0 + extra[1, 0], d1 + extra[1, 1], d2 + extra[1, 2], d3 + extra[1, 3]
         mn = p[INERTIA] * (p[M] + p[MA])
         out[0] = x[0] / p[EA]
         out[1] = mn * (r2 + m1 * r3) - fn
-        jac[0, 0] = 1.0 / p[EA]
-        jac[1, 0] = -(load[1, 0] + extra[1, 0]) * ck
-        jac[1, 1] = mn * r3 * cm - (load[1, 1] + extra[1, 1]) * ck
-        jac[1, 2] = mn * cr - (load[1, 2] + extra[1, 2]) * ck
-        jac[1, 3] = mn * m1 * cr - (load[1, 3] + extra[1, 3]) * ck
+        jac[0, 0], jac[0, 1], jac[0, 2], jac[0, 3] = 1.0 / p[EA], 0.0, 0.0, 0.0
+        jac[1, 0] = -d0 * ck
+        jac[1, 1] = mn * r3 * cm - d1 * ck
+        jac[1, 2] = mn * cr - d2 * ck
+        jac[1, 3] = mn * m1 * cr - d3 * ck
         return
     c, s = np.cos(k3), np.sin(k3)
     wt = env[UX] * c + env[UZ] * s - k1                     # water relative to the body, along t and n

@@ -90,8 +90,10 @@ def _node_loads(wk, env, P, extras):
     A node inside a section is evaluated once; a node between two sections twice.
     """
     n_nodes, nv = wk.shape[0], wk.shape[1]
-    load = np.zeros((n_nodes, 2, 2))
-    dload = np.zeros((n_nodes, 2, 2, nv))
+    load = np.empty((n_nodes, 2, 2))
+    dload = np.empty((n_nodes, 2, 2, nv))
+    load[:] = 0.0
+    dload[:] = 0.0
     jac, extra = np.empty((2, 4)), np.empty((2, 4))
     for j in range(n_nodes):
         for use in range(2):
@@ -151,9 +153,9 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band, extra
             res[row + 1] -= g4
             res[row + 4] = p[k.EI] * g3 - kb5
             res[row + 5] = g5 + stretch_k * kb4
-    dm = np.zeros((nv, nv))          # dR[row i] / d(weighted state of one node)[q], for m, k, r
-    dk = np.zeros((nv, nv))
-    dr = np.zeros((nv, nv))
+    dm = np.empty((nv, nv))          # dR[row i] / d(weighted state of one node)[q], for m, k, r
+    dk = np.empty((nv, nv))
+    dr = np.empty((nv, nv))
     for side in range(2):
         node, use = (l, 0) if side == 0 else (r, 1)
         sign = -1.0 if side == 0 else 1.0
@@ -212,7 +214,8 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
     ca, sa, cb, sb = np.cos(x[a, 3]), np.sin(x[a, 3]), np.cos(x[b, 3]), np.sin(x[b, 3])
     res[row] = (x[a, 1] * ca - x[a, 2] * sa) - (x[b, 1] * cb - x[b, 2] * sb)
     res[row + 1] = (x[a, 1] * sa + x[a, 2] * ca) - (x[b, 1] * sb + x[b, 2] * cb)
-    jac = np.zeros((nv, 2 * nv))                      # rows of this interval by (node a, node b) unknowns
+    jac = np.empty((nv, 2 * nv))                      # rows of this interval by (node a, node b) unknowns
+    jac[:, :] = 0.0
     jac[0, 1], jac[0, 2], jac[0, 3] = ca, -sa, -x[a, 1] * sa - x[a, 2] * ca
     jac[1, 1], jac[1, 2], jac[1, 3] = sa, ca, x[a, 1] * ca - x[a, 2] * sa
     jac[0, nv + 1], jac[0, nv + 2], jac[0, nv + 3] = -cb, sb, x[b, 1] * sb + x[b, 2] * cb
@@ -241,8 +244,10 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
     res[row + 2] = mass * acc_x - fx
     res[row + 3] = mass * acc_z - fz
     # d(acc)/d(m1, m2, m3) and /d(q1, q2, q3)
-    dacc_m = np.zeros((2, 4))
-    dacc_r = np.zeros((2, 4))
+    dacc_m = np.empty((2, 4))
+    dacc_r = np.empty((2, 4))
+    dacc_m[:, :] = 0.0
+    dacc_r[:, :] = 0.0
     dacc_m[0, 1], dacc_m[1, 1] = q3 * -smm, q3 * cmm
     dacc_m[0, 2], dacc_m[1, 2] = -q3 * cmm, -q3 * smm
     dacc_m[0, 3], dacc_m[1, 3] = -at_ * smm - an_ * cmm, at_ * cmm - an_ * smm
@@ -257,8 +262,10 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
     dw[0, 0], dw[1, 0] = -cka, -ska
     dw[0, 1], dw[1, 1] = ska, -cka
     dw[0, 2], dw[1, 2] = ua * ska + va * cka, -(ua * cka - va * ska)
-    dfa = np.zeros((2, 6))                            # d(fx, fz)/d(weighted k state of node a)
-    dfb = np.zeros((2, 6))
+    dfa = np.empty((2, 6))                            # d(fx, fz)/d(weighted k state of node a)
+    dfb = np.empty((2, 6))
+    dfa[:, :] = 0.0
+    dfb[:, :] = 0.0
     dfa[0, 0], dfa[1, 0] = -cka, -ska
     for q in range(3):
         dfa[0, 1 + q] = g00 * dw[0, q] + g01 * dw[1, q]

@@ -12,7 +12,7 @@ so it is compiled (:func:`sweep`), and :func:`sweep_numpy` is its plain twin for
 from __future__ import annotations
 
 import numpy as np
-from kanat.jit import kernel
+from kanat.jit import inner, kernel
 
 
 @kernel
@@ -38,7 +38,7 @@ def sweep(A, C, r, X0, forward):
     return X
 
 
-@kernel
+@inner
 def sweep_into(A, C, r, X, forward):
     """:func:`sweep` in place: ``X`` holds the inflow value on entry and the solution on exit."""
     n, d = r.shape
@@ -59,7 +59,7 @@ def sweep_into(A, C, r, X, forward):
         lu_solve(work, piv, rhs, X[i])
 
 
-@kernel
+@inner
 def lu_factor(A, LU, piv):
     """In-place LU with partial pivoting of a small ``A`` (d, d) into ``LU``, row order ``piv``.
 
@@ -91,7 +91,7 @@ def lu_factor(A, LU, piv):
                     LU[i, j] -= f * LU[col, j]
 
 
-@kernel
+@inner
 def lu_solve(LU, piv, b, out):
     """``out = A^-1 b`` from :func:`lu_factor`."""
     d = b.shape[0]
