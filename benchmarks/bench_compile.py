@@ -8,7 +8,8 @@ time to other load on the machine); wall times beside. With ``--baseline DIR`` (
 older kanat) the same runs of that tree interleave with this one's (A B A B ...). Medians of
 ``--repeats``. ``kanat warmup`` time (all families, cold) last.
 
-Run: ``python benchmarks/bench_compile.py [--repeats 3] [--baseline /path/to/old/checkout]``.
+Run: ``python benchmarks/bench_compile.py [--repeats 3] [--baseline /path/to/old/checkout] [--tree /path]
+[--families NAME ...] [--no-warmup]``.
 """
 from __future__ import annotations
 
@@ -33,6 +34,8 @@ EXAMPLES = {                       # family: (example, changes to keep it to a f
     "lumped-implicit": ("seed004_head_5.6s_1to4.yaml", {"duration": 1.0, "scheme": "generalized-alpha-lumped",
                                                         "dt": 0.05}),
     "factorized-2d": ("seed000_accel.yaml", {"duration": 0.02}),
+    "factorized-3d": ("seed000_spatial100.yaml", {"scheme": "factorized", "dt": 0.005, "duration": 0.02,
+                                                  "output_dt": 0.005}),
     "wave-factorized-2d": ("seed000_planar80.yaml", {"duration": 0.5}),
     "wave-factorized-3d": ("seed000_spatial100.yaml", {"duration": 1.0}),
 }
@@ -92,6 +95,7 @@ def main(argv=None) -> None:
     parser.add_argument("--baseline", type=Path, help="an older kanat checkout to compare with")
     parser.add_argument("--tree", type=Path, help="the checkout to measure (default: the installed kanat)")
     parser.add_argument("--families", nargs="+", default=list(EXAMPLES), choices=list(EXAMPLES))
+    parser.add_argument("--no-warmup", action="store_true", help="skip the closing `kanat warmup` timing")
     args = parser.parse_args(argv)
     folder = Path(tempfile.mkdtemp())
     trees = {"this": args.tree} if args.baseline is None else {"baseline": args.baseline, "this": args.tree}
@@ -110,8 +114,9 @@ def main(argv=None) -> None:
             med = {k: statistics.median(r[k] for r in rows) for k in rows[0]}
             print(f"| {family} ({example}) | {name} | {med['cold_cpu'] - med['warm_cpu']:.2f} | "
                   f"{med['cold_wall']:.2f} | {med['warm_wall']:.2f} |", flush=True)
-    wall, cpu = warmup_all(args.tree, folder)
-    print(f"\n`kanat warmup` equivalent (every family, cold cache): {wall:.1f} s wall, {cpu:.1f} s CPU")
+    if not args.no_warmup:
+        wall, cpu = warmup_all(args.tree, folder)
+        print(f"\n`kanat warmup` equivalent (every family, cold cache): {wall:.1f} s wall, {cpu:.1f} s CPU")
     print(f"load average after: {os.getloadavg()[0]:.2f}")
 
 
