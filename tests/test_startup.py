@@ -12,7 +12,7 @@ import pytest
 
 from helpers import EXAMPLES
 from kanat import api
-from kanat.continuum import models
+from kanat.continuum import start
 from kanat.statics import BodyEnd, CableBVP, FixedEnd, FlowProfile, LineProperties
 from kanat.statics.march import march_from_body, scalar_rhs, steady_guess
 from kanat.statics.problem import steady_rhs
@@ -67,7 +67,7 @@ def test_the_continuum_start_is_the_steady_state_the_shooting_guess_gives(exampl
     marched = api.dynamic_model(case).initial()
     from kanat.statics import solve_cable
 
-    monkeypatch.setattr(models, "steady_guess", lambda problem, s: solve_cable(problem, "shooting", s))
+    monkeypatch.setattr(start, "steady_guess", lambda problem, s: solve_cable(problem, "shooting", s))
     shot = api.dynamic_model(case).initial()
     scale = np.max(np.abs(shot.y), axis=0)
     assert np.max(np.abs(marched.y - shot.y) / np.where(scale > 0, scale, 1.0)) < 1e-12

@@ -83,6 +83,7 @@ class ContinuumModel:
         self.winch = cable.winch
         self.stations = (material_stations(case, cable.s, cable.winch, self.dt, self.duration)
                          if cable.winch is not None else None)
+        self._own, self._winch_facts = RowFacts(cable.rows(), cable.seabed), None
         if cable.winch is not None:
             self.notes.append(f"winch: the grid grows from the winch (a node every {cable.winch.segment:.4g} m paid "
                               f"out); s is each node's arclength at t = 0 (negative: still on the drum, where "
@@ -199,10 +200,10 @@ class ContinuumModel:
     def outputs(self, state) -> dict:
         values = self.cable_model.outputs(state)
         track = self.cable_model.track
-        vessel = track.state(state.t)
+        vessel = track.tow_state(state.t)
         pitch = track.pitch(state.t)[0] if track.pitch is not None else 0.0
-        rows = self.cable_model.cable.rows() if getattr(state, "rows", None) is None else state.rows
-        junctions = np.flatnonzero(rows[:, k.KIND] == k.JUNCTION)
+        facts = self._facts(state)
+        rows, junctions = facts.rows, facts.junctions
         ends = values["position"][-1:] if self.body else np.zeros((0, 3))
         inline = values["position"][junctions] if len(junctions) else np.zeros((0, 3))
         extra = {}
@@ -211,6 +212,15 @@ class ContinuumModel:
             values = self._on_stations(state, values)
         return {**values, "body_position": np.vstack([ends, inline]), "vessel_position": vessel.position,
                 "vessel_heading": vessel.heading, "vessel_pitch": pitch, **extra}
+
+    def _facts(self, state) -> RowFacts:
+        """What the outputs and checks read of the state's interval rows (the cable's own, or a winch's)."""
+        rows = getattr(state, "rows", None)
+        if rows is None:
+            return self._own
+        if self._winch_facts is None or self._winch_facts.rows is not rows:      # one output's outputs and checks
+            self._winch_facts = RowFacts(rows, self.cable_model.cable.seabed)
+        return self._winch_facts
 
     def _on_stations(self, state, values: dict) -> dict:
         """Nodal outputs on the fixed material stations of a run with a winch (:func:`material_stations`):
@@ -234,8 +244,8 @@ class ContinuumModel:
         cable = self.cable_model.cable
         tension, t = values["tension"], state.t
         scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
-        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
-        allowed, interval = euler_loads(rows)
+        facts = self._facts(state)
+        rows, (allowed, interval) = facts.rows, facts.euler
         low = int(np.argmin(tension + allowed))
         if tension[low] + allowed[low] >= -COMPRESSION_TOLERANCE * scale:
             return None
@@ -251,12 +261,11 @@ class ContinuumModel:
     def _strain(self, state, values) -> str | None:
         cable = self.cable_model.cable
         tension = values["tension"]
-        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
-        strain = np.zeros(len(rows))
-        for value in np.unique(rows[:, k.SECTION]):
-            which = np.flatnonzero(rows[:, k.SECTION] == value)
-            p = rows[which[0]]
-            strain[which] = np.maximum(strain_of(tension[which], p), strain_of(tension[which + 1], p))
+        facts = self._facts(state)
+        strain = np.zeros(len(facts.rows))
+        for which, p in facts.sections:
+            nodes = strain_of(tension, p)                        # elementwise: as on the interval ends
+            strain[which] = np.maximum(nodes[which], nodes[which + 1])
         high = int(np.argmax(strain))
         if strain[high] > self.max_strain:
             return (f"strain {strain[high]:.4g} (tension {max(tension[high], tension[high + 1]):.4g} N) at "
@@ -270,10 +279,7 @@ class ContinuumModel:
         seabed = cable.seabed
         if seabed is None:
             return None
-        rows = cable.rows() if getattr(state, "rows", None) is None else state.rows
-        cable_rows = rows[rows[:, k.DS] > 0]
-        static = float(np.max(np.abs(cable_rows[:, k.W0]) / (seabed.stiffness * cable_rows[:, k.DIAM])))
-        limit = PENETRATION_FACTOR * static + 1e-3
+        static, limit = self._facts(state).penetration
         depth = seabed.penetration(values["position"])
         deep = int(np.argmax(depth))
         if depth[deep] > limit:
@@ -289,6 +295,43 @@ class ContinuumModel:
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state) -> tuple[dict, dict]:
         return {}, {}
+
+
+class RowFacts:
+    """What the outputs and checks of a run read of a grid's interval rows, worked out once.
+
+    Parameters
+    ----------
+    rows : ndarray, shape (n - 1, P)
+        The grid's parameter rows (:mod:`kanat.continuum.grid`).
+    seabed : SeabedContact or None
+
+    Attributes
+    ----------
+    junctions : ndarray of int
+        Intervals that join two sections at an inline body.
+    euler : tuple of ndarray
+        :func:`euler_loads` of the rows.
+    sections : list of (ndarray of int, ndarray)
+        Each section's intervals and its parameter row (its elastic law).
+    penetration : tuple of float or None
+        The contact model's static penetration ``w / (k_b d)`` [m] (the largest of the cable's
+        intervals) and the depth below the seabed that fails a run; None without a seabed.
+    """
+
+    def __init__(self, rows: np.ndarray, seabed):
+        self.rows = rows
+        self.junctions = np.flatnonzero(rows[:, k.KIND] == k.JUNCTION)
+        self.euler = euler_loads(rows)
+        self.sections = []
+        for value in np.unique(rows[:, k.SECTION]):
+            which = np.flatnonzero(rows[:, k.SECTION] == value)
+            self.sections.append((which, rows[which[0]]))
+        self.penetration = None
+        if seabed is not None:
+            cable_rows = rows[rows[:, k.DS] > 0]
+            static = float(np.max(np.abs(cable_rows[:, k.W0]) / (seabed.stiffness * cable_rows[:, k.DIAM])))
+            self.penetration = static, PENETRATION_FACTOR * static + 1e-3
 
 
 def rod_advice(row: np.ndarray, excess: float, length: float) -> str:

@@ -25,13 +25,13 @@ class Drive:
         """``((Vx, Vz) at s = 0, (Vx, Vz) at s = L)`` [m/s]."""
         v0 = (0.0, 0.0)
         if self.cable.start.moving:
-            v = self.track.state(t).velocity
+            v = self.track.tow_state(t).velocity
             v0 = (v[0], v[2])
         return v0, (0.0, 0.0)
 
     def origin(self, t: float) -> np.ndarray:
         """Position ``(x, z)`` of the first end [m]."""
         if self.cable.start.moving:
-            p = self.track.state(t).position
+            p = self.track.tow_state(t).position
             return np.array([p[0], p[2]])
         return np.asarray(self.cable.start.position, dtype=float)

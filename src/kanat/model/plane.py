@@ -9,18 +9,21 @@ from __future__ import annotations
 import math
 
 from ..errors import Problem
-from .vessel import Heading, Turn
+from .vessel import Heading, SpeedStep, Turn
 
 OUT_OF_PLANE_DOFS = ("sway", "roll", "yaw")
 """Degrees of freedom of a prescribed vessel motion that leave the x–z plane."""
 
 
-def out_of_plane(case) -> list[Problem]:
+def out_of_plane(case, at_start: bool = False) -> list[Problem]:
     """One problem per key of ``case`` that leaves the x–z plane (empty: the case is planar).
 
     Parameters
     ----------
     case : kanat.model.Case
+    at_start : bool
+        Only what leaves the plane at t = 0, where a continuum run starts from the steady state:
+        a turn (or change of heading) that comes after a segment taking time does not count.
 
     Returns
     -------
@@ -46,7 +49,8 @@ def out_of_plane(case) -> list[Problem]:
     if waves is not None and abs(math.sin(math.radians(waves.heading_deg))) > 1e-9:
         found.append(("environment.waves.heading_deg", f"the waves travel at {waves.heading_deg:g} deg from +x"))
     for index, segment in enumerate(case.vessel.track):
-        if isinstance(segment, (Turn, Heading)):
+        later = any(not isinstance(before, SpeedStep) for before in case.vessel.track[:index])
+        if isinstance(segment, (Turn, Heading)) and not (at_start and later):
             found.append((f"vessel.track[{index}]", f"the vessel turns ({segment.KEY})"))
     for index, motion in enumerate(getattr(case.vessel, "motion", None) or ()):
         dof = getattr(motion, "dof", None)

@@ -91,6 +91,7 @@ class VesselTrack:
         self.tow_point = np.asarray(tow_point, dtype=float)
         self.pitch = pitch
         self._starts = np.array([p.start for p in self.phases])
+        self._tow: tuple[float, VesselState] | None = None
 
     @classmethod
     def from_model(cls, vessel, pitch=None) -> VesselTrack:
@@ -133,6 +134,17 @@ class VesselTrack:
         """The phase running at ``t``: the last to start at or before it (a step wins at its instant)."""
         index = max(0, int(np.searchsorted(self._starts, t, side="right")) - 1)
         return self.phases[index]
+
+    def tow_state(self, t: float) -> VesselState:
+        """:meth:`state` of the tow point at ``t``, the last one kept: a continuum step asks for it
+        three times at the same instant (end velocity, first end's position, outputs). Its arrays
+        are read-only (it is shared)."""
+        if self._tow is None or self._tow[0] != t:
+            state = self.state(t)
+            for array in (state.position, state.velocity, state.acceleration):
+                array.flags.writeable = False
+            self._tow = (t, state)
+        return self._tow[1]
 
     def state(self, t: float, lever_arm=None) -> VesselState:
         """Kinematics at time ``t`` [s] of the point ``lever_arm`` (default: the tow point)."""
