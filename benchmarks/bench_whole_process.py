@@ -8,8 +8,13 @@ file records. The peer column is WHOI Cable's whole
 process on the same case, built with ``-O2`` and measured on this machine kind (recorded
 figures: WHOI Cable cannot be built here).
 
-Run: ``python benchmarks/bench_whole_process.py [--repeats N]`` (about a minute); prints the
-Markdown table recorded in benchmarks/RESULTS.md.
+Python's bytecode cache is filled by the warm-up runs, as an installed package has it (pip compiles
+kanat's bytecode at install): the commands run with ``PYTHONPYCACHEPREFIX`` set to a temporary
+folder, even where the environment sets ``PYTHONDONTWRITEBYTECODE`` (which would make every process
+compile kanat's source again: 0.15-0.2 s of CPU a command). ``--no-bytecode`` measures that too.
+
+Run: ``python benchmarks/bench_whole_process.py [--repeats N] [--no-bytecode]`` (about a minute);
+prints the Markdown table recorded in benchmarks/RESULTS.md.
 """
 from __future__ import annotations
 
@@ -38,11 +43,15 @@ COMMANDS = {
 """label: (arguments, output file name or None, target, WHOI Cable's whole process (PEERS))."""
 
 
+ENVIRONMENT = dict(os.environ)
+"""The commands' environment (:func:`main` sets how Python's bytecode is cached)."""
+
+
 def run_once(args: list[str], output: Path | None) -> tuple[float, float, float]:
     """CPU [s], wall [s] and peak RSS [MiB] of one fresh process (its own ``rusage``)."""
     command = [sys.executable, "-m", "kanat.cli", *args] + (["-o", str(output)] if output is not None else [])
     start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=ENVIRONMENT)
     _, status, usage = os.wait4(process.pid, 0)
     wall = time.perf_counter() - start
     process.returncode = os.waitstatus_to_exitcode(status)
@@ -61,8 +70,14 @@ def solver_time(path: Path) -> float | None:
     return None if value is None else float(value.ravel()[0] if hasattr(value, 'ravel') else value)
 
 
-def main(repeats: int) -> None:
+def main(repeats: int, bytecode: bool = True) -> None:
     with tempfile.TemporaryDirectory() as folder:
+        if bytecode:
+            ENVIRONMENT.pop("PYTHONDONTWRITEBYTECODE", None)
+            ENVIRONMENT["PYTHONPYCACHEPREFIX"] = str(Path(folder) / "bytecode")
+        else:
+            ENVIRONMENT["PYTHONDONTWRITEBYTECODE"] = "1"
+            ENVIRONMENT.pop("PYTHONPYCACHEPREFIX", None)
         samples = {label: [] for label in COMMANDS}
         solver = {label: [] for label in COMMANDS}
         for label, (args, name, _, _) in COMMANDS.items():          # warm-up: the kernels are cached
@@ -75,7 +90,8 @@ def main(repeats: int) -> None:
                     solver[label].append(t)
                     os.remove(output)
     load = os.getloadavg()
-    print(f"{repeats} interleaved runs per command, medians; load average {load[0]:.2f} {load[1]:.2f}\n")
+    print(f"{repeats} interleaved runs per command, medians; load average {load[0]:.2f} {load[1]:.2f}; bytecode "
+          f"{'cached' if bytecode else 'compiled by every process (PYTHONDONTWRITEBYTECODE)'}\n")
     print("| command | CPU [s] | wall [s] | solver [s] | peak RSS [MiB] | target | WHOI Cable (PEERS) |")
     print("|---|---|---|---|---|---|---|")
     for label, (_, _, target, peer) in COMMANDS.items():
@@ -87,4 +103,6 @@ def main(repeats: int) -> None:
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--repeats", type=int, default=5)
-    main(parser.parse_args().repeats)
+    parser.add_argument("--no-bytecode", action="store_true", help="every process compiles kanat's source")
+    arguments = parser.parse_args()
+    main(arguments.repeats, not arguments.no_bytecode)
