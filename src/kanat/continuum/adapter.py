@@ -134,8 +134,7 @@ class ContinuumModel:
                 "continuum model needs a taut cable from the start: it starts from the steady shape of a "
                 "perfectly flexible line, with or without bending stiffness (which carries compression only up "
                 "to about the Euler load of one segment), so a slack line, such as a grounded one in still "
-                "water, runs with model: lumped, which carries slack (kanat statics CASE shows the steady "
-                "shape)") from None
+                "water, runs with model: lumped, whose equilibrium carries slack line") from None
         check_step(self.scheme, self.cable_model, state, self.dt)     # seed 000's schemes: their known range
         return state
 
