@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.linalg import solve_banded
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
@@ -18,7 +17,7 @@ from kanat.continuum import bending3d
 from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch
-from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, step_rows
+from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, solve_band, step_rows
 from kanat.continuum.water import elevation, kinematics_time, predictor_weight
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -132,10 +131,9 @@ def _solve(cable, x0, y, rate, env, up, P, b0, b1):
         assemble(x, y, rate, env, up, P, b0, b1, res, band, extras)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
-        try:
-            dx = solve_banded((width, width), band, -res, check_finite=False)
-        except (np.linalg.LinAlgError, ValueError):
-            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv)) from None
+        dx = solve_band(width, band, -res)
+        if dx is None:
+            raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv))
         x += dx.reshape(x.shape)
         size = np.max(np.abs(dx) / scale)
         if converged(size, previous):
