@@ -28,7 +28,7 @@ import numpy as np
 
 from kanat.lumped import fast, kernels, rigid
 from kanat.physics import contact
-from kanat.physics.motion import compile_motion
+from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.motion_samples import motion_series, point_series
 from kanat.physics.seabed import seabed_of
 from kanat.physics.waves import sea_from_model
@@ -64,6 +64,7 @@ class LumpedSystem:
         self.sea = sea_from_model(env) if waves else None
         self.track = VesselTrack.from_model(case.vessel) if case.vessel.track else None
         self.motion = compile_motion(case.vessel.motion)
+        self._translational = translational(self.motion)
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
         self.free_index = np.flatnonzero(net.free)
@@ -119,6 +120,8 @@ class LumpedSystem:
     def _vessel_points(self, times, arms):
         arms = self.net.vessel_offset if arms is None else np.asarray(arms, float).reshape(-1, 3)
         k, p = len(times), len(arms)
+        if self.track is None and self._translational:
+            return self._translated_points(times, arms)
         pos, vel, heading = np.empty((k, p, 3)), np.zeros((k, p, 3)), np.zeros(k)
         if self.track is None:
             pos[:] = arms
@@ -139,6 +142,21 @@ class LumpedSystem:
             vel[..., 1] += s * dvel[..., 0] + c * dvel[..., 1] + rate * turned[..., 0]
             vel[..., 2] += dvel[..., 2]
         return pos, vel, heading
+
+    def _translated_points(self, times, arms):
+        """:meth:`_vessel_points` without a track and without rotations (``R = I``, ``w = 0``,
+        heading 0): the same numbers, points at ``arms + (q + r - r)`` moving at ``q_dot``, in a
+        few array operations (the run samples it thousands of times)."""
+        k, p = len(times), len(arms)
+        pos, vel = np.empty((k, p, 3)), np.zeros((k, p, 3))
+        pos[:] = arms
+        if self.motion is not None and p:
+            q, qd = motion_series(self.motion, times)
+            if self.steady_velocity is not None:
+                qd[:] = 0.0
+            pos += (q[:, None, :3] + arms) - arms
+            vel += qd[:, None, :3]
+        return pos, vel, np.zeros(k)
 
     def track_series(self, times, arm):
         """Position, velocity (k, 3) and heading (k,) of the vessel point ``arm`` along the track:
@@ -296,6 +314,16 @@ class LumpedSystem:
         nf = len(self.free_index)
         xf, vf = y[: 3 * nf].reshape(nf, 3), y[3 * nf:].reshape(nf, 3)
         return np.concatenate([y[3 * nf:], self.acceleration(t, xf, vf).ravel()])
+
+
+def translational(motion) -> bool:
+    """Whether a compiled vessel motion (:func:`kanat.physics.motion.compile_motion`) leaves roll,
+    pitch and yaw at zero for all time (no motion counts)."""
+    if motion is None:
+        return True
+    if isinstance(motion, Harmonics):
+        return bool(np.all((np.asarray(motion.dof) < 3) | (np.asarray(motion.amplitude) == 0.0)))
+    return bool(np.all(np.asarray(motion.values)[:, 3:] == 0.0))
 
 
 def phase_table(track) -> np.ndarray:
