@@ -84,6 +84,7 @@ class LumpedModel:
         self.node_tension = NodeTension(self.net)
         self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
+        self._seen = None                  # (t, free nodes' x, all nodes' x) of the last outputs()
         self.penetration = allowed_penetration(self.net, case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
         self._anchors_on_seabed = anchors_on_seabed(self.net, case.environment)
@@ -181,18 +182,32 @@ class LumpedModel:
 
     def _tensions(self, scheme_state) -> np.ndarray:
         """Element tensions (m,) of a scheme state (a view of one work array)."""
+        return self._element_tensions(*self.system.full(scheme_state["t"], *state_positions(scheme_state))[:2])
+
+    def _element_tensions(self, x, v) -> np.ndarray:
+        """Element tensions (m,) of all nodes' ``x, v`` (a view of one work array)."""
         net = self.net
-        x, v, _, _ = self.system.full(scheme_state["t"], *state_positions(scheme_state))
         kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                          net.law_n, net.law_x, net.law_y, self._T)
         return self._T
+
+    def _positions(self, state: LumpedState) -> np.ndarray:
+        """All nodes' positions (n, 3) of ``state``: those :meth:`outputs` found for the same time
+        and free nodes' positions, else from :meth:`LumpedSystem.full`."""
+        scheme = state.scheme
+        positions = state_positions(scheme)[0]
+        seen = self._seen
+        if seen is not None and seen[0] == scheme["t"] and np.array_equal(seen[1], positions):
+            return seen[2]
+        return self.system.full(scheme["t"], *state_positions(scheme))[0]
 
     # 4. outputs ------------------------------------------------------------------------
     def outputs(self, state: LumpedState) -> dict:
         system, net = self.system, self.net
         t = state.scheme["t"]
         x, v, _, heading = system.full(t, *state_positions(state.scheme))
-        T = self._tensions(state.scheme).copy()
+        self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy())             # for check()
+        T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
         F = system.loads(t, x, v, heading)[0]
@@ -206,7 +221,7 @@ class LumpedModel:
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:
         net, t = self.net, state.scheme["t"]
-        x = self.system.full(t, *state_positions(state.scheme))[0]
+        x = self._positions(state)
         strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
         k = int(np.argmax(strain - self.max_strain))
         if strain[k] > self.max_strain[k]:
