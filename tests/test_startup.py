@@ -88,3 +88,18 @@ def test_a_plain_run_and_its_validation_import_no_solver_they_do_not_use(verb, t
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines()[-1] == "imported:", done.stdout.splitlines()[-1]
+
+
+STATICS_FILE = ("xarray", "pandas", "dask")
+"""What writing a statics result does not need: its table is written by h5netcdf (kanat.io.result_table)."""
+
+
+def test_kanat_statics_of_one_cable_writes_its_file_without_xarray(tmp_path):
+    command = ["statics", str(EXAMPLES / "towed_body.yaml"), "-o", str(tmp_path / "out.nc")]
+    code = ("import sys; from kanat.cli import app\n"
+            "try:\n    app(%r)\nexcept SystemExit as done:\n    assert not done.code, done.code\n"
+            "print('imported:', *(m for m in %r if m in sys.modules))" % (command, STATICS_FILE))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "imported:", done.stdout.splitlines()[-1]
+    assert (tmp_path / "out.nc").exists()

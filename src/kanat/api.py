@@ -18,6 +18,7 @@ import logging
 import time
 import warnings
 from dataclasses import dataclass
+from functools import cached_property
 from os import PathLike
 from pathlib import Path
 from typing import Any, Callable, Mapping
@@ -45,7 +46,10 @@ class Outcome:
     text : str
         A few lines for the terminal: the run summary, or the statics or pitch table.
     dataset : xarray.Dataset
-        The result (read back from ``output`` on first use when it was written there).
+        The result, built on first use: from the steady models' :class:`kanat.io.result_table.ResultTable`
+        (``held``), or read back from ``output`` when the run wrote it there.
+    held : xarray.Dataset, kanat.io.result_table.ResultTable or None
+        The result in memory, if any.
     output : Path or None
     summary : kanat.dynamics.RunSummary or None
         Dynamic models only.
@@ -65,16 +69,20 @@ class Outcome:
     def ok(self) -> bool:
         return self.status == "ok"
 
-    @property
+    @cached_property
     def dataset(self):
         """The result: held in memory, or read from ``output``."""
-        return self.held if self.held is not None else read_result(self.output)
+        if self.held is None:
+            return read_result(self.output)
+        return self.held.to_dataset() if hasattr(self.held, "to_dataset") else self.held
 
 
 # --- the steady models ------------------------------------------------------------------
 
-def _statics_dataset(case: Case, method: str = "auto"):
-    from kanat.io.results import statics_dataset
+def _statics(case: Case, method: str = "auto"):
+    """The statics of ``case`` as the table its file holds (no xarray: ``kanat statics`` writes it
+    directly), the summary, and the solver's result."""
+    from kanat.io.statics_table import statics_table
     from kanat.statics import NeedsDrag
     from kanat.statics import solve_statics as solve
 
@@ -83,7 +91,7 @@ def _statics_dataset(case: Case, method: str = "auto"):
         result = solve(case, method=method)
     except NeedsDrag as reason:          # a network in a current: the catenary carries no drag
         result = _lumped_statics(case, str(reason))
-    return statics_dataset(result, wall_time_s=time.perf_counter() - start), result.summary(), result
+    return statics_table(result, wall_time_s=time.perf_counter() - start), result.summary(), result
 
 
 def _lumped_statics(case: Case, reason: str):
@@ -139,7 +147,8 @@ def _lumped(case: Case, scheme=None):
 
 @dataclass(frozen=True)
 class Steady:
-    """A model solved at once: ``solve(case, method) -> (dataset, text, solution)``."""
+    """A model solved at once: ``solve(case, method) -> (result, text, solution)``, the result an
+    ``xarray.Dataset`` or a :class:`kanat.io.result_table.ResultTable` (written without xarray)."""
 
     solve: Callable
 
@@ -152,7 +161,7 @@ class Dynamic:
 
 
 MODELS: dict[str, Steady | Dynamic] = {
-    "statics": Steady(_statics_dataset),
+    "statics": Steady(_statics),
     "pitch": Steady(_pitch_dataset),
     "continuum": Dynamic(_continuum),
     "lumped": Dynamic(_lumped),
@@ -244,7 +253,7 @@ def solve_statics(case: Case, method: str = "auto"):
         When no steady state is found (the message says what was tried).
     """
     require_supported(case, "statics")
-    return _statics_dataset(case, method)[0]
+    return _statics(case, method)[0].to_dataset()
 
 
 def dynamic_model(case: Case, scheme=None):
@@ -439,16 +448,21 @@ def case_of(result) -> Case:
 # --- helpers ----------------------------------------------------------------------------
 
 def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcome:
-    from kanat.io.results import failed_dataset, write_result
+    from kanat.io.statics_table import failed_table
 
     start = time.perf_counter()
     try:
-        dataset, text, solution = entry.solve(case, method)
+        result, text, solution = entry.solve(case, method)
     except KanatError as error:
         if output is not None and not isinstance(error, CaseError):
-            write_result(failed_dataset(case, str(error), model=name, scheme=method,
-                                        wall_time_s=time.perf_counter() - start), output)
+            failed_table(case, str(error), model=name, scheme=method,
+                         wall_time_s=time.perf_counter() - start).write(output)
         raise
     if output is not None:
-        write_result(dataset, output)
-    return Outcome("ok", text, dataset, None if output is None else Path(output), solution=solution)
+        if hasattr(result, "write"):
+            result.write(output)
+        else:
+            from kanat.io.results import write_result
+
+            write_result(result, output)
+    return Outcome("ok", text, result, None if output is None else Path(output), solution=solution)

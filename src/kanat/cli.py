@@ -189,7 +189,7 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
         fail(error, debug, f"{model} failed")
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, f"{model} failed")
-    _log_solved(model, outcome.dataset)
+    _log_solved(model, outcome.held)
     show(outcome.text)
     show(f"status: {outcome.status}")           # as a dynamic run's summary ends
     if plot is not None:
@@ -199,7 +199,7 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
 
 def _log_solved(model: str, ds) -> None:
     """Log how a steady model was solved: the method asked for, and the one of each cable (statics) or
-    stabilizer mode (pitch)."""
+    stabilizer mode (pitch). ``ds``: the result's dataset or table (its ``attrs`` and ``sizes``)."""
     attrs = ds.attrs
     methods = {k[len("method_"):]: v for k, v in attrs.items() if k.startswith("method_")}
     nodes = f", {ds.sizes['node']} nodes" if "node" in ds.sizes else ""
