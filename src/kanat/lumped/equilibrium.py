@@ -186,10 +186,19 @@ def first_guess(net, case):
     """The start of the equilibrium without positions given: ``(x, source)``, the first of
     :func:`statics_guess` (``"statics"``), the still-water catenaries of network statics
     (:func:`kanat.lumped.catenary_guess.catenary_guess`, ``"catenary"``), or None for the
-    network's own guess ``net.x_guess`` (``"network"``)."""
-    from kanat.lumped.catenary_guess import catenary_guess
+    network's own guess ``net.x_guess`` (``"network"``).
 
-    x = statics_guess(net, case)
+    A case that the statics front door would solve as a network
+    (:func:`kanat.model.support.needs_network`, other than one cable in a current) goes to the
+    catenaries straight away: the front door's answer there is network statics of the same
+    still-water catenaries (or a refusal of the current, whose drag the catenary guess
+    carries), and asking it first costs its solvers' imports (SciPy's ``integrate`` and
+    ``optimize``: 0.2-0.3 s of CPU per process)."""
+    from kanat.lumped.catenary_guess import catenary_guess
+    from kanat.model.support import has_drag, needs_network, single_cable
+
+    network = needs_network(case) and not (has_drag(case) and single_cable(case))
+    x = None if network else statics_guess(net, case)
     if x is not None:
         return x, "statics"
     x = catenary_guess(net, case)
