@@ -35,7 +35,7 @@ the explicit scheme needs about 10 s of wall time per 600 s of these runs)."""
 
 def example_files() -> list[Path]:
     """Every case file of ``examples/``: YAML cases and MoorDyn input files (not notebooks)."""
-    found = [*EXAMPLES.glob("*.yaml"), *EXAMPLES.glob("*.yml"), *EXAMPLES.glob("moordyn/*.dat")]
+    found = [*EXAMPLES.glob("*.yaml"), *EXAMPLES.glob("*.yml"), *EXAMPLES.glob("moordyn/*.dat"), *EXAMPLES.glob("moordyn/*/*.dat")]
     return sorted(found, key=lambda p: p.relative_to(EXAMPLES).as_posix())
 
 
