@@ -83,7 +83,7 @@ def test_base_is_valid():
      ["'lumpd' is not one of: continuum, lumped, statics, pitch",
       "(did you mean 'lumped'?)"]),
     ("type: regular", "type: regullar", "environment.waves.type", 5,
-     ["'regullar' is not a valid type; valid: regular, jonswap (did you mean 'regular'?)"]),
+     ["'regullar' is not a valid type; valid: regular, jonswap, components (did you mean 'regular'?)"]),
     ("{straight: {speed", "{stright: {speed", "vessel.track[0].stright", 15,
      ["'stright' is not a valid track segment", "straight, accelerate, speed_step, turn, "
       "heading", "(did you mean 'straight'?)"]),
