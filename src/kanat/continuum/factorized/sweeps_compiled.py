@@ -17,7 +17,7 @@ in the frame's coordinates (planar: the first two of each vector).
 from __future__ import annotations
 
 import numpy as np
-from kanat.jit import kernel
+from kanat.jit import inner, kernel
 
 from kanat.continuum import kernels2d as k2
 from kanat.continuum import kernels3d as k3
@@ -30,7 +30,7 @@ END_TOLERANCE = 1e-11
 OK, COMPRESSION, SINGULAR, DIVERGED, NONFINITE = 0, 1, 2, 3, 4
 
 
-@kernel
+@inner
 def mass_stiffness(y, p, up, M, K):
     """``M(y)``, ``K(y)`` (d, d) of one node (SPEC §2.1, §2.2); ``up`` None for a planar cable."""
     if up is not None:
@@ -50,7 +50,7 @@ def mass_stiffness(y, p, up, M, K):
     K[3, 2], K[3, 3] = -1.0, -y[1]
 
 
-@kernel
+@inner
 def load(y, cur, up, p, out):
     """``F(y)`` (d,) of one node, complex-capable (zero on the compatibility rows)."""
     out[:] = 0.0
@@ -62,7 +62,7 @@ def load(y, cur, up, p, out):
         out[0], out[1] = ft, fn
 
 
-@kernel
+@inner
 def load_jacobian(y, cur, up, p, F, J):
     """``F(y)`` (d,) and ``J = dF/dy`` (d, d) of one node, real (zero on the compatibility rows)."""
     d = y.shape[0]
@@ -77,10 +77,11 @@ def load_jacobian(y, cur, up, p, F, J):
         F[0], F[1] = k2.node_load_jacobian(y[0], y[1], y[2], y[3], cur[0], cur[1], p, J[:2])
 
 
-@kernel
+@inner
 def axes(y, up):
     """Frame ``(t, n, b)`` rows (3, 3) of one node (planar: 2 x 2 used), complex-capable."""
-    a = np.zeros((3, 3), dtype=y.dtype)
+    a = np.empty((3, 3), dtype=y.dtype)
+    a[:, :] = 0.0
     if up is not None:
         t, n, b = k3.frame(y[4], y[5])
         for i in range(3):
@@ -91,11 +92,12 @@ def axes(y, up):
     return a
 
 
-@kernel
+@inner
 def node_forms(Y, cur, up, p, with_jacobian):
     """``B = M^-1 K``, ``D = M^-1 F``, ``J = M^-1 dF/dY`` (zeros unless asked) and ``M`` at every node."""
     n, d = Y.shape
-    B, J, Ms = np.empty((n, d, d)), np.zeros((n, d, d)), np.empty((n, d, d))
+    B, J, Ms = np.empty((n, d, d)), np.empty((n, d, d)), np.empty((n, d, d))
+    J[:] = 0.0
     D = np.empty((n, d))
     M, K, F, LU, dF = np.empty((d, d)), np.empty((d, d)), np.empty(d), np.empty((d, d)), np.empty((d, d))
     piv = np.empty(d, dtype=np.int64)
@@ -122,7 +124,7 @@ def node_forms(Y, cur, up, p, with_jacobian):
     return B, D, J, Ms
 
 
-@kernel
+@inner
 def split_node(B, c_l, c_t2, parts):
     """``parts[0..3] = B_1+, B_1-, B_2+, B_2-`` of one node (closed form, :mod:`.characteristics`).
 
@@ -152,7 +154,7 @@ def split_node(B, c_l, c_t2, parts):
             parts[3, i, j] = 0.5 * (qb - c_t * q)
 
 
-@kernel
+@inner
 def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
     """The ``dim`` physical end conditions (``CableSystem.end_residual``) for one candidate ``x``."""
     kind = int(par[0])
@@ -168,13 +170,16 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
     for q in range(old.shape[0]):
         zold[q] = old[q]
     ao = axes(zold, up)
-    V = np.zeros(3, dtype=np.complex128)
-    Vo = np.zeros(3, dtype=np.complex128)
+    V = np.empty(3, dtype=np.complex128)
+    Vo = np.empty(3, dtype=np.complex128)
+    V[:] = 0.0
+    Vo[:] = 0.0
     for i in range(dim):
         for c in range(dim):
             V[c] += x[1 + i] * a[i, c]
             Vo[c] += old[1 + i] * ao[i, c]
-    balance = np.zeros(3, dtype=np.complex128)
+    balance = np.empty(3, dtype=np.complex128)
+    balance[:] = 0.0
     if kind == k2.FREE:
         d = 2 * dim
         f, fo = np.empty(d, dtype=np.complex128), np.empty(d, dtype=np.complex128)
@@ -192,7 +197,9 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
                 acc += balance[c] * a[i, c]
             out[i] = acc
         return
-    rel, relo = np.zeros(3, dtype=np.complex128), np.zeros(3, dtype=np.complex128)
+    rel, relo = np.empty(3, dtype=np.complex128), np.empty(3, dtype=np.complex128)
+    rel[:] = 0.0
+    relo[:] = 0.0
     for c in range(dim):
         rel[c], relo[c] = cur[c] - V[c], cur[c] - Vo[c]
     speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
@@ -209,7 +216,7 @@ def physical(x, old, par, side, dt, gamma, cur, up, p, dim, out):
         out[i] = acc
 
 
-@kernel
+@inner
 def _end_residual(x, old, nbr, par, side, dt, cur, up, p, dim, ds, rows, B, Minv, M, K, free, out):
     """Physical conditions, outgoing compatibility rows (and, at a free end, the kinematic
     relations of its transverse components) for one complex candidate ``x`` (d,)."""
@@ -243,12 +250,15 @@ def _end_residual(x, old, nbr, par, side, dt, cur, up, p, dim, ds, rows, B, Minv
             out[dim + m + r] = acc
 
 
-@kernel
+@inner
 def row_basis(A, count, rows):
     """An orthonormal basis of the row space of ``A`` (d, d) of rank ``count`` into ``rows``
     (count, d): Gram–Schmidt with pivoting on the largest remaining row (twice, for round-off)."""
     d = A.shape[0]
-    W = A.copy()
+    W = np.empty((d, d))
+    for i in range(d):
+        for j in range(d):
+            W[i, j] = A[i, j]
     for k in range(count):
         best, norm = 0, -1.0
         for i in range(d):
@@ -269,7 +279,7 @@ def row_basis(A, count, rows):
                     W[i, j] -= dot * rows[k, j]
 
 
-@kernel
+@inner
 def end_solve(Y, e, side, nbr, par, dt, cur, up, p, dim, ds, x):
     """One end node from its physical conditions and outgoing characteristics (:func:`characteristics.end_state`)
     into ``x`` (d,); returns the status."""
@@ -359,7 +369,7 @@ def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, p
     return X, status, node
 
 
-@kernel
+@inner
 def _split_all(Y, B, p, slack, parts):
     """The split of every node into ``parts`` (n, 4, d, d); returns the first node in compression
     beyond ``slack`` (or -1)."""
@@ -388,7 +398,9 @@ def _factorized_step(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, sla
                 X[i, a] = Y[i, a]
         return COMPRESSION, bad
     sigma = dt / ds
-    offset, residual = np.zeros((n, d)), np.zeros((n, d))
+    offset, residual = np.empty((n, d)), np.empty((n, d))
+    offset[:, :] = 0.0
+    residual[:, :] = 0.0
     for i in range(n):
         for a in range(d):
             if delta:
@@ -448,7 +460,7 @@ def _factorized_step(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, sla
     return OK, 0
 
 
-@kernel
+@inner
 def _add(X, offset):
     for i in range(X.shape[0]):
         for a in range(X.shape[1]):

@@ -32,11 +32,14 @@ def _assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, 
     nb, h = own.shape[0], comps.shape[0]
     lower, upper = h + nb - 1, 2 * nb - 1 - h
     size = n * nb
-    band = np.zeros((lower + upper + 1, size))
-    rhs = np.zeros(size)
-    is_own = np.zeros(d, dtype=np.bool_)
+    band = np.empty((lower + upper + 1, size))
+    rhs = np.empty(size)
+    is_own = np.empty(d, dtype=np.int64)              # 1 for the block's own unknowns
+    band[:, :] = 0.0
+    rhs[:] = 0.0
+    is_own[:] = 0
     for q in own:
-        is_own[q] = True
+        is_own[q] = 1
     Ms, Ks = np.empty((n, d, d)), np.empty((n, d, d))
     Fg = np.empty((n, d))
     J = np.empty((n, d, nb))
@@ -86,7 +89,7 @@ def _assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, 
             row = h + nb * j + ia
             value = (Yn[j, a] + Yn[j + 1, a]) / (2.0 * dt) + Dbar[a]
             for b in range(d):
-                other = latest[j + 1, b] - latest[j, b] if not is_own[b] else 0.0
+                other = latest[j + 1, b] - latest[j, b] if is_own[b] == 0 else 0.0
                 value -= Bbar[a, b] * ((1.0 - gamma) * (Yn[j + 1, b] - Yn[j, b]) + gamma * other) / ds
             for c in range(nb):
                 value -= Jl[a, c] * latest[j, own[c]] + Jr[a, c] * latest[j + 1, own[c]]
