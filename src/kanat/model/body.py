@@ -16,12 +16,14 @@ stored as 6 rows. Units of a 6x6 matrix follow its blocks: translation-translati
 """
 from __future__ import annotations
 
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-import numpy as np
 from pydantic import Field, model_validator
 
 from ._base import ZERO3, KanatModel, Matrix3, Matrix6, Vector3, Vector6, fmt, quantity
+
+if TYPE_CHECKING:                   # NumPy loads for 6-DOF bodies and the models' matrices, not to read a case
+    import numpy as np
 
 SYMMETRY_RTOL = 1e-9
 """Relative asymmetry tolerated in matrices that must be symmetric (inertia, added mass)."""
@@ -55,11 +57,15 @@ class SurfaceBuoy(KanatModel):
 
 def _skew(c) -> np.ndarray:
     """Cross-product matrix ``S(c)``: ``S(c) x = c x x``."""
+    import numpy as np
+
     x, y, z = c
     return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
 
 
 def _symmetric(matrix, name: str) -> None:
+    import numpy as np
+
     a = np.asarray(matrix, dtype=float)
     scale = max(float(np.max(np.abs(a))), 1e-300)
     if np.max(np.abs(a - a.T)) > SYMMETRY_RTOL * scale:
@@ -174,6 +180,8 @@ class Body(KanatModel):
         return self
 
     def _check_rigid(self) -> None:
+        import numpy as np
+
         if self.inertia is None:
             raise ValueError("a dof: 6 body needs its inertia [Ixx, Iyy, Izz] (kg m^2) about "
                              "the centre of gravity")
@@ -218,6 +226,8 @@ class Body(KanatModel):
         gravity and ``S(c) x = c x x`` (kinetic energy ``1/2 m |v + w x c|^2 + 1/2 w.I_c w``).
         A 3-DOF body: ``m`` on the translations, zeros elsewhere.
         """
+        import numpy as np
+
         m = self.mass
         out = np.zeros((6, 6))
         out[:3, :3] = m * np.eye(3)
@@ -236,6 +246,8 @@ class Body(KanatModel):
         ``C44 = B GM_roll``, ``C55 = B GM_pitch`` with ``B = net_buoyancy + mass g`` the
         buoyancy (small-angle hydrostatics of a wall-sided body); zero otherwise.
         """
+        import numpy as np
+
         if self.hydrostatic_stiffness is not None:
             return np.asarray(self.hydrostatic_stiffness, dtype=float)
         out = np.zeros((6, 6))

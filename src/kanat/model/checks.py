@@ -12,8 +12,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 
-import numpy as np
-
 from ..errors import Problem
 from ._base import fmt
 from .cable import Cable, CableEnd
@@ -62,12 +60,12 @@ def _kn(force: float) -> str:
     return f"{force / 1e3:.4g} kN"
 
 
-def _end_position(case: Case, end: CableEnd) -> np.ndarray | None:
+def _end_position(case: Case, end: CableEnd) -> tuple[float, float, float] | None:
     """Initial global position of a fixed end (anchor, or the tow point at t = 0)."""
     if end.kind == "anchor":
-        return np.asarray(end.position, dtype=float)
+        return tuple(end.position)
     if end.kind == "vessel":  # vessel at the origin, heading 0: vessel axes = global axes
-        return np.asarray(case.vessel.tow_point, dtype=float)
+        return tuple(case.vessel.tow_point)
     return None
 
 
@@ -104,6 +102,8 @@ def check_bodies(case: Case, out: Findings) -> None:
 
 def check_anchors(case: Case, out: Findings) -> None:
     """Anchors lie between the seabed (a sloped one where ``seabed.slope_deg``) and the free surface."""
+    if not any(end.kind == "anchor" for cable in case.cables for end in cable.ends):
+        return                                  # (the seabed model, NumPy and all, loads for anchors only)
     from ..physics.seabed import seabed_of
 
     depth = case.environment.depth
@@ -129,7 +129,7 @@ def check_fixed_span(case: Case, out: Findings) -> None:
         a, b = (_end_position(case, end) for end in cable.ends)
         if a is None or b is None:
             continue
-        span = float(np.linalg.norm(b - a))
+        span = math.dist(a, b)
         if span <= cable.length:
             continue
         line = case.line_types[cable.line_type]
@@ -374,10 +374,9 @@ def _check_one_pitch(where: tuple, pitch, out: Findings) -> None:
 
     key = "natural_frequency" if pitch.natural_frequency is not None else "restoring"
     omega, omega0, zeta = pitch.wave_frequency, pitch.omega0, pitch.damping_ratio
-    n = np.arange(1, pitch.harmonics + 1)
-    r = n * omega / omega0
-    denominator = np.hypot(1 - r**2, 2 * zeta * r)
-    worst = int(np.argmin(denominator))
+    n = range(1, pitch.harmonics + 1)
+    denominator = [math.hypot(1 - (k * omega / omega0) ** 2, 2 * zeta * k * omega / omega0) for k in n]
+    worst = min(range(len(denominator)), key=denominator.__getitem__)
     nearest = max(1, round(omega0 / omega))  # every harmonic counts, also beyond the truncation
     text = (f"harmonic n = {n[worst]} of the wave frequency ({n[worst]} × {omega:.4g} = "
             f"{n[worst] * omega:.4g} rad/s) ")

@@ -1,12 +1,15 @@
 """Water, current and waves (case section ``environment``)."""
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal, Union
+import math
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-import numpy as np
 from pydantic import BeforeValidator, Field, ValidationInfo, field_validator, model_validator
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
+
+if TYPE_CHECKING:                   # NumPy loads when a model asks for arrays, not to read a case
+    import numpy as np
 
 
 def _as_row(value: Any) -> Any:
@@ -60,6 +63,8 @@ class Current(KanatModel):
         """The current as ascending heights ``(k,)`` [m] and velocities ``(k, 3)`` [m/s] (one row
         when uniform): the form the kernels interpolate in, linear between rows and constant
         beyond the ends."""
+        import numpy as np
+
         if self.profile is None:
             return np.zeros(1), np.asarray(self.at(0.0), dtype=float).reshape(1, 3)
         rows = np.asarray(self.profile, dtype=float)[::-1]
@@ -78,6 +83,8 @@ class Current(KanatModel):
         numpy.ndarray, shape (3,) or (n, 3)
             Velocity [m/s]; linear between profile rows, constant beyond the ends.
         """
+        import numpy as np
+
         z_arr = np.asarray(z, dtype=float)
         if self.profile is None:
             u = np.asarray(self.velocity if self.velocity is not None else ZERO3, dtype=float)
@@ -165,7 +172,7 @@ class ComponentWaves(KanatModel):
         """The heading [deg] of the component farthest from the x axis (the one the x-z plane
         checks look at); the common heading when all components share one."""
         return max((row[3] for row in self.components),
-                   key=lambda h: abs(np.sin(np.radians(h))))
+                   key=lambda h: abs(math.sin(math.radians(h))))
 
 
 Waves = Annotated[Union[RegularWaves, JonswapWaves, ComponentWaves], Field(discriminator="type")]

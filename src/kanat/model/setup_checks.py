@@ -20,7 +20,7 @@ its problems with ``out.error(path, message)``.
 """
 from __future__ import annotations
 
-import numpy as np
+import math
 
 from ._base import fmt, listing, suggest
 from .case import Case
@@ -127,16 +127,16 @@ def check_continuum_cable(case: Case, out) -> None:
         if item.s <= 0.0 or item.s >= cable.length * (1 - END_RTOL):
             out.error(("cables", 0, "attachments", i, "s"), f"an attachment at a cable end (s = {fmt(item.s)} "
                       "m) is that end's body: write it as the end ('from' or 'to') instead")
-    strains = np.linspace(0.0, LAW_STRAIN, LAW_SAMPLES + 1)
+    strains = [LAW_STRAIN * k / LAW_SAMPLES for k in range(LAW_SAMPLES + 1)]
     for name in dict.fromkeys(cable.line_types):
         law = case.line_types[name].elastic_law if name in case.line_types else None
         if law is None:
             continue
         if law.table is not None:
-            tensions = np.array([0.0, *(row[1] for row in law.table)])
+            tensions = [0.0, *(row[1] for row in law.table)]
         else:
-            tensions = sum(c * strains ** (i + 1) for i, c in enumerate(law.polynomial))
-        if np.any(np.diff(tensions) <= 0):
+            tensions = [sum(c * e ** (i + 1) for i, c in enumerate(law.polynomial)) for e in strains]
+        if any(after <= before for before, after in zip(tensions, tensions[1:])):
             out.error(("line_types", name, "elastic_law"), "the tension of the elastic law must increase "
                       f"with strain up to {LAW_STRAIN:g} for the continuum model (it inverts the law); "
                       "a table must not repeat a tension")
@@ -146,16 +146,13 @@ def check_sea(case: Case, out) -> None:
     """The dynamic models' sea and seabed: a JONSWAP spectrum that is positive (DNV's normalization
     ``1 - 0.287 ln(gamma)`` is not, beyond gamma = 32.6), and a seabed stiff enough to hold the
     lines (their static penetration ``w / (k d)`` within the depth)."""
-    from ..physics.waves import jonswap_spectrum
-
     if case.model not in ("continuum", "lumped"):
         return
     env = case.environment
     waves = env.waves
-    if isinstance(waves, JonswapWaves) and not jonswap_spectrum(2 * np.pi / waves.tp, waves.hs, waves.tp,
-                                                                  waves.gamma) > 0:
+    if isinstance(waves, JonswapWaves) and not _jonswap_positive(waves):
         out.error(("environment", "waves", "gamma"), f"gamma {fmt(waves.gamma)} makes the JONSWAP spectrum "
-                  f"negative (DNV's normalization 1 - 0.287 ln(gamma) = {1 - 0.287 * np.log(waves.gamma):.3g}); "
+                  f"negative (DNV's normalization 1 - 0.287 ln(gamma) = {1 - 0.287 * math.log(waves.gamma):.3g}); "
                   "DNV gives it for 1 <= gamma <= 7 (3.3 is the mean North Sea value)")
     seabed = env.seabed
     if seabed is None or env.depth is None:
@@ -171,6 +168,14 @@ def check_sea(case: Case, out) -> None:
                       f"sink w / (k d) = {sink:.3g} m into the seabed, more than the depth {fmt(env.depth)} m; "
                       "MoorDyn's kbot is typically 3e6 Pa/m")
             return
+
+
+def _jonswap_positive(waves: JonswapWaves) -> bool:
+    """Whether the JONSWAP spectrum of ``waves`` is positive at its peak (the wave model, NumPy and
+    all, loads only for a JONSWAP case)."""
+    from ..physics.waves import jonswap_spectrum
+
+    return bool(jonswap_spectrum(2 * math.pi / waves.tp, waves.hs, waves.tp, waves.gamma) > 0)
 
 
 # --- the lumped model's network ------------------------------------------------------------
