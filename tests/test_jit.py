@@ -8,7 +8,7 @@ from numba.core import event
 from numba.core.registry import CPUDispatcher
 
 from kanat import jit, warmup
-from kanat.continuum import kernels2d, kernels3d
+from kanat.continuum import bending3d, kernels2d, kernels3d
 from kanat.continuum.factorized import dense, sweeps_compiled, waves_compiled
 from kanat.lumped import fast, fast_implicit, kernels
 from kanat.api import SCHEMES, load_case, simulate
@@ -54,7 +54,7 @@ def test_every_registered_scheme_has_a_family(name):
         assert family in warmup.FAMILIES and family in warmup.CASES
 
 
-KERNEL_MODULES = (kernels2d, kernels3d, sweeps_compiled, waves_compiled, dense, kernels, fast, fast_implicit)
+KERNEL_MODULES = (kernels2d, kernels3d, bending3d, sweeps_compiled, waves_compiled, dense, kernels, fast, fast_implicit)
 
 
 def versions() -> dict:
@@ -86,6 +86,8 @@ def test_a_planar_run_after_warmup_compiles_nothing():
 @pytest.mark.slow
 @pytest.mark.parametrize("name, example, changes", [
     ("continuum-3d", "turn_360_3d.yaml", {"simulation.duration": 10.0}),
+    ("continuum-3d-bending", "turn_360_3d.yaml",
+     {"simulation.duration": 10.0, "line_types.towcable.bending_stiffness": 50.0}),
     ("lumped-rk4", "seed004_head_5.6s_1to4.yaml", {"simulation.duration": 1.0}),
     ("lumped-implicit", "seed004_head_5.6s_1to4.yaml",
      {"simulation.duration": 1.0, "simulation.scheme": "generalized-alpha-lumped"}),
@@ -99,7 +101,8 @@ def test_a_run_after_warmup_compiles_nothing(name, example, changes):
 def test_the_warmup_cases_are_tiny_and_valid():
     for name, case in warmup.CASES.items():
         parsed = load_case(case)
-        assert warmup.family_name(parsed.simulation.scheme, parsed.simulation.dimensions or 2) == name
+        bending = any(line.bending_stiffness > 0 for line in parsed.line_types.values())
+        assert warmup.family_name(parsed.simulation.scheme, parsed.simulation.dimensions or 2, bending) == name
         assert sum(c.segments for c in parsed.cables) <= 5
 
 

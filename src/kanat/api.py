@@ -355,7 +355,9 @@ def _announce_compile(model) -> None:
     from kanat import warmup
 
     cable_model = getattr(model, "cable_model", None)
-    family = warmup.family_name(model.scheme.name, getattr(cable_model, "dimensions", 2))
+    grid = getattr(cable_model, "grid", None)
+    family = warmup.family_name(model.scheme.name, getattr(cable_model, "dimensions", 2),
+                                bending=grid is not None and grid.bending)
     estimate = warmup.pending(family)
     if estimate is not None:
         logging.getLogger("kanat").warning(

@@ -19,7 +19,7 @@ from kanat.jit import pending as family_pending
 FAMILIES = {
     "continuum-2d": 3.5, "continuum-3d": 6.0, "factorized-2d": 16.0, "factorized-3d": 20.0,
     "wave-factorized-2d": 9.0, "wave-factorized-3d": 13.0, "lumped-rk4": 6.5, "lumped-abm4": 6.5,
-    "lumped-implicit": 11.0,
+    "lumped-implicit": 11.0, "continuum-3d-bending": 11.6,
 }
 """Every family's name and its ``compile_s``: CPU seconds of the first run's compile measured by
 ``benchmarks/bench_compile.py`` (benchmarks/RESULTS.md; factorized-3d and lumped-abm4 estimated
@@ -38,6 +38,10 @@ def family(name: str) -> Family:
         return Family(name, entries, FAMILIES[name])
     from kanat.continuum import kernels2d, kernels3d
 
+    if name == "continuum-3d-bending":
+        from kanat.continuum import bending3d
+
+        return Family(name, ((bending3d.assemble3_bending, None),), FAMILIES[name])
     flat = name.endswith("2d")
     entries = ((kernels2d.assemble if flat else kernels3d.assemble3, None),)
     if name.startswith("factorized"):
@@ -58,12 +62,15 @@ _SCHEME_FAMILY = {"generalized-alpha": "continuum", "box": "continuum", "backwar
                   "generalized-alpha-lumped": "lumped-implicit"}
 
 
-def family_name(scheme: str, dimensions: int = 2) -> str | None:
+def family_name(scheme: str, dimensions: int = 2, bending: bool = False) -> str | None:
     """The family a run of ``scheme`` (a registered scheme name) in ``dimensions`` compiles, or
-    None for a scheme with no compiled kernels (a user's own)."""
+    None for a scheme with no compiled kernels (a user's own). ``bending``: the cable has bending
+    stiffness, which a 3-D run carries in kernels of its own (:mod:`kanat.continuum.bending3d`)."""
     base = _SCHEME_FAMILY.get(scheme)
     if base is None or base.startswith("lumped"):
         return base
+    if base == "continuum" and dimensions == 3 and bending:
+        return "continuum-3d-bending"
     return f"{base}-{3 if dimensions == 3 else 2}d"
 
 
@@ -105,6 +112,8 @@ CASES = {
     "factorized-2d": _continuum("factorized", 2), "factorized-3d": _continuum("factorized", 3),
     "wave-factorized-2d": _continuum("wave-factorized", 2), "wave-factorized-3d": _continuum("wave-factorized-2", 3),
     "lumped-rk4": _lumped("rk4"), "lumped-abm4": _lumped("abm4"), "lumped-implicit": _lumped("generalized-alpha-lumped"),
+    "continuum-3d-bending": {**_continuum("generalized-alpha", 3), "name": "warmup-bending-3d",
+                             "line_types": {"cable": {**_CABLE, "bending_stiffness": 50.0}}},
 }
 """A tiny case (a case-file mapping) per family: what :func:`warmup` runs."""
 
