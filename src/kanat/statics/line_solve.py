@@ -21,7 +21,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from kanat.errors import SolverError
 from kanat.statics.piecewise import Ground, LineEvaluation, LiftedLoop, Pieces, end_position
@@ -163,6 +162,8 @@ def _newton(span, rise, pieces, ground, H, VB):
 
 def _root(f, lo, hi, grow):
     """A root of the increasing ``f`` in ``[lo, hi]``, the bracket widened by ``grow``."""
+    from scipy.optimize import brentq           # rarely needed: its import is 0.15 s of a run's CPU
+
     for _ in range(200):
         if f(lo) <= 0.0:
             break
@@ -241,6 +242,8 @@ def _lying(span, rise, pieces: Pieces, ground: Ground) -> LineSolution:
         return total, slope
     T_B, slope = 0.0, math.inf
     if reach > 0.0:
+        from scipy.optimize import brentq
+
         EA = float(np.max(pieces.stiffness))
         T_B = brentq(lambda T: stretch(T)[0] - reach, 0.0, 2.0 * (reach / pieces.total_length) * EA
                      + c * abs(pieces.total_weight) + 1.0, xtol=1e-12, rtol=1e-15)
