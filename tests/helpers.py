@@ -114,3 +114,42 @@ class quiet:
         os.dup2(self.saved, 1)
         os.close(self.saved)
         self.null.close()
+
+
+class RotatedDrive:
+    """A 3-D continuum model's tow point motion rotated by ``rotation`` about the vertical."""
+
+    def __init__(self, model, rotation):
+        self.model, self.rotation = model, rotation
+
+    def velocities(self, t):
+        v0, v1 = self.model.velocities(t)
+        return self.rotation @ v0, v1
+
+    def origin(self, t):
+        return self.rotation @ self.model.origin(t)
+
+
+def step_rotated(model, state, angle_deg: float, steps: int = 20):
+    """``steps`` steps of 1 s of a 3-D continuum ``state`` and of the same state (positions, chart and
+    tow point motion) rotated by ``angle_deg`` about the vertical: ``(plain, turned, rotation)``."""
+    from kanat.continuum.schemes import GeneralizedAlpha
+    from kanat.continuum.spatial import SpatialState, step3
+
+    a = np.radians(angle_deg)
+    rotation = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
+    turned = SpatialState(state.t, state.y, state.rate, state.xyz @ rotation.T, rotation @ state.chart)
+    coefficients, plain = GeneralizedAlpha().coefficients(), state
+    for _ in range(steps):
+        plain, _ = model.step(plain, 1.0, coefficients)
+        turned, _ = step3(model.cable, turned, 1.0, coefficients, RotatedDrive(model, rotation))
+    return plain, turned, rotation
+
+
+def zero_crossing_period(t, signal) -> float:
+    """The mean period of ``signal`` sampled at times ``t``: twice the mean interval between its zero
+    crossings, each placed by linear interpolation."""
+    sign = np.signbit(signal)
+    idx = np.nonzero(sign[1:] != sign[:-1])[0]
+    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
+    return 2.0 * np.mean(np.diff(times))

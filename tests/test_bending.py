@@ -14,7 +14,7 @@ from kanat.continuum.models import model_for
 from kanat.continuum.schemes import Box
 from kanat.continuum.stepper import State, steady, step
 
-from helpers import EXAMPLES
+from helpers import EXAMPLES, zero_crossing_period
 
 STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
 
@@ -44,13 +44,6 @@ class Hold:
 
     def origin(self, t):
         return np.zeros(2)
-
-
-def zero_crossing_period(t, signal):
-    sign = np.signbit(signal)
-    idx = np.nonzero(sign[1:] != sign[:-1])[0]
-    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
-    return 2.0 * np.mean(np.diff(times))
 
 
 @pytest.mark.parametrize("mode", [1, 2, 3])

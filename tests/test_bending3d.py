@@ -19,6 +19,8 @@ from kanat.continuum.models import SpatialModel, model_for
 from kanat.continuum.schemes import Box, GeneralizedAlpha
 from kanat.continuum.spatial import SpatialCable, SpatialEnd, SpatialState, positions3, steady3, step3
 
+from helpers import step_rotated, zero_crossing_period
+
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 STEP = (EXAMPLES / "speed_step_2d.yaml").read_text().replace("duration: 600\n", "duration: 120\n")
 TURN = (EXAMPLES / "turn_360_3d.yaml").read_text()
@@ -150,13 +152,6 @@ class Hold:
         return np.zeros(3)
 
 
-def zero_crossing_period(t, signal):
-    sign = np.signbit(signal)
-    idx = np.nonzero(sign[1:] != sign[:-1])[0]
-    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
-    return 2.0 * np.mean(np.diff(times))
-
-
 @pytest.mark.parametrize("mode", [1, 2, 3])
 def test_beam_string_vibrates_out_of_plane_at_its_natural_frequencies(mode):
     """A taut beam-string pinned at (0, 0, 0) and (L, 0, 0) vibrating in y (the binormal of a vertical
@@ -263,31 +258,10 @@ def test_rechart_of_a_rod_is_exact_both_ways_and_a_step_agrees_to_truncation_err
     assert differences[1] < 0.5 * differences[0]
 
 
-class RotatedDrive:
-    """The model's tow point motion rotated by ``rotation`` about the vertical."""
-
-    def __init__(self, model, rotation):
-        self.model, self.rotation = model, rotation
-
-    def velocities(self, t):
-        v0, v1 = self.model.velocities(t)
-        return self.rotation @ v0, v1
-
-    def origin(self, t):
-        return self.rotation @ self.model.origin(t)
-
-
 @pytest.mark.parametrize("angle_deg", [37.0, 180.0])
 def test_a_turning_rod_rotated_about_the_vertical_keeps_its_tensions_and_moments(angle_deg):
     model, state = turning_rod()
-    a = np.radians(angle_deg)
-    rotation = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
-    rotated = SpatialState(state.t, state.y, state.rate, state.xyz @ rotation.T, rotation @ state.chart)
-    coefficients = GeneralizedAlpha().coefficients()
-    plain, turned = state, rotated
-    for _ in range(20):
-        plain, _ = model.step(plain, 1.0, coefficients)
-        turned, _ = step3(model.cable, turned, 1.0, coefficients, RotatedDrive(model, rotation))
+    plain, turned, rotation = step_rotated(model, state, angle_deg)
     np.testing.assert_allclose(turned.y[:, 0], plain.y[:, 0], rtol=1e-9)
     scale = np.max(np.abs(plain.y[:, 8:]))
     np.testing.assert_allclose(turned.y[:, 8:], plain.y[:, 8:], atol=1e-9 * scale)

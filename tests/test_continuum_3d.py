@@ -8,11 +8,11 @@ import pytest
 from kanat.continuum.chart import choose_chart, frames, rechart
 from kanat.continuum.models import SpatialModel
 from kanat.continuum.schemes import GeneralizedAlpha
-from kanat.continuum.spatial import SpatialState, step3
+from kanat.continuum.spatial import SpatialState
 from kanat.io import parse_case
 from kanat.io.results import read_result
 
-from helpers import run
+from helpers import run, step_rotated
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 STEP = (EXAMPLES / "speed_step_2d.yaml").read_text().replace("duration: 600\n", "duration: 200\n")
@@ -63,31 +63,10 @@ def test_rechart_is_exact_both_ways_and_a_step_agrees_to_truncation_error():
     assert differences[1] < 0.5 * differences[0]
 
 
-class RotatedDrive:
-    """The model's tow point motion rotated by ``rotation`` about the vertical."""
-
-    def __init__(self, model, rotation):
-        self.model, self.rotation = model, rotation
-
-    def velocities(self, t):
-        v0, v1 = self.model.velocities(t)
-        return self.rotation @ v0, v1
-
-    def origin(self, t):
-        return self.rotation @ self.model.origin(t)
-
-
 @pytest.mark.parametrize("angle_deg", [37.0, 180.0])
 def test_rigid_rotation_about_the_vertical_leaves_tensions_unchanged(angle_deg):
     model, state = turning_state()
-    a = np.radians(angle_deg)
-    rotation = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
-    rotated = SpatialState(state.t, state.y, state.rate, state.xyz @ rotation.T, rotation @ state.chart)
-    coefficients = GeneralizedAlpha().coefficients()
-    plain, turned = state, rotated
-    for _ in range(20):
-        plain, _ = model.step(plain, 1.0, coefficients)
-        turned, _ = step3(model.cable, turned, 1.0, coefficients, RotatedDrive(model, rotation))
+    plain, turned, rotation = step_rotated(model, state, angle_deg)
     np.testing.assert_allclose(turned.y[:, 0], plain.y[:, 0], rtol=1e-9)
     np.testing.assert_allclose(turned.xyz, plain.xyz @ rotation.T, atol=1e-7)
 
