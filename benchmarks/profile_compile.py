@@ -4,9 +4,11 @@ Runs the shortened example of one family (:data:`bench_compile.EXAMPLES`) in a f
 with an empty ``NUMBA_CACHE_DIR`` and records numba's ``numba:compile`` events: for every
 compiled function and type signature, its inclusive time (from the start of its compile to
 its end, callees included) and its exclusive time (callees' compiles taken out), in CPU seconds
-of the process. A function's exclusive time includes LLVM optimizing and generating machine
-code for its module with every callee linked in, so a deep call tree pays for its leaves at
-every level. Functions
+of the process, and of that the time spent in LLVM (numba's ``CodeLibrary.add_ir_module``, which
+optimizes the function, and ``finalize``, which links every callee in again, optimizes the whole
+module and generates its machine code; summed over the versions of a name). The rest is numba's
+Python front end (typing and lowering to LLVM IR). A deep call tree pays for its leaves at every
+level of ``finalize``. Functions
 compiled for more than one signature are the duplicated specializations to look for (literal
 ints, None vs array, float vs complex). CPU-bound: run it on a quiet machine and repeat.
 
@@ -27,10 +29,23 @@ HERE = Path(__file__).resolve().parent
 
 CHILD = r"""
 import json, sys, time, resource
-from numba.core import event
+from numba.core import codegen, event
 from kanat.api import load_case, simulate
 
 records, stack = [], []
+llvm = {}                       # library name: CPU s in LLVM (parsing, optimizing, machine code)
+
+
+def timed(method):
+    def wrapper(library, *args):
+        start = time.process_time()
+        method(library, *args)
+        llvm[library.name] = llvm.get(library.name, 0.0) + time.process_time() - start
+    return wrapper
+
+
+codegen.CPUCodeLibrary.add_ir_module = timed(codegen.CPUCodeLibrary.add_ir_module)
+codegen.CPUCodeLibrary.finalize = timed(codegen.CPUCodeLibrary.finalize)
 
 class Listener(event.Listener):
     def on_start(self, ev):
@@ -50,7 +65,7 @@ usage = resource.getrusage(resource.RUSAGE_SELF)
 rows = []
 for dispatcher, args, total, own in records:
     func = dispatcher.py_func
-    rows.append([f"{func.__module__}.{func.__qualname__}", str(args), total, own])
+    rows.append([f"{func.__module__}.{func.__qualname__}", str(args), total, own, llvm.get(func.__qualname__, 0.0)])
 print(json.dumps({"records": rows, "cpu": usage.ru_utime + usage.ru_stime}))
 """
 
@@ -76,13 +91,15 @@ def main(argv=None) -> None:
     result = profile(short_case(example, changes, Path(tempfile.mkdtemp())))
     records = result["records"]
     top_level = sum(r[3] for r in records)
-    print(f"{args.family} ({example}): {len(records)} compiled versions, {top_level:.2f} s of compiling, "
+    llvm = sum({r[0]: r[4] for r in records}.values())
+    print(f"{args.family} ({example}): {len(records)} compiled versions, {top_level:.2f} s of compiling "
+          f"({llvm:.2f} s of it in LLVM), "
           f"{result['cpu']:.2f} s CPU of the whole process\n")
-    print("| function | signature | exclusive [s] | inclusive [s] |\n|---|---|---|---|")
-    for name, sig, total, own in sorted(records, key=lambda r: -r[3])[:args.top]:
-        print(f"| {name.replace('kanat.continuum.', '')} | {sig[:60]} | {own:.3f} | {total:.3f} |")
+    print("| function | signature | exclusive [s] | of it LLVM [s] | inclusive [s] |\n|---|---|---|---|---|")
+    for name, sig, total, own, llvm in sorted(records, key=lambda r: -r[3])[:args.top]:
+        print(f"| {name.replace('kanat.continuum.', '')} | {sig[:60]} | {own:.3f} | {llvm:.3f} | {total:.3f} |")
     versions = defaultdict(list)
-    for name, sig, _total, own in records:
+    for name, sig, _total, own, _llvm in records:
         versions[name].append((sig, own))
     repeated = {name: v for name, v in versions.items() if len(v) > 1}
     if repeated:

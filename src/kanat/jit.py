@@ -16,7 +16,9 @@ without compiling, whether a family still has to be compiled, so a run can say
 
 Rules that keep compiling short (docs/performance.md has the measurements): scalar loops,
 no array expressions, slice copies (``a[:] = b``), ``@`` or ``np.linalg`` in kernels a run
-uses; no complex variants in a run (complex-step oracles are compiled by the tests only);
+uses; no complex variants in a run (complex-step oracles are compiled by the tests only; the
+factorized schemes' end conditions are the exception: their derivatives written out compiled no
+faster than the complex step, docs/performance.md);
 no ``inline="always"``; no integer constant passed straight to another kernel (numba
 compiles a separate version for the literal) — pass a variable or restructure. Scratch
 arrays come from ``np.empty`` with a float (or int64) dtype, zeroed by ``a[:] = 0.0`` where

@@ -17,13 +17,13 @@ from kanat.jit import Family, planar, spatial
 from kanat.jit import pending as family_pending
 
 FAMILIES = {
-    "continuum-2d": 3.5, "continuum-3d": 6.0, "factorized-2d": 16.0, "factorized-3d": 20.0,
-    "wave-factorized-2d": 9.0, "wave-factorized-3d": 13.0, "lumped-rk4": 6.5, "lumped-abm4": 6.5,
+    "continuum-2d": 3.7, "continuum-3d": 6.0, "factorized-2d": 12.9, "factorized-3d": 15.9,
+    "wave-factorized-2d": 8.8, "wave-factorized-3d": 11.6, "lumped-rk4": 6.5, "lumped-abm4": 6.5,
     "lumped-implicit": 11.0, "continuum-3d-bending": 11.6,
 }
 """Every family's name and its ``compile_s``: CPU seconds of the first run's compile measured by
-``benchmarks/bench_compile.py`` (benchmarks/RESULTS.md; factorized-3d and lumped-abm4 estimated
-from their siblings)."""
+``benchmarks/bench_compile.py`` (benchmarks/RESULTS.md; continuum-2d and the four factorized
+families remeasured 2026-11-27 on a quiet machine; lumped-abm4 estimated from lumped-rk4)."""
 
 
 def family(name: str) -> Family:
