@@ -8,9 +8,9 @@ of the process, and of that the time spent in LLVM (numba's ``CodeLibrary.add_ir
 optimizes the function, and ``finalize``, which links every callee in again, optimizes the whole
 module and generates its machine code; summed over the versions of a name). The rest is numba's
 Python front end (typing and lowering to LLVM IR). A deep call tree pays for its leaves at every
-level of ``finalize``. Functions
-compiled for more than one signature are the duplicated specializations to look for (literal
-ints, None vs array, float vs complex). CPU-bound: run it on a quiet machine and repeat.
+level of ``finalize``. Functions compiled for more than one signature are the duplicated
+specializations to look for (literal ints, None vs array, float vs complex). CPU-bound: run it
+on a quiet machine and repeat.
 
 Run: ``python benchmarks/profile_compile.py FAMILY [--top 30]``.
 """
