@@ -22,9 +22,17 @@ RECHART_COS = 0.9        # re-chart when |t . p| exceeds this (tangent within ~2
 def frames(y: np.ndarray, chart: np.ndarray):
     """Global unit vectors ``t, n, b`` (each (n, 3)) of states ``y`` (n, 6) in ``chart``."""
     cp, sp, ct, st = np.cos(y[:, 4]), np.sin(y[:, 4]), np.cos(y[:, 5]), np.sin(y[:, 5])
-    local_t = np.column_stack([cp * ct, cp * st, sp])
-    local_n = np.column_stack([-sp * ct, -sp * st, cp])
-    local_b = np.column_stack([st, -ct, np.zeros_like(st)])
+    n = len(y)
+    local_t, local_n, local_b = np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 3))   # np.column_stack's
+    np.multiply(cp, ct, out=local_t[:, 0])                                                # layout, built in place
+    np.multiply(cp, st, out=local_t[:, 1])
+    local_t[:, 2] = sp
+    np.multiply(-sp, ct, out=local_n[:, 0])
+    np.multiply(-sp, st, out=local_n[:, 1])
+    local_n[:, 2] = cp
+    local_b[:, 0] = st
+    np.negative(ct, out=local_b[:, 1])
+    local_b[:, 2] = 0.0
     return local_t @ chart.T, local_n @ chart.T, local_b @ chart.T
 
 

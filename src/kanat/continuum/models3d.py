@@ -43,6 +43,7 @@ class SpatialModel:
         self.case = case
         self.cable = spatial_cable(case)
         self.track = VesselTrack.from_model(case.vessel)
+        self._rows = self.cable.rows()              # a uniform cable builds its rows at every call
 
     def velocities(self, t):
         v0 = self.track.tow_state(t).velocity if self.cable.start.moving else np.zeros(3)
@@ -73,7 +74,7 @@ class SpatialModel:
         return SpatialState(0.0, y, np.zeros_like(y), xyz, chart, rows, s)
 
     def step(self, state, dt, coefficients):
-        return step3(self.cable, state, dt, coefficients, self)
+        return step3(self.cable, state, dt, coefficients, self, self._rows)
 
     def tangents(self, state) -> np.ndarray:
         """Global unit tangents (N+1, 3)."""

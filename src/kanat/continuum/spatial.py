@@ -14,9 +14,9 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
 from kanat.continuum import bending3d
-from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
+from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
-from kanat.continuum.model2d import CableGrid, interval_stretch
+from kanat.continuum.model2d import CableGrid, interval_stretch, strain_of
 from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, solve_band, step_rows
 from kanat.continuum.water import elevation, kinematics_time, predictor_weight
 
@@ -47,10 +47,12 @@ class SpatialEnd:
         there instead of leaving the end moment-free: its angles in ``chart`` (no case key clamps one)."""
         v = np.asarray(velocity, dtype=float) @ chart
         f = np.asarray(self.force, dtype=float) @ chart
-        phi, theta = angles(np.asarray([self.tangent], dtype=float), chart)
+        local = (np.asarray([self.tangent], dtype=float) @ chart)[0]   # chart.angles() of one tangent: nothing
+        phi = np.arcsin(min(max(local[2], -1.0), 1.0))                  # to unwrap
+        theta = np.arctan2(local[1], local[0])
         return np.array([self.kind, *v, self.mass, self.net_buoyancy, 0.5 * density * self.drag_area, *f,
-                         self.wave_mass, self.waterplane, self.height, eta, payout, float(self.clamped), phi[0],
-                         theta[0]])
+                         self.wave_mass, self.waterplane, self.height, eta, payout, float(self.clamped), phi,
+                         theta])
 
 
 @dataclass(frozen=True)
@@ -88,16 +90,32 @@ class SpatialState:
     chart: np.ndarray
     rows: np.ndarray | None = None
     s: np.ndarray | None = None
+    frames: tuple | None = field(default=None, compare=False, repr=False)
+    """``frames(y, chart)`` when the step that made the state worked them out (the next step reads them)."""
 
 
-def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin, rows=None) -> np.ndarray:
+def positions3(cable: SpatialCable, y: np.ndarray, chart: np.ndarray, origin, rows=None, tangents=None) -> np.ndarray:
     """Global node positions (n_nodes, 3), trapezoidal in ``(1 + e) t`` from the first end, each
-    interval with its own length and law."""
+    interval with its own length and law; ``tangents``: ``frames(y, chart)[0]`` when known."""
     rows = cable.rows() if rows is None else rows
-    t, _, _ = frames(y, chart)
-    left, right = interval_stretch(y[:, 0], rows)
+    t = frames(y, chart)[0] if tangents is None else tangents
+    left, right = node_stretch(y[:, 0], rows)
     increments = 0.5 * rows[:, k.DS, None] * (left[:, None] * t[:-1] + right[:, None] * t[1:])
-    return np.vstack([np.zeros((1, 3)), np.cumsum(increments, axis=0)]) + np.asarray(origin, dtype=float)
+    xyz = np.empty((len(y), 3))
+    xyz[0] = 0.0
+    np.cumsum(increments, axis=0, out=xyz[1:])
+    xyz += np.asarray(origin, dtype=float)
+    return xyz
+
+
+def node_stretch(tension: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`kanat.continuum.model2d.interval_stretch` (``1 + e`` of both nodes of every interval,
+    shapes (N,), (N,)), each node's strain worked out once when all the intervals share one law."""
+    sections = rows[:, k.SECTION]
+    if not (sections == sections[0]).all():
+        return interval_stretch(tension, rows)
+    stretch = 1.0 + strain_of(tension, rows[0])
+    return stretch[:-1], stretch[1:]
 
 
 def spatial_scales(cable, y) -> np.ndarray:
@@ -124,23 +142,24 @@ def _solve(cable, x0, y, rate, env, up, P, b0, b1):
     n, nv = x.size, x.shape[1]
     assemble, width = kernel_of(nv)
     res, band = np.empty(n), np.empty((2 * width + 1, n))
-    scale = np.tile(spatial_scales(cable, y), len(x))
+    scale = spatial_scales(cable, y)                     # (nv,): broadcast over the nodes
     extras = cable.extras()
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
         assemble(x, y, rate, env, up, P, b0, b1, res, band, extras)
-        if not np.all(np.isfinite(res)):
+        if not np.isfinite(res).all():
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         dx = solve_band(width, band, -res)
         if dx is None:
             raise NewtonFailure("the Newton matrix is singular", int(np.argmax(np.abs(res)) // nv))
-        x += dx.reshape(x.shape)
-        size = np.max(np.abs(dx) / scale)
+        step = dx.reshape(x.shape)
+        x += step
+        size = (np.abs(step) / scale).max()
         if converged(size, previous):
             return x, iteration
         previous = size
     raise NewtonFailure(f"Newton did not converge in {MAX_ITERATIONS} iterations",
-                        int(np.argmax(np.abs(dx) / scale) // nv))
+                        int(np.argmax(np.abs(dx.reshape(x.shape)) / scale) // nv))
 
 
 def velocities3(y: np.ndarray, chart: np.ndarray) -> np.ndarray:
@@ -179,20 +198,24 @@ def chart_rows(rows: np.ndarray, cable: SpatialCable, chart: np.ndarray) -> np.n
     return rows
 
 
-def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, drive):
-    """Advance ``state`` by ``dt`` (re-charting first when a tangent nears the pole)."""
+def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, drive, own_rows=None):
+    """Advance ``state`` by ``dt`` (re-charting first when a tangent nears the pole); ``own_rows`` is
+    ``cable.rows()`` when the caller holds it (used when ``state.rows`` is None)."""
     y, rate, chart = state.y, state.rate, state.chart
+    tangent, normal, binormal = frames(y, chart) if state.frames is None else state.frames
     if needs_rechart(y):
-        new = choose_chart(frames(y, chart)[0])
+        new = choose_chart(tangent)
         y, rate = rechart(y, rate, chart, new)
         chart = new
-    rows = cable.rows() if state.rows is None else state.rows
+        tangent, normal, binormal = frames(y, chart)
+    rows = (cable.rows() if own_rows is None else own_rows) if state.rows is None else state.rows
     winch = cable.winch
     during, after = winch.step_rows(rows, state.t, dt, coefficients[1]) if winch else (rows, rows)
     P = chart_rows(step_rows(during, coefficients, dt), cable, chart)
     rho = P[0, k.RHO]
     v0, v1 = drive.velocities(state.t + dt)
-    env = spatial_water(cable, state.xyz, velocities3(y, chart), frames(y, chart)[0], state.t, dt, coefficients, chart)
+    velocity = y[:, 1:2] * tangent + y[:, 2:3] * normal + y[:, 3:4] * binormal      # velocities3(y, chart)
+    env = spatial_water(cable, state.xyz, velocity, tangent, state.t, dt, coefficients, chart)
     payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, state.xyz[-1, :2], kinematics_time(state.t, dt, coefficients))
     b0 = cable.start.array(v0, chart, rho, payout=payout)
@@ -200,9 +223,10 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
     x, iterations = _solve(cable, y + dt * rate, y, rate, env, chart.T @ UP, P, b0, b1)
     gamma = coefficients[2]
     new_rate = (x - y) / (gamma * dt) - (1.0 - gamma) / gamma * rate
-    xyz = positions3(cable, x, chart, drive.origin(state.t + dt), after)
+    new_frames = frames(x, chart)
+    xyz = positions3(cable, x, chart, drive.origin(state.t + dt), after, new_frames[0])
     if winch is None:
-        return SpatialState(state.t + dt, x, new_rate, xyz, chart, state.rows), iterations
+        return SpatialState(state.t + dt, x, new_rate, xyz, chart, state.rows, frames=new_frames), iterations
     rows, arrays, s = winch.regrid(after, {"y": x, "rate": new_rate, "xyz": xyz}, state.s)
     return SpatialState(state.t + dt, arrays["y"], arrays["rate"], arrays["xyz"], chart, rows, s), iterations
 

@@ -114,7 +114,8 @@ def solve_band(width: int, band: np.ndarray, rhs: np.ndarray) -> np.ndarray | No
     rhs : ndarray, shape (n,)
         Overwritten.
     """
-    work = np.zeros((3 * width + 1, band.shape[1]))         # the top rows hold the LU's fill-in
+    # the top rows hold the LU's fill-in; in Fortran order, which f2py would otherwise copy it into
+    work = np.zeros((3 * width + 1, band.shape[1]), order="F")
     work[width:] = band
     _, _, x, info = dgbsv(width, width, work, rhs, overwrite_ab=True, overwrite_b=True)
     return x if info == 0 else None
