@@ -87,6 +87,7 @@ class LumpedSystem:
         self.rig = net.rigid.arrays()
         self.rigid_acc = np.zeros((net.rigid.count, 2, 3))
         self._steady_points: dict = {}
+        self._steady_vessel = None
 
     def _contact(self, case, net) -> tuple:
         """``(area, bed, params, laid)`` for :func:`kanat.physics.contact.contact_forces`, or empty."""
@@ -183,7 +184,15 @@ class LumpedSystem:
 
     def vessel(self, t: float):
         """Tow point ``(position, velocity, acceleration, heading)`` at ``t`` (acceleration of the
-        track; the prescribed motion's is left out: only the consistent mass uses it)."""
+        track; the prescribed motion's is left out: only the consistent mass uses it). In the
+        steady frame (the equilibrium) it is the one at t = 0, worked out once."""
+        if self.steady_velocity is not None:
+            if self._steady_vessel is None:
+                self._steady_vessel = self._vessel(0.0)
+            return self._steady_vessel
+        return self._vessel(t)
+
+    def _vessel(self, t: float):
         if self.track is None:
             pos, vel, heading = self.vessel_points([t], self.case.vessel.tow_point)
             return pos[0, 0], vel[0, 0], np.zeros(3), 0.0
