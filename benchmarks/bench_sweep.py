@@ -10,7 +10,7 @@
      (kanat's own, forked: ``kanat.sweep.processes``);
    * no option: the default engine's rule (``kanat.sweep.execution``);
    * for comparison, a Dask ``LocalCluster`` of 2 workers started by the study
-     (``kanat.sweep.cluster.local_cluster``, forked workers, profiler off), from a
+     (``kanat.sweep.cluster.local_cluster``, fork-server workers, profiler off), from a
      ``python -c`` process that does what ``kanat sweep`` does.
 
    Target: the 2-worker study at least 1.7x faster than serial. The load average before

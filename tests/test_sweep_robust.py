@@ -88,7 +88,8 @@ def test_failures_are_recorded_and_the_others_finish(base, tmp_path, monkeypatch
 def test_a_crash_on_a_local_or_dask_cluster_is_recorded(base, tmp_path, monkeypatch):
     from kanat.sweep.cluster import local_cluster
 
-    monkeypatch.setattr(engine, "run_case", crashing_run_case)           # inherited by the forked workers
+    monkeypatch.setattr(engine, "run_case", crashing_run_case)   # forked children inherit it; Dask's workers
+    #                                                              import it from this module by reference
     result = sweep(base, {"name": ["good", CRASH, "also-good"]}, tmp_path / "local", workers=2)
     assert list(result.summary["status"].values) == ["ok", "failed", "ok"]
     assert "died (killed by signal SIGKILL)" in str(result.summary["message"].values[1])
@@ -164,7 +165,7 @@ def test_default_engine_reuses_a_configured_or_named_cluster(base, tmp_path):
 
 @pytest.mark.slow
 def test_default_engine_goes_parallel_when_the_cluster_pays(base, tmp_path, monkeypatch):
-    monkeypatch.setattr(execution, "CLUSTER_STARTUP_S", 0.0)
+    monkeypatch.setattr(execution, "CLUSTER_STARTUP_S", -1e9)   # it always pays, however short the cases run
     result = sweep(base, {"vessel.track[1].to_speed_kn": [8, 9, 10, 11]}, tmp_path / "study")
     assert "a local cluster of 2 worker processes (a case" in result.engine
     assert result.failed == 0 and result.ran == 4

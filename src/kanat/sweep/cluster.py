@@ -10,15 +10,21 @@ need kanat installed and must see the study directory at the same path.
 :func:`local_cluster` starts a Dask ``LocalCluster`` on this machine (for Python users who
 want Dask's dashboard, and for tests): one single-threaded worker process per core (the
 runs hold the GIL most of the time, so processes, not threads, run cases side by side),
-forked where the platform can (``distributed.worker.multiprocessing-method: fork``, so
-workers start with kanat imported), without Dask's sampling profiler, every port chosen
-free on the loopback interface. ``kanat sweep --workers N`` uses kanat's own lighter local
+started by a fork server where the platform has one (``distributed.worker.multiprocessing-method:
+forkserver``), without Dask's sampling profiler, every port chosen free on the loopback
+interface. Workers are not forked from the calling process: it runs Dask's event loop and
+the nannies' threads, and a fork taken while one of them holds a lock can leave the child,
+or the nanny waiting on it, stuck for good (seen once in a test: a worker killed by its case,
+restarted by a fork, and the study hung). A fork server is a single-threaded process with
+Dask and NumPy already imported, so a worker still starts in a fraction of a second; kanat
+is imported by its first case. ``kanat sweep --workers N`` uses kanat's own lighter local
 cluster instead (:mod:`.processes`).
 """
 from __future__ import annotations
 
 import contextlib
 import importlib.util
+import multiprocessing
 import os
 import time
 from pathlib import Path
@@ -61,17 +67,16 @@ def local_cluster(workers: int | None = None):
     import dask
     from dask.distributed import Client, LocalCluster
 
-    from kanat.sweep.processes import start_method
-
     n = workers or os.cpu_count() or 1
     if n < 1:
         raise KanatError(f"workers must be at least 1, got {workers}")
-    settings = {"distributed.worker.multiprocessing-method": start_method(),
+    method = "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() else "spawn"
+    settings = {"distributed.worker.multiprocessing-method": method,
                 "distributed.scheduler.allowed-failures": ALLOWED_FAILURES,
                 "distributed.scheduler.worker-saturation": 1.0,    # a worker holds only the case it runs
                 "distributed.worker.profile.enabled": False,        # its sampling thread slows a case ~5 %
                 "distributed.admin.system-monitor.gil.enabled": False}
-    with dask.config.set(settings):                       # for the cluster's life: restarted workers fork too
+    with dask.config.set(settings):                       # for the cluster's life: restarted workers too
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, host=LOOPBACK, scheduler_port=0,
                                dashboard_address=f"{LOOPBACK}:0")
         try:
