@@ -38,6 +38,7 @@ output passed the checks.
 from __future__ import annotations
 
 import logging
+import sys
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -310,35 +311,27 @@ class Checkpointer:
         """The stream removes the checkpoint of a run that ends ``ok``."""
 
 
+class CompileClock:
+    """Seconds numba has spent compiling (or loading cached kernels) since this clock was made:
+    ``clock[0]``, read at any time (:data:`kanat.jit.COMPILE_SECONDS`; 0 while no kernel module
+    is loaded, as in a run whose kernels were compiled at install)."""
+
+    def __init__(self):
+        self.start = self.total()
+
+    @staticmethod
+    def total() -> float:
+        jit = sys.modules.get("kanat.jit")                # not imported here: it would load numba
+        return jit.COMPILE_SECONDS[0] if jit is not None else 0.0
+
+    def __getitem__(self, index: int) -> float:
+        return [self.total() - self.start][index]
+
+
 @contextmanager
 def compile_clock():
-    """Measure the time numba spends compiling (or loading cached kernels) in the block.
-
-    Yields a one-element list holding the seconds so far (numba's ``numba:compile`` event,
-    outermost calls only); stays at 0 when numba is not in use.
-    """
-    spent = [0.0]
-    try:
-        from numba.core import event
-    except ImportError:                                   # no compiled kernels: nothing to time
-        yield spent
-        return
-
-    class Clock(event.Listener):
-        depth, began = 0, 0.0
-
-        def on_start(self, ev):
-            if self.depth == 0:
-                self.began = time.perf_counter()
-            self.depth += 1
-
-        def on_end(self, ev):
-            self.depth -= 1
-            if self.depth == 0:
-                spent[0] += time.perf_counter() - self.began
-
-    with event.install_listener("numba:compile", Clock()):
-        yield spent
+    """A :class:`CompileClock` for the block."""
+    yield CompileClock()
 
 
 def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: Checkpointer | None = None,

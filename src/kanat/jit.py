@@ -31,9 +31,11 @@ family's seconds go, function by function.
 from __future__ import annotations
 
 import hashlib
+import time
 from dataclasses import dataclass
 
 from numba import njit, types
+from numba.core import event
 
 # error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
 # non-finite results) instead of a check and an exception on every division, which costs
@@ -41,6 +43,27 @@ from numba import njit, types
 # wrapper of every kernel for use as a first-class function value, which kanat never does.
 kernel = njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 inner = njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+
+COMPILE_SECONDS = [0.0]
+"""Seconds numba has spent compiling or loading kernels in this process (outermost calls only;
+:class:`kanat.dynamics.CompileClock` reads it)."""
+
+
+class _CompileListener(event.Listener):
+    depth, began = 0, 0.0
+
+    def on_start(self, ev):
+        if self.depth == 0:
+            self.began = time.perf_counter()
+        self.depth += 1
+
+    def on_end(self, ev):
+        self.depth -= 1
+        if self.depth == 0:
+            COMPILE_SECONDS[0] += time.perf_counter() - self.began
+
+
+event.register("numba:compile", _CompileListener())
 
 
 @dataclass(frozen=True)

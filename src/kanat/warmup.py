@@ -13,8 +13,7 @@ from __future__ import annotations
 import time
 from typing import Callable, Iterable
 
-from kanat.jit import Family, planar, spatial
-from kanat.jit import pending as family_pending
+from kanat import aot
 
 FAMILIES = {
     "continuum-2d": 3.7, "continuum-3d": 6.0, "factorized-2d": 12.9, "factorized-3d": 15.9,
@@ -26,9 +25,15 @@ FAMILIES = {
 families remeasured 2026-11-27 on a quiet machine; lumped-abm4 estimated from lumped-rk4)."""
 
 
-def family(name: str) -> Family:
+AHEAD_OF_TIME = {"continuum-2d": "_kernels"}
+"""The families compiled at install (:mod:`kanat.aot`), by the extension module holding them."""
+
+
+def family(name: str):
     """The :class:`kanat.jit.Family` ``name`` of :data:`FAMILIES`, importing only its own kernel
     modules (a continuum run asking whether it will compile does not load the lumped model)."""
+    from kanat.jit import Family, planar, spatial
+
     if name.startswith("lumped"):
         from kanat.lumped import fast, fast_implicit, kernels
 
@@ -36,14 +41,14 @@ def family(name: str) -> Family:
         entries = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None),
                    (step[name], None))
         return Family(name, entries, FAMILIES[name])
-    from kanat.continuum import kernels2d, kernels3d
+    from kanat.continuum import kernels3d, rows2d
 
     if name == "continuum-3d-bending":
         from kanat.continuum import bending3d
 
         return Family(name, ((bending3d.assemble3_bending, None),), FAMILIES[name])
     flat = name.endswith("2d")
-    entries = ((kernels2d.assemble if flat else kernels3d.assemble3, None),)
+    entries = ((rows2d.assemble if flat else kernels3d.assemble3, None),)
     if name.startswith("factorized"):
         from kanat.continuum.factorized import sweeps_compiled
 
@@ -75,9 +80,14 @@ def family_name(scheme: str, dimensions: int = 2, bending: bool = False) -> str 
 
 
 def pending(name: str | None) -> float | None:
-    """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached
-    (or no such family). Reads the cache index only: costs milliseconds."""
-    return None if name not in FAMILIES else family_pending(family(name))
+    """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached,
+    compiled at install and current (:data:`AHEAD_OF_TIME`), or no such family. Reads the cache
+    index only: costs milliseconds."""
+    if name not in FAMILIES or (name in AHEAD_OF_TIME and aot.load(AHEAD_OF_TIME[name]) is not None):
+        return None
+    from kanat.jit import pending as family_pending
+
+    return family_pending(family(name))
 
 
 # --- tiny cases, one per family ---------------------------------------------------------------------

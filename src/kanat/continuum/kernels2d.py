@@ -47,16 +47,56 @@ residuals (``|x| x`` written ``x sqrt(x x)``) and the all-complex-step oracle li
 :mod:`kanat.continuum.oracle_complex_step2d`, compiled by the tests only. Scalar loops only -- no array
 expressions, slice copies or ``@`` -- which keeps numba's compile short (:mod:`kanat.jit`).
 
-The code is in :mod:`.loads2d` (layout, loads, ends) and :mod:`.rows2d` (interval rows,
-:func:`assemble`), both below this module: import the kernels from here.
+The code is in :mod:`.layout2d` (data layout), :mod:`.loads2d` (loads, ends) and :mod:`.rows2d`
+(interval rows, :func:`assemble`), all below this module: import the kernels from here. The
+layout is plain constants; the kernels are loaded on first use (module ``__getattr__``), and
+:func:`assemble`, the one kernel a run calls, comes from the extension compiled at install
+(:mod:`kanat.aot`) when it is current, so such a run never imports numba.
 """
 from __future__ import annotations
 
-from kanat.continuum.loads2d import (  # noqa: F401  re-exported: this module is the kernels' one import
+from importlib import import_module
+
+from kanat import aot
+from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module is the kernels' one import
     M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA, GRAV, EI, CONV, PRED, KIND, SECTION, SB_ON,
     SB_K, SB_C, SB_MUA, SB_MUL, SB_C0, SB_N0, SB_N1, SB_N2, JB_MASS, JB_BUOY, JB_DRAG, JB_F0, JB_F1, JB_F2, JB_WAVE,
     NPAR, LAW, CABLE, JUNCTION, UX, UZ, AX, AZ, RX, RZ, NENV, VELOCITY, BODY, FREE, B_KIND, B_V0, B_V1, B_MASS,
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
-    CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth, strain, compliance, node_load, node_load_jacobian, smooth_sign,
-    seabed_force, seabed_force_jacobian, extra_load, extra_load_jacobian, weighted, surface_buoyancy, end_jacobian)
-from kanat.continuum.rows2d import assemble  # noqa: F401  the run's entry
+    CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
+
+_NUMBA = {name: "loads2d" for name in (
+    "strain", "compliance", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
+    "seabed_force_jacobian", "extra_load", "extra_load_jacobian", "weighted", "surface_buoyancy", "end_jacobian")}
+
+
+def __getattr__(name):
+    """A compiled kernel, loaded on first use (:func:`assemble` as the module docstring says)."""
+    if name == "assemble":
+        value = _assemble()
+    elif name in _NUMBA:
+        value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def _assemble():
+    """:func:`kanat.continuum.rows2d.assemble`, compiled at install when :func:`kanat.aot.load`
+    finds it current, else numba's (arguments the compiled one does not take go to numba's too)."""
+    compiled = aot.load()
+    if compiled is None:
+        return import_module("kanat.continuum.rows2d").assemble
+
+    def assemble(x, y, d, env, P, b0, b1, res, band, extras):
+        """:func:`kanat.continuum.rows2d.assemble`, compiled at install (:mod:`kanat.aot_build`)."""
+        try:
+            if extras is None:
+                compiled.assemble_plain(x, y, d, env, P, b0, b1, res, band)
+            else:
+                compiled.assemble_extras(x, y, d, env, P, b0, b1, res, band, extras)
+        except TypeError:                        # not C-ordered float64 arrays: numba compiles for them
+            import_module("kanat.continuum.rows2d").assemble(x, y, d, env, P, b0, b1, res, band, extras)
+
+    return assemble

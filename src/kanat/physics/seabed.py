@@ -21,6 +21,8 @@ from typing import Protocol
 
 import numpy as np
 
+SLIP_VELOCITY = 1.0e-3      # m/s: the velocity scale v_s of regularized Coulomb friction (kanat.physics.contact)
+
 
 class Seabed(Protocol):
     """What a seabed geometry provides (vectorised over any shape of ``x``, ``y``)."""

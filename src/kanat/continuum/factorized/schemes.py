@@ -22,7 +22,6 @@ from typing import ClassVar
 
 from kanat.continuum.factorized.sweeps import FOUR_SWEEPS, TWO_SWEEPS, factorized_step
 from kanat.continuum.family import ContinuumScheme
-from kanat.continuum.factorized.waves import wave_factorized_step
 from kanat.errors import KanatError
 
 MAX_SIGMA_TR = {
@@ -127,6 +126,8 @@ class WaveFactorized(ContinuumScheme):
         """One step: ``(new_state, iterations)``."""
         world, y, chart = model.world(state, dt)
         count = self.blocks if world.system.dim == 3 else 2
+        from kanat.continuum.factorized.waves import wave_factorized_step    # compiled kernels: loaded when used
+
         new = wave_factorized_step(world, y, dt, count, self.gamma, self.iterations, self.compiled)
         return model.advanced(state, y, new, chart, dt), self.iterations
 

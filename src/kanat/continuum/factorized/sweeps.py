@@ -34,8 +34,6 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum.factorized.characteristics import end_state, group_split
-from kanat.continuum.factorized.sweeps_compiled import MESSAGES, OK, end_parameters, factorized_step_compiled
-from kanat.continuum.factorized.dense import sweep_numpy
 from kanat.continuum.stepper import NewtonFailure
 
 TWO_SWEEPS = ((("l+", "t+"), True), (("l-", "t-"), False))
@@ -74,7 +72,7 @@ def factorized_step(world, Y, dt: float, sweeps, implicit_source: bool = True, c
     parts = group_split(B, c_l, c_t2)
     sigma = dt / world.ds
     eye = np.eye(d)
-    run = sweep_numpy
+    from kanat.continuum.factorized.dense import sweep_numpy as run      # numba's module: loaded when used
     offset = Y if delta else np.zeros_like(Y)        # X holds Y - offset: increments in delta form
     X = Y - offset
     if delta:
@@ -107,6 +105,8 @@ def factorized_step(world, Y, dt: float, sweeps, implicit_source: bool = True, c
 
 
 def _compiled(world, Y, dt, sweeps, implicit_source, delta):
+    from kanat.continuum.factorized.sweeps_compiled import MESSAGES, OK, end_parameters, factorized_step_compiled
+
     system = world.system
     slack = max(np.max(np.abs(Y[:, 0])), 1.0) * COMPRESSION / system.normal_mass
     four = len(sweeps) == 4

@@ -1,0 +1,60 @@
+"""Kernels compiled ahead of time, at install: loaded without numba, or None when unusable.
+
+``pip install`` builds the extension module ``kanat._kernels`` from the kernels of the
+commonest run, the planar continuum model (:mod:`kanat.aot_build` says what it holds and
+``setup.py`` builds it with numba's ahead-of-time compiler). Why: numba's import and its
+one-time initialisation at the first kernel load cost about 0.45 s of CPU in every process,
+a third of the whole 2-D example run (benchmarks/RESULTS.md), and a first run would compile for
+~4 s; a plain extension module imports in under a millisecond and compiles nothing.
+
+The module is used only while it is current: it carries a fingerprint of the sources it was
+compiled from (:data:`SOURCES`), and :func:`load` compares it with the files on disk, so an
+edited kernel (in a source checkout) is never answered by stale machine code; then, or when
+the extension was not built (no C compiler at install), the run falls back to numba's
+just-in-time kernels, which give the same numbers (tests/test_aot.py). ``KANAT_AOT=0`` in the
+environment makes a process use numba's kernels throughout (to compare, or to debug a kernel).
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib
+import os
+from pathlib import Path
+
+SOURCES = ("jit.py", "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "physics/seabed.py",
+           "aot_build.py")
+"""The files whose code the extension holds (paths below the ``kanat`` package): every module
+the compiled kernels read a function or a constant from, and the build description itself."""
+
+_loaded: dict = {}
+
+
+def fingerprint(root: Path | None = None) -> int:
+    """A 60-bit digest of :data:`SOURCES` as they are in ``root`` (default: this package).
+
+    The build bakes it into the extension (``fingerprint()``); :func:`load` compares the two.
+    """
+    root = root or Path(__file__).parent
+    digest = hashlib.sha256()
+    for name in SOURCES:
+        digest.update(name.encode())
+        digest.update((root / name).read_bytes())
+    return int(digest.hexdigest()[:15], 16)
+
+
+def load(name: str = "_kernels"):
+    """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None.
+
+    Imports no numba. The answer is kept for the process.
+    """
+    if name not in _loaded:
+        if os.environ.get("KANAT_AOT") == "0":
+            _loaded[name] = None
+            return None
+        try:
+            module = importlib.import_module(f"kanat.{name}")
+            current = module.fingerprint() == fingerprint()
+        except (ImportError, OSError, AttributeError):
+            module, current = None, False
+        _loaded[name] = module if current else None
+    return _loaded[name]
