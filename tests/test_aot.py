@@ -2,9 +2,9 @@
 
 * The install built the extension and it is current: a build that failed quietly (the
   extension is optional) would otherwise leave every run compiling without anyone noticing.
-* Its ``assemble`` is numba's ``rows2d.assemble`` bit for bit (oracle: the just-in-time kernel
-  on the same arrays): on every Newton iteration of a plain run and of a run with seabed,
-  waves and a surface buoy.
+* Its kernels are numba's bit for bit (oracle: the just-in-time kernel on the same arrays): on
+  every Newton iteration of plain runs and of runs with seabed, waves, inline bodies or a surface
+  buoy, planar and spatial, and of a spatial run with bending stiffness.
 * A source edited after the build makes the extension unused (fingerprint), and
   :data:`kanat.aot.SOURCES` lists every module the compiled kernels read.
 * A 2-D run in a fresh process loads no numba, and writes the file a ``KANAT_AOT=0`` run writes.
@@ -13,13 +13,14 @@ import os
 import shutil
 import subprocess
 import sys
+from importlib import import_module
 
 import numpy as np
 import pytest
 import xarray as xr
 
-from kanat import aot, api
-from kanat.continuum import kernels2d, rows2d
+from kanat import aot, api, warmup
+from kanat.continuum import kernels2d, kernels3d
 
 from helpers import EXAMPLES
 
@@ -30,26 +31,37 @@ def test_the_install_built_the_extension_and_it_is_current():
     assert compiled.fingerprint() == aot.fingerprint()
 
 
-@pytest.mark.parametrize("example, changes", [
-    ("speed_step_2d.yaml", {"simulation.duration": 60}),
-    ("surface_mooring_waves.yaml", {"simulation.duration": 8}),
-])
-def test_compiled_assemble_is_numbas_bit_for_bit(example, changes, monkeypatch):
-    compiled = kernels2d.assemble
-    assert compiled is not rows2d.assemble                       # the install's kernel, not numba's
+BENDING_3D = {**warmup.CASES["continuum-3d-bending"], "simulation": {
+    **warmup.CASES["continuum-3d-bending"]["simulation"], "duration": 20.0}}
+
+
+@pytest.mark.parametrize("case, changes, kernels, name", [
+    (EXAMPLES / "speed_step_2d.yaml", {"simulation.duration": 60}, kernels2d, "assemble"),
+    (EXAMPLES / "surface_mooring_waves.yaml", {"simulation.duration": 8}, kernels2d, "assemble"),
+    (EXAMPLES / "turn_360_3d.yaml", {"simulation.duration": 60}, kernels3d, "assemble3"),
+    (EXAMPLES / "subsurface_mooring.yaml", {"simulation.duration": 10, "simulation.dimensions": 3}, kernels3d,
+     "assemble3"),
+    (BENDING_3D, {}, kernels3d, "assemble3_bending"),
+], ids=["plain-2d", "full-2d", "plain-3d", "full-3d", "bending-3d"])
+def test_compiled_kernels_are_numbas_bit_for_bit(case, changes, kernels, name, monkeypatch):
+    compiled = getattr(kernels, name)
+    numba_kernel = getattr(import_module(f"kanat.continuum.{kernels._ENTRIES[name] if kernels is kernels3d else 'rows2d'}"),
+                           name)
+    assert compiled is not numba_kernel                          # the install's kernel, not numba's
     calls = []
 
-    def both(x, y, d, env, P, b0, b1, res, band, extras):
-        compiled(x, y, d, env, P, b0, b1, res, band, extras)
+    def both(*args):
+        res, band = args[-3], args[-2]
+        compiled(*args)
         res2, band2 = np.full_like(res, np.nan), np.full_like(band, np.nan)
-        rows2d.assemble(x, y, d, env, P, b0, b1, res2, band2, extras)
+        numba_kernel(*args[:-3], res2, band2, args[-1])
         assert np.array_equal(res, res2) and np.array_equal(band, band2)
-        calls.append(extras is None)
+        calls.append(args[-1] is None)
 
-    monkeypatch.setattr(kernels2d, "assemble", both)
-    case = api.load_case(EXAMPLES / example).replace(changes)
+    monkeypatch.setattr(kernels, name, both)
+    case = api.load_case(case).replace(changes)
     assert api.run(case).summary.status == "ok"
-    assert len(calls) > 50 and len(set(calls)) == 1          # one version throughout: plain, or full
+    assert len(calls) > 20 and len(set(calls)) == 1          # one version throughout: plain, or full
 
 
 def test_an_edited_source_makes_the_extension_unused(tmp_path):
@@ -70,7 +82,7 @@ def test_an_edited_source_makes_the_extension_unused(tmp_path):
 
 
 def test_sources_list_every_module_the_compiled_kernels_read():
-    script = ("import sys; import kanat.aot_build, kanat.continuum.rows2d\n"
+    script = ("import sys, kanat.aot_build; kanat.aot_build.compiler()\n"
               "print('\\n'.join(m.__file__ for n, m in sys.modules.items() if n.startswith('kanat')))")
     files = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True).stdout.split()
     root = os.path.dirname(aot.__file__)

@@ -1,11 +1,11 @@
 """Kernels compiled ahead of time, at install: loaded without numba, or None when unusable.
 
-``pip install`` builds the extension module ``kanat._kernels`` from the kernels of the
-commonest run, the planar continuum model (:mod:`kanat.aot_build` says what it holds and
-``setup.py`` builds it with numba's ahead-of-time compiler). Why: numba's import and its
-one-time initialisation at the first kernel load cost about 0.45 s of CPU in every process,
-a third of the whole 2-D example run (benchmarks/RESULTS.md), and a first run would compile for
-~4 s; a plain extension module imports in under a millisecond and compiles nothing.
+``pip install`` builds the extension module ``kanat._kernels`` from the continuum model's step
+kernels (:mod:`kanat.aot_build` says what it holds and ``setup.py`` builds it with numba's
+ahead-of-time compiler). Why: numba's import and its one-time initialisation at the first
+kernel load cost about 0.45 s of CPU in every process, a third of the whole 2-D example run
+(benchmarks/RESULTS.md), and a first run would compile for 4-12 s; a plain extension module
+imports in under a millisecond and compiles nothing.
 
 The module is used only while it is current: it carries a fingerprint of the sources it was
 compiled from (:data:`SOURCES`), and :func:`load` compares it with the files on disk, so an
@@ -20,9 +20,10 @@ import hashlib
 import importlib
 import os
 from pathlib import Path
+from typing import Callable
 
-SOURCES = ("jit.py", "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "physics/seabed.py",
-           "aot_build.py")
+SOURCES = ("jit.py", "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "continuum/layout3d.py",
+           "continuum/loads3d.py", "continuum/rows3d.py", "continuum/bending3d.py", "physics/seabed.py", "aot_build.py")
 """The files whose code the extension holds (paths below the ``kanat`` package): every module
 the compiled kernels read a function or a constant from, and the build description itself."""
 
@@ -58,3 +59,29 @@ def load(name: str = "_kernels"):
             module, current = None, False
         _loaded[name] = module if current else None
     return _loaded[name]
+
+
+def kernel(name: str, numba_kernel: Callable[[], Callable]) -> Callable:
+    """The kernel ``name`` whose last argument is ``extras`` (None or an array), compiled at install.
+
+    From the extension (its ``<name>_plain`` when ``extras`` is None, ``<name>_extras`` otherwise)
+    when :func:`load` finds it current, else ``numba_kernel()``, numba's kernel, which also takes
+    arguments the compiled versions do not (they are typed for C-ordered float64 arrays).
+    """
+    compiled = load()
+    if compiled is None:
+        return numba_kernel()
+    plain, full = getattr(compiled, f"{name}_plain"), getattr(compiled, f"{name}_extras")
+
+    def run(*args):
+        try:
+            if args[-1] is None:
+                plain(*args[:-1])
+            else:
+                full(*args)
+        except TypeError:                        # other array types: numba compiles for them
+            numba_kernel()(*args)
+
+    run.__name__ = run.__qualname__ = name
+    run.__doc__ = f"{name}, compiled at install (kanat.aot_build)."
+    return run

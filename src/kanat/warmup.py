@@ -25,7 +25,7 @@ FAMILIES = {
 families remeasured 2026-11-27 on a quiet machine; lumped-abm4 estimated from lumped-rk4)."""
 
 
-AHEAD_OF_TIME = {"continuum-2d": "_kernels"}
+AHEAD_OF_TIME = {"continuum-2d": "_kernels", "continuum-3d": "_kernels", "continuum-3d-bending": "_kernels"}
 """The families compiled at install (:mod:`kanat.aot`), by the extension module holding them."""
 
 
@@ -41,14 +41,14 @@ def family(name: str):
         entries = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None),
                    (step[name], None))
         return Family(name, entries, FAMILIES[name])
-    from kanat.continuum import kernels3d, rows2d
+    from kanat.continuum import rows2d, rows3d
 
     if name == "continuum-3d-bending":
         from kanat.continuum import bending3d
 
         return Family(name, ((bending3d.assemble3_bending, None),), FAMILIES[name])
     flat = name.endswith("2d")
-    entries = ((rows2d.assemble if flat else kernels3d.assemble3, None),)
+    entries = ((rows2d.assemble if flat else rows3d.assemble3, None),)
     if name.startswith("factorized"):
         from kanat.continuum.factorized import sweeps_compiled
 

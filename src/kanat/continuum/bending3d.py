@@ -47,12 +47,10 @@ from kanat.continuum import loads2d as k
 from kanat.continuum import loads3d as k3
 from kanat.continuum.rows3d import assemble3
 
-NV = 10
-WIDTH = 14                          # sub- (= super-) diagonals: kernels2d.bandwidth(10)
+from kanat.continuum.layout3d import B3_CLAMP, B3_PHI0, B3_THETA0, NBPAR3_BENDING  # noqa: F401  (layout3d)
+from kanat.continuum.layout3d import NV_BENDING as NV, WIDTH_BENDING as WIDTH
+
 SN, SB, MN, MB = 6, 7, 8, 9         # the shear and moment unknowns
-# End parameters after kernels3d's NBPAR3: a clamped end and its angles in the chart.
-B3_CLAMP, B3_PHI0, B3_THETA0 = k3.NBPAR3, k3.NBPAR3 + 1, k3.NBPAR3 + 2
-NBPAR3_BENDING = k3.NBPAR3 + 3
 
 
 @kernel

@@ -73,30 +73,10 @@ _NUMBA = {name: "loads2d" for name in (
 def __getattr__(name):
     """A compiled kernel, loaded on first use (:func:`assemble` as the module docstring says)."""
     if name == "assemble":
-        value = _assemble()
+        value = aot.kernel("assemble", lambda: import_module("kanat.continuum.rows2d").assemble)
     elif name in _NUMBA:
         value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
     else:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     globals()[name] = value
     return value
-
-
-def _assemble():
-    """:func:`kanat.continuum.rows2d.assemble`, compiled at install when :func:`kanat.aot.load`
-    finds it current, else numba's (arguments the compiled one does not take go to numba's too)."""
-    compiled = aot.load()
-    if compiled is None:
-        return import_module("kanat.continuum.rows2d").assemble
-
-    def assemble(x, y, d, env, P, b0, b1, res, band, extras):
-        """:func:`kanat.continuum.rows2d.assemble`, compiled at install (:mod:`kanat.aot_build`)."""
-        try:
-            if extras is None:
-                compiled.assemble_plain(x, y, d, env, P, b0, b1, res, band)
-            else:
-                compiled.assemble_extras(x, y, d, env, P, b0, b1, res, band, extras)
-        except TypeError:                        # not C-ordered float64 arrays: numba compiles for them
-            import_module("kanat.continuum.rows2d").assemble(x, y, d, env, P, b0, b1, res, band, extras)
-
-    return assemble

@@ -36,14 +36,36 @@ sub- and super-diagonals. All derivatives are written out -- ``M(m) r`` and ``K(
 kernels only; the complex-step oracle (:mod:`kanat.continuum.oracle_complex_step3d`) is compiled by the tests.
 As in :mod:`kernels2d`, scalar loops only (no array expressions, slice copies or ``@``).
 
-The code is in :mod:`.loads3d` (frame, matrices, loads, ends) and :mod:`.rows3d` (interval rows,
-:func:`assemble3`), both below this module: import the kernels from here.
+The code is in :mod:`.layout3d` (data layout), :mod:`.loads3d` (frame, matrices, loads, ends),
+:mod:`.rows3d` (interval rows, :func:`assemble3`) and :mod:`.bending3d` (with bending stiffness,
+:func:`assemble3_bending`), all below this module: import the kernels from here. As in
+:mod:`.kernels2d`, the layout is plain constants, the kernels are loaded on first use, and the
+two a run calls come from the extension compiled at install (:mod:`kanat.aot`) when it is current.
 """
 from __future__ import annotations
 
-from kanat.continuum.loads3d import (  # noqa: F401  re-exported: this module is the kernels' one import
+from importlib import import_module
+
+from kanat import aot
+from kanat.continuum.layout3d import (  # noqa: F401  re-exported: this module is the kernels' one import
     LOWER, UPPER, B3_KIND, B3_V0, B3_V1, B3_V2, B3_MASS, B3_BUOY, B3_DRAG, B3_F0, B3_F1, B3_F2, B3_WAVE, B3_WPA,
-    B3_HEIGHT, B3_ETA, B3_PAYOUT, NBPAR3, UX3, AX3, RX3, DX3, NENV3, frame, node_load3, node_load3_jacobian,
-    mass_times, stiffness_times, mass_matrix, stiffness_matrix, d_mass_times, d_stiffness_times, seabed_force3,
-    seabed_force3_jacobian, extra_load3, extra_load3_jacobian, surface_buoyancy3, end_jacobian3)
-from kanat.continuum.rows3d import assemble3  # noqa: F401  the run's entry
+    B3_HEIGHT, B3_ETA, B3_PAYOUT, NBPAR3, UX3, AX3, RX3, DX3, NENV3, NV_BENDING, WIDTH_BENDING, B3_CLAMP, B3_PHI0,
+    B3_THETA0, NBPAR3_BENDING)
+
+_NUMBA = {name: "loads3d" for name in (
+    "frame", "node_load3", "node_load3_jacobian", "mass_times", "stiffness_times", "mass_matrix", "stiffness_matrix",
+    "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
+    "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
+_ENTRIES = {"assemble3": "rows3d", "assemble3_bending": "bending3d"}
+
+
+def __getattr__(name):
+    """A compiled kernel, loaded on first use (the module docstring says from where)."""
+    if name in _ENTRIES:
+        value = aot.kernel(name, lambda: getattr(import_module(f"kanat.continuum.{_ENTRIES[name]}"), name))
+    elif name in _NUMBA:
+        value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value

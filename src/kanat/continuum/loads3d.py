@@ -12,15 +12,7 @@ from kanat.continuum.loads2d import (AK, AM, CN, CONTACT_RAMP, CT, DIAM, DS, DT,
                                        SB_N2, SB_ON, STEP, VELOCITY, W0, M, _law_segment, compliance, smooth_sign,
                                        strain)
 
-LOWER = UPPER = 8
-# End parameters: kind, velocity (3, chart), mass + added mass, net buoyancy, 0.5 rho C_D S, force (3, chart),
-# wave-inertia coefficient, surface buoy rho g A_w and height, wave elevation, winch pay-out speed
-(B3_KIND, B3_V0, B3_V1, B3_V2, B3_MASS, B3_BUOY, B3_DRAG, B3_F0, B3_F1, B3_F2, B3_WAVE, B3_WPA, B3_HEIGHT, B3_ETA,
- B3_PAYOUT) = range(15)
-NBPAR3 = 15
-# Nodal data (chart coordinates): water velocity, water acceleration, position R, direction of the line on the seabed
-UX3, AX3, RX3, DX3 = 0, 3, 6, 9
-NENV3 = 12
+from kanat.continuum.layout3d import *  # noqa: F403  the kernels read the layout as globals
 
 
 @kernel

@@ -13,7 +13,6 @@ import numpy as np
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
-from kanat.continuum import bending3d
 from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch, strain_of
@@ -123,7 +122,7 @@ def spatial_scales(cable, y) -> np.ndarray:
     bending stiffness)."""
     tension = max(np.max(np.abs(y[:, 0])), abs(cable.params[k.W0]) * cable.length, 1.0)
     speed = max(np.max(np.abs(y[:, 1:4])), 1.0)
-    if y.shape[1] == bending3d.NV:
+    if y.shape[1] == k3.NV_BENDING:
         moment = tension * cable.length
         return np.array([tension, speed, speed, speed, 1.0, 1.0, tension, tension, moment, moment])
     return np.array([tension, speed, speed, speed, 1.0, 1.0])
@@ -132,8 +131,8 @@ def spatial_scales(cable, y) -> np.ndarray:
 def kernel_of(nv: int):
     """``(assemble, bandwidth)`` of the kernels for ``nv`` unknowns per node: :func:`kernels3d.assemble3`
     (6), or with bending stiffness :func:`bending3d.assemble3_bending` (10), compiled only when used."""
-    if nv == bending3d.NV:
-        return bending3d.assemble3_bending, bending3d.WIDTH
+    if nv == k3.NV_BENDING:
+        return k3.assemble3_bending, k3.WIDTH_BENDING
     return k3.assemble3, k3.UPPER
 
 
