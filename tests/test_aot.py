@@ -45,8 +45,7 @@ BENDING_3D = {**warmup.CASES["continuum-3d-bending"], "simulation": {
 ], ids=["plain-2d", "full-2d", "plain-3d", "full-3d", "bending-3d"])
 def test_compiled_kernels_are_numbas_bit_for_bit(case, changes, kernels, name, monkeypatch):
     compiled = getattr(kernels, name)
-    numba_kernel = getattr(import_module(f"kanat.continuum.{kernels._ENTRIES[name] if kernels is kernels3d else 'rows2d'}"),
-                           name)
+    numba_kernel = getattr(import_module(aot.ENTRIES[name][0]), name)
     assert compiled is not numba_kernel                          # the install's kernel, not numba's
     calls = []
 
@@ -62,6 +61,36 @@ def test_compiled_kernels_are_numbas_bit_for_bit(case, changes, kernels, name, m
     case = api.load_case(case).replace(changes)
     assert api.run(case).summary.status == "ok"
     assert len(calls) > 20 and len(set(calls)) == 1          # one version throughout: plain, or full
+
+
+def test_arguments_the_compiled_code_would_misread_go_to_numba(monkeypatch):
+    """Compiled code reads its arrays as its signature says, unchecked: anything else must not reach it."""
+    good = np.zeros((3, 4))
+    assert aot.matches(good, aot.F2) and aot.matches((good, None), (aot.F2, None))
+    readonly = good.copy()
+    readonly.flags.writeable = False
+    for bad in (good[:, ::2], good.T, good.astype(np.float32), good[0], readonly, good.tolist(),
+                np.asfortranarray(np.zeros((3, 4))), np.zeros((3, 4), dtype=int)):
+        assert not aot.matches(bad, aot.F2)
+    assert not aot.matches(np.zeros(1), None) and not aot.matches(None, aot.F1)
+    assert not aot.matches([good], (aot.F2,)) and not aot.matches((good,), (aot.F2, aot.F2))
+    assert aot.matches(1.5, aot.FLOAT) and aot.matches(np.float64(1.5), aot.FLOAT) and not aot.matches(1, aot.FLOAT)
+
+    calls = []
+    compiled = aot.load()
+    monkeypatch.setattr(compiled, "assemble__0", lambda *args: calls.append(args))   # must not be called
+    monkeypatch.setattr(aot, "_loaded", {"_kernels": compiled})
+    assemble = aot.kernel("assemble")
+    sizes = [(5, 4), (5, 4), (5, 4), (5, 6), (4, 40), (16,), (16,), (20,), (11, 20)]
+    args = [np.asfortranarray(np.ones(shape)) if len(shape) == 2 else np.ones(shape) for shape in sizes]
+    args[4][:, 12] = 1.0                                                   # dt: a finite answer
+    expected = [a.copy() for a in args]
+    rows2d = import_module("kanat.continuum.rows2d")
+    rows2d.assemble(*expected, None)
+    assemble(*args, None)                                                 # Fortran-ordered: numba's
+    assert calls == []
+    np.testing.assert_array_equal(args[-2], expected[-2])
+    np.testing.assert_array_equal(args[-1], expected[-1])
 
 
 def test_an_edited_source_makes_the_extension_unused(tmp_path):
@@ -87,7 +116,7 @@ def test_sources_list_every_module_the_compiled_kernels_read():
     files = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True).stdout.split()
     root = os.path.dirname(aot.__file__)
     read = {os.path.relpath(f, root) for f in files} - {"__init__.py", "continuum/__init__.py", "physics/__init__.py",
-                                                         "version.py", "aot.py"}
+                                                         "version.py"}
     assert read == set(aot.SOURCES)
 
 

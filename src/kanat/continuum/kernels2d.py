@@ -73,7 +73,7 @@ _NUMBA = {name: "loads2d" for name in (
 def __getattr__(name):
     """A compiled kernel, loaded on first use (:func:`assemble` as the module docstring says)."""
     if name == "assemble":
-        value = aot.kernel("assemble", lambda: import_module("kanat.continuum.rows2d").assemble)
+        value = aot.kernel("assemble")
     elif name in _NUMBA:
         value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
     else:

@@ -56,13 +56,13 @@ _NUMBA = {name: "loads3d" for name in (
     "frame", "node_load3", "node_load3_jacobian", "mass_times", "stiffness_times", "mass_matrix", "stiffness_matrix",
     "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
     "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
-_ENTRIES = {"assemble3": "rows3d", "assemble3_bending": "bending3d"}
+_ENTRIES = ("assemble3", "assemble3_bending")
 
 
 def __getattr__(name):
     """A compiled kernel, loaded on first use (the module docstring says from where)."""
     if name in _ENTRIES:
-        value = aot.kernel(name, lambda: getattr(import_module(f"kanat.continuum.{_ENTRIES[name]}"), name))
+        value = aot.kernel(name)
     elif name in _NUMBA:
         value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
     else:
