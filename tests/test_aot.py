@@ -7,7 +7,8 @@
   buoy, planar and spatial, and of a spatial run with bending stiffness.
 * A source edited after the build makes the extension unused (fingerprint), and
   :data:`kanat.aot.SOURCES` lists every module the compiled kernels read.
-* A 2-D run in a fresh process loads no numba, and writes the file a ``KANAT_AOT=0`` run writes.
+* Runs of every family compiled at install, in fresh processes, call no numba kernel (a continuum
+  run loads no numba at all) and write the file a ``KANAT_AOT=0`` run writes, to the last bit.
 """
 import os
 import shutil
@@ -45,7 +46,7 @@ BENDING_3D = {**warmup.CASES["continuum-3d-bending"], "simulation": {
 ], ids=["plain-2d", "full-2d", "plain-3d", "full-3d", "bending-3d"])
 def test_compiled_kernels_are_numbas_bit_for_bit(case, changes, kernels, name, monkeypatch):
     compiled = getattr(kernels, name)
-    numba_kernel = getattr(import_module(aot.ENTRIES[name][0]), name)
+    numba_kernel = getattr(import_module(aot.ENTRIES[name].home), name)
     assert compiled is not numba_kernel                          # the install's kernel, not numba's
     calls = []
 
@@ -111,28 +112,80 @@ def test_an_edited_source_makes_the_extension_unused(tmp_path):
 
 
 def test_sources_list_every_module_the_compiled_kernels_read():
+    """Every module defining a kernel the build compiles, the layouts they read and the entries'
+    declarations are fingerprinted (an edit anywhere there must retire the extension)."""
     script = ("import sys, kanat.aot_build; kanat.aot_build.compiler()\n"
-              "print('\\n'.join(m.__file__ for n, m in sys.modules.items() if n.startswith('kanat')))")
+              "from numba.core.dispatcher import Dispatcher\n"
+              "print('\\n'.join(m.__file__ for n, m in list(sys.modules.items()) if n.startswith('kanat') and any(\n"
+              "    isinstance(v, Dispatcher) and v.__module__ == n for v in vars(m).values())))")
     files = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True).stdout.split()
     root = os.path.dirname(aot.__file__)
-    read = {os.path.relpath(f, root) for f in files} - {"__init__.py", "continuum/__init__.py", "physics/__init__.py",
-                                                         "version.py"}
-    assert read == set(aot.SOURCES)
+    kernels = {os.path.relpath(f, root) for f in files}
+    assert kernels >= {"continuum/rows2d.py", "continuum/rows3d.py", "lumped/fast_implicit.py", "physics/contact.py"}
+    declared = {"jit.py", "aot.py", "aot_build.py", "continuum/kernels2d.py", "continuum/kernels3d.py",
+                "lumped/entries.py"}                                   # and the kernels' compile options
+    layouts = {"continuum/layout2d.py", "continuum/layout3d.py", "physics/seabed.py"}
+    assert set(aot.SOURCES) == kernels | declared | layouts
 
 
-def test_a_planar_run_loads_no_numba_and_writes_what_numba_would(tmp_path):
-    script = ("import sys, kanat.api as api\n"
-              "outcome = api.run(api.load_case(sys.argv[1]), output=sys.argv[2])\n"
-              "print(outcome.summary.status, 'numba' in sys.modules, 'scipy.optimize' in sys.modules)")
-    runs = {}
+RUN = """import sys, kanat.api as api
+from kanat import aot
+case = api.load_case(sys.argv[1])
+if len(sys.argv) > 3:
+    case = case.replace({"simulation.duration": float(sys.argv[3]), **eval(sys.argv[4])})
+outcome = api.run(case, output=sys.argv[2])
+jit = []
+if "numba" in sys.modules:
+    from numba.core.dispatcher import Dispatcher
+    jit = [f"{m.__name__}.{k}" for n, m in list(sys.modules.items()) if n.startswith("kanat")
+           for k, v in vars(m).items() if isinstance(v, Dispatcher) and v.signatures and v.__module__ == n]
+print(outcome.summary.status, outcome.summary.steps > 0, "numba" in sys.modules, sorted(aot._numba_used), jit)
+"""
+
+
+@pytest.mark.parametrize("example, duration, changes, numba_imported", [
+    ("speed_step_2d.yaml", None, {}, False),
+    ("turn_360_3d.yaml", 100.0, {}, False),
+    ("mooring_buoy_decay.yaml", 5.0, {}, True),                                     # rk4, 6-DOF body, seabed
+    ("lazy_wave.yaml", 10.0, {}, True),                                             # implicit, seabed
+    ("mooring_buoy_waves.yaml", 3.0, {"simulation.scheme": "abm4"}, True),
+    ("seed004_head_8s_1to2.yaml", 2.0, {"simulation.scheme": "generalized-alpha-lumped"}, True),   # no seabed
+    ("seed000_planar80.yaml", 2.0, {}, True),                                       # wave-factorized, planar
+    ("seed000_spatial100.yaml", 1.0, {}, True),                                     # wave-factorized-2, spatial
+    ("seed000_accel.yaml", 1.0, {}, True),                                          # factorized, planar
+    ("seed000_spatial100.yaml", 1.0, {"simulation.scheme": "factorized"}, True),
+])
+def test_runs_compile_nothing_and_write_what_numba_would(example, duration, changes, numba_imported, tmp_path):
+    """Whole runs in fresh processes, with the install's kernels and with numba's (KANAT_AOT=0):
+    the same file to the last bit; with the install's, no numba kernel is called (and a continuum
+    run does not even import numba)."""
+    answers = {}
     for flag in ("1", "0"):
-        env = {**os.environ, "KANAT_AOT": flag}
         output = tmp_path / f"aot{flag}.nc"
-        out = subprocess.run([sys.executable, "-c", script, str(EXAMPLES / "speed_step_2d.yaml"), str(output)],
-                             capture_output=True, text=True, check=True, env=env)
-        runs[flag] = out.stdout.split()
-    assert runs["1"] == ["ok", "False", "False"] and runs["0"] == ["ok", "True", "False"]
+        extra = [] if duration is None else [str(duration), repr(changes)]
+        out = subprocess.run([sys.executable, "-c", RUN, str(EXAMPLES / example), str(output), *extra],
+                             capture_output=True, text=True, check=True, env={**os.environ, "KANAT_AOT": flag})
+        answers[flag] = out.stdout.strip().splitlines()[-1]
+    assert answers["1"] == f"ok True {numba_imported} [] []"
+    assert answers["0"].startswith("ok True True [] ") and answers["0"] != "ok True True [] []"
     with xr.open_dataset(tmp_path / "aot1.nc") as a, xr.open_dataset(tmp_path / "aot0.nc") as b:
-        assert set(a.data_vars) == set(b.data_vars) and len(a.data_vars) >= 8
+        assert set(a.data_vars) == set(b.data_vars) and len(a.data_vars) >= 5
         for name in a.data_vars:
-            np.testing.assert_array_equal(a[name].values, b[name].values)
+            np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
+
+
+def test_a_first_run_of_every_family_compiles_nothing(tmp_path):
+    """A fresh machine's first runs: an empty numba cache, each family's tiny case run by
+    ``kanat run`` — nothing is announced, nothing compiled, nothing written to the cache."""
+    import yaml
+
+    cache = tmp_path / "cache"
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(cache)}
+    for name, case in warmup.CASES.items():
+        path = tmp_path / f"{name}.yaml"
+        path.write_text(yaml.safe_dump(case))
+        done = subprocess.run([sys.executable, "-m", "kanat.cli", "run", str(path), "-o", str(tmp_path / f"{name}.nc")],
+                              env=env, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr
+        assert "compiling 0.00 s" in done.stdout and "compiling the" not in done.stderr, (name, done.stdout)
+    assert not cache.exists() or not any(cache.rglob("*.nbi"))

@@ -107,9 +107,10 @@ def test_the_warmup_cases_are_tiny_and_valid():
 
 
 def test_a_cold_run_says_it_compiles_and_kanat_warmup_finds_it_done(tmp_path):
-    """In fresh processes with an empty kernel cache: ``kanat run`` says it compiles (before it
-    does), ``kanat warmup`` then finds the family cached (numba's cache index, read by
-    :func:`kanat.jit.pending`), and a second run compiles nothing and says nothing of it."""
+    """In fresh processes with an empty kernel cache and numba's kernels (``KANAT_AOT=0``, as
+    without a C compiler at install): ``kanat run`` says it compiles (before it does), ``kanat
+    warmup`` then finds the family cached (numba's cache index, read by :func:`kanat.jit.pending`),
+    and a second run compiles nothing and says nothing of it."""
     import os
     import subprocess
     import sys
@@ -118,7 +119,7 @@ def test_a_cold_run_says_it_compiles_and_kanat_warmup_finds_it_done(tmp_path):
 
     case = tmp_path / "tiny.yaml"
     case.write_text(yaml.safe_dump(warmup.CASES["lumped-rk4"]))
-    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache")}
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "KANAT_AOT": "0"}
 
     def kanat(*args):
         done = subprocess.run([sys.executable, "-m", "kanat.cli", *args], env=env, capture_output=True,

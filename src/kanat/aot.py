@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import hashlib
 import importlib
+import logging
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,11 +35,14 @@ from typing import Callable
 
 import numpy as np
 
-SOURCES = ("jit.py", "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "continuum/layout3d.py",
-           "continuum/loads3d.py", "continuum/rows3d.py", "continuum/bending3d.py", "physics/seabed.py", "aot.py",
-           "aot_build.py")
+SOURCES = ("jit.py", "aot.py", "aot_build.py", "physics/seabed.py", "physics/contact.py",
+           "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "continuum/kernels2d.py",
+           "continuum/layout3d.py", "continuum/loads3d.py", "continuum/rows3d.py", "continuum/bending3d.py",
+           "continuum/kernels3d.py", "lumped/kernels.py", "lumped/rigid.py", "lumped/fast.py", "lumped/fast_implicit.py",
+           "lumped/entries.py", "continuum/factorized/dense.py", "continuum/factorized/sweeps_compiled.py",
+           "continuum/factorized/waves_compiled.py")
 """The files whose code the extension holds (paths below the ``kanat`` package): every module
-the compiled kernels read a function or a constant from, and the build's description."""
+the compiled kernels read a function or a constant from, and those declaring the entries."""
 
 
 @dataclass(frozen=True)
@@ -49,21 +53,32 @@ class Array:
     ndim: int
 
 
-F1, F2 = Array("float64", 1), Array("float64", 2)
-FLOAT = "float64"
-"""Scalar specifications are type names (``"float64"``); ``None`` is Python's None; a tuple of
-specifications is a tuple argument."""
+FLOAT, INT, BOOL = "float64", "int64", "bool"
+"""Scalar specifications; ``None`` is Python's None; a tuple of specifications a tuple argument."""
+F1, F2, F3 = Array(FLOAT, 1), Array(FLOAT, 2), Array(FLOAT, 3)
+I1, I2, B1 = Array(INT, 1), Array(INT, 2), Array(BOOL, 1)
 
-_PLANAR = (F2, F2, F2, F2, F2, F1, F1, F1, F2)                 # x, y, d, env, P, b0, b1, res, band
-_SPATIAL = (F2, F2, F2, F2, F1, F2, F1, F1, F1, F2)            # x, y, d, env, up, P, b0, b1, res, band
-ENTRIES = {
-    "assemble": ("kanat.continuum.rows2d", (_PLANAR + (None,), _PLANAR + (F1,))),
-    "assemble3": ("kanat.continuum.rows3d", (_SPATIAL + (None,), _SPATIAL + (F1,))),
-    "assemble3_bending": ("kanat.continuum.bending3d", (_SPATIAL + (None,), _SPATIAL + (F1,))),
-}
-"""Every compiled entry: its numba kernel's module, and the argument specifications of its
-versions (``<name>__<i>`` in the extension). All return None. ``extras`` (the last argument) is
-None for a plain cable and an array otherwise (:mod:`kanat.continuum.rows2d`)."""
+
+@dataclass(frozen=True)
+class Entry:
+    """A kernel compiled at install: numba's ``function`` in module ``home``, in one version per
+    argument specification of ``versions`` (``<name>__<i>`` in the extension), returning ``returns``."""
+
+    home: str
+    function: str
+    versions: tuple
+    returns: object = None
+
+
+ENTRIES: dict[str, Entry] = {}
+"""Every compiled entry by name, filled by :func:`register` from the modules that call them
+(``kanat.aot_build.DECLARING``)."""
+
+
+def register(name: str, home: str, *versions, returns=None, function: str | None = None) -> None:
+    """Declare the entry ``name`` (:class:`Entry`; ``function`` defaults to ``name``)."""
+    ENTRIES[name] = Entry(home, function or name, tuple(versions), returns)
+
 
 _loaded: dict = {}
 
@@ -116,6 +131,10 @@ def checker(spec) -> Callable[[object], bool]:
                               and value.flags.carray)
     if spec == FLOAT:
         return lambda value: isinstance(value, float)
+    if spec == INT:
+        return lambda value: isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
+    if spec == BOOL:
+        return lambda value: isinstance(value, (bool, np.bool_))
     raise ValueError(f"no such specification: {spec!r}")
 
 
@@ -128,15 +147,15 @@ def kernel(name: str) -> Callable:
     """The entry ``name`` of :data:`ENTRIES`: its compiled versions when :func:`load` finds them
     current, each called only with arguments that match it (the one that matched last is tried
     first), numba's kernel otherwise."""
-    home, versions = ENTRIES[name]
+    entry = ENTRIES[name]
 
     def numba_kernel():
-        return getattr(importlib.import_module(home), name)
+        return getattr(importlib.import_module(entry.home), entry.function)
 
     compiled = load()
     if compiled is None:
         return numba_kernel()
-    candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(versions)]
+    candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(entry.versions)]
 
     def run(*args):
         for index, (function, check) in enumerate(candidates):
@@ -144,8 +163,16 @@ def kernel(name: str) -> Callable:
                 if index:
                     candidates.insert(0, candidates.pop(index))
                 return function(*args)
-        return numba_kernel()(*args)                 # other types: numba compiles for them
+        if name not in _numba_used:                  # other types: numba compiles for them
+            _numba_used.add(name)
+            logging.getLogger("kanat").info(f"{name}: arguments of types not compiled at install; numba compiles "
+                                            "for them once (cached)")
+        return numba_kernel()(*args)
 
     run.__name__ = run.__qualname__ = name
-    run.__doc__ = f"{home}.{name}, compiled at install (kanat.aot_build); other argument types go to numba's."
+    run.__doc__ = f"{entry.home}.{entry.function}, compiled at install (kanat.aot_build); other arguments go to numba's."
     return run
+
+
+_numba_used: set = set()
+"""Entries that were called with arguments no compiled version takes (the tests read it)."""

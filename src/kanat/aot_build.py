@@ -1,7 +1,7 @@
 """What ``setup.py`` compiles ahead of time into ``kanat._kernels`` (numba's ``pycc``; :mod:`kanat.aot`).
 
-Every entry of :data:`kanat.aot.ENTRIES` (the continuum model's step kernels, the only ones its
-runs call from Python), each version exported as ``<name>__<i>`` with the signature its
+Every entry of :data:`kanat.aot.ENTRIES` (the kernels runs call from Python, declared by the
+modules of :data:`DECLARING`), each version exported as ``<name>__<i>`` with the signature its
 argument specifications give; and ``fingerprint()``, the digest of the sources it was compiled
 from. The kernels are the same Python functions numba compiles just in time.
 
@@ -14,6 +14,9 @@ import importlib
 from kanat import aot
 
 MODULE = "_kernels"
+DECLARING = ("kanat.continuum.kernels2d", "kanat.continuum.kernels3d", "kanat.lumped.entries",
+             "kanat.continuum.factorized.sweeps_compiled", "kanat.continuum.factorized.waves_compiled")
+"""The modules that declare entries (:func:`kanat.aot.register`)."""
 
 
 def numba_type(spec):
@@ -25,8 +28,8 @@ def numba_type(spec):
     if isinstance(spec, tuple):
         return types.Tuple(tuple(numba_type(item) for item in spec))
     if isinstance(spec, aot.Array):
-        return types.Array(getattr(types, spec.dtype), spec.ndim, "C")
-    return getattr(types, spec)
+        return types.Array(numba_type(spec.dtype), spec.ndim, "C")
+    return types.boolean if spec == aot.BOOL else getattr(types, spec)
 
 
 def compiler(output_dir=None):
@@ -51,10 +54,13 @@ def compiler(output_dir=None):
     def fingerprint():
         return stamp
 
-    for name, (home, versions) in aot.ENTRIES.items():
-        kernel = getattr(importlib.import_module(home), name)
-        for i, spec in enumerate(versions):
-            cc.export(f"{name}__{i}", types.void(*map(numba_type, spec)))(_calling(kernel, len(spec)))
+    for module in DECLARING:
+        importlib.import_module(module)
+    for name, entry in aot.ENTRIES.items():
+        kernel = getattr(importlib.import_module(entry.home), entry.function)
+        returns = types.void if entry.returns is None else numba_type(entry.returns)
+        for i, spec in enumerate(entry.versions):
+            cc.export(f"{name}__{i}", returns(*map(numba_type, spec)))(_calling(kernel, len(spec)))
     return cc
 
 
@@ -64,7 +70,7 @@ def _calling(kernel, arity: int):
     which pycc would not give the exported function's own body."""
     names = ", ".join(f"a{i}" for i in range(arity))
     namespace = {"kernel": kernel}
-    exec(f"def entry({names}):\n    kernel({names})\n", namespace)      # noqa: S102 - a fixed template
+    exec(f"def entry({names}):\n    return kernel({names})\n", namespace)      # noqa: S102 - a fixed template
     return namespace["entry"]
 
 

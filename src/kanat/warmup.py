@@ -25,10 +25,6 @@ FAMILIES = {
 families remeasured 2026-11-27 on a quiet machine; lumped-abm4 estimated from lumped-rk4)."""
 
 
-AHEAD_OF_TIME = {"continuum-2d": "_kernels", "continuum-3d": "_kernels", "continuum-3d-bending": "_kernels"}
-"""The families compiled at install (:mod:`kanat.aot`), by the extension module holding them."""
-
-
 def family(name: str):
     """The :class:`kanat.jit.Family` ``name`` of :data:`FAMILIES`, importing only its own kernel
     modules (a continuum run asking whether it will compile does not load the lumped model)."""
@@ -80,10 +76,10 @@ def family_name(scheme: str, dimensions: int = 2, bending: bool = False) -> str 
 
 
 def pending(name: str | None) -> float | None:
-    """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached,
-    compiled at install and current (:data:`AHEAD_OF_TIME`), or no such family. Reads the cache
-    index only: costs milliseconds."""
-    if name not in FAMILIES or (name in AHEAD_OF_TIME and aot.load(AHEAD_OF_TIME[name]) is not None):
+    """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached, or
+    compiled at install and current (:mod:`kanat.aot`: every family's entries), or no such family.
+    Reads the cache index only: costs milliseconds."""
+    if name not in FAMILIES or aot.load() is not None:
         return None
     from kanat.jit import pending as family_pending
 

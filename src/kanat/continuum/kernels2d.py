@@ -65,6 +65,9 @@ from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module i
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
     CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
 
+_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)  # x, y, d, env, P, b0, b1, res, band
+aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))   # extras: None or marker
+
 _NUMBA = {name: "loads2d" for name in (
     "strain", "compliance", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
     "seabed_force_jacobian", "extra_load", "extra_load_jacobian", "weighted", "surface_buoyancy", "end_jacobian")}

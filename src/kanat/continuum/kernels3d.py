@@ -56,7 +56,10 @@ _NUMBA = {name: "loads3d" for name in (
     "frame", "node_load3", "node_load3_jacobian", "mass_times", "stiffness_times", "mass_matrix", "stiffness_matrix",
     "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
     "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
-_ENTRIES = ("assemble3", "assemble3_bending")
+_ENTRIES = {"assemble3": "rows3d", "assemble3_bending": "bending3d"}
+_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)  # x, y, d, env, up, P, b0, b1, res, band
+for _name, _home in _ENTRIES.items():
+    aot.register(_name, f"kanat.continuum.{_home}", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
 
 def __getattr__(name):

@@ -25,7 +25,7 @@ from kanat.dynamics import StepFailure, Steps
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
-from kanat.lumped import kernels, stepping
+from kanat.lumped import entries, stepping
 from kanat.lumped.advance import advance
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.network import build_network
@@ -187,7 +187,7 @@ class LumpedModel:
     def _element_tensions(self, x, v) -> np.ndarray:
         """Element tensions (m,) of all nodes' ``x, v`` (a view of one work array)."""
         net = self.net
-        kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                          net.law_n, net.law_x, net.law_y, self._T)
         return self._T
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from kanat.lumped import fast, fast_implicit, kernels
+from kanat.lumped import entries, fast, fast_implicit
 from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, state_positions
 
 
@@ -176,7 +176,7 @@ def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool
     mid = track_samples(system, t0 + h * (np.arange(steps) + 1.0 - af))
     end = track_samples(system, t0 + h * (np.arange(steps) + 1.0))
     x, v, a = (np.array(state[k], dtype=float) for k in ("x", "v", "a"))
-    done, iterations, count, failed = fast_implicit.steps(
+    done, iterations, count, failed = entries.implicit_steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
         arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
         arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events)
@@ -194,9 +194,9 @@ def _fused(scheme, system, state, h, steps, tracker) -> int:
     snap = tracker.kernel_arrays()
     args = (samples, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work, snap, arrays.events)
     if isinstance(scheme, ABM4):
-        done, count = fast.abm4_steps(t0, h, steps, state["y"], state["history"], *args)
+        done, count = entries.abm4_steps(t0, h, steps, state["y"], state["history"], *args)
     else:
-        done, count = fast.rk4_steps(t0, h, steps, state["y"], *args)
+        done, count = entries.rk4_steps(t0, h, steps, state["y"], *args)
     tracker.absorb(arrays.events[:count].copy())
     state["t"] = t0 + done * h
     system.evaluations += done * scheme.evaluations_per_step
@@ -207,6 +207,6 @@ def element_tensions(system, state, out: np.ndarray) -> np.ndarray:
     """Element tensions (m,) of a scheme state, written into ``out`` (the Python path)."""
     net = system.net
     x, v, _, _ = system.full(state["t"], *state_positions(state))
-    kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+    entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                      net.law_n, net.law_x, net.law_y, out)
     return out

@@ -35,6 +35,8 @@ from __future__ import annotations
 import numpy as np
 from kanat.jit import kernel
 
+from kanat.lumped import entries
+
 PCG_TOLERANCE = 1e-13      # relative residual of the consistent-mass solve (round-off level)
 PCG_MAX_ITERATIONS = 200   # the preconditioned mass matrix has condition number < 4: ~20 suffice
 
@@ -170,7 +172,8 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
     el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
           zeros if mat is None else mat, zeros if buoy is None else buoy, zeros)
     packed = np.empty((x.shape[0], 6))
-    element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force, node_mass, el, F, packed, T, strain)
+    entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force,
+                           node_mass, el, F, packed, T, strain)
     M[:] = packed[:, np.array(PACKED)]
 
 
@@ -354,8 +357,8 @@ def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
 def body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
     """:func:`add_body_loads` from Python: the water kinematics as writable C arrays, whatever
     array the environment gave (one compiled version for every run)."""
-    add_body_loads(x, v, _writable(uw), _writable(aw), body_node, drag_area, spreading, added_mass, float(rho),
-                   float(heading), F)
+    entries.add_body_loads(x, v, _writable(uw), _writable(aw), body_node, drag_area, spreading, added_mass,
+                           float(rho), float(heading), F)
 
 
 def _writable(a) -> np.ndarray:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kanat.lumped.kernels import elastic_row
+from kanat.lumped import entries
 from kanat.physics.contact import SLIP_VELOCITY
 
 SAFETY = 0.8                 # margin below the stability limit
@@ -88,7 +88,7 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
         if not np.any(sel):
             continue
         top = max(STRAIN_REFERENCE, 2.0 * float(np.max(strain[sel])))
-        slope[sel] = max(elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, float(e))[1]
+        slope[sel] = max(entries.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, float(e))[1]
                          for e in np.linspace(0.0, top, 17))
     pair = inv[net.el_i] + inv[net.el_j]
     omega = np.sqrt(2.0 * slope / net.el_length * pair)

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from kanat.lumped import fast, kernels, rigid
+from kanat.lumped import entries, kernels
 from kanat.physics import contact
 from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.motion_samples import motion_series, point_series
@@ -167,7 +167,7 @@ class LumpedSystem:
         if self.track.pitch is None:
             if getattr(self, "_phases", None) is None:
                 self._phases = phase_table(self.track)
-            fast.track_states(np.ascontiguousarray(times, float), self._phases, np.asarray(arm, float), pos, vel,
+            entries.track_states(np.ascontiguousarray(times, float), self._phases, np.asarray(arm, float), pos, vel,
                               heading)
             return pos, vel, heading
         for i, t in enumerate(times):
@@ -217,7 +217,7 @@ class LumpedSystem:
         if a is not None:
             a[net.anchor_nodes] = 0.0
         if net.rigid.count:
-            rigid.place_fairleads(x, v, self.rig)
+            entries.place_fairleads(x, v, self.rig)
         return heading
 
     def water(self, t: float, points: np.ndarray):
@@ -256,7 +256,7 @@ class LumpedSystem:
         self.evaluations += 1
         area, bed, params, laid = self.contact
         if len(area):
-            contact.contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, self._tangent, self._F,
+            entries.contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, self._tangent, self._F,
                                    self.normal_force)
         if len(net.load_node):
             self._body_loads(t, x, v, heading)
@@ -284,7 +284,7 @@ class LumpedSystem:
         u, a = self.water(t, points)
         eta = self.sea.elevation(points[:, 0], points[:, 1], t) if self.sea is not None else np.zeros(len(ref))
         packed = self._M[:, [0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]].copy()
-        rigid.rigid_accelerations(x, v, self._F, packed, np.ascontiguousarray(u), np.ascontiguousarray(a),
+        entries.rigid_accelerations(x, v, self._F, packed, np.array(u, dtype=float), np.array(a, dtype=float),
                                   np.asarray(eta, float), self.rho, self.rig, self.rigid_acc)
         self._M[:] = packed[:, np.array(kernels.PACKED)]
 
@@ -296,7 +296,7 @@ class LumpedSystem:
                                       self.net.el_mass, self.net.el_added_mass, B)
             kernels.consistent_solve(B, self.net.el_i, self.net.el_j, self.node_mass, F, self.net.free, a)
         else:
-            kernels.lumped_solve(M, F, self.net.free, a)
+            entries.lumped_solve(M, F, self.net.free, a)
         if self.net.rigid.count:
             a[self.net.rigid.ref_node], a[self.net.rigid.rot_node] = self.rigid_acc[:, 0], self.rigid_acc[:, 1]
         return a

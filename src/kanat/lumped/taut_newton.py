@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from kanat.lumped import kernels
+from kanat.lumped import entries
 from kanat.physics.seabed import seabed_of
 
 TAUT_ITERATIONS = 40         # Newton iterations of the taut phase before the caller takes over
@@ -38,8 +38,8 @@ def onset_stiffness(net) -> np.ndarray:
     slope = np.empty(net.n_elements)
     for k in range(net.n_elements):
         row = net.el_law[k]
-        df = kernels.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, SLACK_STRAIN)[1]
-        secant = kernels.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, SECANT_STRAIN)[0]
+        df = entries.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, SLACK_STRAIN)[1]
+        secant = entries.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, row, SECANT_STRAIN)[0]
         slope[k] = df if df > 0.0 else secant / SECANT_STRAIN
     return slope / net.el_length
 
