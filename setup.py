@@ -27,13 +27,14 @@ class BuildKernels(build_ext):
 
 
 def extensions():
-    """``kanat._kernels`` (:mod:`kanat.aot_build`), or none when numba cannot be imported here."""
+    """``kanat._kernels`` (:mod:`kanat.aot_build`), or none when it cannot be described here."""
     try:
         from kanat.aot_build import compiler
-    except ImportError as error:
-        print(f"warning: kanat's ahead-of-time kernels are skipped ({error})", file=sys.stderr)
+
+        return [compiler().distutils_extension()]      # named kanat._kernels after the module that made it
+    except Exception as error:  # noqa: BLE001 - optional: the runs compile with numba instead
+        print(f"warning: kanat's ahead-of-time kernels are skipped ({type(error).__name__}: {error})", file=sys.stderr)
         return []
-    return [compiler().distutils_extension()]      # named kanat._kernels after the module that made it
 
 
 setup(ext_modules=extensions(), cmdclass={"build_ext": BuildKernels})

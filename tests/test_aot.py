@@ -111,6 +111,26 @@ def test_an_edited_source_makes_the_extension_unused(tmp_path):
     assert out.stdout.strip() == "True"
 
 
+def test_the_build_needs_numba_and_numpy_only():
+    """pip builds the extension in an environment holding the build requirements only (numba,
+    NumPy, setuptools): describing it must import nothing else (here: everything else refused)."""
+    script = ("import sys, importlib.abc\n"
+              "class Refuse(importlib.abc.MetaPathFinder):\n"
+              "    def find_spec(self, name, path, target=None):\n"
+              "        if name.split('.')[0] in {'scipy', 'pydantic', 'yaml', 'xarray', 'h5netcdf', 'h5py', 'typer',\n"
+              "                                  'rich'}:\n"
+              "            raise ImportError(f'{name} is not in the build environment')\n"
+              "sys.meta_path.insert(0, Refuse())\n"
+              "import kanat.aot_build\n"
+              "cc = kanat.aot_build.compiler()\n"
+              "print(len(cc._exported_functions))")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    for module in import_module("kanat.aot_build").DECLARING:
+        import_module(module)
+    assert int(out.stdout) == 1 + sum(len(entry.versions) for entry in aot.ENTRIES.values()) > 30
+
+
 def test_sources_list_every_module_the_compiled_kernels_read():
     """Every module defining a kernel the build compiles, the layouts they read and the entries'
     declarations are fingerprinted (an edit anywhere there must retire the extension)."""

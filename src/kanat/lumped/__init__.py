@@ -18,9 +18,18 @@ module ``oracle_<method><dim>.py`` in the package whose kernels it checks, ``<me
 it is written (``complex_step``, ``numpy``, ``sympy``) and ``<dim>`` the ``2d``/``3d`` of those
 kernels where the package has both: here :mod:`.oracle_numpy`.
 """
-from kanat.lumped.adapter import LumpedModel
-from kanat.lumped.equilibrium import equilibrium
-from kanat.lumped.network import Network, build_network
-from kanat.lumped.system import LumpedSystem
+_API = {"LumpedModel": "adapter", "equilibrium": "equilibrium", "Network": "network", "build_network": "network",
+        "LumpedSystem": "system"}
+
+
+def __getattr__(name):
+    """The public names, imported on first use: the compiled kernels' modules import this package
+    without the model's case and run machinery (the install's kernel build has only numba)."""
+    if name not in _API:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from importlib import import_module
+
+    return getattr(import_module(f"kanat.lumped.{_API[name]}"), name)
+
 
 __all__ = ["LumpedModel", "LumpedSystem", "Network", "build_network", "equilibrium"]

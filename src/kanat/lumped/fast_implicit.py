@@ -18,9 +18,7 @@ The Python path is this module's twin (tests).
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
 from kanat.jit import inner, kernel
-from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 from kanat.lumped import fast, kernels
 from kanat.physics.contact import contact_tangent
@@ -33,6 +31,9 @@ CONTRACTION = 0.1           # an increment above this fraction of the one before
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
     """Position of each free node in the band order (n_nodes,; -1 for prescribed nodes) and the
     band half-width in degrees of freedom."""
+    import scipy.sparse as sp                          # here: the kernels' module loads without SciPy
+    from scipy.sparse.csgraph import reverse_cuthill_mckee
+
     n_free = len(free_index)
     local = -np.ones(net.n_nodes, dtype=np.int64)
     local[free_index] = np.arange(n_free)
