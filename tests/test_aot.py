@@ -26,10 +26,10 @@ from kanat.continuum import kernels2d, kernels3d
 from helpers import EXAMPLES
 
 
-def test_the_install_built_the_extension_and_it_is_current():
-    compiled = aot.load()
-    assert compiled is not None, "kanat._kernels is missing or stale: pip install -e . (or python -m kanat.aot_build)"
-    assert compiled.fingerprint() == aot.fingerprint()
+def test_the_install_built_the_extensions_and_they_are_current():
+    assert aot.current(), "kanat's compiled kernels are missing or stale: pip install -e . (or python -m kanat.aot_build)"
+    for name in aot.MODULES:
+        assert aot.load(name).fingerprint() == aot.fingerprint()
 
 
 BENDING_3D = {**warmup.CASES["continuum-3d-bending"], "simulation": {
@@ -80,7 +80,7 @@ def test_arguments_the_compiled_code_would_misread_go_to_numba(monkeypatch):
     calls = []
     compiled = aot.load()
     monkeypatch.setattr(compiled, "assemble__0", lambda *args: calls.append(args))   # must not be called
-    monkeypatch.setattr(aot, "_loaded", {"_kernels": compiled})
+    monkeypatch.setattr(aot, "_loaded", {"_continuum": compiled})
     assemble = aot.kernel("assemble")
     sizes = [(5, 4), (5, 4), (5, 4), (5, 6), (4, 40), (16,), (16,), (20,), (11, 20)]
     args = [np.asfortranarray(np.ones(shape)) if len(shape) == 2 else np.ones(shape) for shape in sizes]
@@ -101,14 +101,14 @@ def test_an_edited_source_makes_the_extension_unused(tmp_path):
     rows = package / "continuum" / "rows2d.py"
     rows.write_text(rows.read_text().replace("band[:, :] = 0.0", "band[:, :] = 0.0 "))
     assert aot.fingerprint(package) != aot.fingerprint()
-    # in a process that sees the edited sources, load() answers None: the run compiles with numba
+    # a process that sees the edited sources beside the built modules uses none of them
     script = ("import sys; sys.path.insert(0, sys.argv[1]); import kanat, shutil, glob, os\n"
-              "[shutil.copy(f, os.path.dirname(kanat.__file__)) for f in glob.glob(sys.argv[2])]\n"
-              "from kanat import aot; print(aot.load() is None)")
-    shared = os.path.join(os.path.dirname(aot.__file__), "_kernels*.so")
+              "copied = [shutil.copy(f, os.path.dirname(kanat.__file__)) for f in glob.glob(sys.argv[2])]\n"
+              "from kanat import aot; print(len(copied), [aot.load(name) for name in aot.MODULES])")
+    shared = os.path.join(os.path.dirname(aot.__file__), "_*.so")
     out = subprocess.run([sys.executable, "-c", script, str(tmp_path), shared], capture_output=True, text=True,
                          check=True)
-    assert out.stdout.strip() == "True"
+    assert out.stdout.strip() == f"{len(aot.MODULES)} {[None] * len(aot.MODULES)}"
 
 
 def test_the_build_needs_numba_and_numpy_only():
@@ -122,19 +122,19 @@ def test_the_build_needs_numba_and_numpy_only():
               "            raise ImportError(f'{name} is not in the build environment')\n"
               "sys.meta_path.insert(0, Refuse())\n"
               "import kanat.aot_build\n"
-              "cc = kanat.aot_build.compiler()\n"
-              "print(len(cc._exported_functions))")
+              "print(sum(len(cc._exported_functions) for cc in kanat.aot_build.compilers()))")
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     for module in import_module("kanat.aot_build").DECLARING:
         import_module(module)
-    assert int(out.stdout) == 1 + sum(len(entry.versions) for entry in aot.ENTRIES.values()) > 30
+    exported = len(aot.MODULES) + sum(len(entry.versions) for entry in aot.ENTRIES.values())   # and fingerprints
+    assert int(out.stdout) == exported > 30
 
 
 def test_sources_list_every_module_the_compiled_kernels_read():
     """Every module defining a kernel the build compiles, the layouts they read and the entries'
     declarations are fingerprinted (an edit anywhere there must retire the extension)."""
-    script = ("import sys, kanat.aot_build; kanat.aot_build.compiler()\n"
+    script = ("import sys, kanat.aot_build; kanat.aot_build.compilers()\n"
               "from numba.core.dispatcher import Dispatcher\n"
               "print('\\n'.join(m.__file__ for n, m in list(sys.modules.items()) if n.startswith('kanat') and any(\n"
               "    isinstance(v, Dispatcher) and v.__module__ == n for v in vars(m).values())))")

@@ -1,7 +1,7 @@
 """Kernels compiled ahead of time, at install: loaded without numba, or not at all when unusable.
 
-``pip install`` builds the extension module ``kanat._kernels`` from the continuum model's step
-kernels (:data:`ENTRIES` lists them; ``setup.py`` builds them with numba's ahead-of-time
+``pip install`` builds the extension modules of :data:`MODULES` from the kernels runs call from
+Python (:data:`ENTRIES` lists them; ``setup.py`` builds them with numba's ahead-of-time
 compiler, :mod:`kanat.aot_build`). Why: numba's import and its one-time initialisation at the
 first kernel load cost about 0.45 s of CPU in every process, a third of the whole 2-D example
 run (benchmarks/RESULTS.md), and a first run would compile for 4-12 s; a plain extension module
@@ -59,15 +59,23 @@ F1, F2, F3 = Array(FLOAT, 1), Array(FLOAT, 2), Array(FLOAT, 3)
 I1, I2, B1 = Array(INT, 1), Array(INT, 2), Array(BOOL, 1)
 
 
+MODULES = ("_continuum", "_lumped", "_lumped_explicit")
+"""The extension modules: the continuum model's kernels (the box scheme's and the factorized
+schemes'), the lumped model's (its Python path and implicit steps), and its explicit steps;
+compiled side by side at install (about 40 s of CPU each)."""
+
+
 @dataclass(frozen=True)
 class Entry:
     """A kernel compiled at install: numba's ``function`` in module ``home``, in one version per
-    argument specification of ``versions`` (``<name>__<i>`` in the extension), returning ``returns``."""
+    argument specification of ``versions`` (``<name>__<i>`` in the extension ``module``), returning
+    ``returns``."""
 
     home: str
     function: str
     versions: tuple
     returns: object = None
+    module: str = "_continuum"
 
 
 ENTRIES: dict[str, Entry] = {}
@@ -75,9 +83,10 @@ ENTRIES: dict[str, Entry] = {}
 (``kanat.aot_build.DECLARING``)."""
 
 
-def register(name: str, home: str, *versions, returns=None, function: str | None = None) -> None:
+def register(name: str, home: str, *versions, returns=None, function: str | None = None,
+             module: str = "_continuum") -> None:
     """Declare the entry ``name`` (:class:`Entry`; ``function`` defaults to ``name``)."""
-    ENTRIES[name] = Entry(home, function or name, tuple(versions), returns)
+    ENTRIES[name] = Entry(home, function or name, tuple(versions), returns, module)
 
 
 _loaded: dict = {}
@@ -96,7 +105,12 @@ def fingerprint(root: Path | None = None) -> int:
     return int(digest.hexdigest()[:15], 16)
 
 
-def load(name: str = "_kernels"):
+def current() -> bool:
+    """Whether every module of :data:`MODULES` was built and matches the sources."""
+    return all(load(name) is not None for name in MODULES)
+
+
+def load(name: str = "_continuum"):
     """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None.
 
     Imports no numba. The answer is kept for the process.
@@ -152,7 +166,7 @@ def kernel(name: str) -> Callable:
     def numba_kernel():
         return getattr(importlib.import_module(entry.home), entry.function)
 
-    compiled = load()
+    compiled = load(entry.module)
     if compiled is None:
         return numba_kernel()
     candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(entry.versions)]

@@ -1,9 +1,10 @@
-"""What ``setup.py`` compiles ahead of time into ``kanat._kernels`` (numba's ``pycc``; :mod:`kanat.aot`).
+"""What ``setup.py`` compiles ahead of time into the modules of :data:`kanat.aot.MODULES` (numba's ``pycc``).
 
 Every entry of :data:`kanat.aot.ENTRIES` (the kernels runs call from Python, declared by the
-modules of :data:`DECLARING`), each version exported as ``<name>__<i>`` with the signature its
-argument specifications give; and ``fingerprint()``, the digest of the sources it was compiled
-from. The kernels are the same Python functions numba compiles just in time.
+modules of :data:`DECLARING`) goes into its module, each version exported as ``<name>__<i>`` with
+the signature its argument specifications give; every module also exports ``fingerprint()``,
+the digest of the sources it was compiled from. The kernels are the same Python functions numba
+compiles just in time.
 
 Imported by the build and the tests only (it needs numba and a C compiler).
 """
@@ -13,7 +14,6 @@ import importlib
 
 from kanat import aot
 
-MODULE = "_kernels"
 DECLARING = ("kanat.continuum.kernels2d", "kanat.continuum.kernels3d", "kanat.lumped.entries",
              "kanat.continuum.factorized.sweeps_compiled", "kanat.continuum.factorized.waves_compiled")
 """The modules that declare entries (:func:`kanat.aot.register`)."""
@@ -32,11 +32,18 @@ def numba_type(spec):
     return types.boolean if spec == aot.BOOL else getattr(types, spec)
 
 
-def compiler(output_dir=None):
-    """numba's ``CC`` for ``kanat._kernels``, with every entry point exported.
+def compilers(output_dir=None) -> list:
+    """numba's ``CC`` of every module of :data:`kanat.aot.MODULES` (:func:`compiler`)."""
+    return [compiler(module, output_dir) for module in aot.MODULES]
+
+
+def compiler(module: str, output_dir=None):
+    """numba's ``CC`` for ``kanat.<module>``, with its entry points exported.
 
     Parameters
     ----------
+    module : str
+        One of :data:`kanat.aot.MODULES`.
     output_dir : path-like, optional
         Where ``CC.compile()`` writes the module (default: beside this file, as ``setup.py``'s
         in-place build does).
@@ -44,7 +51,7 @@ def compiler(output_dir=None):
     from numba import types
     from numba.pycc import CC
 
-    cc = CC(MODULE)
+    cc = CC(module)
     cc.verbose = False
     if output_dir is not None:
         cc.output_dir = str(output_dir)
@@ -54,9 +61,11 @@ def compiler(output_dir=None):
     def fingerprint():
         return stamp
 
-    for module in DECLARING:
-        importlib.import_module(module)
+    for declaring in DECLARING:
+        importlib.import_module(declaring)
     for name, entry in aot.ENTRIES.items():
+        if entry.module != module:
+            continue
         kernel = getattr(importlib.import_module(entry.home), entry.function)
         returns = types.void if entry.returns is None else numba_type(entry.returns)
         for i, spec in enumerate(entry.versions):
@@ -75,4 +84,5 @@ def _calling(kernel, arity: int):
 
 
 if __name__ == "__main__":          # python -m kanat.aot_build: rebuild in place after editing a kernel
-    compiler().compile()
+    for cc in compilers():
+        cc.compile()

@@ -79,7 +79,7 @@ def pending(name: str | None) -> float | None:
     """Seconds the family ``name`` (:func:`family_name`) still has to compile, None if cached, or
     compiled at install and current (:mod:`kanat.aot`: every family's entries), or no such family.
     Reads the cache index only: costs milliseconds."""
-    if name not in FAMILIES or aot.load() is not None:
+    if name not in FAMILIES or aot.current():
         return None
     from kanat.jit import pending as family_pending
 

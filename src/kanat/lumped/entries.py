@@ -12,6 +12,8 @@ kernels come in one version per combination of the optional 6-DOF bodies and sea
 """
 from __future__ import annotations
 
+from functools import partial
+
 from kanat import aot
 from kanat.aot import B1, BOOL, F1, F2, F3, FLOAT, I1, I2, INT
 
@@ -25,34 +27,35 @@ SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1)
 ENV = (FLOAT, FLOAT, F1, F2, SEA, BOOL, FLOAT)
 WORK = (F2, F2, F2, F2, F1, F1, F2, F2, F2, F2, F2, F2, F2, F1, F3, F2, F2, F1, F1, F2, F2)
 SNAP = (B1, B1, F1, F1, F1, F1, F1)
+register = partial(aot.register, module="_lumped")       # the lumped model's own extension module
 BODIES = tuple((I1, F1, F1, F1, I1, F1, F1, rig, seabed)
                for rig in (None, RIG) for seabed in (None, SEABED))
 """The ``bodies`` argument with and without 6-DOF bodies and seabed contact."""
 
-aot.register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
-aot.register("rk4_steps", "kanat.lumped.fast",
-             *((FLOAT, FLOAT, INT, F1, SAMPLES, NODES, ELEMENTS, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
-             returns=(INT, INT))
-aot.register("abm4_steps", "kanat.lumped.fast",
-             *((FLOAT, FLOAT, INT, F1, F2, SAMPLES, NODES, ELEMENTS, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
-             returns=(INT, INT))
-aot.register("implicit_steps", "kanat.lumped.fast_implicit",
-             *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, NODES, ELEMENTS,
-                bodies, ENV, WORK, (F3,) * 5, F2, F1, B1, F2, SNAP, F2) for bodies in BODIES),
-             returns=(INT, INT, INT, BOOL), function="steps")
-aot.register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
-aot.register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, ELEMENTS, F2, F2, F1, F1))
-aot.register("lumped_solve", "kanat.lumped.kernels", (F3, F2, B1, F2))
-aot.register("tensions", "kanat.lumped.kernels", (F2, F2, I1, I1, F1, F1, I1, I1, I1, F2, F2, F1))
-aot.register("add_body_loads", "kanat.lumped.kernels", (F2, F2, F2, F2, I1, F1, F1, F1, FLOAT, FLOAT, F2))
-aot.register("place_fairleads", "kanat.lumped.rigid", (F2, F2, RIG))
-aot.register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, RIG, F3))
-aot.register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, CONTACT, F2, F2, F1))
+register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
+register("rk4_steps", "kanat.lumped.fast",
+         *((FLOAT, FLOAT, INT, F1, SAMPLES, NODES, ELEMENTS, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
+         returns=(INT, INT), module="_lumped_explicit")
+register("abm4_steps", "kanat.lumped.fast",
+         *((FLOAT, FLOAT, INT, F1, F2, SAMPLES, NODES, ELEMENTS, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
+         returns=(INT, INT), module="_lumped_explicit")
+register("implicit_steps", "kanat.lumped.fast_implicit",
+         *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, NODES, ELEMENTS,
+            bodies, ENV, WORK, (F3,) * 5, F2, F1, B1, F2, SNAP, F2) for bodies in BODIES),
+         returns=(INT, INT, INT, BOOL), function="steps")
+register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
+register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, ELEMENTS, F2, F2, F1, F1))
+register("lumped_solve", "kanat.lumped.kernels", (F3, F2, B1, F2))
+register("tensions", "kanat.lumped.kernels", (F2, F2, I1, I1, F1, F1, I1, I1, I1, F2, F2, F1))
+register("add_body_loads", "kanat.lumped.kernels", (F2, F2, F2, F2, I1, F1, F1, F1, FLOAT, FLOAT, F2))
+register("place_fairleads", "kanat.lumped.rigid", (F2, F2, RIG))
+register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, RIG, F3))
+register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, CONTACT, F2, F2, F1))
 
 
 def __getattr__(name):
     """An entry, loaded on first use (module docstring)."""
-    if name not in aot.ENTRIES or not aot.ENTRIES[name].home.startswith(("kanat.lumped", "kanat.physics")):
+    if name not in aot.ENTRIES or not aot.ENTRIES[name].module.startswith("_lumped"):
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     value = aot.kernel(name)
     globals()[name] = value
