@@ -1,7 +1,8 @@
 """Whole-process times of the commands a user types, beside the solver's own time.
 
 Each command runs as a fresh process (``python -m kanat.cli ...``, the same code as the
-``kanat`` script) with a warm numba cache, interleaved with the others, ``--repeats`` times
+``kanat`` script) with the kernels compiled at install (``kanat.aot``; the "numba's kernels"
+rows run the same command with ``KANAT_AOT=0``, from a warm numba cache), interleaved with the others, ``--repeats`` times
 (default 5); the table gives medians of each process's CPU time (user + system) and peak
 resident memory (``os.wait4``), its wall time, and for runs the ``solver_time_s`` the result
 file records. The peer column is WHOI Cable's whole
@@ -30,28 +31,39 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
 
+NUMBA = {"KANAT_AOT": "0"}
+"""The environment of a run with numba's kernels instead of those compiled at install (kanat.aot)."""
 COMMANDS = {
-    "kanat --version": (["--version"], None, "< 0.3 s CPU", "–"),
+    "kanat --version": (["--version"], None, "< 0.3 s CPU", "–", {}),
     "kanat validate speed_step_2d.yaml": (["validate", str(EXAMPLES / "speed_step_2d.yaml")], None, "< 0.3 s CPU",
-                                          "–"),
-    "kanat statics towed_body.yaml -o OUT": (["statics", str(EXAMPLES / "towed_body.yaml")], "out.nc", "–", "–"),
+                                          "–", {}),
+    "kanat statics towed_body.yaml -o OUT": (["statics", str(EXAMPLES / "towed_body.yaml")], "out.nc", "–", "–", {}),
     "kanat run speed_step_2d.yaml -o OUT (2-D, 600 steps)": (["run", str(EXAMPLES / "speed_step_2d.yaml")], "out.nc",
-                                                              "< 1.0 s CPU", "0.41 s CPU"),
+                                                              "< 1.0 s CPU", "0.41 s CPU", {}),
+    "the 2-D run with numba's kernels (KANAT_AOT=0)": (["run", str(EXAMPLES / "speed_step_2d.yaml")], "out.nc",
+                                                       "–", "–", NUMBA),
     "kanat run turn_360_3d.yaml -o OUT (3-D, 1200 steps)": (["run", str(EXAMPLES / "turn_360_3d.yaml")], "out.nc",
-                                                             "< 2.0 s CPU", "4.9 s CPU"),
+                                                             "< 2.0 s CPU", "4.9 s CPU", {}),
+    "the 3-D run with numba's kernels (KANAT_AOT=0)": (["run", str(EXAMPLES / "turn_360_3d.yaml")], "out.nc",
+                                                       "–", "–", NUMBA),
+    "kanat run mooring_buoy_decay.yaml -o OUT (lumped, 6-DOF buoy, seabed)": (
+        ["run", str(EXAMPLES / "mooring_buoy_decay.yaml")], "out.nc", "–", "–", {}),
+    "the lumped run with numba's kernels (KANAT_AOT=0)": (["run", str(EXAMPLES / "mooring_buoy_decay.yaml")],
+                                                          "out.nc", "–", "–", NUMBA),
 }
-"""label: (arguments, output file name or None, target, WHOI Cable's whole process (PEERS))."""
+"""label: (arguments, output file name or None, target, WHOI Cable's whole process (PEERS), environment)."""
 
 
 ENVIRONMENT = dict(os.environ)
 """The commands' environment (:func:`main` sets how Python's bytecode is cached)."""
 
 
-def run_once(args: list[str], output: Path | None) -> tuple[float, float, float]:
+def run_once(args: list[str], output: Path | None, environment: dict) -> tuple[float, float, float]:
     """CPU [s], wall [s] and peak RSS [MiB] of one fresh process (its own ``rusage``)."""
     command = [sys.executable, "-m", "kanat.cli", *args] + (["-o", str(output)] if output is not None else [])
     start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=ENVIRONMENT)
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               env={**ENVIRONMENT, **environment})
     _, status, usage = os.wait4(process.pid, 0)
     wall = time.perf_counter() - start
     process.returncode = os.waitstatus_to_exitcode(status)
@@ -80,12 +92,12 @@ def main(repeats: int, bytecode: bool = True) -> None:
             ENVIRONMENT.pop("PYTHONPYCACHEPREFIX", None)
         samples = {label: [] for label in COMMANDS}
         solver = {label: [] for label in COMMANDS}
-        for label, (args, name, _, _) in COMMANDS.items():          # warm-up: the kernels are cached
-            run_once(args, Path(folder) / f"warm-{name}" if name else None)
+        for label, (args, name, _, _, environment) in COMMANDS.items():   # warm-up: the kernels are cached
+            run_once(args, Path(folder) / f"warm-{name}" if name else None, environment)
         for k in range(repeats):
-            for label, (args, name, _, _) in COMMANDS.items():      # interleaved
+            for label, (args, name, _, _, environment) in COMMANDS.items():      # interleaved
                 output = Path(folder) / f"{k}-{name}" if name else None
-                samples[label].append(run_once(args, output))
+                samples[label].append(run_once(args, output, environment))
                 if output is not None and (t := solver_time(output)) is not None:
                     solver[label].append(t)
                     os.remove(output)
@@ -94,7 +106,7 @@ def main(repeats: int, bytecode: bool = True) -> None:
           f"{'cached' if bytecode else 'compiled by every process (PYTHONDONTWRITEBYTECODE)'}\n")
     print("| command | CPU [s] | wall [s] | solver [s] | peak RSS [MiB] | target | WHOI Cable (PEERS) |")
     print("|---|---|---|---|---|---|---|")
-    for label, (_, _, target, peer) in COMMANDS.items():
+    for label, (_, _, target, peer, _) in COMMANDS.items():
         cpu, wall, rss = (statistics.median(x[i] for x in samples[label]) for i in range(3))
         solve = f"{statistics.median(solver[label]):.2f}" if solver[label] else "–"
         print(f"| `{label}` | {cpu:.2f} | {wall:.2f} | {solve} | {rss:.0f} | {target} | {peer} |")

@@ -163,7 +163,11 @@ def warmup(families: Optional[list[str]] = typer.Argument(
         None, help="Kernel families to compile (default all): continuum-2d, continuum-3d, factorized-2d, "
                    "factorized-3d, wave-factorized-2d, wave-factorized-3d, lumped-rk4, lumped-abm4, "
                    "lumped-implicit.")):
-    """Compile the numba kernels once, ahead of the first run (cached on disk for every later run)."""
+    """Compile the numba kernels once, ahead of the first run (cached on disk for every later run).
+
+    Needed only where the install could not compile them (no C compiler: pip then installs without
+    them) or after editing a kernel in a source checkout; otherwise every family reports "already
+    compiled"."""
     import logging
     import warnings
 
@@ -187,6 +191,9 @@ def warmup(families: Optional[list[str]] = typer.Argument(
                            lambda name, estimate: log.warning(f"compiling {name} kernels once, ~{estimate:.0f} s"))
     for name, seconds in spent.items():
         show(f"{name}: {'already compiled' if seconds == 0.0 else f'compiled in {seconds:.1f} s'}")
+    if not kernels.aot.current():
+        show("(the kernels compiled at install are missing or stale: `pip install -e .` in the checkout, or "
+             "`python -m kanat.aot_build`, compiles them again)")
 
 
 def register(app: typer.Typer) -> None:

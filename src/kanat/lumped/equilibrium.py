@@ -174,9 +174,9 @@ def equilibrium(net, case, x0=None, velocity=None):
         pass
     factors = CONTINUATION_START / stiffest * 10.0 ** np.arange(int(np.ceil(np.log10(stiffest / CONTINUATION_START))))
     x = x0
-    for factor in [*factors, 1.0]:
+    for factor in [*factors, 1.0]:                   # the taut phase was tried (and failed) directly
         soft = dataclasses.replace(net, law_y=net.law_y * factor)
-        x, info = _solve(soft, case, x, velocity, MAX_ITERATIONS)
+        x, info = _solve(soft, case, x, velocity, MAX_ITERATIONS, taut=False)
     info["continuation_stages"] = len(factors) + 1
     info["first_guess"] = start
     return x, info
@@ -223,8 +223,9 @@ def statics_guess(net, case):
     return x if np.all(np.isfinite(x)) else None
 
 
-def _solve(net, case, x0, velocity, max_iterations):
-    """Static equilibrium of the network, eq. (1), from ``x0`` (or the network's guess).
+def _solve(net, case, x0, velocity, max_iterations, taut=True):
+    """Static equilibrium of the network, eq. (1), from ``x0`` (or the network's guess), by the
+    taut phase first (when ``taut``), then pseudo-transient Newton.
 
     Parameters
     ----------
@@ -234,6 +235,9 @@ def _solve(net, case, x0, velocity, max_iterations):
         Starting positions (default: the network's guess).
     velocity : ndarray, shape (3,), optional
         Steady velocity of every node (default: the vessel's at t = 0, or zero).
+    max_iterations : int
+    taut : bool
+        Try :func:`_taut_phase` first (the continuation's stages do not: it failed directly).
 
     Returns
     -------
@@ -261,9 +265,9 @@ def _solve(net, case, x0, velocity, max_iterations):
     tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)
     step = FD_STEP * length
-    taut = _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours)
-    if taut is not None:
-        return _finish(net, system, *taut)
+    solved = _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours) if taut else None
+    if solved is not None:
+        return _finish(net, system, *solved)
     dtau = INITIAL_PSEUDO_PERIOD * np.sqrt(np.max(net.el_length) * len(net.el_length) / case.environment.gravity)
     F, M = forces(0.0, xf)
     norm = np.max(np.abs(F))
