@@ -1,8 +1,8 @@
 """Builds kanat's kernels compiled ahead of time (``src/kanat/aot.py`` says why; ``kanat.aot_build`` what).
 
 Everything else about the package is in ``pyproject.toml``. The extensions are optional: when
-they cannot be built (no C compiler, say), the install goes on and runs compile their kernels
-with numba on first use, as they would without them.
+they cannot be built (no C compiler, say), or with ``KANAT_AOT=0`` in the environment, the
+install goes on without them and runs compile their kernels with numba on first use.
 """
 import multiprocessing
 import os
@@ -70,7 +70,10 @@ class BuildKernels(build_ext):
 
 
 def extensions():
-    """The modules of ``kanat.aot.MODULES`` (``kanat.aot_build``), or none when they cannot be described here."""
+    """The modules of ``kanat.aot.MODULES`` (``kanat.aot_build``), or none when they cannot be described
+    here or ``KANAT_AOT=0`` is set (an install that leaves the compiling to numba, at first use)."""
+    if os.environ.get("KANAT_AOT") == "0":
+        return []
     try:
         from kanat.aot_build import compilers
 
