@@ -1,5 +1,9 @@
 """kanat.jit and kanat.warmup: whether a run will compile, and that a warmup leaves a run
-nothing to compile. Oracles: numba's own dispatcher state and its compile events."""
+nothing to compile. Oracles: numba's own dispatcher state and its compile events.
+
+These are the runs of an install without the kernels compiled at install (no C compiler, or
+``KANAT_AOT=0``): the tests that run cases use numba's kernels throughout (:func:`numba_kernels`).
+"""
 import numpy as np
 import pytest
 from numba import njit
@@ -7,10 +11,10 @@ from numba.core import event
 
 from numba.core.registry import CPUDispatcher
 
-from kanat import jit, warmup
+from kanat import aot, jit, warmup
 from kanat.continuum import bending3d, kernels2d, kernels3d
 from kanat.continuum.factorized import dense, sweeps_compiled, waves_compiled
-from kanat.lumped import fast, fast_implicit, kernels
+from kanat.lumped import entries, fast, fast_implicit, kernels
 from kanat.api import SCHEMES, load_case, simulate
 from kanat.jit import Family
 from kanat.model import Case
@@ -27,6 +31,28 @@ class Compiles(event.Listener):
 
     def on_end(self, ev):
         pass
+
+
+@pytest.fixture
+def numba_kernels(monkeypatch):
+    """This test's runs use numba's kernels, as an install without compiled ones does: entries
+    resolved earlier in the process are forgotten for the test and restored after it."""
+    monkeypatch.setenv("KANAT_AOT", "0")
+    monkeypatch.setattr(aot, "_loaded", {})
+    resolved = {(module, name): vars(module)[name] for module in (kernels2d, kernels3d, entries)
+                for name in aot.ENTRIES if name in vars(module)}
+    for module, name in resolved:
+        delattr(module, name)
+    sweeps_compiled._step_entry.cache_clear()
+    waves_compiled._block_entry.cache_clear()
+    yield
+    for module in (kernels2d, kernels3d, entries):
+        for name in aot.ENTRIES:
+            vars(module).pop(name, None)
+    for (module, name), value in resolved.items():
+        setattr(module, name, value)
+    sweeps_compiled._step_entry.cache_clear()
+    waves_compiled._block_entry.cache_clear()
 
 
 def run_quietly(case):
@@ -77,7 +103,7 @@ def _after_warmup_compiles_nothing(name, case):
     assert versions() == warm
 
 
-def test_a_planar_run_after_warmup_compiles_nothing():
+def test_a_planar_run_after_warmup_compiles_nothing(numba_kernels):
     case = load_case("examples/speed_step_2d.yaml").replace({"simulation.duration": 5.0, "cables[0].segments": 20})
     assert warmup.family_name(case.simulation.scheme, 2) == "continuum-2d"
     _after_warmup_compiles_nothing("continuum-2d", case)
@@ -91,10 +117,10 @@ def test_a_planar_run_after_warmup_compiles_nothing():
     ("lumped-rk4", "seed004_head_5.6s_1to4.yaml", {"simulation.duration": 1.0}),
     ("lumped-implicit", "seed004_head_5.6s_1to4.yaml",
      {"simulation.duration": 1.0, "simulation.scheme": "generalized-alpha-lumped"}),
-    ("wave-factorized-2d", "seed000_planar80.yaml", {"simulation.duration": 0.1}),
+    ("wave-factorized-2d", "seed000_planar80.yaml", {"simulation.duration": 0.1, "simulation.output_dt": 0.05}),
     ("factorized-2d", "seed000_accel.yaml", {"simulation.duration": 0.02}),
 ])
-def test_a_run_after_warmup_compiles_nothing(name, example, changes):
+def test_a_run_after_warmup_compiles_nothing(name, example, changes, numba_kernels):
     _after_warmup_compiles_nothing(name, load_case(f"examples/{example}").replace(changes))
 
 

@@ -65,8 +65,9 @@ from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module i
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
     CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
 
-_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)  # x, y, d, env, P, b0, b1, res, band
-aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))   # extras: None or marker
+# the compiled entry's arguments x, y, d, env, P, b0, b1, res, band, then extras: None or the marker array
+_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
+aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
 _NUMBA = {name: "loads2d" for name in (
     "strain", "compliance", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",

@@ -57,7 +57,8 @@ _NUMBA = {name: "loads3d" for name in (
     "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
     "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
 _ENTRIES = {"assemble3": "rows3d", "assemble3_bending": "bending3d"}
-_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)  # x, y, d, env, up, P, b0, b1, res, band
+# the compiled entries' arguments x, y, d, env, up, P, b0, b1, res, band, then extras: None or the marker array
+_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
 for _name, _home in _ENTRIES.items():
     aot.register(_name, f"kanat.continuum.{_home}", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
