@@ -188,5 +188,22 @@ def kernel(name: str) -> Callable:
     return run
 
 
+def loader(namespace: dict, entries, numba: dict) -> Callable:
+    """A module ``__getattr__`` loading kernels on first use into ``namespace`` (the module's
+    globals): the ``entries`` by :func:`kernel`, and the names of ``numba`` (name -> module) as
+    numba's kernels, so that importing the module imports no numba."""
+    def __getattr__(name):
+        if name in entries:
+            value = kernel(name)
+        elif name in numba:
+            value = getattr(importlib.import_module(numba[name]), name)
+        else:
+            raise AttributeError(f"module {namespace['__name__']!r} has no attribute {name!r}")
+        namespace[name] = value
+        return value
+
+    return __getattr__
+
+
 _numba_used: set = set()
 """Entries that were called with arguments no compiled version takes (the tests read it)."""

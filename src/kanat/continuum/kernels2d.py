@@ -55,8 +55,6 @@ layout is plain constants; the kernels are loaded on first use (module ``__getat
 """
 from __future__ import annotations
 
-from importlib import import_module
-
 from kanat import aot
 from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module is the kernels' one import
     M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA, GRAV, EI, CONV, PRED, KIND, SECTION, SB_ON,
@@ -69,18 +67,7 @@ from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module i
 _ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
 aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
-_NUMBA = {name: "loads2d" for name in (
+_NUMBA = {name: "kanat.continuum.loads2d" for name in (
     "strain", "compliance", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
     "seabed_force_jacobian", "extra_load", "extra_load_jacobian", "weighted", "surface_buoyancy", "end_jacobian")}
-
-
-def __getattr__(name):
-    """A compiled kernel, loaded on first use (:func:`assemble` as the module docstring says)."""
-    if name == "assemble":
-        value = aot.kernel("assemble")
-    elif name in _NUMBA:
-        value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
-    else:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    globals()[name] = value
-    return value
+__getattr__ = aot.loader(globals(), ("assemble",), _NUMBA)       # the kernels, on first use (module docstring)

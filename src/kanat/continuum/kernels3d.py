@@ -44,32 +44,18 @@ two a run calls come from the extension compiled at install (:mod:`kanat.aot`) w
 """
 from __future__ import annotations
 
-from importlib import import_module
-
 from kanat import aot
 from kanat.continuum.layout3d import (  # noqa: F401  re-exported: this module is the kernels' one import
     LOWER, UPPER, B3_KIND, B3_V0, B3_V1, B3_V2, B3_MASS, B3_BUOY, B3_DRAG, B3_F0, B3_F1, B3_F2, B3_WAVE, B3_WPA,
     B3_HEIGHT, B3_ETA, B3_PAYOUT, NBPAR3, UX3, AX3, RX3, DX3, NENV3, NV_BENDING, WIDTH_BENDING, B3_CLAMP, B3_PHI0,
     B3_THETA0, NBPAR3_BENDING)
 
-_NUMBA = {name: "loads3d" for name in (
+_NUMBA = {name: "kanat.continuum.loads3d" for name in (
     "frame", "node_load3", "node_load3_jacobian", "mass_times", "stiffness_times", "mass_matrix", "stiffness_matrix",
     "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
     "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
-_ENTRIES = {"assemble3": "rows3d", "assemble3_bending": "bending3d"}
 # the compiled entries' arguments x, y, d, env, up, P, b0, b1, res, band, then extras: None or the marker array
 _ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
-for _name, _home in _ENTRIES.items():
+for _name, _home in {"assemble3": "rows3d", "assemble3_bending": "bending3d"}.items():
     aot.register(_name, f"kanat.continuum.{_home}", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
-
-
-def __getattr__(name):
-    """A compiled kernel, loaded on first use (the module docstring says from where)."""
-    if name in _ENTRIES:
-        value = aot.kernel(name)
-    elif name in _NUMBA:
-        value = getattr(import_module(f"kanat.continuum.{_NUMBA[name]}"), name)
-    else:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    globals()[name] = value
-    return value
+__getattr__ = aot.loader(globals(), ("assemble3", "assemble3_bending"), _NUMBA)   # on first use (module docstring)

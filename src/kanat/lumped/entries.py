@@ -53,10 +53,5 @@ register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F
 register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, CONTACT, F2, F2, F1))
 
 
-def __getattr__(name):
-    """An entry, loaded on first use (module docstring)."""
-    if name not in aot.ENTRIES or not aot.ENTRIES[name].module.startswith("_lumped"):
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = aot.kernel(name)
-    globals()[name] = value
-    return value
+__getattr__ = aot.loader(globals(), [name for name, entry in aot.ENTRIES.items()
+                                     if entry.module.startswith("_lumped")], {})   # on first use (module docstring)
