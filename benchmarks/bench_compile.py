@@ -8,6 +8,10 @@ time to other load on the machine); wall times beside. With ``--baseline DIR`` (
 older kanat) the same runs of that tree interleave with this one's (A B A B ...). Medians of
 ``--repeats``. ``kanat warmup`` time (all families, cold) last.
 
+It measures numba's just-in-time compile, so the runs use numba's kernels (``KANAT_AOT=0``): with
+the kernels compiled at install (``kanat.aot``) a first run compiles nothing at all
+(``benchmarks/bench_install.py`` times that install and first run).
+
 Run: ``python benchmarks/bench_compile.py [--repeats 3] [--baseline /path/to/old/checkout] [--tree /path]
 [--families NAME ...] [--no-warmup]``.
 """
@@ -63,7 +67,7 @@ def timed(command: list[str], env: dict) -> tuple[float, float, str]:
 
 
 def kanat_command(tree: Path | None, case: Path, out: Path) -> tuple[list[str], dict]:
-    env = dict(os.environ)
+    env = dict(os.environ, KANAT_AOT="0")            # numba's kernels: the install's compile nothing
     if tree is not None:
         env["PYTHONPATH"] = str(tree / "src")
     return [sys.executable, "-c", "import sys; from kanat.cli import app; sys.exit(app())", "run", str(case),
@@ -80,7 +84,7 @@ def cold_and_warm(tree: Path | None, case: Path, folder: Path) -> dict:
 
 
 def warmup_all(tree: Path | None, folder: Path) -> tuple[float, float]:
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(Path(tempfile.mkdtemp(dir=folder))))
+    env = dict(os.environ, KANAT_AOT="0", NUMBA_CACHE_DIR=str(Path(tempfile.mkdtemp(dir=folder))))
     if tree is not None:
         env["PYTHONPATH"] = str(tree / "src")
     code = ("from kanat import warmup; from kanat.api import load_case, simulate; "
