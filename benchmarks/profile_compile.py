@@ -72,7 +72,7 @@ print(json.dumps({"records": rows, "cpu": usage.ru_utime + usage.ru_stime}))
 
 def profile(case: Path) -> dict:
     """The compile records of one run of ``case`` on an empty numba cache."""
-    env = dict(os.environ, NUMBA_CACHE_DIR=tempfile.mkdtemp())
+    env = dict(os.environ, KANAT_AOT="0", NUMBA_CACHE_DIR=tempfile.mkdtemp())   # numba's kernels, compiled here
     done = subprocess.run([sys.executable, "-c", CHILD, str(case)], env=env, capture_output=True, text=True)
     if done.returncode != 0:
         raise RuntimeError(done.stderr[-3000:])
