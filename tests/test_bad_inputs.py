@@ -330,6 +330,8 @@ CLASSES: dict[str, Bad] = {
     "dt longer than the duration": Bad(edits(("  dt: 1.0", "  dt: 1000"), ("output_dt: 1.0", "output_dt: 1000")),
                                        ("longer than the duration",), 29),
     "output_dt not a multiple of dt": Bad(base("output_dt: 1.0", "output_dt: 1.5"), ("not a multiple",), 30),
+    "output_dt longer than the duration": Bad(base("output_dt: 1.0", "output_dt: 1000"),
+                                              ("longer than the duration", "no step"), 30),
     "the continuum model without dt": Bad(edits(("  dt: 1.0\n", ""), ("  output_dt: 1.0\n", "")),
                                           ("needs a time step dt",)),
     "a dynamic model without simulation": Bad(text(BASE.split("simulation:")[0]), ("needs a 'simulation' block",)),

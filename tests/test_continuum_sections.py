@@ -122,8 +122,9 @@ def test_two_section_hanging_line_against_the_piecewise_catenary():
 def test_continuum_lumped_and_statics_agree_on_the_subsurface_mooring():
     """Steady state in the sheared, turning current: within 0.1 % (tension) and 0.1 % of the offset."""
     continuum = quiet_simulate(SUBSURFACE.replace("duration: 120", "duration: 5"))
-    lumped = quiet_simulate(SUBSURFACE.replace("duration: 120", "duration: 0.5").replace(
-        "model: continuum", "model: lumped").replace("scheme: generalized-alpha", "scheme: generalized-alpha-lumped"))
+    lumped = quiet_simulate(SUBSURFACE.replace("duration: 120", "duration: 0.5").replace("output_dt: 5", "output_dt: 0.5")
+                            .replace("model: continuum", "model: lumped")
+                            .replace("scheme: generalized-alpha", "scheme: generalized-alpha-lumped"))
     statics = kanat.solve_statics(kanat.load_case(SUBSURFACE.replace("model: continuum", "model: statics")))
     assert continuum.attrs["status"] == lumped.attrs["status"] == "ok"
     c = continuum.isel(time=0)

@@ -212,19 +212,25 @@ def _hanging_at_least(case: Case, cable: Cable) -> float:
 
 
 def check_time_steps(case: Case, out: Findings) -> None:
-    """dt fits in the duration and divides the output interval."""
+    """dt fits in the duration and divides the output interval, which fits in the duration too."""
     sim = case.simulation
     if sim is None:
         return
-    if sim.dt is None:
-        if case.model == "continuum":
-            out.error(("simulation", "dt"), "the continuum model needs a time step dt [s] (e.g. 1.0 for a "
-                      "1000 m tow; the lumped model is the one that can choose its own)")
+    if sim.dt is None and case.model == "continuum":
+        out.error(("simulation", "dt"), "the continuum model needs a time step dt [s] (e.g. 1.0 for a "
+                  "1000 m tow; the lumped model is the one that can choose its own)")
         return
-    if sim.dt > sim.duration:
+    if sim.dt is not None and sim.dt > sim.duration:
         out.error(("simulation", "dt"), f"dt {fmt(sim.dt)} s is longer than the duration "
                   f"{fmt(sim.duration)} s")
-    if sim.output_dt is None:
+    elif sim.output_interval > sim.duration:
+        given = "output_dt" if sim.output_dt is not None else "dt" if sim.dt is not None else None
+        out.error(("simulation", given or "duration"),
+                  f"the output interval ({fmt(sim.output_interval)} s"
+                  f"{'' if given else ', the default when neither output_dt nor dt is given'}) is longer than "
+                  f"the duration {fmt(sim.duration)} s: the run would take no step and store t = 0 alone; "
+                  "give output_dt at most the duration")
+    if sim.dt is None or sim.output_dt is None:
         return
     ratio = sim.output_dt / sim.dt
     steps = round(ratio)

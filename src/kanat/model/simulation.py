@@ -4,8 +4,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from pydantic import model_validator
-
 from ._base import KanatModel, quantity
 
 
@@ -105,14 +103,6 @@ class Simulation(KanatModel):
     frame_pole: str = "auto"
     mass_matrix: Literal["lumped", "consistent"] = "lumped"
     initial_state: Literal["equilibrium", "as_given"] = "equilibrium"
-
-    @model_validator(mode="after")
-    def _stores_past_the_start(self) -> Simulation:
-        if self.output_interval > self.duration:
-            raise ValueError(f"the output interval ({self.output_interval:g} s: output_dt, else dt, else "
-                             f"{DEFAULT_OUTPUT_DT:g} s) is longer than duration = {self.duration:g} s, so the run would "
-                             "take no step and store t = 0 alone; give output_dt at most the duration")
-        return self
 
     @property
     def output_interval(self) -> float:
