@@ -171,11 +171,14 @@ def kernel(name: str) -> Callable:
         return numba_kernel()
     candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(entry.versions)]
 
+    last = [0]                                       # the version that matched last: tried first
+
     def run(*args):
-        for index, (function, check) in enumerate(candidates):
+        for k in range(len(candidates)):
+            index = (last[0] + k) % len(candidates)
+            function, check = candidates[index]
             if check(args):
-                if index:
-                    candidates.insert(0, candidates.pop(index))
+                last[0] = index
                 return function(*args)
         if name not in _numba_used:                  # other types: numba compiles for them
             _numba_used.add(name)
