@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import hashlib
 import importlib
-import logging
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -180,10 +179,7 @@ def kernel(name: str) -> Callable:
             if check(args):
                 last[0] = index
                 return function(*args)
-        if name not in _numba_used:                  # other types: numba compiles for them
-            _numba_used.add(name)
-            logging.getLogger("kanat").info(f"{name}: arguments of types not compiled at install; numba compiles "
-                                            "for them once (cached)")
+        _numba_used.add(name)                        # other types: numba compiles for them (kanat.jit says so)
         return numba_kernel()(*args)
 
     run.__name__ = run.__qualname__ = name

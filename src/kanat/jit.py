@@ -31,11 +31,14 @@ family's seconds go, function by function.
 from __future__ import annotations
 
 import hashlib
+import logging
 import time
 from dataclasses import dataclass
 
 from numba import njit, types
 from numba.core import event
+
+from kanat import aot
 
 # error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
 # non-finite results) instead of a check and an exception on every division, which costs
@@ -50,11 +53,17 @@ COMPILE_SECONDS = [0.0]
 
 
 class _CompileListener(event.Listener):
-    depth, began = 0, 0.0
+    depth, began, told = 0, 0.0, False
 
     def on_start(self, ev):
         if self.depth == 0:
             self.began = time.perf_counter()
+            if not self.told and aot.current():         # the user expects no compiling: say why there is some
+                self.told = True
+                logging.getLogger("kanat").warning(
+                    f"compiling numba's {ev.data['dispatcher'].py_func.__qualname__} (and what it calls) once for "
+                    "this run's argument types, which the kernels compiled at install do not take; cached for "
+                    "later runs")
         self.depth += 1
 
     def on_end(self, ev):
