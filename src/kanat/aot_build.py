@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import importlib
 
-from kanat import aot
+from kanat import aot, jit
 
 DECLARING = ("kanat.continuum.kernels2d", "kanat.continuum.kernels3d", "kanat.lumped.entries",
              "kanat.continuum.factorized.sweeps_compiled", "kanat.continuum.factorized.waves_compiled")
@@ -66,7 +66,7 @@ def compiler(module: str, output_dir=None):
     for name, entry in aot.ENTRIES.items():
         if entry.module != module:
             continue
-        kernel = getattr(importlib.import_module(entry.home), entry.function)
+        kernel = jit.dispatcher_of(getattr(importlib.import_module(entry.home), entry.function))
         returns = types.void if entry.returns is None else numba_type(entry.returns)
         for i, spec in enumerate(entry.versions):
             cc.export(f"{name}__{i}", returns(*map(numba_type, spec)))(_calling(kernel, len(spec)))

@@ -35,44 +35,123 @@ import logging
 import time
 from dataclasses import dataclass
 
-from numba import njit, types
-from numba.core import event
-
 from kanat import aot
 
-# error_model "numpy": a division by zero gives inf or nan (the kernels' callers test for
-# non-finite results) instead of a check and an exception on every division, which costs
-# compile time and stops vectorization. no_cfunc_wrapper: numba otherwise builds a C-callable
-# wrapper of every kernel for use as a first-class function value, which kanat never does.
-kernel = njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
-inner = njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+OPTIONS = {"kernel": {"cache": True, "error_model": "numpy", "no_cfunc_wrapper": True},
+           "inner": {"cache": True, "error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
+"""numba's options of the two decorators. error_model "numpy": a division by zero gives inf or nan
+(the kernels' callers test for non-finite results) instead of a check and an exception on every
+division, which costs compile time and stops vectorization. no_cfunc_wrapper: numba otherwise
+builds a C-callable wrapper of every kernel for use as a first-class function value, which kanat
+never does."""
 
 COMPILE_SECONDS = [0.0]
-"""Seconds numba has spent compiling or loading kernels in this process (outermost calls only;
+"""Seconds numba has spent compiling kernels in this process (outermost calls only;
 :class:`kanat.dynamics.CompileClock` reads it)."""
 
-
-class _CompileListener(event.Listener):
-    depth, began, told = 0, 0.0, False
-
-    def on_start(self, ev):
-        if self.depth == 0:
-            self.began = time.perf_counter()
-            if not self.told and aot.current():         # the user expects no compiling: say why there is some
-                self.told = True
-                logging.getLogger("kanat").warning(
-                    f"compiling numba's {ev.data['dispatcher'].py_func.__qualname__} (and what it calls) once for "
-                    "this run's argument types, which the kernels compiled at install do not take; cached for "
-                    "later runs")
-        self.depth += 1
-
-    def on_end(self, ev):
-        self.depth -= 1
-        if self.depth == 0:
-            COMPILE_SECONDS[0] += time.perf_counter() - self.began
+_deferred: list = []
+_numba = None                       # numba's njit, once imported (:func:`load_numba`)
 
 
-event.register("numba:compile", _CompileListener())
+class Deferred:
+    """A kernel whose numba dispatcher is made when a kernel is first needed (:func:`load_numba`).
+
+    Importing a kernel module imports no numba: a run whose kernels were compiled at install
+    (:mod:`kanat.aot`) never needs it. Any use of a deferred kernel (a call, an attribute such as
+    ``signatures``) loads numba, makes every deferred kernel's dispatcher and puts it in place of
+    the deferred one in every kanat module's namespace, so numba's compiler only ever sees
+    dispatchers (:func:`load_numba`); a kernel module imported after that gets dispatchers
+    directly.
+    """
+
+    def __init__(self, function, options: dict):
+        self.py_func, self.options, self.dispatcher = function, options, None
+        self.__name__, self.__qualname__ = function.__name__, function.__qualname__
+        self.__module__, self.__doc__ = function.__module__, function.__doc__
+
+    def _real(self):
+        if self.dispatcher is None:
+            load_numba()
+        return self.dispatcher
+
+    def __call__(self, *args):
+        return self._real()(*args)
+
+    def __getattr__(self, name):
+        if name.startswith("__") or name in ("py_func", "options", "dispatcher"):     # copying, probing
+            raise AttributeError(name)
+        return getattr(self._real(), name)
+
+
+def _decorator(kind: str):
+    def decorate(function):
+        if _numba is not None:
+            return _numba(**OPTIONS[kind])(function)
+        deferred = Deferred(function, OPTIONS[kind])
+        _deferred.append(deferred)
+        return deferred
+    return decorate
+
+
+kernel = _decorator("kernel")
+"""A kernel called from Python (and from other kernels)."""
+inner = _decorator("inner")
+"""A helper called only from other kernels: numba builds no Python entry for it."""
+
+
+def dispatcher_of(function):
+    """numba's dispatcher of a kernel (deferred or not); loads numba."""
+    return function._real() if isinstance(function, Deferred) else function
+
+
+def load_numba():
+    """Import numba, make every deferred kernel's dispatcher and put it in place in the kanat
+    modules' namespaces (module attributes, including names imported from another module); listen
+    to numba's compile events (:data:`COMPILE_SECONDS`, and a warning where the user expects no
+    compiling). Done once per process."""
+    global _numba
+    if _numba is not None:
+        return
+    import sys
+
+    from numba import njit
+    from numba.core import event
+
+    for deferred in _deferred:
+        deferred.dispatcher = njit(**deferred.options)(deferred.py_func)
+    for name, module in list(sys.modules.items()):
+        if name == "kanat" or name.startswith("kanat."):
+            namespace = vars(module)
+            for key, value in list(namespace.items()):
+                if isinstance(value, Deferred):
+                    namespace[key] = value.dispatcher
+    _numba = njit
+    event.register("numba:compile", _compile_listener(event.Listener))
+
+
+def _compile_listener(base):
+    """numba's compile-event listener (its base class comes with numba, loaded on demand)."""
+
+    class Listener(base):
+        depth, began, told = 0, 0.0, False
+
+        def on_start(self, ev):
+            if self.depth == 0:
+                self.began = time.perf_counter()
+                if not self.told and aot.current():         # the user expects no compiling: say why there is some
+                    self.told = True
+                    logging.getLogger("kanat").warning(
+                        f"compiling numba's {ev.data['dispatcher'].py_func.__qualname__} (and what it calls) once "
+                        "for this run's argument types, which the kernels compiled at install do not take; cached "
+                        "for later runs")
+            self.depth += 1
+
+        def on_end(self, ev):
+            self.depth -= 1
+            if self.depth == 0:
+                COMPILE_SECONDS[0] += time.perf_counter() - self.began
+
+    return Listener()
 
 
 @dataclass(frozen=True)
@@ -99,6 +178,8 @@ class Family:
 
 def planar(signature) -> bool:
     """The planar version of a kernel shared by planar and spatial runs (``up`` is None)."""
+    from numba import types
+
     return any(isinstance(t, types.NoneType) for t in signature)
 
 
@@ -111,6 +192,7 @@ def is_cached(dispatcher, accept=None) -> bool:
     """Whether ``dispatcher`` runs without compiling: a version (one that ``accept`` takes) is
     compiled in this process already, or its disk cache holds one for this machine and source."""
     accept = accept or (lambda signature: True)
+    dispatcher = dispatcher_of(dispatcher)
     if any(accept(signature) for signature in dispatcher.signatures):
         return True
     try:
