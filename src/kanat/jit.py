@@ -8,7 +8,10 @@ one place:
   for it, which saves compile time on functions whose arguments are large tuples.
 
 Both cache the machine code on disk (``__pycache__`` beside the source, or
-``NUMBA_CACHE_DIR``), so a kernel compiles once per machine and source version. What a run
+``NUMBA_CACHE_DIR``), so a kernel compiles once per machine and source version. Neither imports
+numba: they return a :class:`Deferred` kernel, and numba loads when a kernel is first used
+(:func:`load_numba`), which a run with the kernels compiled at install (:mod:`kanat.aot`) never
+does. What a run
 compiles is grouped in families (:class:`Family`: the top-level kernels of one model and
 scheme, with the compile time measured on the reference machine); :func:`pending` tells,
 without compiling, whether a family still has to be compiled, so a run can say
