@@ -15,14 +15,19 @@ from setuptools.command.build_ext import build_ext
 sys.path.insert(0, str(Path(__file__).parent / "src"))
 
 
-def _compile(extension, build_temp) -> None:
-    """Compile one module's kernels to its object file (in a forked process: exit status 0 if done)."""
+def _compile(extension, build_temp) -> bool:
+    """Compile one module's kernels to its object file; whether it was done."""
     try:
         extension._cc._compile_object_files(build_temp)
+        return True
     except Exception as error:  # noqa: BLE001 - optional: the runs compile with numba instead
         print(f"warning: {extension.name} was not compiled ({type(error).__name__}: {error})", file=sys.stderr)
-        os._exit(1)
-    os._exit(0)
+        return False
+
+
+def _compile_and_exit(extension, build_temp) -> None:
+    """:func:`_compile` in a forked process, its answer the exit status."""
+    os._exit(0 if _compile(extension, build_temp) else 1)
 
 
 def _object_file(extension, build_temp) -> str:
@@ -39,21 +44,14 @@ class BuildKernels(build_ext):
         os.makedirs(self.build_temp, exist_ok=True)
         if "fork" in multiprocessing.get_all_start_methods():        # every module at once, forked: the
             fork = multiprocessing.get_context("fork")                # extensions hold functions, which do not pickle
-            workers = [fork.Process(target=_compile, args=(ext, self.build_temp)) for ext in kernels]
+            workers = [fork.Process(target=_compile_and_exit, args=(ext, self.build_temp)) for ext in kernels]
             for worker in workers:
                 worker.start()
             for worker in workers:
                 worker.join()
             done = [worker.exitcode == 0 for worker in workers]
         else:
-            done = []
-            for extension in kernels:
-                try:
-                    extension._cc._compile_object_files(self.build_temp)
-                    done.append(True)
-                except Exception as error:  # noqa: BLE001 - optional: the runs compile with numba instead
-                    print(f"warning: {extension.name} was not compiled ({error})", file=sys.stderr)
-                    done.append(False)
+            done = [_compile(extension, self.build_temp) for extension in kernels]
         for extension, ok in zip(kernels, done):
             if ok:
                 extension.extra_objects = [_object_file(extension, self.build_temp)]
