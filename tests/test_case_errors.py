@@ -227,3 +227,23 @@ def test_warnings_are_included_in_the_error_when_errors_exist():
     with pytest.raises(CaseError) as info:
         parse_case(text)
     assert sorted(p.severity for p in info.value.problems) == ["error", "warning"]
+
+
+def test_problems_found_after_reading_name_the_file(tmp_path):
+    """A case read from a file remembers it: a bad ``replace`` and a model that refuses the case
+    when it is built (both after reading, with no line to give) name the file, not ``<case>``."""
+    import kanat
+    from pathlib import Path
+
+    path = tmp_path / "three_legs.yaml"
+    path.write_text((Path(__file__).resolve().parents[1] / "examples" / "mooring_buoy_decay.yaml").read_text())
+    case = kanat.load_case(path)
+    assert case.source == str(path) and case.replace({"simulation.duration": 2.0}).source == str(path)
+    with pytest.raises(CaseError) as replaced:
+        case.replace({"simulation.output_dt": 1.0e4})
+    with pytest.raises(CaseError) as built:
+        kanat.run(case.replace({"model": "continuum", "simulation.dt": 0.5}))
+    for error in (replaced.value, built.value):
+        assert error.problems and all(p.file == str(path) for p in error.problems)
+        assert "<case>" not in str(error) and f"{path}: error:" in str(error)
+    assert parse_case(BASE).source is None and parse_case(BASE, file="<text>").source == "<text>"

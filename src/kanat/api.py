@@ -14,6 +14,7 @@ and the parameter studies call these functions and nothing below them.
 """
 from __future__ import annotations
 
+import functools
 import logging
 import time
 import warnings
@@ -231,6 +232,19 @@ def load_case(source: str | PathLike | Mapping, *, max_output_bytes: float | str
     return load_file(source, **limit)
 
 
+def _naming_its_file(function):
+    """``function(case, ...)``, its case errors naming the case's file (:meth:`kanat.errors.CaseError.located`):
+    problems found when a model is built from a case read earlier name no file of their own."""
+    @functools.wraps(function)
+    def front_door(case, *args, **kwargs):
+        try:
+            return function(case, *args, **kwargs)
+        except CaseError as error:
+            raise error.located(getattr(case, "source", None)) from None
+    return front_door
+
+
+@_naming_its_file
 def solve_statics(case: Case, method: str = "auto"):
     """The steady state of a case, as the dataset ``kanat statics`` writes.
 
@@ -256,6 +270,7 @@ def solve_statics(case: Case, method: str = "auto"):
     return _statics(case, method)[0].to_dataset()
 
 
+@_naming_its_file
 def dynamic_model(case: Case, scheme=None):
     """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme``.
 
@@ -272,6 +287,7 @@ def dynamic_model(case: Case, scheme=None):
     return entry.build(case, scheme)
 
 
+@_naming_its_file
 def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=None,
         checkpoint_every: int | None = None, observers=(), method: str = "auto", model: str | None = None) -> Outcome:
     """Run any case with a model of :data:`MODELS`; the command line's ``kanat run``.

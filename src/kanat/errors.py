@@ -5,6 +5,8 @@ with several mistakes reports all of them at once (``kanat validate``).
 """
 from __future__ import annotations
 
+import dataclasses
+
 from dataclasses import dataclass
 
 
@@ -55,6 +57,13 @@ class CaseError(KanatError, ValueError):
         errors = [p for p in self.problems if p.severity == "error"]
         head = f"{len(errors)} problem(s) in the case:" if len(errors) != 1 else "a problem in the case:"
         super().__init__("\n".join([head, *("  " + str(p) for p in self.problems)]))
+
+    def located(self, source: str | None) -> CaseError:
+        """The same problems, those that name no file naming ``source`` (the case's file, found
+        after it was read), or this error itself when ``source`` is None."""
+        if source is None or all(p.file is not None for p in self.problems):
+            return self
+        return CaseError([p if p.file is not None else dataclasses.replace(p, file=source) for p in self.problems])
 
 
 class SolverError(KanatError, RuntimeError):

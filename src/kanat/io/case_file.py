@@ -89,12 +89,13 @@ def check_case(path: str | PathLike[str], *,
     return check_text(text, str(path), max_output_bytes=max_output_bytes)
 
 
-def _accept(case: Case | None, problems: list[Problem]) -> Case:
-    """Raise on errors; otherwise emit the warnings and return the case."""
+def _accept(case: Case | None, problems: list[Problem], file: str | None = None) -> Case:
+    """Raise on errors; otherwise emit the warnings and return the case, which remembers ``file``."""
     if case is None or any(p.severity == "error" for p in problems):
         raise CaseError(problems)
     for problem in problems:
         warnings.warn(str(problem), CaseWarning, stacklevel=3)
+    case._source = file
     return case
 
 
@@ -128,7 +129,7 @@ def parse_case(text: str, file: str | None = None, *,
     CaseWarning
         One per sanity warning, when there is no error.
     """
-    return _accept(*_check(text, file, max_output_bytes, solver))
+    return _accept(*_check(text, file, max_output_bytes, solver), file)
 
 
 def load_case(path: str | PathLike[str], *,
@@ -138,7 +139,7 @@ def load_case(path: str | PathLike[str], *,
     text, problems = read_case_text(path)
     if text is None:
         raise CaseError(problems)
-    return _accept(*_check(text, str(path), max_output_bytes, solver))
+    return _accept(*_check(text, str(path), max_output_bytes, solver), str(path))
 
 
 def import_moordyn(path: str | PathLike[str]):

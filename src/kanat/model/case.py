@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, Literal
 
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from ._base import KanatModel, fmt, listing, suggest
 from .cable import Cable
@@ -175,6 +175,22 @@ class Case(KanatModel):
                 raise ValueError(f"the winch hauls in {fmt(-lowest)} m of cable "
                                  f"'{cables[0].name}', which is only {fmt(length)} m long")
         return steps
+
+    _source: str | None = PrivateAttr(default=None)
+
+    @property
+    def source(self) -> str | None:
+        """The file the case was read from (``<text>``, ``<dict>`` for YAML text or a mapping), or
+        None: problems found later (by :meth:`replace`, or when a model is built) name it."""
+        return self._source
+
+    def __eq__(self, other) -> bool:
+        """Cases with the same keys are equal, wherever they were read from (``source`` aside)."""
+        if not isinstance(other, Case):
+            return NotImplemented
+        return self.__dict__ == other.__dict__ and self.__pydantic_extra__ == other.__pydantic_extra__
+
+    __hash__ = None
 
     def replace(self, changes: Mapping[str, Any]) -> Case:
         """A validated copy of the case with some keys set.

@@ -326,6 +326,7 @@ def replaced(case: Case, changes) -> Case:
     kanat.errors.CaseWarning
         For each sanity warning of the new case.
     """
+    import dataclasses
     import json
     import warnings
 
@@ -341,14 +342,16 @@ def replaced(case: Case, changes) -> Case:
         except KanatError as error:
             problems.append(Problem(key, str(error)))
     if problems:
-        raise CaseError(problems)
+        raise CaseError(problems).located(case.source)
     problems = bool_problems(data, {}, None)
     new, found = validate_data(data)
     problems += found
     if new is not None and not problems:
         problems += physical_checks(new)
     if new is None or any(p.severity == "error" for p in problems):
-        raise CaseError(problems)
+        raise CaseError(problems).located(case.source)
     for problem in problems:
-        warnings.warn(str(problem), CaseWarning, stacklevel=3)
+        warnings.warn(str(problem if problem.file else dataclasses.replace(problem, file=case.source)), CaseWarning,
+                      stacklevel=3)
+    new._source = case.source
     return new
