@@ -81,6 +81,7 @@ def test_arguments_the_compiled_code_would_misread_go_to_numba(monkeypatch):
     compiled = aot.load()
     monkeypatch.setattr(compiled, "assemble__0", lambda *args: calls.append(args))   # must not be called
     monkeypatch.setattr(aot, "_loaded", {"_continuum": compiled})
+    aot.kernel.cache_clear()
     assemble = aot.kernel("assemble")
     sizes = [(5, 4), (5, 4), (5, 4), (5, 6), (4, 40), (16,), (16,), (20,), (11, 20)]
     args = [np.asfortranarray(np.ones(shape)) if len(shape) == 2 else np.ones(shape) for shape in sizes]

@@ -43,16 +43,14 @@ def numba_kernels(monkeypatch):
                 for name in aot.ENTRIES if name in vars(module)}
     for module, name in resolved:
         delattr(module, name)
-    sweeps_compiled._step_entry.cache_clear()
-    waves_compiled._block_entry.cache_clear()
+    aot.kernel.cache_clear()
     yield
     for module in (kernels2d, kernels3d, entries):
         for name in aot.ENTRIES:
             vars(module).pop(name, None)
     for (module, name), value in resolved.items():
         setattr(module, name, value)
-    sweeps_compiled._step_entry.cache_clear()
-    waves_compiled._block_entry.cache_clear()
+    aot.kernel.cache_clear()
 
 
 def run_quietly(case):

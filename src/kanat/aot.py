@@ -25,6 +25,7 @@ throughout (to compare, or to debug a kernel).
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib
 import os
@@ -96,12 +97,19 @@ def fingerprint(root: Path | None = None) -> int:
 
     The build bakes it into the extension (``fingerprint()``); :func:`load` compares the two.
     """
-    root = root or Path(__file__).parent
+    if root is None:
+        return _installed_fingerprint()
     digest = hashlib.sha256()
     for name in SOURCES:
         digest.update(name.encode())
         digest.update((root / name).read_bytes())
     return int(digest.hexdigest()[:15], 16)
+
+
+@functools.cache
+def _installed_fingerprint() -> int:
+    """:func:`fingerprint` of this package, read once per process (every module is checked against it)."""
+    return fingerprint(Path(__file__).parent)
 
 
 def current() -> bool:
@@ -120,10 +128,10 @@ def load(name: str = "_continuum"):
             return None
         try:
             module = importlib.import_module(f"kanat.{name}")
-            current = module.fingerprint() == fingerprint()
+            fresh = module.fingerprint() == fingerprint()
         except (ImportError, OSError, AttributeError):
-            module, current = None, False
-        _loaded[name] = module if current else None
+            module, fresh = None, False
+        _loaded[name] = module if fresh else None
     return _loaded[name]
 
 
@@ -156,10 +164,11 @@ def matches(value, spec) -> bool:
     return checker(spec)(value)
 
 
+@functools.cache
 def kernel(name: str) -> Callable:
     """The entry ``name`` of :data:`ENTRIES`: its compiled versions when :func:`load` finds them
     current, each called only with arguments that match it (the one that matched last is tried
-    first), numba's kernel otherwise."""
+    first), numba's kernel otherwise. Made once per process (``kernel.cache_clear()`` forgets it)."""
     entry = ENTRIES[name]
 
     def numba_kernel():

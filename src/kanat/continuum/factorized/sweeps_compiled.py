@@ -16,8 +16,6 @@ in the frame's coordinates (planar: the first two of each vector).
 """
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 from kanat.jit import inner, kernel
 
@@ -368,20 +366,14 @@ def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, p
     planar branches only.
     """
     X = np.empty_like(Y)
-    status, node = _step_entry()(Y, cur, up if dim == 3 else None, p, dim, ds, dt, four, implicit, par0, par1,
-                                 slack, delta, X)
+    step = aot.kernel("factorized_step")
+    status, node = step(Y, cur, up if dim == 3 else None, p, dim, ds, dt, four, implicit, par0, par1, slack, delta, X)
     return X, status, node
 
 
 aot.register("factorized_step", __name__, *((aot.F2, aot.F2, up, aot.F1, aot.INT, aot.FLOAT, aot.FLOAT, aot.BOOL, aot.BOOL,
                                              aot.F1, aot.F1, aot.FLOAT, aot.BOOL, aot.F2) for up in (None, aot.F1)),
              returns=(aot.INT, aot.INT), function="_factorized_step")      # planar (up None) and spatial
-
-
-@cache
-def _step_entry():
-    """:func:`_factorized_step` as compiled at install when current (:mod:`kanat.aot`), else numba's."""
-    return aot.kernel("factorized_step")
 
 
 @inner

@@ -7,8 +7,6 @@ for :func:`scipy.linalg.solve_banded`.
 """
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 from kanat.jit import kernel
 
@@ -25,18 +23,13 @@ def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, p
     ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
     planar branches only (:mod:`.sweeps_compiled`).
     """
-    return _block_entry()(Yn, latest, Fn, cur, up if dim == 3 else None, p, dim, ds, dt, gamma, own, comps, par0, par1)
+    block = aot.kernel("assemble_block")
+    return block(Yn, latest, Fn, cur, up if dim == 3 else None, p, dim, ds, dt, gamma, own, comps, par0, par1)
 
 
 aot.register("assemble_block", __name__, *((aot.F2, aot.F2, aot.F2, aot.F2, up, aot.F1, aot.INT, aot.FLOAT, aot.FLOAT,
                                             aot.FLOAT, aot.I1, aot.I1, aot.F1, aot.F1) for up in (None, aot.F1)),
              returns=(aot.F2, aot.F1, aot.INT, aot.INT), function="_assemble_block")     # planar and spatial
-
-
-@cache
-def _block_entry():
-    """:func:`_assemble_block` as compiled at install when current (:mod:`kanat.aot`), else numba's."""
-    return aot.kernel("assemble_block")
 
 
 @kernel
