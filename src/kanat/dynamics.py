@@ -38,7 +38,6 @@ output passed the checks.
 from __future__ import annotations
 
 import logging
-import sys
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -47,6 +46,7 @@ from typing import Callable, Protocol, Sequence
 
 import numpy as np
 
+from kanat import jit
 from kanat.errors import SolverError
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
@@ -312,20 +312,16 @@ class Checkpointer:
 
 
 class CompileClock:
-    """Seconds numba has spent compiling (or loading cached kernels) since this clock was made:
-    ``clock[0]``, read at any time (:data:`kanat.jit.COMPILE_SECONDS`; 0 while no kernel module
-    is loaded, as in a run whose kernels were compiled at install)."""
+    """Seconds numba has spent compiling since this clock was made: ``clock[0]``, read at any time
+    (:data:`kanat.jit.COMPILE_SECONDS`; stays 0 in a run whose kernels were compiled at install)."""
 
     def __init__(self):
-        self.start = self.total()
-
-    @staticmethod
-    def total() -> float:
-        jit = sys.modules.get("kanat.jit")                # not imported here: it would load numba
-        return jit.COMPILE_SECONDS[0] if jit is not None else 0.0
+        self.start = jit.COMPILE_SECONDS[0]
 
     def __getitem__(self, index: int) -> float:
-        return [self.total() - self.start][index]
+        if index != 0:
+            raise IndexError(index)
+        return jit.COMPILE_SECONDS[0] - self.start
 
 
 @contextmanager

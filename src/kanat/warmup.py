@@ -14,6 +14,8 @@ import time
 from typing import Callable, Iterable
 
 from kanat import aot
+from kanat.jit import Family, planar, spatial
+from kanat.jit import pending as family_pending
 
 FAMILIES = {
     "continuum-2d": 3.7, "continuum-3d": 6.0, "factorized-2d": 12.9, "factorized-3d": 15.9,
@@ -25,11 +27,9 @@ FAMILIES = {
 families remeasured 2026-11-27 on a quiet machine; lumped-abm4 estimated from lumped-rk4)."""
 
 
-def family(name: str):
+def family(name: str) -> Family:
     """The :class:`kanat.jit.Family` ``name`` of :data:`FAMILIES`, importing only its own kernel
     modules (a continuum run asking whether it will compile does not load the lumped model)."""
-    from kanat.jit import Family, planar, spatial
-
     if name.startswith("lumped"):
         from kanat.lumped import fast, fast_implicit, kernels
 
@@ -81,8 +81,6 @@ def pending(name: str | None) -> float | None:
     Reads the cache index only: costs milliseconds."""
     if name not in FAMILIES or aot.current():
         return None
-    from kanat.jit import pending as family_pending
-
     return family_pending(family(name))
 
 
