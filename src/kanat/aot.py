@@ -55,7 +55,7 @@ class Array:
 
 FLOAT, INT, BOOL = "float64", "int64", "bool"
 """Scalar specifications; ``None`` is Python's None; a tuple of specifications a tuple argument."""
-F1, F2, F3 = Array(FLOAT, 1), Array(FLOAT, 2), Array(FLOAT, 3)
+F1, F2, F3, F4 = Array(FLOAT, 1), Array(FLOAT, 2), Array(FLOAT, 3), Array(FLOAT, 4)
 I1, I2, B1 = Array(INT, 1), Array(INT, 2), Array(BOOL, 1)
 
 

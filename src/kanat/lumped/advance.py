@@ -70,9 +70,9 @@ class FusedArrays:
         self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
                        np.zeros((n, 3, 3)))
-        self.band = np.zeros((3 * len(system.free_index), 2 * self.bandwidth + 1))
-        self.tangent = np.zeros(3)          # fast_implicit.steps: the step of the factors in band (0: none), and
-        self.in_contact = np.zeros(n, dtype=np.bool_)             # the time and step of the history previous
+        self.band = np.zeros((len(system.free_index), 2 * self.bandwidth + 1, 3, 3))   # 3 x 3 node blocks
+        self.tangent = np.zeros(4)          # fast_implicit.steps: the step of the factors in band (0: none), the
+        self.in_contact = np.zeros(n, dtype=np.bool_)     # time and step of the history previous, the factors' rate
         self.previous = np.zeros((len(system.free_index), 3))
 
 
@@ -173,8 +173,8 @@ def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool
     arrays = _arrays(system)
     t0 = float(state["t"])
     af = scheme.coefficients[1]
-    mid = track_samples(system, t0 + h * (np.arange(steps) + 1.0 - af))
-    end = track_samples(system, t0 + h * (np.arange(steps) + 1.0))
+    both = track_samples(system, t0 + h * (np.arange(steps) + np.array([[1.0 - af], [1.0]])).ravel())
+    mid, end = (tuple(np.ascontiguousarray(a[half]) for a in both) for half in (slice(steps), slice(steps, None)))
     x, v, a = (np.array(state[k], dtype=float) for k in ("x", "v", "a"))
     done, iterations, count, failed = entries.implicit_steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,

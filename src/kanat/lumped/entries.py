@@ -15,7 +15,7 @@ from __future__ import annotations
 from functools import partial
 
 from kanat import aot
-from kanat.aot import B1, BOOL, F1, F2, F3, FLOAT, I1, I2, INT
+from kanat.aot import B1, BOOL, F1, F2, F3, F4, FLOAT, I1, I2, INT
 
 SAMPLES = (F3, F3, F1)                                   # vessel points' positions, velocities, headings
 NODES = (I1, I1, I1, F2, F2, F1, B1, I2)                 # free, prescribed, ... (kanat.lumped.advance)
@@ -41,7 +41,7 @@ register("abm4_steps", "kanat.lumped.fast",
          returns=(INT, INT), module="_lumped_explicit")
 register("implicit_steps", "kanat.lumped.fast_implicit",
          *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, NODES, ELEMENTS,
-            bodies, ENV, WORK, (F3,) * 5, F2, F1, B1, F2, SNAP, F2) for bodies in BODIES),
+            bodies, ENV, WORK, (F3,) * 5, F4, F1, B1, F2, SNAP, F2) for bodies in BODIES),
          returns=(INT, INT, INT, BOOL), function="steps")
 register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
 register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, ELEMENTS, F2, F2, F1, F1))
