@@ -209,8 +209,8 @@ class LumpedSystem:
         if len(net.vessel_nodes):
             pos, vel, head = self.vessel_points([t])
             x[net.vessel_nodes], v[net.vessel_nodes], heading = pos[0], vel[0], head[0]
-            if a is not None:
-                a[net.vessel_nodes] = self.vessel(t)[2]
+            if a is not None:                     # the track's acceleration: none without a track
+                a[net.vessel_nodes] = self.vessel(t)[2] if self.track is not None else 0.0
         elif self.track is not None:
             heading = self.track.state(0.0 if self.steady_velocity is not None else t).heading
         x[net.anchor_nodes], v[net.anchor_nodes] = net.anchor_position, 0.0
