@@ -71,8 +71,8 @@ class FusedArrays:
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
                        np.zeros((n, 3, 3)))
         self.band = np.zeros((len(system.free_index), 2 * self.bandwidth + 1, 3, 3))   # 3 x 3 node blocks
-        self.tangent = np.zeros(4)          # fast_implicit.steps: the step of the factors in band (0: none), the
-        self.in_contact = np.zeros(n, dtype=np.bool_)     # time and step of the history previous, the factors' rate
+        self.tangent = np.zeros(5)          # fast_implicit.steps: the step of the factors in band (0: none), the time
+        self.in_contact = np.zeros(n, dtype=np.bool_)     # and step of the history previous, the factors' rate, age
         self.previous = np.zeros((len(system.free_index), 3))
 
 

@@ -31,6 +31,7 @@ from kanat.physics.contact import contact_tangent
 ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
 CONTRACTION = 0.1           # an increment above this fraction of the one before rebuilds the tangent (0.25: 15 %
                             # more iterations on the three-leg mooring at 0.0125 s; a rebuild costs ~4 iterations)
+FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -224,7 +225,13 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     raised to the power 0.8 — RADAU5's ``FACCON = MAX(FACCON, UROUND)**0.8`` (Hairer & Wanner,
     IV.8, the code's step start), which lets it drift towards 1 over the steps it is not
     measured — so a step whose first increment is already small enough ends there, with one
-    force evaluation. New factors start with the rate unknown (0)."""
+    force evaluation. New factors start with the rate unknown (0). Factors :data:`FACTOR_AGE`
+    steps old (``tangent[4]``) are rebuilt whatever their rate: the tangent drifts with the
+    tension and the drag, and fresh factors contract enough for more steps to end after their
+    first iteration (the three-leg mooring of ``benchmarks/bench_mooring_moordyn.py``, 12.5 ms,
+    300 s with an output every 5 s: 47 400 force evaluations and 0.76 s with factors kept until
+    their rate exceeds :data:`CONTRACTION`, whatever its value from 0.01 to 0.1; 41 600, 38 800 and
+    36 000 evaluations, 0.70, 0.69 and 0.71 s, with factors at most 32, 16 and 8 steps old)."""
     am, af, gamma, beta = coefficients
     nf = x0.shape[0]
     free_index = nodes[0]
@@ -232,7 +239,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     F, M = work[2], work[3]
     a1 = out_a                                             # holds the predictor on entry
     tm = t + (1.0 - af) * h
-    refresh = tangent[0] != h
+    refresh = tangent[0] != h or tangent[4] >= FACTOR_AGE
     previous = 0.0
     if tangent[3] > 0.0:
         tangent[3] = max(tangent[3], 1e-16) ** 0.8
@@ -262,7 +269,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
             assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
                      (1.0 - af) * beta * h * h)
             tangent[0] = h if band_factor(A, bw) else 0.0
-            tangent[3] = 0.0
+            tangent[3], tangent[4] = 0.0, 0.0
             if tangent[0] == 0.0:
                 return -iteration
             refresh = False
@@ -298,9 +305,9 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     Returns (steps done, Newton iterations, events, failed): it stops before a step whose
     Newton iteration fails, before the event buffer could overflow, or on a non-finite state.
 
-    ``tangent`` (4,): the step of the factors in ``A`` (:func:`newton_step`), the time and
+    ``tangent`` (5,): the step of the factors in ``A`` (:func:`newton_step`), the time and
     step of the acceleration history ``previous`` (the acceleration one step before that time),
-    and the factors' last contraction estimate ``eta`` (:func:`newton_step`);
+    the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
     ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
     calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
     state and step, else ``a_1 = a``."""
@@ -327,7 +334,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
                 previous[f, r] = a[f, r]
                 x[f, r], v[f, r], a[f, r] = nx[f, r], nv[f, r], na[f, r]
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
-        tangent[1], tangent[2] = t + h, h
+        tangent[1], tangent[2], tangent[4] = t + h, h, tangent[4] + 1.0
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
         n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
         if not fast.finite(y):
