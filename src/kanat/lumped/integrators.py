@@ -115,7 +115,7 @@ class GeneralizedAlphaLumped(Scheme):
         Convergence: the acceleration's increment (full Newton) or its estimated remaining error
         (the compiled modified Newton, :func:`kanat.lumped.fast_implicit.newton_step`) below
         ``tolerance * max(1 m/s^2, max |a|)``: the force balance of every node is then met to about
-        ``tolerance`` times the largest inertial force of the step. 1e-5 (1e-6 until 2026-11-28) takes
+        ``tolerance`` times the largest inertial force of the step. 1e-5 (1e-6 before 2026-11-27) takes
         9 % less CPU on the three-leg mooring of ``benchmarks/bench_mooring_moordyn.py`` with the
         fairlead tension's mean and range unchanged to four digits; tensions move by at most 5e-6
         of their largest value on ``examples/lazy_wave.yaml`` (docs/lumped.md).
