@@ -1,6 +1,8 @@
 """The fused compiled stepping (kanat.lumped.fast) against its twin, the Python path of
 LumpedSystem driven step by step: same accelerations, same states after many steps, same
 snap events; the vectorized track sampler against VesselTrack.state."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -178,3 +180,55 @@ def test_block_band_lu_solves_as_a_dense_solver_does():
     np.testing.assert_allclose(x, np.linalg.solve(dense, b), rtol=1e-12, atol=1e-14)
     singular = np.zeros((2, 3, 3, 3))
     assert not band_factor(singular, 1)
+
+
+def test_a_run_counts_the_steps_it_halved():
+    """Three-leg chain mooring (examples/moordyn) at 12.5 ms: the compiled Newton iteration fails
+    where a node strikes the seabed (first near t = 13.4 s) and the step is retaken in halves; the
+    run's ``step_cuts`` is the number of failed attempts a spy on the compiled steps sees."""
+    import warnings
+
+    import kanat
+    from kanat.io import load_case
+    from kanat.lumped import advance
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "moordyn" / "three_leg_chain_50.dat"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                        # the file's MoorDyn-only options
+        case = load_case(path)
+    case = case.replace({"vessel.motion": [{"dof": "surge", "amplitude": 2.0, "period": 11.0, "phase_deg": -90.0},
+                                           {"dof": "heave", "amplitude": 1.0, "period": 9.0, "phase_deg": -90.0}],
+                         "simulation.duration": 16.0, "simulation.output_dt": 0.5,
+                         "simulation.scheme": "generalized-alpha-lumped", "simulation.dt": 0.0125})
+    failures = []
+    compiled = advance._fused_implicit
+
+    def spy(*args):
+        done, failed = compiled(*args)
+        failures.append(failed)
+        return done, failed
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(advance, "_fused_implicit", spy)
+        result = kanat.run(case)
+    assert result.dataset.attrs["status"] == "ok"
+    assert sum(failures) >= 1
+    assert result.dataset.attrs["step_cuts"] == sum(failures)
+
+
+@pytest.mark.parametrize("fails_above, cuts", [(0.5, 1), (0.25, 3)])
+def test_the_python_scheme_counts_its_halvings(fails_above, cuts, monkeypatch):
+    """A Newton iteration that fails on steps above ``fails_above * h``: one halving (two half
+    steps), or three (each half halved again)."""
+    from kanat.lumped import implicit
+
+    def attempt(scheme, system, state, h):
+        if h > fails_above * 0.1 + 1e-12:
+            return None, scheme.max_iterations
+        return {**state, "t": state["t"] + h, "iterations": state["iterations"] + 1}, 1
+
+    monkeypatch.setattr(implicit, "_attempt", attempt)
+    state = {"t": 0.0, "x": None, "v": None, "a": None, "iterations": 0, "cuts": 0}
+    new = implicit.generalized_alpha_step(GeneralizedAlphaLumped(), None, state, 0.1)
+    assert new["t"] == pytest.approx(0.1)
+    assert new["cuts"] == cuts

@@ -160,7 +160,7 @@ class LumpedModel:
         return arrays
 
     def restore(self, arrays: dict) -> LumpedState:
-        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations") else v)
+        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations", "cuts") else v)
                   for k, v in arrays.items() if k.startswith("scheme_")}
         snaps = {k[5:]: v for k, v in arrays.items() if k.startswith("snap_")}
         self.system.evaluations = int(arrays["evaluations"])
@@ -172,13 +172,14 @@ class LumpedModel:
     # 3. step -----------------------------------------------------------------------------
     def advance(self, state: LumpedState, t_end: float):
         steps = int(round((t_end - state.scheme["t"]) / self.dt))
-        before = state.scheme.get("iterations", 0)
+        before, cut = state.scheme.get("iterations", 0), state.scheme.get("cuts", 0)
         try:
             scheme_state, taken = advance(self.scheme, self.system, state.scheme, self.dt, steps, state.snaps,
                                           self._tensions)
         except SolverError as error:
             raise StepFailure(str(error)) from None
-        return LumpedState(scheme_state, state.snaps), Steps(taken, scheme_state.get("iterations", 0) - before)
+        return LumpedState(scheme_state, state.snaps), Steps(taken, scheme_state.get("iterations", 0) - before,
+                                                             scheme_state.get("cuts", 0) - cut)
 
     def _tensions(self, scheme_state) -> np.ndarray:
         """Element tensions (m,) of a scheme state (a view of one work array)."""

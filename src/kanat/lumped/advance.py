@@ -140,6 +140,8 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
     while taken < steps:
         if isinstance(scheme, GeneralizedAlphaLumped):
             done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
+            if failed:
+                state["cuts"] = state.get("cuts", 0) + 1
             if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
                 state = scheme.step(system, state, h)             # the Python scheme halves it further
                 tracker.update(state["t"], tensions(state))
@@ -161,6 +163,8 @@ def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
     saved = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
     for _ in range(2):
         done, failed = _fused_implicit(scheme, system, state, 0.5 * h, 1, tracker)
+        if failed:
+            state["cuts"] = state.get("cuts", 0) + 1
         if failed and not _halved(scheme, system, state, 0.5 * h, tracker, levels - 1):
             state.clear()
             state.update(saved)

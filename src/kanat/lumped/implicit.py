@@ -156,15 +156,16 @@ def _attempt(scheme, system, state, h):
 
 
 def generalized_alpha_step(scheme, system, state, h, level: int = 0):
-    """Advance ``state`` by ``h`` (eqs. 1-3), halving the step where Newton fails."""
+    """Advance ``state`` by ``h`` (eqs. 1-3), halving the step where Newton fails; each halving
+    adds one to the state's ``cuts``."""
     new, _ = _attempt(scheme, system, state, h)
     if new is not None:
-        return new
+        return {**new, "cuts": state.get("cuts", 0)}
     if level >= MAX_HALVINGS:
         worst = system.free_index[int(np.argmax(np.abs(state["a"]).sum(axis=1)))]
         raise SolverError(
             f"Newton did not converge in {scheme.max_iterations} iterations at t = {state['t']:.6g} s "
             f"even with the step cut to {h:.3g} s, near {system.net.where(worst)}; "
             "reduce dt, raise axial_damping, or try scheme rk4")
-    half = generalized_alpha_step(scheme, system, state, 0.5 * h, level + 1)
+    half = generalized_alpha_step(scheme, system, {**state, "cuts": state.get("cuts", 0) + 1}, 0.5 * h, level + 1)
     return generalized_alpha_step(scheme, system, half, 0.5 * h, level + 1)

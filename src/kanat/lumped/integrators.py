@@ -143,7 +143,7 @@ class GeneralizedAlphaLumped(Scheme):
 
     def start(self, system, t, xf, vf, h):
         xf, vf = np.array(xf, float), np.array(vf, float)
-        return {"t": float(t), "x": xf, "v": vf, "a": system.acceleration(t, xf, vf), "iterations": 0}
+        return {"t": float(t), "x": xf, "v": vf, "a": system.acceleration(t, xf, vf), "iterations": 0, "cuts": 0}
 
     def step(self, system, state, h):
         return generalized_alpha_step(self, system, state, h)
