@@ -140,8 +140,6 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
     while taken < steps:
         if isinstance(scheme, GeneralizedAlphaLumped):
             done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
-            if failed:
-                state["cuts"] = state.get("cuts", 0) + 1
             if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
                 state = scheme.step(system, state, h)             # the Python scheme halves it further
                 tracker.update(state["t"], tensions(state))
@@ -163,8 +161,6 @@ def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
     saved = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
     for _ in range(2):
         done, failed = _fused_implicit(scheme, system, state, 0.5 * h, 1, tracker)
-        if failed:
-            state["cuts"] = state.get("cuts", 0) + 1
         if failed and not _halved(scheme, system, state, 0.5 * h, tracker, levels - 1):
             state.clear()
             state.update(saved)
@@ -173,7 +169,8 @@ def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
 
 
 def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool]:
-    """Compiled generalized-α steps from ``state`` (updated in place): (steps taken, failed)."""
+    """Compiled generalized-α steps from ``state`` (updated in place; a failed step counts as a cut):
+    (steps taken, failed)."""
     arrays = _arrays(system)
     t0 = float(state["t"])
     af = scheme.coefficients[1]
@@ -185,7 +182,8 @@ def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool
         arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
         arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events)
     tracker.absorb(arrays.events[:count].copy())
-    state.update(t=t0 + done * h, x=x, v=v, a=a, iterations=state["iterations"] + iterations)
+    state.update(t=t0 + done * h, x=x, v=v, a=a, iterations=state["iterations"] + iterations,
+                 cuts=state.get("cuts", 0) + int(failed))            # the failed step is retaken in halves
     system.evaluations += iterations
     return done, failed
 
