@@ -5,9 +5,7 @@ with several mistakes reports all of them at once (``kanat validate``).
 """
 from __future__ import annotations
 
-import dataclasses
-
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 
 @dataclass(frozen=True)
@@ -40,6 +38,11 @@ class Problem:
         key = f" {self.key}:" if self.key else ""
         return f"{where}: {self.severity}:{key} {self.message}"
 
+    def located(self, source: str | None) -> Problem:
+        """This problem naming ``source`` (the case's file, found after it was read) when it names
+        no file of its own."""
+        return self if self.file is not None or source is None else replace(self, file=source)
+
 
 class CaseWarning(UserWarning):
     """A case that can run but probably not as meant (a physical sanity warning)."""
@@ -63,7 +66,7 @@ class CaseError(KanatError, ValueError):
         after it was read), or this error itself when ``source`` is None."""
         if source is None or all(p.file is not None for p in self.problems):
             return self
-        return CaseError([p if p.file is not None else dataclasses.replace(p, file=source) for p in self.problems])
+        return CaseError([p.located(source) for p in self.problems])
 
 
 class SolverError(KanatError, RuntimeError):

@@ -326,7 +326,6 @@ def replaced(case: Case, changes) -> Case:
     kanat.errors.CaseWarning
         For each sanity warning of the new case.
     """
-    import dataclasses
     import json
     import warnings
 
@@ -351,7 +350,6 @@ def replaced(case: Case, changes) -> Case:
     if new is None or any(p.severity == "error" for p in problems):
         raise CaseError(problems).located(case.source)
     for problem in problems:
-        warnings.warn(str(problem if problem.file else dataclasses.replace(problem, file=case.source)), CaseWarning,
-                      stacklevel=3)
+        warnings.warn(str(problem.located(case.source)), CaseWarning, stacklevel=3)
     new._source = case.source
     return new
