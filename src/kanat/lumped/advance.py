@@ -71,8 +71,10 @@ class FusedArrays:
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
                        np.zeros((n, 3, 3)))
         self.band = np.zeros((len(system.free_index), 2 * self.bandwidth + 1, 3, 3))   # 3 x 3 node blocks
-        self.tangent = np.zeros(5)          # fast_implicit.steps: the step of the factors in band (0: none), the time
-        self.in_contact = np.zeros(n, dtype=np.bool_)     # and step of the history previous, the factors' rate, age
+        # fast_implicit.steps: the step of the factors in band (0: none), the time and step of the history
+        # previous, the factors' contraction estimate and age; the nodes on the seabed when band was built
+        self.tangent = np.zeros(5)
+        self.in_contact = np.zeros(n, dtype=np.bool_)
         self.previous = np.zeros((len(system.free_index), 3))
 
 
@@ -174,8 +176,9 @@ def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool
     arrays = _arrays(system)
     t0 = float(state["t"])
     af = scheme.coefficients[1]
-    both = track_samples(system, t0 + h * (np.arange(steps) + np.array([[1.0 - af], [1.0]])).ravel())
-    mid, end = (tuple(np.ascontiguousarray(a[half]) for a in both) for half in (slice(steps), slice(steps, None)))
+    step = np.arange(steps) + 1.0
+    pos, vel, heading = track_samples(system, t0 + h * np.concatenate([step - af, step]))    # one sampling
+    mid, end = (pos[:steps], vel[:steps], heading[:steps]), (pos[steps:], vel[steps:], heading[steps:])
     x, v, a = (np.array(state[k], dtype=float) for k in ("x", "v", "a"))
     done, iterations, count, failed = entries.implicit_steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
