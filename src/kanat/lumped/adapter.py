@@ -27,7 +27,7 @@ from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.lumped import entries, stepping
 from kanat.lumped.advance import advance
-from kanat.lumped.equilibrium import equilibrium
+from kanat.lumped.equilibrium import starting_state
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
@@ -94,7 +94,8 @@ class LumpedModel:
         spec = scheme if scheme is not None else sim.scheme
         rigid = self.net.rigid.count > 0
         if spec is None:
-            chosen = stepping.choose_scheme(self.info, sim.step_or_default, SCHEMES, explicit_only=rigid)
+            step = sim.dt if sim.dt is not None else stepping.implicit_default(self.system, sim.step_or_default)
+            chosen = stepping.choose_scheme(self.info, step, SCHEMES, explicit_only=rigid)
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
         chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
@@ -107,9 +108,12 @@ class LumpedModel:
         sim, info, scheme = self.case.simulation, self.info, self.scheme
         out = sim.output_interval
         if not scheme.explicit:
-            if sim.dt is None:
-                self.notes.append(f"{scheme.name}: no dt given; stepping at the default {sim.step_or_default:g} s")
-            return stepping.fit_step(sim.step_or_default, out)
+            if sim.dt is not None:
+                return stepping.fit_step(sim.dt, out)
+            h = stepping.fit_step(stepping.implicit_default(self.system, sim.step_or_default), out)
+            self.notes.append(f"{scheme.name}: no dt given; stepping at {h:.4g} s (the default {sim.step_or_default:g} s, "
+                              f"or {stepping.STEPS_PER_PERIOD:g} steps per period of the shortest excitation)")
+            return h
         safe = info.safe_step(scheme)
         if sim.dt is None:
             self.notes.append(f"{scheme.name}: no dt given; stepping at the safe step {safe:.3g} s")
@@ -138,17 +142,18 @@ class LumpedModel:
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self) -> LumpedState:
         sim, system = self.case.simulation, self.system
+        free = system.free_index
         if sim.initial_state == "equilibrium":
             try:
-                x = equilibrium(self.net, self.case)[0]
+                x, v = starting_state(self.net, self.case, system)
             except SolverError as error:
                 raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed. "
                                   "Give bodies and points a position near where they settle (a guess), or start "
                                   "from the given geometry with simulation.initial_state: as_given") from None
+            velocity = v[free]
         else:
             x = self.net.x_guess.copy()
-        free = system.free_index
-        velocity = np.broadcast_to(system.vessel(0.0)[1], (len(free), 3)).copy()
+            velocity = np.broadcast_to(system.frame_velocity(), (len(free), 3)).copy()
         velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0         # Euler angle rates
         state = self.scheme.start(system, 0.0, x[free], velocity, self.dt)
         return LumpedState(state, SnapTracker(0.0, self._tensions(state)))
@@ -160,7 +165,7 @@ class LumpedModel:
         return arrays
 
     def restore(self, arrays: dict) -> LumpedState:
-        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations", "cuts") else v)
+        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations", "cuts", "explicit") else v)
                   for k, v in arrays.items() if k.startswith("scheme_")}
         snaps = {k[5:]: v for k, v in arrays.items() if k.startswith("snap_")}
         self.system.evaluations = int(arrays["evaluations"])
@@ -258,4 +263,9 @@ class LumpedModel:
                      "event_segment": (("event",), events["element"]),
                      "event_peak_tension": (("event",), events["peak_tension"]),
                      "event_rise_rate": (("event",), events["rise_rate"])}
-        return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations}
+        explicit = int(state.scheme.get("explicit", 0))
+        if explicit:
+            self.notes.append(f"{explicit} rk4 steps at the explicit safe step where the implicit Newton iteration "
+                              "failed even on the step cut to 1/8")
+        return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations,
+                           "explicit_steps": explicit}

@@ -7,14 +7,16 @@ arrays once per run); any other scheme (the implicit one, a user's own) or the c
 mass matrix goes through ``scheme.step`` with the tensions and snap events updated after
 every step in Python. Both paths give the same states to round-off (tests). A compiled
 implicit step whose Newton iteration fails is retaken as compiled half steps (up to
-:data:`COMPILED_HALVINGS` deep), and only then by the Python scheme, which halves it further.
+:data:`COMPILED_HALVINGS` deep), and where even those fail, by the explicit ``rk4`` at its safe
+step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
+implicit run never fails where ``rk4`` succeeds.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from kanat.lumped import entries, fast, fast_implicit
-from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, state_positions
+from kanat.lumped import entries, fast, fast_implicit, stepping
+from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, pack, state_positions, unpack
 
 
 COMPILED_HALVINGS = 3       # a failed compiled implicit step is retried as 2, 4, 8 compiled half steps
@@ -143,8 +145,7 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
         if isinstance(scheme, GeneralizedAlphaLumped):
             done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
             if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
-                state = scheme.step(system, state, h)             # the Python scheme halves it further
-                tracker.update(state["t"], tensions(state))
+                _explicit(system, state, h, tracker)
             done += failed
         else:
             done = _fused(scheme, system, state, h, steps - taken, tracker)
@@ -168,6 +169,23 @@ def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
             state.update(saved)
             return False
     return True
+
+
+def _explicit(system, state, h, tracker) -> None:
+    """Take one step of ``h`` of the implicit ``state`` (updated in place) by compiled ``rk4`` steps
+    at the explicit safe step of the state (:mod:`kanat.lumped.stepping`), and restart the implicit
+    scheme from their end with the acceleration of eq. (1) there; the steps are added to the state's
+    ``explicit`` count."""
+    net = system.net
+    x = system.full(state["t"], state["x"], state["v"])[0]
+    info = stepping.step_info(net, x, False, system.case.environment.seabed)
+    count = max(1, int(np.ceil(h / info.safe_step(RK4) - 1e-9)))
+    sub = {"t": float(state["t"]), "y": pack(state["x"], state["v"])}
+    done = _fused(RK4(), system, sub, h / count, count, tracker)
+    xf, vf = (np.array(part) for part in unpack(sub["y"]))
+    a = system.acceleration(sub["t"], xf, vf) if done == count else np.full_like(xf, np.nan)
+    state.update(t=sub["t"], x=xf, v=vf, a=a, explicit=state.get("explicit", 0) + done)
+    _arrays(system).tangent[:] = 0.0                    # the implicit factors start afresh
 
 
 def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool]:

@@ -20,6 +20,7 @@ only on its neighbours), so it costs ``3 x colours`` force evaluations.
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 import scipy.sparse as sp
@@ -38,6 +39,7 @@ INITIAL_PSEUDO_PERIOD = 0.05   # dtau0 as a fraction of the slowest pendulum per
 MAX_STEP_FRACTION = 0.25       # largest node move per iteration, in element lengths
 STALL, STALL_GROWTH = 0.01, 1.5   # pseudo-time step growth when the residual moves by < 1 %
 LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before the PTC step is tried
+STARTING_DIFFERENCE = 0.01    # s, the time step of the starting velocities' central difference
 ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
 
 
@@ -150,7 +152,7 @@ def _tolerance(net, xf) -> float:
     return max(RESIDUAL_TOLERANCE * scale, noise)
 
 
-def equilibrium(net, case, x0=None, velocity=None):
+def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     """Static equilibrium of the network, eq. (1), with continuation in axial stiffness.
 
     Tried directly first; if that fails, the elastic laws are softened so that the stiffest
@@ -160,15 +162,16 @@ def equilibrium(net, case, x0=None, velocity=None):
 
     Parameters and returns as :func:`_solve`.
     """
+    solve = functools.partial(_solve, friction=friction, time=time)
     start = "given" if x0 is not None else "network"
     if x0 is None and velocity is None:
         x0, start = first_guess(net, case)
     stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
     if stiffest <= CONTINUATION_START:
-        x, info = _solve(net, case, x0, velocity, MAX_ITERATIONS)
+        x, info = solve(net, case, x0, velocity, MAX_ITERATIONS)
         return x, {**info, "first_guess": start}
     try:
-        x, info = _solve(net, case, x0, velocity, DIRECT_ITERATIONS)
+        x, info = solve(net, case, x0, velocity, DIRECT_ITERATIONS)
         return x, {**info, "first_guess": start}
     except SolverError:
         pass
@@ -176,7 +179,7 @@ def equilibrium(net, case, x0=None, velocity=None):
     x = x0
     for factor in [*factors, 1.0]:                   # the taut phase was tried (and failed) directly
         soft = dataclasses.replace(net, law_y=net.law_y * factor)
-        x, info = _solve(soft, case, x, velocity, MAX_ITERATIONS, taut=False)
+        x, info = solve(soft, case, x, velocity, MAX_ITERATIONS, taut=False)
     info["continuation_stages"] = len(factors) + 1
     info["first_guess"] = start
     return x, info
@@ -223,7 +226,7 @@ def statics_guess(net, case):
     return x if np.all(np.isfinite(x)) else None
 
 
-def _solve(net, case, x0, velocity, max_iterations, taut=True):
+def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, time=0.0):
     """Static equilibrium of the network, eq. (1), from ``x0`` (or the network's guess), by the
     taut phase first (when ``taut``), then pseudo-transient Newton.
 
@@ -234,10 +237,15 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True):
     x0 : ndarray, shape (n, 3), optional
         Starting positions (default: the network's guess).
     velocity : ndarray, shape (3,), optional
-        Steady velocity of every node (default: the vessel's at t = 0, or zero).
+        Steady velocity of every node (default: the track's at t = 0,
+        :meth:`~kanat.lumped.system.LumpedSystem.frame_velocity`, or zero).
     max_iterations : int
     taut : bool
         Try :func:`_taut_phase` first (the continuation's stages do not: it failed directly).
+    friction : bool
+        False: without the seabed's friction (:func:`starting_state`).
+    time : float
+        The prescribed motion's time whose place the vessel's points take (the track's stays at 0).
 
     Returns
     -------
@@ -255,8 +263,8 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True):
         If the iteration does not converge, naming the node with the largest residual.
     """
     if velocity is None:
-        velocity = LumpedSystem(net, case, waves=False).vessel(0.0)[1]
-    system = LumpedSystem(net, case, waves=False, steady_velocity=velocity)
+        velocity = LumpedSystem(net, case, waves=False).frame_velocity()
+    system = LumpedSystem(net, case, waves=False, steady_velocity=velocity, steady_time=time, friction=friction)
     forces = _SteadyForces(system)
     free = system.free_index
     colour = distance2_colouring(net)
@@ -328,3 +336,37 @@ def _finish(net, system, xf, iterations, extra):
     residual = float(np.max(np.abs(loads[system.free_index])))
     return x, {"iterations": iterations, "residual": residual, "loads": loads,
                "normal_force": system.normal_force.copy(), **extra}
+
+
+def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
+    """A dynamic run's first state: positions and velocities (n, 3) of every node, at rest in the
+    equations of motion the run integrates (SPEC §4, the consistent start).
+
+    * The positions are the equilibrium at the prescribed motion's place at ``t = 0``, in the frame
+      moving with the track (:meth:`LumpedSystem.frame_velocity`), **without seabed friction**: the
+      run's friction is regularized in velocity (:mod:`kanat.physics.contact`, eqs. 3-4) and
+      vanishes at rest, so a state held by friction (the MoorPy equilibrium of ``kanat statics``)
+      would start with unbalanced forces where the line lies on the seabed (4.3 m/s^2 on MoorDyn's
+      WD0050 chain, friction 0.5), as MoorDyn's own start, relaxed with its velocity friction, has
+      none either.
+    * The velocities are the frame's, plus, under a prescribed motion, the quasi-static response to
+      the motion's velocity at ``t = 0``: the central difference of the equilibria at the motion's
+      places ``STARTING_DIFFERENCE`` before and after ``t = 0``. A line whose fairlead starts moving
+      then starts moving with it (anchor at rest, the fairlead's neighbours nearly at its speed)
+      rather than every node at the fairlead's velocity, or none.
+
+    Raises
+    ------
+    SolverError
+        As :func:`equilibrium`.
+    """
+    velocity = system.frame_velocity()
+    x = equilibrium(net, case, velocity=velocity, friction=False)[0]
+    v = np.zeros_like(x)
+    v[:] = velocity
+    if system.motion is not None:
+        delta = STARTING_DIFFERENCE
+        ahead = equilibrium(net, case, x0=x, velocity=velocity, friction=False, time=delta)[0]
+        behind = equilibrium(net, case, x0=x, velocity=velocity, friction=False, time=-delta)[0]
+        v = (ahead - behind) / (2.0 * delta)
+    return x, v

@@ -32,6 +32,7 @@ ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
 CONTRACTION = 0.1           # an increment above this fraction of the one before rebuilds the tangent (0.25: 15 %
                             # more iterations on the three-leg mooring at 0.0125 s; a rebuild costs ~4 iterations)
 FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
+LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -145,7 +146,7 @@ def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c
     """The seabed contact's blocks in the band tangent; nothing (nor compiled) when ``contact`` is None."""
     if contact is not None:
         x, v = work[0], work[1]
-        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], Kc, Cc)
+        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], work[19], Kc, Cc)
         for f in range(free_index.shape[0]):
             node = free_index[f]
             if work[18][node] > 0.0:
@@ -231,16 +232,23 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     first iteration (the three-leg mooring of ``benchmarks/bench_mooring_moordyn.py``, 12.5 ms,
     300 s with an output every 5 s: 47 400 force evaluations and 0.76 s with factors kept until
     their rate exceeds :data:`CONTRACTION`, whatever its value from 0.01 to 0.1; 41 600, 38 800 and
-    36 000 evaluations, 0.70, 0.69 and 0.71 s, with factors at most 32, 16 and 8 steps old)."""
+    36 000 evaluations, 0.70, 0.69 and 0.71 s, with factors at most 32, 16 and 8 steps old).
+
+    A line search guards the iteration: where an increment raised the residual's 2-norm, it is
+    halved (up to :data:`LINE_SEARCH_HALVINGS` times) and the factors are rebuilt at the shorter
+    iterate, which breaks the two-cycles a node sets up when its seabed contact switches on and
+    off from one iterate to the next (Dennis & Schnabel, Numerical Methods for Unconstrained
+    Optimization, 1983, §6.3, with the simple decrease test)."""
     am, af, gamma, beta = coefficients
     nf = x0.shape[0]
     free_index = nodes[0]
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
+    last = np.empty((nf, 3))                               # the last increment, for the line search
     F, M = work[2], work[3]
     a1 = out_a                                             # holds the predictor on entry
     tm = t + (1.0 - af) * h
     refresh = tangent[0] != h or tangent[4] >= FACTOR_AGE
-    previous = 0.0
+    previous, norm_before, backtracks = 0.0, np.inf, 0
     if tangent[3] > 0.0:
         tangent[3] = max(tangent[3], 1e-16) ** 0.8
     for iteration in range(1, max_iterations + 1):
@@ -251,6 +259,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
                 ym[3 * f + r] = (1.0 - af) * x1 + af * x0[f, r]
                 ym[3 * nf + 3 * f + r] = (1.0 - af) * v1 + af * v0[f, r]
         fast.loads(tm, ym, vm_pos, vm_vel, vm_head, nodes, el, bodies, env, work)
+        norm = 0.0
         for f in range(nf):
             node = free_index[f]
             p = position[node]
@@ -259,11 +268,21 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
                 for q in range(3):
                     s += M[node, fast.PACKED[r][q]] * ((1.0 - am) * a1[f, q] + am * a0[f, q])
                 rhs[3 * p + r] = -s
+                norm += s * s
         if not fast.finite(rhs):
             tangent[0] = 0.0
             return -iteration
         if contact_changed(bodies[8], work[18], in_contact):
             refresh = True
+        if norm > norm_before and backtracks < LINE_SEARCH_HALVINGS:
+            backtracks += 1                                # the residual grew: halve the last increment
+            for f in range(nf):
+                for r in range(3):
+                    last[f, r] *= 0.5
+                    a1[f, r] -= last[f, r]
+            refresh = True
+            continue
+        norm_before, backtracks = norm, 0
         refreshed = refresh
         if refresh:
             assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
@@ -278,6 +297,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
         for f in range(nf):
             p = position[free_index[f]]
             for r in range(3):
+                last[f, r] = rhs[3 * p + r]
                 a1[f, r] += rhs[3 * p + r]
                 biggest = max(biggest, abs(rhs[3 * p + r]))
                 scale = max(scale, abs(a1[f, r]))

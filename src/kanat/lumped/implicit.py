@@ -11,7 +11,9 @@ With ``(x, v, a)`` at ``t_n`` and the unknown ``a_1`` at ``t_n+1 = t_n + h``::
 (:func:`kanat.lumped.kernels.tangent_blocks`: axial, geometric, Kelvin–Voigt, drag), the
 body drag and the seabed contact (:func:`kanat.physics.contact.contact_tangent`); the added-mass, buoy and wave terms are left out of ``J`` (Newton then
 converges linearly rather than quadratically, to the same answer). ``J`` is sparse with
-the network's node graph; it is factorized by SuperLU at every iteration. A step whose
+the network's node graph; it is factorized by SuperLU at every iteration. An increment that
+raises the residual's 2-norm is halved (the line search of
+:func:`kanat.lumped.fast_implicit.newton_step`). A step whose
 Newton iteration fails is halved, up to ``MAX_HALVINGS`` times, then the run stops with
 a :class:`~kanat.errors.SolverError` naming time, cable and node.
 """
@@ -23,6 +25,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.lumped import kernels
+from kanat.lumped.fast_implicit import LINE_SEARCH_HALVINGS
 from kanat.physics.contact import contact_tangent
 
 MAX_HALVINGS = 4          # a step is cut to at most 1/16 before the run is stopped
@@ -89,7 +92,7 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
     area, bed, params, _ = system.contact
     if len(area):                                  # seabed contact (kanat.physics.contact)
         Kc, Cc = np.zeros((net.n_nodes, 3, 3)), np.zeros((net.n_nodes, 3, 3))
-        contact_tangent(x, v, area, bed, params, system.normal_force, Kc, Cc)
+        contact_tangent(x, v, area, bed, params, system.normal_force, system._tangent, Kc, Cc)
         node = node + (c_stiff * Kc + c_damp * Cc)[pattern.free_nodes]
     return pattern.matrix(np.stack([diag, off, off, diag]), node)
 
@@ -132,6 +135,7 @@ def _attempt(scheme, system, state, h):
     n = system.net.n_nodes
     x, v, a_full = np.empty((n, 3)), np.empty((n, 3)), np.zeros((n, 3))
     a1 = a0.copy()
+    last, norm_before, backtracks = np.zeros_like(a1), np.inf, 0
     for iteration in range(1, scheme.max_iterations + 1):
         x1 = x0 + h * v0 + h * h * ((0.5 - beta) * a0 + beta * a1)
         v1 = v0 + h * ((1.0 - gamma) * a0 + gamma * a1)
@@ -140,12 +144,19 @@ def _attempt(scheme, system, state, h):
         R, M = _residual(system, tm, x, v, (1.0 - am) * a1 + am * a0, a_full)
         if not np.all(np.isfinite(R)):
             return None, iteration
+        norm = float(np.sum(R * R))
+        if norm > norm_before and backtracks < LINE_SEARCH_HALVINGS:    # the line search (fast_implicit)
+            backtracks += 1
+            last *= 0.5
+            a1 = a1 - last
+            continue
+        norm_before, backtracks = norm, 0
         J = jacobian(system, tm, x, v, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h, M)
         try:
             delta = spla.splu(J).solve(-R.ravel()).reshape(-1, 3)
         except RuntimeError:                                   # singular tangent
             return None, iteration
-        a1 = a1 + delta
+        a1, last = a1 + delta, delta
         scale = max(np.max(np.abs(a1)), ACCELERATION_SCALE)
         if np.max(np.abs(delta)) <= scheme.tolerance * scale:
             x1 = x0 + h * v0 + h * h * ((0.5 - beta) * a0 + beta * a1)

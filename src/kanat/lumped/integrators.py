@@ -31,11 +31,11 @@ from kanat.lumped.implicit import generalized_alpha_step
 from kanat.schemes import Scheme, registry
 
 
-def _pack(xf, vf):
+def pack(xf, vf):
     return np.concatenate([np.ravel(xf), np.ravel(vf)])
 
 
-def _unpack(y):
+def unpack(y):
     half = y.size // 2
     return y[:half].reshape(-1, 3), y[half:].reshape(-1, 3)
 
@@ -61,7 +61,7 @@ class RK4(Scheme):
     evaluations_per_step: ClassVar[int] = 4
 
     def start(self, system, t, xf, vf, h):
-        return {"t": float(t), "y": _pack(xf, vf)}
+        return {"t": float(t), "y": pack(xf, vf)}
 
     def step(self, system, state, h):
         return {"t": state["t"] + h, "y": _rk4(system, state["t"], state["y"], h)}
@@ -85,7 +85,7 @@ class ABM4(Scheme):
     evaluations_per_step: ClassVar[int] = 2
 
     def start(self, system, t, xf, vf, h):
-        y = _pack(xf, vf)
+        y = pack(xf, vf)
         return {"t": float(t), "y": y, "history": system.rhs(t, y)[None, :]}
 
     def step(self, system, state, h):
@@ -156,5 +156,5 @@ SCHEMES = registry(RK4, ABM4, GeneralizedAlphaLumped)
 def state_positions(state) -> tuple[np.ndarray, np.ndarray]:
     """Free nodes' ``(x, v)``, shape (n_free, 3) each, of any scheme's state."""
     if "y" in state:
-        return _unpack(state["y"])
+        return unpack(state["y"])
     return state["x"], state["v"]

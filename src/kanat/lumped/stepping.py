@@ -38,6 +38,9 @@ STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets th
 IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
                              # band LU) is worth: 8-10 on 20-100 element lines and seed 004's network,
                              # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
+STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's
+                             # WD0050 chain driven at 9 and 12 s, fairlead tension's maximum against MoorDyn's
+                             # -7.8 % at 90 steps per 9 s (0.1 s), -1.1 % at 360 (0.025 s), -0.6 % at 900
 IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
                              # 0.05-0.1 s, 5.5 on seed 004's network in waves
 
@@ -120,3 +123,25 @@ def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool 
     explicit_cost = rk4.evaluations_per_step / min(info.safe_step(rk4), dt)
     implicit_cost = IMPLICIT_ITERATIONS * (1.0 + IMPLICIT_COST) / dt
     return rk4 if explicit_cost <= implicit_cost else implicit
+
+
+def excitation_period(system) -> float | None:
+    """The shortest period [s] of what drives the run: the prescribed motion's harmonics and the
+    sea's components (those of at least a tenth of the largest amplitude); None without either."""
+    from kanat.physics.motion import Harmonics
+
+    periods = []
+    if isinstance(system.motion, Harmonics):
+        periods.extend(2.0 * math.pi / system.motion.omega[system.motion.amplitude > 0.0])
+    sea = system.sea
+    if sea is not None and len(sea.omega):
+        amplitude = np.asarray(sea.amplitude, float)
+        periods.extend(2.0 * math.pi / np.asarray(sea.omega, float)[amplitude >= 0.1 * amplitude.max()])
+    return min(periods) if periods else None
+
+
+def implicit_default(system, default: float) -> float:
+    """The implicit scheme's step without ``dt``: ``default`` (``simulation.step_or_default``), or
+    less where the run is driven: :data:`STEPS_PER_PERIOD` steps per :func:`excitation_period`."""
+    period = excitation_period(system)
+    return default if period is None else min(default, period / STEPS_PER_PERIOD)

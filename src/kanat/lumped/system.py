@@ -54,9 +54,17 @@ class LumpedSystem:
         takes its equilibrium form (:mod:`kanat.physics.contact`), and the vessel's points sit
         where the prescribed motion has them at ``t = 0`` (a motion that starts at rest then
         starts the run smoothly: a harmonic with ``phase_deg: -90``).
+    steady_time : float
+        The time of the prescribed motion's place in the steady frame (default 0): the run's
+        start takes equilibria a little before and after ``t = 0`` for its nodes' velocities
+        (:func:`kanat.lumped.equilibrium.starting_state`).
+    friction : bool
+        False: the seabed's friction left out (the run's starting equilibrium, in which velocity-
+        regularized friction vanishes at rest).
     """
 
-    def __init__(self, net, case, mass_matrix: str = "lumped", waves: bool = True, steady_velocity=None):
+    def __init__(self, net, case, mass_matrix: str = "lumped", waves: bool = True, steady_velocity=None,
+                 steady_time: float = 0.0, friction: bool = True):
         env = case.environment
         self.net, self.case = net, case
         self.rho, self.g = env.water_density, env.gravity
@@ -67,6 +75,7 @@ class LumpedSystem:
         self._translational = translational(self.motion)
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
+        self.steady_time, self.friction = float(steady_time), friction
         self.free_index = np.flatnonzero(net.free)
         self.node_mass = net.node_mass + net.node_added_mass
         n, m = net.n_nodes, net.n_elements
@@ -99,7 +108,10 @@ class LumpedSystem:
         bed = contact.seabed_arrays(seabed_of(case.environment))
         laid = laid_lines(net, bed) if static else (np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3)),
                                                     np.zeros(net.n_nodes))
-        return net.node_contact_area, bed, contact.contact_parameters(block, int(static)), laid
+        params = contact.contact_parameters(block, int(static))
+        if not self.friction:
+            params[2:4] = 0.0
+        return net.node_contact_area, bed, params, laid
 
     # --- prescribed motion and environment -------------------------------------------------
     def vessel_points(self, times, arms=None):
@@ -111,7 +123,7 @@ class LumpedSystem:
             key = None if arms is None else tuple(np.ravel(arms))
             cached = self._steady_points.get(key)
             if cached is None:
-                cached = self._vessel_points(np.zeros(1), arms)
+                cached = self._vessel_points(np.full(1, self.steady_time), arms)
                 self._steady_points[key] = cached
             pos, vel, heading = cached
             k = len(times)
@@ -182,13 +194,18 @@ class LumpedSystem:
         behind = self.track_series(times - YAW_RATE_STEP, np.zeros(3))[2]
         return (ahead - behind) / (2 * YAW_RATE_STEP)
 
+    def frame_velocity(self) -> np.ndarray:
+        """The steady frame's velocity (3,): the tow point's along the track at ``t = 0``, without the
+        prescribed motion (an oscillation about the track is no steady flow); zero without a track."""
+        return self.track.state(0.0).velocity if self.track is not None else np.zeros(3)
+
     def vessel(self, t: float):
         """Tow point ``(position, velocity, acceleration, heading)`` at ``t`` (acceleration of the
         track; the prescribed motion's is left out: only the consistent mass uses it). In the
         steady frame (the equilibrium) it is the one at t = 0, worked out once."""
         if self.steady_velocity is not None:
             if self._steady_vessel is None:
-                self._steady_vessel = self._vessel(0.0)
+                self._steady_vessel = self._vessel(self.steady_time)
             return self._steady_vessel
         return self._vessel(t)
 
@@ -196,7 +213,7 @@ class LumpedSystem:
         if self.track is None:
             pos, vel, heading = self.vessel_points([t], self.case.vessel.tow_point)
             return pos[0, 0], vel[0, 0], np.zeros(3), 0.0
-        st = self.track.state(0.0 if self.steady_velocity is not None else t)
+        st = self.track.state(t)
         pos, vel, heading = self.vessel_points([t], self.case.vessel.tow_point)
         acc = np.zeros(3) if self.steady_velocity is not None else st.acceleration
         return pos[0, 0], vel[0, 0], acc, heading[0]
@@ -212,7 +229,7 @@ class LumpedSystem:
             if a is not None:                     # the track's acceleration: none without a track
                 a[net.vessel_nodes] = self.vessel(t)[2] if self.track is not None else 0.0
         elif self.track is not None:
-            heading = self.track.state(0.0 if self.steady_velocity is not None else t).heading
+            heading = self.track.state(self.steady_time if self.steady_velocity is not None else t).heading
         x[net.anchor_nodes], v[net.anchor_nodes] = net.anchor_position, 0.0
         if a is not None:
             a[net.anchor_nodes] = 0.0
