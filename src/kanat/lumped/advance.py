@@ -165,8 +165,9 @@ def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
     for _ in range(2):
         done, failed = _fused_implicit(scheme, system, state, 0.5 * h, 1, tracker)
         if failed and not _halved(scheme, system, state, 0.5 * h, tracker, levels - 1):
+            cuts = state["cuts"]                        # every failed attempt counts, kept or not
             state.clear()
-            state.update(saved)
+            state.update(saved, cuts=cuts)
             return False
     return True
 

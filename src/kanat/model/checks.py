@@ -61,12 +61,22 @@ def _kn(force: float) -> str:
 
 
 def _end_position(case: Case, end: CableEnd) -> tuple[float, float, float] | None:
-    """Initial global position of a fixed end (anchor, or the tow point at t = 0)."""
+    """Initial global position of a fixed end: an anchor, or a vessel point (its own ``offset``, else
+    the tow point) at t = 0, moved by the prescribed motion's translation there (rotations left out)."""
     if end.kind == "anchor":
         return tuple(end.position)
     if end.kind == "vessel":  # vessel at the origin, heading 0: vessel axes = global axes
-        return tuple(case.vessel.tow_point)
+        point = end.offset if end.offset is not None else case.vessel.tow_point
+        return tuple(float(p + q) for p, q in zip(point, _motion_at_start(case)))
     return None
+
+
+def _motion_at_start(case: Case) -> tuple[float, float, float]:
+    """Surge, sway and heave of ``vessel.motion`` at t = 0 [m] (zeros without one)."""
+    from ..physics.motion import compile_motion, motion_at
+
+    motion = compile_motion(case.vessel.motion)
+    return (0.0, 0.0, 0.0) if motion is None else tuple(float(q) for q in motion_at(motion, 0.0)[0][:3])
 
 
 def _line_weight(case: Case, cable: Cable) -> float:
