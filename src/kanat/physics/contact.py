@@ -20,8 +20,8 @@ indefinite); ``a`` the
 line's direction at the node (sum of its elements' unit tangents) projected on the seabed
 plane; ``v_a = v . a`` and ``v_l = v - (v . nu) nu - v_a a``. Coulomb friction is
 regularized by ``tanh`` with the velocity scale ``v_s`` = :data:`SLIP_VELOCITY`: smooth, so
-the implicit scheme's Newton iteration sees a continuous tangent (its ``dF/dv`` is
-``mu N / v_s`` at rest, included in the tangent), and a line loaded below its friction limit
+the implicit scheme's Newton iteration sees a continuous tangent (its ``dF/dv``, ``mu N / v_s``
+at rest, is taken at the node's slip in the tangent: :func:`contact_tangent`, eqs. 5-6), and a line loaded below its friction limit
 creeps at ``v_s atanh(load / (mu N))`` at most (0.55 v_s at half the limit).
 
 In a static equilibrium velocities are zero, and friction depends on how the line got
