@@ -19,7 +19,8 @@ from kanat.aot import B1, BOOL, F1, F2, F3, F4, FLOAT, I1, I2, INT
 
 SAMPLES = (F3, F3, F1)                                   # vessel points' positions, velocities, headings
 NODES = (I1, I1, I1, F2, F2, F1, B1, I2)                 # free, prescribed, ... (kanat.lumped.advance)
-ELEMENTS = (I1, I1, F1, F1, F1, F1, F1, F1, F1, F1, F1, I1, I1, I1, F2, F2, F1, F1, F1)
+ELEMENTS = (I1, I1, F1, F1, F1, F1, F1, F1, F1, F1, F1, I1, I1, I1, F2, F2, F1, F1, F1,
+            I1, I1, I1, F1)                          # ... and the bending triples (kanat.lumped.bending)
 RIG = (I1, I1, F3, F3, F3, F3, F3, F2, F2, F2, F2, F2, F2, I1, I1, F2)   # 6-DOF bodies (kanat.lumped.rigid)
 CONTACT = (F2, F2, F1)                                   # seabed: plane, tangents, parameters
 SEABED = (F1, F1, F1, CONTACT)

@@ -45,10 +45,10 @@ ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x co
 
 def node_graph(net) -> list[set]:
     """Each node's neighbours (itself included): the nodes its force depends on. Elements join
-    their ends; a 6-DOF body's two pseudo-nodes join each other, its fairleads and the nodes
+    their ends, bending the nodes either side of an interior node; a 6-DOF body's two pseudo-nodes join each other, its fairleads and the nodes
     next to them (the fairleads move with the body)."""
     neighbours = [{k} for k in range(net.n_nodes)]
-    for i, j in zip(net.el_i, net.el_j):
+    for i, j in zip(np.r_[net.el_i, net.bend[0]], np.r_[net.el_j, net.bend[2]]):   # bending: i-1 and i+1
         neighbours[i].add(j)
         neighbours[j].add(i)
     rigid = net.rigid

@@ -22,6 +22,7 @@ import numpy as np
 from kanat.jit import inner, kernel
 
 from kanat.lumped import kernels, rigid
+from kanat.lumped.bending import bending_forces
 from kanat.physics.contact import contact_forces
 
 EVENT_BUFFER_MIN = 1024     # closed snap events held before the kernel hands them back
@@ -224,6 +225,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         water(mid, t, cz, cu, sea, uw, aw)
     wetted(x, el_i, el_j, el[18], t, sea, bound, wet)
     kernels.element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain)
+    bending_forces(x, el[19], el[20], el[21], el[22], F)
     seabed_loads(x, v, el_i, el_j, contact, work)
     if body_node.shape[0] > 0:
         if not still:

@@ -26,6 +26,7 @@ import numpy as np
 from kanat.jit import inner, kernel
 
 from kanat.lumped import fast, kernels
+from kanat.lumped.bending import bending_blocks
 from kanat.physics.contact import contact_tangent
 
 ACCELERATION_SCALE = 1.0    # m/s^2, as kanat.lumped.implicit
@@ -44,7 +45,7 @@ def band_order(net, free_index) -> tuple[np.ndarray, int]:
     n_free = len(free_index)
     local = -np.ones(net.n_nodes, dtype=np.int64)
     local[free_index] = np.arange(n_free)
-    a, b = local[net.el_i], local[net.el_j]
+    a, b = local[np.r_[net.el_i, net.bend[0]]], local[np.r_[net.el_j, net.bend[2]]]   # bending joins i-1, i+1
     keep = (a >= 0) & (b >= 0)
     graph = sp.coo_matrix((np.ones(2 * keep.sum()), (np.r_[a[keep], b[keep]], np.r_[b[keep], a[keep]])),
                           shape=(n_free, n_free)).tocsr()
@@ -155,6 +156,25 @@ def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c
 
 
 @inner
+def bending_tangent(A, bw, position, x, el, c_stiff):
+    """The bending's Gauss-Newton blocks (:func:`kanat.lumped.bending.bending_blocks`, eq. 4) times
+    ``c_stiff`` in the band tangent."""
+    triples = el[20].shape[0]
+    if triples == 0:
+        return
+    J, K = np.empty((3, 3, 3)), np.empty((triples, 3, 3, 3, 3))
+    bending_blocks(x, el[19], el[20], el[21], el[22], J, K)
+    for p in range(triples):
+        nodes = (el[19][p], el[20][p], el[21][p])
+        for m in range(3):
+            pm = position[nodes[m]]
+            for n in range(3):
+                pn = position[nodes[n]]
+                if pm >= 0 and pn >= 0:
+                    band_add(A, bw, pm, pn, K[p, m, n], c_stiff)
+
+
+@inner
 def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
     """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
     (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
@@ -172,6 +192,7 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
                 band_add(A, bw, a, b, K[k], sign * c_stiff)
                 band_add(A, bw, a, b, C[k], sign * c_damp)
                 band_add(A, bw, a, b, D[k], c_damp)
+    bending_tangent(A, bw, position, x, el, c_stiff)
     free_index = nodes[0]
     for f in range(free_index.shape[0]):
         band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)

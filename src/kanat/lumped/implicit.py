@@ -25,6 +25,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.lumped import kernels
+from kanat.lumped.bending import bending_blocks
 from kanat.lumped.fast_implicit import LINE_SEARCH_HALVINGS
 from kanat.physics.contact import contact_tangent
 
@@ -94,7 +95,29 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
         Kc, Cc = np.zeros((net.n_nodes, 3, 3)), np.zeros((net.n_nodes, 3, 3))
         contact_tangent(x, v, area, bed, params, system.normal_force, system._tangent, Kc, Cc)
         node = node + (c_stiff * Kc + c_damp * Cc)[pattern.free_nodes]
-    return pattern.matrix(np.stack([diag, off, off, diag]), node)
+    return pattern.matrix(np.stack([diag, off, off, diag]), node) + c_stiff * _bending(system, x)
+
+
+def _bending(system, x):
+    """The bending's Gauss-Newton tangent (:func:`kanat.lumped.bending.bending_blocks`, eq. 4) over
+    the free DOFs, sparse."""
+    net = system.net
+    size = 3 * len(system.free_index)
+    before, node, after, k, _ = net.bend
+    if not len(node):
+        return sp.csc_matrix((size, size))
+    K = np.empty((len(node), 3, 3, 3, 3))
+    bending_blocks(x, before, node, after, k, np.empty((3, 3, 3)), K)
+    dof = -np.ones(net.n_nodes, dtype=np.int64)
+    dof[system.free_index] = np.arange(len(system.free_index))
+    nodes = dof[np.stack([before, node, after], -1)]                    # (triples, 3)
+    r3 = np.arange(3)
+    rows = 3 * nodes[:, :, None, None, None] + r3[None, None, None, :, None]
+    cols = 3 * nodes[:, None, :, None, None] + r3[None, None, None, None, :]
+    keep = np.broadcast_to((nodes[:, :, None] >= 0) & (nodes[:, None, :] >= 0), (len(node), 3, 3))
+    keep = np.broadcast_to(keep[..., None, None], K.shape)
+    rows, cols = np.broadcast_to(rows, K.shape), np.broadcast_to(cols, K.shape)
+    return sp.csc_matrix((K[keep], (rows[keep], cols[keep])), shape=(size, size))
 
 
 def _body_damping(system, t, x, v):

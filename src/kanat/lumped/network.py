@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import CaseError, Problem
+from kanat.lumped.bending import bending_triples
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.model.paths import key_path
@@ -91,6 +92,8 @@ class Network:
     segment_cable, cable_names, cable_first_element : per output segment / cable
     names : dict
         Node of each named body, point and shared end.
+    bend : tuple (before, node, after, k, l)
+        The interior nodes with bending stiffness (:func:`kanat.lumped.bending.bending_triples`).
     """
 
     free: np.ndarray
@@ -144,6 +147,7 @@ class Network:
     cable_names: list
     cable_first_element: np.ndarray
     names: dict = field(default_factory=dict)
+    bend: tuple = field(default_factory=lambda: bending_triples(*[np.zeros(0)] * 5))
 
     @property
     def n_nodes(self) -> int:
@@ -407,7 +411,7 @@ def build_network(case) -> Network:
 
 
 def _element_arrays(case, rows, laws, rho, g):
-    cols = {k: [] for k in ("i", "j", "L", "m", "ma", "mat", "w", "disp", "buoy", "d", "cn", "ct", "stretch",
+    cols = {k: [] for k in ("i", "j", "L", "m", "EI", "ma", "mat", "w", "disp", "buoy", "d", "cn", "ct", "stretch",
                             "c", "law", "type")}
     for nodes, cable, grid in rows:
         for k in range(len(grid.s) - 1):
@@ -421,6 +425,7 @@ def _element_arrays(case, rows, laws, rho, g):
                 cn = 0.5 * rho * lt.diameter * lt.drag_normal
                 ct = 0.5 * rho * math.pi * lt.diameter * lt.drag_tangential
             values = {"i": nodes[k], "j": nodes[k + 1], "L": grid.s[k + 1] - grid.s[k], "m": lt.mass,
+                      "EI": lt.bending_stiffness,
                       "ma": lt.added_mass, "mat": lt.added_mass_tangential, "w": weight,
                       "disp": (lt.mass * g - weight) / g, "buoy": lt.mass * g - weight, "d": lt.diameter,
                       "cn": cn, "ct": ct, "stretch": 0.0 if dimensional else 1.0, "c": lt.axial_damping,
@@ -506,4 +511,6 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
         rigid=rigid,
         node_cable=np.array(names, dtype=object), node_s=np.array(s), node_index=np.array(index, np.int64),
         segment_cable=np.array(seg_cable, dtype=object), cable_names=[c.name for c in case.cables],
-        cable_first_element=np.array(first_el, dtype=np.int64), names=dict(b.named))
+        cable_first_element=np.array(first_el, dtype=np.int64), names=dict(b.named),
+        bend=bending_triples(arr("i", np.int64), arr("j", np.int64), np.array(seg_cable, dtype=object), arr("EI"),
+                             arr("L")))

@@ -19,6 +19,9 @@ With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` is 
 4), and the regularized friction at rest adds the real rate ``mu W_n / (v_s m_n)`` for the node's
 weight ``W_n`` (:mod:`kanat.physics.contact`); they compete in the maximum of eq. (5).
 
+Bending stiffness adds the highest frequency of the discrete fourth difference,
+``omega = 4 sqrt(k / (m l^2))`` per interior node (:func:`kanat.lumped.bending.bending_frequency`).
+
 ``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
 imaginary axis; RK4's region reaches as far along the negative real axis, 2.79). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
 """
@@ -30,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.lumped import entries
+from kanat.lumped.bending import bending_frequency
 from kanat.physics.contact import SLIP_VELOCITY
 
 SAFETY = 0.8                 # margin below the stability limit
@@ -100,6 +104,8 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     rate = spectral_radius(omega, 2.0 * net.el_damping / net.el_length * pair)
     k = int(np.argmax(rate))
     top = float(rate[k]) if len(rate) else 0.0
+    before, node, after, k, span = net.bend
+    top = max(top, bending_frequency(node, k, span, np.where(inv > 0, 1.0 / np.maximum(inv, 1e-300), 0.0)))
     if seabed is not None:
         area = net.node_contact_area * (inv > 0)
         contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)

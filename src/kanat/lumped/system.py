@@ -27,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.lumped import entries, kernels
+from kanat.lumped.bending import bending_forces
 from kanat.physics import contact
 from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.motion_samples import motion_series, point_series
@@ -90,7 +91,7 @@ class LumpedSystem:
         self.el_args = (net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, net.el_weight,
                         net.el_displaced, net.el_cn, net.el_ct, net.el_stretch_drag, net.el_damping, net.el_law,
                         net.law_kind, net.law_n, net.law_x, net.law_y, net.el_added_tangential, net.el_buoyancy,
-                        net.el_diameter)
+                        net.el_diameter, *net.bend[:4])
         self.contact = self._contact(case, net)
         self.normal_force, self._tangent = np.zeros(n), np.zeros((n, 3))
         self.rig = net.rigid.arrays()
@@ -271,6 +272,8 @@ class LumpedSystem:
         kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, *self.el_args[:16],
                        self._F, self._M, self.tension, self.strain, self.wetted(t, x), *self.el_args[16:18])
         self.evaluations += 1
+        if len(net.bend[1]):
+            bending_forces(x, *net.bend[:4], self._F)
         area, bed, params, laid = self.contact
         if len(area):
             entries.contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, self._tangent, self._F,

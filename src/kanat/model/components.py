@@ -111,9 +111,10 @@ class LineType(KanatModel):
                           "statics uses axial_stiffness); default: linear axial_stiffness * strain")
     bending_stiffness: float = quantity(
         0.0, unit="N m^2", ge=0,
-        description="bending stiffness EI (continuum model, 2-D and 3-D runs; no torsion); 0: a perfectly "
-                    "flexible line. The cable's ends and inline bodies are pinned (moment-free), a free end "
-                    "carries no shear either; no case key clamps an end")
+        description="bending stiffness EI (continuum model, 2-D and 3-D runs, and lumped model: moments "
+                    "from the turning angle at interior nodes; no torsion); 0: a perfectly flexible line. "
+                    "The cable's ends and inline bodies are pinned (moment-free), a free end carries no "
+                    "shear either; no case key clamps an end")
     max_strain: float | None = quantity(
         None, unit="-", gt=0, le=1,
         description="largest strain the line may take (a limit checked on results); None: "
