@@ -153,3 +153,34 @@ def test_the_compiled_runs_bend_as_the_python_path_does(tmp_path):
     np.testing.assert_allclose(fused.position.values, python.position.values, rtol=0, atol=1e-9)
     assert implicit.attrs["newton_iterations_mean"] < 3.0
     np.testing.assert_allclose(implicit.position.values[-1], fused.position.values[-1], atol=5e-3)
+
+
+def tether(tmp_path, bending_stiffness):
+    """A 10 m tether with EI from an anchor in 20 m of water to a buoy (20 N up) in a 0.2 m/s current."""
+    case = {"name": "tether", "model": "statics", "environment": {"depth": 20.0, "current": {"velocity": [0.2, 0, 0]}},
+            "line_types": {"teth": {"diameter": 0.02, "mass": 0.5, "axial_stiffness": 1e6,
+                                    "bending_stiffness": bending_stiffness, "drag_normal": 1.2,
+                                    "drag_tangential": 0.01}},
+            "bodies": {"buoy": {"mass": 5.0, "net_buoyancy": 20.0, "drag_area": 0.05}},
+            "cables": [{"name": "tether", "line_type": "teth", "length": 10.0, "segments": 40,
+                        "from": {"anchor": [0, 0, -20.0]}, "to": "buoy"}],
+            "simulation": {"duration": 120.0, "output_dt": 10.0, "dt": 0.2}}
+    path = tmp_path / "tether.yaml"
+    path.write_text(yaml.safe_dump(case, sort_keys=False))
+    return load_case(path)
+
+
+def test_statics_gives_the_shape_a_run_with_bending_settles_to(tmp_path):
+    """``kanat statics`` of a tether with EI 100 N m^2 (the lumped equilibrium, which includes the
+    bending) against the continuum model's run settled to rest: within 2 mm, where the flexible
+    shape's buoy lies 0.35 m away; a method that finds flexible lines says so instead."""
+    case = tether(tmp_path, 100.0)
+    steady = api.solve_statics(case)
+    with quiet():
+        settled = api.run(case.replace({"model": "continuum"})).dataset.position.values
+    assert np.abs(settled[-1] - settled[-2]).max() < 1e-9                        # at rest
+    assert np.abs(steady.position.values - settled[-1]).max() < 2e-3
+    flexible = api.solve_statics(tether(tmp_path, 0.0)).position.values
+    assert np.abs(flexible[-1] - settled[-1]).max() > 0.3
+    with pytest.raises(Exception, match="bending_stiffness; use method auto"):
+        api.solve_statics(case, method="shooting")

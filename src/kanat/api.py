@@ -84,13 +84,13 @@ def _statics(case: Case, method: str = "auto"):
     """The statics of ``case`` as the table its file holds (no xarray: ``kanat statics`` writes it
     directly), the summary, and the solver's result."""
     from kanat.io.statics_table import statics_table
-    from kanat.statics import NeedsDrag
+    from kanat.statics import NeedsLumped
     from kanat.statics import solve_statics as solve
 
     start = time.perf_counter()
     try:
         result = solve(case, method=method)
-    except NeedsDrag as reason:          # a network in a current: the catenary carries no drag
+    except NeedsLumped as reason:        # a network in a current (the catenary carries no drag), bending
         result = _lumped_statics(case, str(reason))
     return statics_table(result, wall_time_s=time.perf_counter() - start), result.summary(), result
 

@@ -398,9 +398,8 @@ FEATURES: tuple[Feature, ...] = (
     Feature("seabed_slope", "a sloping seabed", _seabed(lambda s: s.slope_deg != 0, "slope_deg"),
             statics=YES, continuum=YES, lumped=YES),
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),
-            statics=IGNORED, continuum=YES, lumped=YES,
-            note={"statics": "statics finds the steady shape of a perfectly flexible line (the continuum "
-                             "and lumped models start from it and add the bending)"}),
+            statics=YES, continuum=YES, lumped=YES,
+            note={"statics": "statics solves a case with bending by the lumped model's equilibrium"}),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
             statics=IGNORED, continuum=YES, lumped=YES,
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),

@@ -8,7 +8,7 @@ bring SciPy's ``integrate`` and ``optimize``, which a dynamic run starting from
 from kanat.statics.problem import BodyEnd, CableBVP, FixedEnd, FlowProfile, LineProperties
 from kanat.statics.solution import CableSolution
 
-__all__ = ["METHODS", "NeedsDrag", "BodyEnd", "CableBVP", "CableSolution", "FixedEnd", "FlowProfile", "LineProperties",
+__all__ = ["METHODS", "NeedsDrag", "NeedsLumped", "BodyEnd", "CableBVP", "CableSolution", "FixedEnd", "FlowProfile", "LineProperties",
            "StaticsResult", "solve_cable", "solve_statics"]
 
 
@@ -17,8 +17,8 @@ def __getattr__(name):
         from kanat.statics import driver
 
         return getattr(driver, name)
-    if name == "NeedsDrag":
-        from kanat.statics.network_setup import NeedsDrag
+    if name in ("NeedsDrag", "NeedsLumped"):
+        from kanat.statics import network_setup
 
-        return NeedsDrag
+        return getattr(network_setup, name)
     raise AttributeError(f"module 'kanat.statics' has no attribute {name!r}")

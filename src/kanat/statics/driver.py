@@ -10,7 +10,7 @@ from kanat.errors import SolverError
 from kanat.model.support import has_drag, needs_network, require_supported, single_cable
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
-from kanat.statics.network_setup import NeedsDrag
+from kanat.statics.network_setup import NeedsBending, NeedsDrag
 from kanat.statics.problem import CableBVP, FixedEnd
 from kanat.statics.setup import cable_problems, vessel_velocity
 from kanat.statics.shooting import solve_shooting
@@ -147,6 +147,13 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
     if case.sphere_two_cables is not None:
         return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
     require_supported(case, "statics")
+    bent = [name for name, line in case.line_types.items() if line.bending_stiffness > 0]
+    if bent:
+        if method != "auto":
+            raise SolverError(f"method '{method}' finds perfectly flexible lines, and line type '{bent[0]}' has "
+                              "bending_stiffness; use method auto (the lumped model's equilibrium, with the "
+                              "bending)")
+        raise NeedsBending(f"line type '{bent[0]}' has bending stiffness, which the lumped equilibrium includes")
     if needs_network(case):
         if has_drag(case) and single_cable(case):
             log.debug("statics: one cable in 3-D (sections, attachments or a cross current)")

@@ -30,8 +30,17 @@ ON_SEABED = 1e-6          # an anchor within this many metres (per metre of dept
 END_FRACTION = 1e-9       # an attachment within this fraction of the length of an end loads that end
 
 
-class NeedsDrag(SolverError):
+class NeedsLumped(SolverError):
+    """The case needs what the statics solvers do not model; the front door (:mod:`kanat.api`)
+    solves it by the lumped model's equilibrium instead."""
+
+
+class NeedsDrag(NeedsLumped):
     """The case has a current or a tow speed, which the catenary lines cannot carry."""
+
+
+class NeedsBending(NeedsLumped):
+    """A line has bending stiffness, which the statics solvers leave out (perfectly flexible lines)."""
 
 
 @dataclass(frozen=True, eq=False)
