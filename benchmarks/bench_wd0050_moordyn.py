@@ -1,0 +1,172 @@
+"""MoorDyn's WD0050 chain with its fairlead driven: kanat's default scheme beside MoorDyn-C (PyPI
+``moordyn``, the ``peers`` extra), whole processes, on the same MoorDyn input file.
+
+The file is ``tests/data/moordyn/wd0050_chain.dat`` (MoorDyn's ``tests/Mooring/WD0050_Chain.txt``:
+410 m of chain, 82 segments, from an anchor 400 m away in 50 m of water to a fairlead at the
+surface; seabed ``kBot = 1e5``, ``cBot = 1e4``, friction 0.5). The fairlead moves surge
+``-4 cos(2 pi t / 12)`` m and heave ``-cos(2 pi t / 9)`` m (kanat's ``vessel.motion`` with
+``phase_deg: -90``; MoorDyn's coupled point driven with the same positions and the mean velocity
+of every 0.05 s coupling step).
+
+Each configuration runs as its own process (``kanat run case.yaml -o out.nc``; a Python process
+running MoorDyn on the file), interleaved, ``--repeats`` times; the table gives medians of the
+whole process's wall time and of the stepping alone (kanat: ``solver_time_s``; MoorDyn: its
+``Step`` calls). Accuracy: the fairlead tension's mean, range and maximum over the second half of
+the run (the last segment's tension in both codes) against MoorDyn at its file's own setting (RK2,
+1 ms). MoorDyn's faster settings count as "best MoorDyn" only within 1 % of that reference in mean
+and 3 % in range and maximum (the issue's tolerances for kanat).
+
+Run: ``python benchmarks/bench_wd0050_moordyn.py [--repeats 3] [--duration 200]``; prints the
+Markdown table kept in benchmarks/RESULTS.md.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+FILE = ROOT / "tests" / "data" / "moordyn" / "wd0050_chain.dat"
+MOTION = [{"dof": "surge", "amplitude": 4.0, "period": 12.0, "phase_deg": -90.0},
+          {"dof": "heave", "amplitude": 1.0, "period": 9.0, "phase_deg": -90.0}]
+COUPLING = 0.05
+TOLERANCE = np.array([0.01, 0.03, 0.03])    # mean, range, maximum
+
+MOORDYN_SCRIPT = """
+import json, math, sys, time
+import numpy as np, moordyn
+path, scheme, dt, duration, out = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+def disp(t):
+    return np.array([-4.0 * math.cos(2 * math.pi * t / 12.0), 0.0, -math.cos(2 * math.pi * t / 9.0)])
+system = moordyn.Create(path)
+moordyn.SetTimeScheme(system, scheme)
+moordyn.SetDt(system, dt)
+moordyn.Init(system, list(disp(0.0)), [0.0] * 3)
+line = moordyn.GetLine(system, 1)
+dc = {coupling}
+record, start = [], time.perf_counter()
+for k in range(int(round(duration / dc))):
+    t = k * dc
+    moordyn.Step(system, list(disp(t)), list((disp(t + dc) - disp(t)) / dc), t, dc)
+    if (k + 1) % 2 == 0:
+        record.append([(k + 1) * dc, moordyn.GetLineFairTen(line)])
+stepping = time.perf_counter() - start
+np.save(out, np.array(record))
+print(json.dumps({{"stepping": stepping}}))
+"""
+
+CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.002), ("MoorDyn", "RK2", 0.003),
+           ("kanat", "default", None), ("kanat", "rk4", None)]
+
+
+def kanat_case(folder: Path, scheme: str, duration: float) -> Path:
+    """The MoorDyn file imported, with the fairlead's motion; the default scheme names none."""
+    import warnings
+
+    import yaml
+    from kanat.io import load_case
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                       # the file's MoorDyn-only settings
+        case = load_case(FILE)
+    keys = {"model": "lumped", "vessel.motion": MOTION, "simulation.duration": duration,
+            "simulation.output_dt": 0.1}
+    if scheme != "default":
+        keys["simulation.scheme"] = scheme
+    case = case.replace(keys)
+    path = folder / f"kanat_{scheme}.yaml"
+    path.write_text(yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_none=True), sort_keys=False))
+    return path
+
+
+def run_kanat(case_path: Path, folder: Path):
+    import xarray as xr
+
+    out = folder / (case_path.stem + ".nc")
+    start = time.perf_counter()
+    subprocess.run([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)],
+                   capture_output=True)
+    whole = time.perf_counter() - start
+    with xr.open_dataset(out) as ds:
+        if ds.attrs["status"] != "ok":
+            return whole, float("nan"), ds.attrs["status"], {}
+        last = int(np.flatnonzero(ds.segment_cable.values == "line1")[-1])
+        series = np.column_stack([ds.time.values, ds.segment_tension.values[:, last]])
+        extra = {"dt": float(ds.attrs["dt"]), "explicit": int(ds.attrs.get("explicit_steps", 0)),
+                 "cuts": int(ds.attrs.get("step_cuts", 0))}
+        return whole, float(ds.attrs["solver_time_s"]), series, extra
+
+
+def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
+    script = folder / "moordyn_run.py"
+    script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING))
+    out = folder / f"moordyn_{scheme}_{dt}.npy"
+    copy = folder / FILE.name                      # MoorDyn writes its outputs beside its input
+    copy.write_text(FILE.read_text())
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)],
+                          check=True, capture_output=True, text=True)
+    whole = time.perf_counter() - start
+    stepping = json.loads(done.stdout.strip().splitlines()[-1])["stepping"]
+    return whole, stepping, np.load(out), {}
+
+
+def statistics(series: np.ndarray, duration: float) -> np.ndarray:
+    """Mean, range and maximum of the fairlead tension over the second half of the run."""
+    values = series[series[:, 0] >= duration / 2 - 1e-9, 1]
+    return np.array([values.mean(), np.ptp(values), values.max()])
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--duration", type=float, default=200.0)
+    args = parser.parse_args()
+    folder = Path(tempfile.mkdtemp())
+    times = {c: [] for c in CONFIGS}
+    results, extras = {}, {}
+    for _ in range(args.repeats):                                   # interleaved
+        for config in CONFIGS:
+            code, scheme, dt = config
+            if code == "kanat":
+                whole, stepping, series, extra = run_kanat(kanat_case(folder, scheme, args.duration), folder)
+            else:
+                whole, stepping, series, extra = run_moordyn(scheme, dt, args.duration, folder)
+            times[config].append((whole, stepping))
+            results[config] = statistics(series, args.duration) if not isinstance(series, str) else series
+            extras[config] = extra
+    reference = results[CONFIGS[0]]
+
+    def accurate(config) -> bool:
+        return not isinstance(results[config], str) and np.all(
+            np.abs(results[config] / reference - 1.0) <= TOLERANCE)
+
+    best = min(np.median([w for w, _ in times[c]]) for c in CONFIGS if c[0] == "MoorDyn" and accurate(c))
+    print("| code | scheme | step [s] | whole process [s] | stepping [s] | vs best MoorDyn (whole) | "
+          "mean | range | maximum |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for config in CONFIGS:
+        code, scheme, dt = config
+        whole = float(np.median([w for w, _ in times[config]]))
+        stepping = float(np.median([s for _, s in times[config]]))
+        if isinstance(results[config], str):
+            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | – | – | {results[config][:90]} | | |")
+            continue
+        diff = 100 * (results[config] / reference - 1.0)
+        extra = extras[config]
+        step = f"{extra['dt']:.4g} ({extra['explicit']} rk4 steps, {extra['cuts']} cuts)" if extra else dt
+        off = "" if code == "kanat" or accurate(config) else " (outside the tolerances: not a candidate)"
+        print(f"| {code} | {scheme} | {step} | {whole:.2f} | {stepping:.2f} | {best / whole:.2f}x{off} | "
+              f"{diff[0]:+.2f} % | {diff[1]:+.2f} % | {diff[2]:+.2f} % |")
+    print(f"\nreference (MoorDyn RK2 1 ms): fairlead tension mean {reference[0]:.0f} N, range {reference[1]:.0f} N, "
+          f"maximum {reference[2]:.0f} N over {args.duration / 2:g}-{args.duration:g} s")
+
+
+if __name__ == "__main__":
+    main()
