@@ -97,16 +97,18 @@ def test_a_moored_vessel_in_waves_agrees_with_moordyn_side_by_side(tmp_path):
                 record.append([(k + 1) * coupling] + [moordyn.GetLineFairTen(line) for line in lines])
         moordyn.Close(system)
     theirs = np.array(record)
-    case = load_case(CHAIN).replace({"vessel.motion": MOTION, "simulation.duration": duration,
-                                     "simulation.output_dt": 0.5, "simulation.scheme": "rk4"})
-    ds = api.run(case).dataset
-    assert ds.attrs["status"] == "ok"
-    last = [int(np.flatnonzero(ds.segment_cable.values == f"line{c}")[-1]) for c in (1, 2, 3)]
-    t = ds.time.values
-    window_ours = (t >= duration / 2) & (t <= duration)
-    window_theirs = theirs[:, 0] >= duration / 2
-    for c, k in enumerate(last):
-        ours = ds.segment_tension.values[window_ours, k]
-        ref = theirs[window_theirs, c + 1]
-        assert ours.mean() == pytest.approx(ref.mean(), rel=1e-2)
-        assert np.ptp(ours) == pytest.approx(np.ptp(ref), rel=5e-2)
+    for scheme in ("rk4", None):                   # rk4 at its safe step, and the default (implicit) scheme
+        case = load_case(CHAIN).replace({"vessel.motion": MOTION, "simulation.duration": duration,
+                                         "simulation.output_dt": 0.5, "simulation.scheme": scheme})
+        ds = api.run(case).dataset
+        assert ds.attrs["status"] == "ok"
+        last = [int(np.flatnonzero(ds.segment_cable.values == f"line{c}")[-1]) for c in (1, 2, 3)]
+        t = ds.time.values
+        window_ours = (t >= duration / 2) & (t <= duration)
+        window_theirs = theirs[:, 0] >= duration / 2
+        for c, k in enumerate(last):
+            ours = ds.segment_tension.values[window_ours, k]
+            ref = theirs[window_theirs, c + 1]
+            assert ours.mean() == pytest.approx(ref.mean(), rel=1e-2)
+            assert np.ptp(ours) == pytest.approx(np.ptp(ref), rel=3e-2)
+            assert ours.max() == pytest.approx(ref.max(), rel=3e-2)
