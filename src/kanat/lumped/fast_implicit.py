@@ -170,7 +170,8 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
             if a >= 0 and b >= 0:
                 band_add(A, bw, a, b, K[k], sign * c_stiff)
                 band_add(A, bw, a, b, C[k], sign * c_damp)
-                band_add(A, bw, a, b, D[k], c_damp)
+                if a == b:                                    # each end's drag on its own velocity
+                    band_add(A, bw, a, b, D[k], c_damp)
     free_index = nodes[0]
     for f in range(free_index.shape[0]):
         band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
