@@ -140,7 +140,8 @@ class LumpedModel:
         sim, system = self.case.simulation, self.system
         if sim.initial_state == "equilibrium":
             try:
-                x = equilibrium(self.net, self.case)[0]
+                start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
+                x = equilibrium(self.net, start)[0]
             except SolverError as error:
                 raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed. "
                                   "Give bodies and points a position near where they settle (a guess), or start "
