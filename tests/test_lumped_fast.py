@@ -26,12 +26,12 @@ WAVES = {"regular": {"type": "regular", "height": 3.0, "period": 6.0, "heading_d
          "jonswap": {"type": "jonswap", "hs": 2.5, "tp": 7.0, "heading_deg": 200.0, "seed": 4}}
 
 
-def network_case(waves="regular", depth=None, profile=True):
+def network_case(waves="regular", depth=None, profile=True, stretching="none", ramp=0.0):
     line = dict(diameter=0.02, mass=3.0, axial_stiffness=2e5, axial_damping=400.0, added_mass=0.4,
                 drag_normal=1.4, drag_tangential=0.03)
-    env = {"waves": WAVES[waves] if waves else None, "depth": depth,
-           "current": {"profile": [[0, 0.6, 0.2, 0], [-30, 0.3, 0.1, 0.01], [-80, 0, 0, 0]]} if profile
-           else {"velocity": [0.3, -0.1, 0.0]}}
+    env = {"waves": dict(WAVES[waves], stretching=stretching, ramp=ramp) if waves else None, "depth": depth,
+           "current": dict({"profile": [[0, 0.6, 0.2, 0], [-30, 0.3, 0.1, 0.01], [-80, 0, 0, 0]]} if profile
+                           else {"velocity": [0.3, -0.1, 0.0]}, ramp=ramp)}
     return Case.model_validate(dict(
         model="lumped", environment=env, line_types={"c": line},
         points={"p": dict(position=[-40, 0, -15], mass=5.0)},
@@ -58,10 +58,14 @@ def start(case):
     return net, system, x, v
 
 
-@pytest.mark.parametrize("waves, depth, profile", [("regular", None, True), ("jonswap", 60.0, False),
-                                                   (None, None, False)])
-def test_fused_acceleration_matches_the_system(waves, depth, profile):
-    case = network_case(waves, depth, profile)
+@pytest.mark.parametrize("waves, depth, profile, stretching, ramp", [
+    ("regular", None, True, "none", 0.0), ("jonswap", 60.0, False, "none", 0.0), (None, None, False, "none", 0.0),
+    ("regular", 60.0, True, "wheeler", 4.0), ("jonswap", None, False, "wheeler", 0.0),
+    (None, None, False, "none", 4.0)])
+def test_fused_acceleration_matches_the_system(waves, depth, profile, stretching, ramp):
+    """Also with Wheeler stretching and ramps on the waves and the current (both ramped over 4 s:
+    0.3 s and 2.7 s are inside the ramp)."""
+    case = network_case(waves, depth, profile, stretching, ramp)
     _, system, x, v = start(case)
     arrays = FusedArrays(system)
     free = system.free_index

@@ -2,30 +2,31 @@
 wave files beside it (:mod:`kanat.io.moordyn_waves`), checked against MoorDyn-C (PyPI ``moordyn``)
 run on the same files.
 
-* The translated sea against MoorDyn's own kinematics (``GetWavesKin``) at four points and eight
-  times, with MoorDyn's Wheeler stretching applied to the point's depth (kanat has none): WaveKin 7
+* The translated sea (``stretching: wheeler``, as MoorDyn) against MoorDyn's own kinematics
+  (``GetWavesKin``) at four points and eight times: WaveKin 7
   elevation, velocity and acceleration to 1e-8 m, m/s, m/s^2; WaveKin 2 and 3 (grid modes) at the
   grid's times: elevation to 1e-6 m, kinematics to 0.1 % of their largest value (MoorDyn
   interpolates them linearly on a 0.5 m grid in z). The WaveKin 7 component also against an
   independent sum (MoorDyn's documented ``|A| sin(omega t - k x + arg A)``, ``k`` by bisection).
 * The example ``examples/moordyn/waves/taut_line_in_waves.dat`` (WaveKin 7: H 4 m, T 8 s along
   +x and 1 m, 12 s at 30 deg) run by ``kanat run`` and, slow, beside MoorDyn (RK2 at 1 ms; kanat
-  RK4 at its safe step) over 48-72 s. Measured on 2026-11-28 with MoorDyn 2.7.2:
+  RK4 at its safe step) over 48-72 s. Measured on 2026-11-28 with MoorDyn 2.7.2 (kanat with the
+  importer's ``stretching: wheeler``):
 
   =============================  ==========  ==========  ========
   top tension                    kanat       MoorDyn     kanat vs
   =============================  ==========  ==========  ========
-  mean                           155.61 kN   155.56 kN   +0.03 %
-  range                          4105 N      4101 N      +0.11 %
-  first harmonic (8 s)           1813 N      1808 N      +0.29 %
-  component at 12 s              447.4 N     446.9 N     +0.11 %
-  midpoint horizontal range      0.4352 m    0.4352 m    -0.003 %
-  wave-induced mean              120.8 N     78.3 N      +54 %
+  mean                           155.565 kN  155.565 kN  +0.000 %
+  range                          4115 N      4101 N      +0.35 %
+  first harmonic (8 s)           1815 N      1808 N      +0.40 %
+  component at 12 s              448.3 N     446.9 N     +0.31 %
+  midpoint horizontal range      0.4365 m    0.4352 m    +0.31 %
+  wave-induced mean              78.9 N      78.3 N      +0.78 %
   =============================  ==========  ==========  ========
 
   Tolerances: 0.05 % on the mean, 1 % on the rest. The wave-induced mean (0.05 % of the tension)
   is where Wheeler stretching shows: MoorDyn fed the same sea unstretched (``WaveKin 1``) gives
-  119.8 N, within 3 % of kanat's (asserted).
+  119.8 N; kanat's stretched run is within 3 % of MoorDyn's own (asserted).
 * The continuum model runs a one-row component sea as the regular wave it is (same tensions).
 * Errors name the file, line and key: WaveKin 1 (set through MoorDyn's API), modes MoorDyn does
   not implement, missing and malformed wave files; Currents 1 is the current profile.
@@ -115,7 +116,7 @@ def imported_sea(path: Path):
 
 @pytest.mark.parametrize("mode", sorted(MODES))
 def test_the_imported_sea_is_moordyns(mode, tmp_path):
-    """kanat's components against MoorDyn's GetWavesKin at its stretched depth (module docstring)."""
+    """kanat's stretched components against MoorDyn's GetWavesKin (module docstring)."""
     moordyn = pytest.importorskip("moordyn")
     options, files, step = MODES[mode]
     path = write(tmp_path, options, files)
@@ -129,9 +130,9 @@ def test_the_imported_sea_is_moordyns(mode, tmp_path):
             t = k * step
             for p in POINTS:
                 u, a, eta, _ = moordyn.GetWavesKin(waves, *p)
-                stretched = np.array([[p[0], p[1], DEPTH * (p[2] + DEPTH) / (DEPTH + eta) - DEPTH]])
-                ours = (sea.elevation(p[:1], p[1:2], t)[0], sea.velocity(stretched, t)[0],
-                        sea.acceleration(stretched, t)[0])
+                point = np.array([p])
+                ours = (sea.elevation(p[:1], p[1:2], t)[0], sea.velocity(point, t)[0],
+                        sea.acceleration(point, t)[0])
                 for i, (mine, theirs) in enumerate(zip(ours, (eta, u, a))):
                     errors[i] = max(errors[i], np.max(np.abs(mine - np.asarray(theirs))))
                     scale[i] = max(scale[i], np.max(np.abs(theirs)))
@@ -147,7 +148,8 @@ def test_the_imported_sea_is_moordyns(mode, tmp_path):
 
 def test_a_component_is_moordyns_documented_sum(tmp_path):
     """One WaveKin 7 row against ``|A| sin(omega t - k (x cos b + y sin b) + arg A)`` with ``k`` from
-    ``omega^2 = g k tanh(k h)`` by bisection, and its velocity ``|A| omega cosh/sinh`` profile."""
+    ``omega^2 = g k tanh(k h)`` by bisection, and its velocity ``|A| omega cosh/sinh`` profile at the
+    Wheeler-stretched depth."""
     omega, re, im, beta = 0.9, -0.6, 0.8, 0.7
     path = write(tmp_path, "7 WaveKin\n", {"wave_frequencies.txt": f"0 0 0\n{omega} {re} {im} {beta}\n"})
     sea = imported_sea(path)
@@ -161,10 +163,12 @@ def test_a_component_is_moordyns_documented_sum(tmp_path):
             theta = omega * t - k * (x * math.cos(beta) + y * math.sin(beta)) + math.atan2(im, re)
             assert sea.elevation(np.array([x]), np.array([y]), t)[0] == pytest.approx(
                 amplitude * math.sin(theta), abs=1e-9)
-            horizontal = amplitude * omega * math.cosh(k * (z + DEPTH)) / math.sinh(k * DEPTH) * math.sin(theta)
+            eta = amplitude * math.sin(theta)
+            zs = DEPTH * (z + DEPTH) / (DEPTH + eta) - DEPTH          # Wheeler, as MoorDyn
+            horizontal = amplitude * omega * math.cosh(k * (zs + DEPTH)) / math.sinh(k * DEPTH) * math.sin(theta)
             np.testing.assert_allclose(sea.velocity(np.array([[x, y, z]]), t)[0],
                                        [horizontal * math.cos(beta), horizontal * math.sin(beta),
-                                        amplitude * omega * math.sinh(k * (z + DEPTH)) / math.sinh(k * DEPTH)
+                                        amplitude * omega * math.sinh(k * (zs + DEPTH)) / math.sinh(k * DEPTH)
                                         * math.cos(theta)], atol=1e-9)
 
 
@@ -251,7 +255,7 @@ def test_a_mean_level_and_dtwave_are_reported_not_dropped_silently(tmp_path):
     imported, found = problems(write(tmp_path, "7 WaveKin\n0.5 dtWave\n", files))
     notes = " | ".join(p.message for p in found if p.severity == "warning")
     assert "still water level by 0.3 m" in notes and "dtWave acts only with WaveKin 3" in notes
-    assert imported.data["environment"]["waves"] == {"type": "components",
+    assert imported.data["environment"]["waves"] == {"type": "components", "stretching": "wheeler",
                                                      "components": [[0.8, 1.0, 90.0, 0.0]]}
 
 
@@ -362,7 +366,10 @@ def side_by_side(tmp_path_factory):
     ours = statistics(tension[0], np.column_stack([ds.time.values, tension, ds.position.values[:, node, :]]))
     external = folder / "external.dat"
     external.write_text(path.read_text().replace("7          WaveKin", "1          WaveKin"))
-    return ours, run_moordyn(path), run_moordyn(external, sea_from_model(case.environment))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        plain = sea_from_model(case.replace({"environment.waves.stretching": "none"}).environment)
+    return ours, run_moordyn(path), run_moordyn(external, plain)
 
 
 @pytest.mark.slow
@@ -373,7 +380,9 @@ def test_the_example_in_its_waves_agrees_with_moordyn(side_by_side, quantity):
 
 
 @pytest.mark.slow
-def test_the_wave_induced_mean_differs_by_moordyns_stretching_alone(side_by_side):
+def test_the_wave_induced_mean_is_moordyns_with_stretching(side_by_side):
+    """kanat, stretched as MoorDyn (the importer's ``stretching: wheeler``), gives MoorDyn's
+    wave-induced mean; MoorDyn fed the sea unstretched gives a mean far from both."""
     ours, stretched, unstretched = side_by_side
-    assert ours["wave_mean"] == pytest.approx(unstretched["wave_mean"], rel=0.03)
+    assert ours["wave_mean"] == pytest.approx(stretched["wave_mean"], rel=0.03)
     assert stretched["wave_mean"] < 0.8 * unstretched["wave_mean"]

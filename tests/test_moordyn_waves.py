@@ -19,17 +19,18 @@ axial part is the Froude–Krylov (pressure-gradient) term ``rho A (a_w . t) t``
 Compared over 48-72 s (three periods after the start-up transient), sampled every 0.1 s: the top
 segment's tension (MoorDyn's ``FairTen``, kanat's ``segment_tension`` of the last element) —
 mean, mean less the still-water tension (the wave-induced mean), range (max - min), first
-harmonic — and the horizontal range of the midpoint node. Measured on 2026-11-27 (MoorDyn 2.7.2
-RK2 at 1 ms, kanat RK4 at its safe step, 3.6 ms; MoorDyn's RK4 at 0.5 ms gives the same figures):
+harmonic — and the horizontal range of the midpoint node. Measured on 2026-11-28 (MoorDyn 2.7.2
+RK2 at 1 ms, kanat RK4 at its safe step, 3.6 ms, each element end's drag on its own velocity;
+MoorDyn's RK4 at 0.5 ms gave the same figures):
 
 ==========================  =====================  =====================
 kanat vs MoorDyn            vertical               inclined
 ==========================  =====================  =====================
-mean top tension            152.939 kN, +0.0008 %  155.592 kN, +0.0005 %
-wave-induced mean           155.5 N, -0.37 %       105.1 N, +0.82 %
-range                       950.7 N, +0.38 %       3574 N, +0.42 %
+mean top tension            152.939 kN, +0.001 %   155.591 kN, +0.001 %
+wave-induced mean           155.4 N, -0.42 %       105.0 N, +0.79 %
+range                       950.5 N, +0.37 %       3573 N, +0.42 %
 first harmonic              396.3 N, +0.25 %       1781 N, +0.42 %
-midpoint horizontal range   0.439 m, +0.37 %       0.380 m, +0.38 %
+midpoint horizontal range   0.439 m, +0.35 %       0.380 m, +0.36 %
 ==========================  =====================  =====================
 
 Tolerances: 0.01 % on the mean, 3 % on the wave-induced mean, 1.5 % on the rest.

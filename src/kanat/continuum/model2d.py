@@ -16,6 +16,7 @@ from kanat.continuum.grid import (Grid, SeabedContact, cable_grid, elastic_law_k
 from kanat.continuum.winch import Winch
 from kanat.errors import CaseError, Problem
 from kanat.model.plane import out_of_plane
+from kanat.physics.ramp import ramp_factor
 from kanat.physics.waves import sea_from_model
 
 
@@ -78,7 +79,7 @@ class CableGrid:
 
     Subclasses have ``length``, ``segments``, ``params``, ``grid`` (a :class:`Grid` or None for a
     uniform cable), ``current_z`` (ascending heights, m) and ``current_rows`` (the current at
-    those heights, one column per component, m/s).
+    those heights, one column per component, m/s), and ``current_ramp`` (its ramp, s).
     """
 
     @property
@@ -115,9 +116,12 @@ class CableGrid:
                  and (grid is None or (not grid.junctions and not grid.bending)))
         return None if plain else np.zeros(1)
 
-    def current_at(self, z) -> np.ndarray:
-        """Current at heights ``z`` (n,): linear between rows, constant beyond -> (n, components)."""
-        return np.column_stack([np.interp(z, self.current_z, column) for column in self.current_rows.T])
+    def current_at(self, z, t: float | None = None) -> np.ndarray:
+        """Current at heights ``z`` (n,): linear between rows, constant beyond -> (n, components);
+        at time ``t`` [s] ramped (:func:`kanat.physics.ramp.ramp_factor`), at full strength when
+        ``t`` is None."""
+        scale = 1.0 if t is None else ramp_factor(t, self.current_ramp)
+        return scale * np.column_stack([np.interp(z, self.current_z, column) for column in self.current_rows.T])
 
 
 @dataclass(frozen=True)
@@ -142,6 +146,8 @@ class PlanarCable(CableGrid):
     seabed : SeabedContact or None
     winch : kanat.continuum.winch.Winch or None
         Pay-out and haul-in at the first end (:mod:`kanat.continuum.winch`).
+    current_ramp : float
+        The current's start-up ramp [s] (``environment.current.ramp``; 0: none).
     """
 
     name: str
@@ -156,6 +162,7 @@ class PlanarCable(CableGrid):
     sea: object = None
     seabed: SeabedContact | None = None
     winch: object = None
+    current_ramp: float = 0.0
 
 
 def strain_of(tension, params) -> np.ndarray:
@@ -204,7 +211,7 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                                  "vessel or an anchor")])
     plain = grid.uniform and not grid.bending and seabed is None and winch is None
     return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
-                       None if plain else grid, sea_from_model(env), seabed, winch)
+                       None if plain else grid, sea_from_model(env), seabed, winch, env.current.ramp)
 
 
 REACH = 1.1

@@ -111,7 +111,7 @@ class PlanarModel:
         cable, rho = self.cable, self.cable.params[k.RHO]
         v0, v1 = (np.asarray(v, dtype=float) for v in self.drive.velocities(state.t + dt))
         ends = [end_data(e, v, rho, np.asarray(e.force, dtype=float)) for e, v in ((cable.start, v0), (cable.end, v1))]
-        return World(CableSystem(cable.params, 2), cable.current_at(state.xz[:, 1]), np.array([0.0, 1.0]),
+        return World(CableSystem(cable.params, 2), cable.current_at(state.xz[:, 1], state.t + dt), np.array([0.0, 1.0]),
                      ends[0], ends[1], cable.ds), state.y, None
 
     def advanced(self, state, start, y, chart, dt) -> State:

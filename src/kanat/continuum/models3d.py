@@ -94,8 +94,8 @@ class SpatialModel:
         v0, v1 = (np.asarray(v, dtype=float) @ chart for v in self.velocities(state.t + dt))
         ends = [end_data(e, v, rho, np.asarray(e.force, dtype=float) @ chart) for e, v in
                 ((cable.start, v0), (cable.end, v1))]
-        return World(CableSystem(cable.params, 3), cable.current_at(state.xyz[:, 2]) @ chart, chart.T @ UP,
-                     ends[0], ends[1], cable.ds), y, chart
+        current = cable.current_at(state.xyz[:, 2], state.t + dt) @ chart
+        return World(CableSystem(cable.params, 3), current, chart.T @ UP, ends[0], ends[1], cable.ds), y, chart
 
     def advanced(self, state, start, y, chart, dt) -> SpatialState:
         """The state holding ``y`` (in ``chart``) at ``t + dt``, its rate ``(y - start) / dt``."""
@@ -144,6 +144,6 @@ def spatial_cable(case) -> SpatialCable:
     plain = grid.uniform and not grid.bending and planar.seabed is None and planar.winch is None
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows,
-                        None if plain else grid, planar.sea, planar.seabed, planar.winch)
+                        None if plain else grid, planar.sea, planar.seabed, planar.winch, planar.current_ramp)
 
 

@@ -70,6 +70,7 @@ class SpatialCable(CableGrid):
     sea: object = None
     seabed: SeabedContact | None = None
     winch: object = None
+    current_ramp: float = 0.0
 
     @property
     def nv(self) -> int:
@@ -172,9 +173,9 @@ def spatial_water(cable: SpatialCable, xyz, velocity, tangents, t: float, dt: fl
     """Nodal data (n, NENV3) in ``chart`` coordinates (:mod:`kanat.continuum.water`; global inputs)."""
     n = len(xyz)
     env = np.zeros((n, k3.NENV3))
-    water = cable.current_at(xyz[:, 2])
+    tk = kinematics_time(t, dt, coefficients)
+    water = cable.current_at(xyz[:, 2], tk)
     if waves and cable.sea is not None:
-        tk = kinematics_time(t, dt, coefficients)
         water = water + cable.sea.velocity(xyz, tk)
         env[:, k3.AX3:k3.AX3 + 3] = cable.sea.acceleration(xyz, tk) @ chart
     env[:, k3.UX3:k3.UX3 + 3] = water @ chart

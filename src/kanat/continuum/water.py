@@ -2,7 +2,8 @@
 and each node's predicted position (SPEC §2.1, §4; :mod:`kanat.continuum.kernels2d`).
 
 The water velocity is the current (a depth profile) plus the waves' orbital velocity (Airy or
-JONSWAP, :mod:`kanat.physics.waves`), its acceleration the waves' (the current is steady). Both
+JONSWAP, :mod:`kanat.physics.waves`), its acceleration the waves' (the current is steady, or ramped
+up by ``environment.current.ramp`` without the ramp's own acceleration). Both
 are taken at the node positions of the previous step (explicit in space) and at the time of the
 scheme's ``[ak]`` level, ``t_n + (1 - a_k) dt`` (implicit in time). The position predictor
 ``R = r^n + dt ((1 - ak)(1 - gamma) - gamma ak) V^n`` completes ``r^[ak] = R + gamma dt V^[ak]``
@@ -42,10 +43,10 @@ def planar_water(cable, xz: np.ndarray, velocity: np.ndarray, t: float, dt: floa
     """
     n = len(xz)
     env = np.zeros((n, k.NENV))
-    env[:, [k.UX, k.UZ]] = cable.current_at(xz[:, 1])
+    tk = kinematics_time(t, dt, coefficients)
+    env[:, [k.UX, k.UZ]] = cable.current_at(xz[:, 1], tk)
     if waves and cable.sea is not None:
         points = np.column_stack([xz[:, 0], np.zeros(n), xz[:, 1]])
-        tk = kinematics_time(t, dt, coefficients)
         env[:, [k.UX, k.UZ]] += cable.sea.velocity(points, tk)[:, [0, 2]]
         env[:, [k.AX, k.AZ]] = cable.sea.acceleration(points, tk)[:, [0, 2]]
     env[:, [k.RX, k.RZ]] = xz + predictor_weight(coefficients, dt) * velocity

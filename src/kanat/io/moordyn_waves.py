@@ -35,12 +35,14 @@ cos(arg X_M - k l) cos(w t)``, written as two components of half that amplitude 
 opposite ways; the mean ``Re X_0 / nt`` is a shift of the still water level that kanat
 cannot express (a warning gives it).
 
-Where kanat differs: MoorDyn stretches the kinematics to the instantaneous surface (Wheeler:
-a node at ``z`` takes those at ``h (z + h) / (h + eta) - h``) and, in modes 2 and 3,
-interpolates them linearly in a grid of points and times (holding them at the grid's edges);
-kanat evaluates the linear components at the node (the ``z = 0`` values above the mean
-surface). The importer says so in a warning, and warns when the structure reaches beyond the
-grid in x or y, where MoorDyn's waves stop changing along x or y.
+MoorDyn stretches the kinematics to the instantaneous surface (Wheeler: a node at ``z`` takes
+those at ``h (z + h) / (h + eta) - h``, a node above the surface those of the surface): the
+importer writes ``stretching: wheeler``, which does the same (:mod:`kanat.physics.waves` eq. 7;
+tests/test_wave_stretching.py checks it against MoorDyn's ``WaveKin 7`` to 1e-7). Where kanat
+differs: in modes 2 and 3 MoorDyn interpolates the kinematics linearly in a grid of points and
+times (holding them at the grid's edges), kanat sums the components at each node. The importer
+says so in a warning, and warns when the structure reaches beyond the grid in x or y, where
+MoorDyn's waves stop changing along x or y.
 """
 from __future__ import annotations
 
@@ -63,9 +65,9 @@ NOT_IN_MOORDYN = (4, 5, 6)
 """``WaveKin`` values MoorDyn-C defines but does not implement."""
 LEVEL_TOL = 1e-9
 """Mean level [m] below which a zero-frequency term is taken as zero."""
-STRETCHING = ("MoorDyn stretches the wave kinematics to the instantaneous surface (Wheeler); kanat "
-              "takes the linear kinematics at each node's depth (those at z = 0 above the mean "
-              "surface): nodes within a wave amplitude of the surface see different kinematics")
+GRID = ("MoorDyn interpolates its wave kinematics linearly in the points and times of water_grid.txt; "
+        "kanat sums the components at each node (both stretched to the surface, Wheeler): they differ by "
+        "the interpolation's error")
 
 
 @dataclass(frozen=True)
@@ -328,8 +330,9 @@ def _waves(reader, positions: np.ndarray) -> dict | None:
     if not rows:
         reader.warn(line, key, f"{MODE_FILES[mode][0]} holds no wave of nonzero amplitude: still water")
         return None
-    reader.warn(line, key, f"WaveKin = {mode}: {STRETCHING}")
-    return {"type": "components", "components": rows}
+    if mode in (2, 3):
+        reader.warn(line, key, f"WaveKin = {mode}: {GRID}")
+    return {"type": "components", "components": rows, "stretching": "wheeler"}
 
 
 def _mode_rows(reader, mode: int, folder: FilePath) -> tuple[list[list[float]], float, float]:

@@ -145,7 +145,8 @@ class LumpedModel:
         free = system.free_index
         if sim.initial_state == "equilibrium":
             try:
-                x, v = starting_state(self.net, self.case, system)
+                start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
+                x, v = starting_state(self.net, start, system)
             except SolverError as error:
                 raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed. "
                                   "Give bodies and points a position near where they settle (a guess), or start "

@@ -38,7 +38,7 @@ class FusedArrays:
         positions, nodal loads and masses, free flags, 6-DOF pseudo-nodes' free-local rows),
         ``el`` the element arrays, ``bodies`` (load nodes, drag, spreading, added mass, buoys,
         rigid bodies, seabed contact), ``env`` (rho, g, current table, sea, still, elevation
-        bound), ``work`` the scratch arrays.
+        bound, current ramp [s]), ``work`` the scratch arrays.
     """
 
     def __init__(self, system):
@@ -57,8 +57,9 @@ class FusedArrays:
                        system.rig if net.rigid.count else None,                     # None: pruned from the kernels
                        system.contact if len(system.contact[0]) else None)
         cz, cu = system.current.table()
-        still = system.sea is None and len(cz) == 1                  # water kinematics constant in space and time
-        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still, system.eta_bound)
+        ramp = float(system.current.ramp)
+        still = system.sea is None and len(cz) == 1 and ramp == 0.0   # water kinematics constant in space and time
+        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still, system.eta_bound, ramp)
         self.work = (np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 6)), np.zeros(m),
                      np.zeros(m), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((nl, 3)),
                      np.zeros((nl, 3)), np.zeros((nl, 3)), np.zeros((n, 3)), np.ones(m), np.zeros((nb, 2, 3)),
@@ -82,14 +83,15 @@ class FusedArrays:
 
 def sea_arrays(sea) -> tuple:
     """A :class:`kanat.physics.waves.LinearSea` (or None) as the tuple :func:`fast.sea_add` takes;
-    ``depth <= 0`` stands for deep water."""
+    ``depth <= 0`` stands for deep water, then 1.0 for Wheeler stretching (0.0 none) and the ramp [s]."""
     if sea is None:
         empty = np.zeros(0)
-        return empty, empty, empty, empty, empty, empty, 0.0, empty
+        return empty, empty, empty, empty, empty, empty, 0.0, empty, 0.0, 0.0
     depth = 0.0 if sea.depth is None else float(sea.depth)
     inv = 1.0 / (1.0 - np.exp(-2.0 * sea.k * depth)) if depth > 0 else np.ones_like(sea.k)
     return (np.asarray(sea.amplitude, float), np.asarray(sea.omega, float), np.asarray(sea.k, float),
-            np.cos(sea.direction), np.sin(sea.direction), np.asarray(sea.phase, float), depth, inv)
+            np.cos(sea.direction), np.sin(sea.direction), np.asarray(sea.phase, float), depth, inv,
+            1.0 if sea.stretching == "wheeler" else 0.0, float(sea.ramp))
 
 
 def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -24,8 +24,8 @@ ELEMENTS = (I1, I1, F1, F1, F1, F1, F1, F1, F1, F1, F1, I1, I1, I1, F2, F2, F1, 
 RIG = (I1, I1, F3, F3, F3, F3, F3, F2, F2, F2, F2, F2, F2, I1, I1, F2)   # 6-DOF bodies (kanat.lumped.rigid)
 CONTACT = (F2, F2, F1)                                   # seabed: plane, tangents, parameters
 SEABED = (F1, F1, F1, CONTACT)
-SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1)
-ENV = (FLOAT, FLOAT, F1, F2, SEA, BOOL, FLOAT)
+SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1, FLOAT, FLOAT)
+ENV = (FLOAT, FLOAT, F1, F2, SEA, BOOL, FLOAT, FLOAT)
 WORK = (F2, F2, F2, F2, F1, F1, F2, F2, F2, F2, F2, F2, F2, F1, F3, F2, F2, F1, F1, F2, F2)
 SNAP = (B1, B1, F1, F1, F1, F1, F1)
 register = partial(aot.register, module="_lumped")       # the lumped model's own extension module

@@ -30,9 +30,19 @@ EVENT_BUFFER_MIN = 1024     # closed snap events held before the kernel hands th
 
 # --- environment --------------------------------------------------------------------------
 @inner
-def current_at(z, cz, cu, u, p):
-    """Set ``u[p]`` to the current at height ``z`` from a piecewise-linear profile (``cz``
-    ascending, ``cu`` (k, 3)); constant beyond the ends (as ``np.interp``)."""
+def ramp_at(t, duration):
+    """The half-cosine ramp of :func:`kanat.physics.ramp.ramp_factor` (its twin)."""
+    if duration <= 0.0 or t >= duration:
+        return 1.0
+    if t <= 0.0:
+        return 0.0
+    return 0.5 * (1.0 - math.cos(math.pi * t / duration))
+
+
+@inner
+def current_at(z, cz, cu, scale, u, p):
+    """Set ``u[p]`` to ``scale`` times the current at height ``z`` from a piecewise-linear profile
+    (``cz`` ascending, ``cu`` (k, 3)); constant beyond the ends (as ``np.interp``)."""
     n = cz.shape[0]
     i, w = 0, 0.0
     if n > 1 and z >= cz[n - 1]:
@@ -42,13 +52,32 @@ def current_at(z, cz, cu, u, p):
             i += 1
         w = (z - cz[i]) / (cz[i + 1] - cz[i])
     for r in range(3):
-        u[p, r] = cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0)
+        u[p, r] = scale * (cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0))
+
+
+@inner
+def stretched(x, y, z, t, sea):
+    """The height whose kinematics the point ``(x, y, z)`` takes (waves eq. 7; ``z`` itself
+    without stretching)."""
+    depth, wheeler = sea[6], sea[8]
+    if wheeler <= 0.0:
+        return z
+    eta = sea_elevation(x, y, t, sea)
+    if z > eta:
+        return 0.0
+    if depth <= 0.0:
+        return z - eta
+    return depth * (z + depth) / (depth + eta) - depth
 
 
 @inner
 def sea_add(x, y, z, t, sea, u, a, p):
-    """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5)."""
-    amp, omega, k, cosd, sind, phase, depth, inv = sea
+    """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5,
+    stretched by eq. 7 and ramped by eq. 8)."""
+    amp, omega, k, cosd, sind, phase, depth, inv = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5], sea[6], sea[7]
+    ramp = ramp_at(t, sea[9])
+    if amp.shape[0] > 0:
+        z = stretched(x, y, z, t, sea)
     for j in range(amp.shape[0]):
         theta = k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j]
         if depth <= 0.0:
@@ -59,7 +88,7 @@ def sea_add(x, y, z, t, sea, u, a, p):
             below = math.exp(-2.0 * k[j] * (zc + depth))
             scale = math.exp(k[j] * zc) * inv[j]
             c, s = scale * (1.0 + below), scale * (1.0 - below)
-        aw, aw2 = amp[j] * omega[j], amp[j] * omega[j] * omega[j]
+        aw, aw2 = ramp * amp[j] * omega[j], ramp * amp[j] * omega[j] * omega[j]
         ct, st = math.cos(theta), math.sin(theta)
         u[p, 0] += c * ct * aw * cosd[j]
         u[p, 1] += c * ct * aw * sind[j]
@@ -71,19 +100,21 @@ def sea_add(x, y, z, t, sea, u, a, p):
 
 @inner
 def sea_elevation(x, y, t, sea):
-    """Surface elevation at ``(x, y)`` (waves eq. 2)."""
+    """Surface elevation at ``(x, y)`` (waves eq. 2, ramped by eq. 8)."""
     amp, omega, k, cosd, sind, phase = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5]
     eta = 0.0
     for j in range(amp.shape[0]):
         eta += amp[j] * math.cos(k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j])
-    return eta
+    return ramp_at(t, sea[9]) * eta
 
 
 @inner
-def water(points, t, cz, cu, sea, u, a):
-    """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current + waves."""
+def water(points, t, cz, cu, current_ramp, sea, u, a):
+    """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current (ramped over
+    ``current_ramp`` seconds) + waves."""
+    scale = ramp_at(t, current_ramp)
     for p in range(points.shape[0]):
-        current_at(points[p, 2], cz, cu, u, p)
+        current_at(points[p, 2], cz, cu, scale, u, p)
         for r in range(3):
             a[p, r] = 0.0
         sea_add(points[p, 0], points[p, 1], points[p, 2], t, sea, u, a, p)
@@ -200,7 +231,7 @@ def rigid_water_and_loads(t, rig, env, work):
         for r in range(3):
             rx[b, r] = x[ref[b], r]
         reta[b] = sea_elevation(rx[b, 0], rx[b, 1], t, sea) if env[6] > 0.0 else 0.0
-    water(rx, t, cz, cu, sea, ru, ra)
+    water(rx, t, cz, cu, env[7], sea, ru, ra)
     rigid.rigid_accelerations(x, v, F, M, ru, ra, reta, rho, rig, acc)
 
 
@@ -213,7 +244,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     x, v, F, M, T, strain, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7], \
         work[8]
     bx, bu, ba, wet = work[9], work[10], work[11], work[13]
-    rho, g, cz, cu, sea, still, bound = env
+    rho, g, cz, cu, sea, still, bound, current_ramp = env
     body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height, rig, contact = bodies
     place(y, vpos, vvel, nodes, x, v)
     place_rigid(x, v, rig)
@@ -222,7 +253,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         for k in range(el_i.shape[0]):
             for r in range(3):
                 mid[k, r] = 0.5 * (x[el_i[k], r] + x[el_j[k], r])
-        water(mid, t, cz, cu, sea, uw, aw)
+        water(mid, t, cz, cu, current_ramp, sea, uw, aw)
     wetted(x, el_i, el_j, el[18], t, sea, bound, wet)
     kernels.element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain)
     bending_forces(x, el[19], el[20], el[21], el[22], F)
@@ -232,7 +263,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
             for b in range(body_node.shape[0]):
                 for r in range(3):
                     bx[b, r] = x[body_node[b], r]
-            water(bx, t, cz, cu, sea, bu, ba)
+            water(bx, t, cz, cu, current_ramp, sea, bu, ba)
         kernels.add_body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
     for b in range(buoy_node.shape[0]):
         keel = buoy_node[b]

@@ -191,7 +191,8 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
             if a >= 0 and b >= 0:
                 band_add(A, bw, a, b, K[k], sign * c_stiff)
                 band_add(A, bw, a, b, C[k], sign * c_damp)
-                band_add(A, bw, a, b, D[k], c_damp)
+                if a == b:                                    # each end's drag on its own velocity
+                    band_add(A, bw, a, b, D[k], c_damp)
     bending_tangent(A, bw, position, x, el, c_stiff)
     free_index = nodes[0]
     for f in range(free_index.shape[0]):

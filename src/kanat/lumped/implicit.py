@@ -80,7 +80,7 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
                            net.el_stretch_drag, net.el_damping, net.el_law, net.law_kind, net.law_n,
                            net.law_x, net.law_y, K, C, D)
     diag = c_stiff * K + c_damp * (C + D)
-    off = -c_stiff * K + c_damp * (D - C)
+    off = -c_stiff * K - c_damp * C                 # drag: each end's on its own velocity (D on ii, jj)
     pattern = _pattern(system)
     if system.consistent:
         B = np.empty((m, 3, 3))

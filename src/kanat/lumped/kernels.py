@@ -6,14 +6,14 @@ Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - 
     (1)  e = l / L0 - 1,   e_dot = t . (v_j - v_i) / L0                    strain, rate
     (2)  T = max(0, f(e) + C_E2 e_dot) H(e)                                tension-only law
     (3)  F_i += T t,  F_j -= T t                                           internal forces Q*
-    (4)  v_r = u_w - (v_i + v_j)/2,  v_t = (v_r . t) t,  v_n = v_r - v_t   relative flow
+    (4)  v_r = u_w - v_a,  v_t = (v_r . t) t,  v_n = v_r - v_t   relative flow at end a = i, j
     (5)  f_d = phi s (c_n |v_n| v_n + c_t |v_r . t| v_t),  s = sqrt(1+e) or 1   drag per length
     (6)  f_i = phi [(rho A + m_a) (a_w - (a_w . t) t) + (rho A + m_at) (a_w . t) t]
                                                                            fluid inertia per length:
                                                                            Froude-Krylov rho A a_w on the
                                                                            whole wave acceleration, added
                                                                            mass normal and tangential
-    (7)  F_i, F_j += (f_d + f_i - (w0 + (1 - phi) rho g A) z) L0 / 2       loads, lumped to the ends
+    (7)  F_a += (f_d(v_a) + f_i - (w0 + (1 - phi) rho g A) z) L0 / 2      loads, lumped to each end a
     (8)  M_i, M_j += (L0 / 2) (m I + phi m_a (I - t t) + phi m_at t t)     lumped mass blocks
     (9)  B = (L0 / 6) (m I + m_a (I - t t)),  [[2B, B], [B, 2B]]            consistent mass
 
@@ -21,6 +21,12 @@ Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - 
 the surface keeps its buoyancy, drag and fluid inertia only for its part below it (as
 MoorDyn's VOF); ``phi = 1`` once its top is half a diameter below the surface. ``rho A a_w`` is the pressure-gradient force
 of the undisturbed wave on the displaced volume (MoorDyn, OrcaFlex).
+Each end's half of the drag takes that end's own velocity (4), as MoorDyn's nodal drag does:
+drag on the element's mean velocity ``(v_i + v_j) / 2`` leaves the mode in which neighbouring
+nodes move opposite ways (the mesh's highest transverse mode) without hydrodynamic damping, and
+waves excite it. A jumper in regular waves (tests/test_moordyn_jumper.py, 20 segments) then rang
+at 0.6 Hz and its top tension's range came out 26 % above MoorDyn's; with each end's own
+velocity it is within 3 %, and the two discretizations converge to each other with the segments.
 The added-mass matrix is taken at the current tangent (its ``dM/dq`` terms in Lagrange's
 equations are neglected, as in MoorDyn). Each kernel has a plain NumPy twin in
 :mod:`kanat.lumped.oracle_numpy` that the tests compare it with.
@@ -129,27 +135,25 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
         T[k] = tension
         strain[k] = e
         phi = wet[k]
-        vr0 = uw[k, 0] - 0.5 * (v[i, 0] + v[j, 0])
-        vr1 = uw[k, 1] - 0.5 * (v[i, 1] + v[j, 1])
-        vr2 = uw[k, 2] - 0.5 * (v[i, 2] + v[j, 2])
-        vts = vr0 * t0 + vr1 * t1 + vr2 * t2
-        vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
         half = 0.5 * L0[k]
         s = phi * half * (np.sqrt(1.0 + e) if stretch[k] > 0.0 else 1.0)
-        normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
-        axial = s * ct[k] * abs(vts) * vts
         ats = aw[k, 0] * t0 + aw[k, 1] * t1 + aw[k, 2] * t2
         fn = phi * half * (disp[k] + ma[k])
         ft = phi * half * (disp[k] + mat[k]) * ats
-        l0 = normal * vn0 + axial * t0 + fn * (aw[k, 0] - ats * t0) + ft * t0
-        l1 = normal * vn1 + axial * t1 + fn * (aw[k, 1] - ats * t1) + ft * t1
-        l2 = normal * vn2 + axial * t2 + fn * (aw[k, 2] - ats * t2) + ft * t2 - (w[k] + (1.0 - phi) * buoy[k]) * half
-        F[i, 0] += l0 + tension * t0
-        F[i, 1] += l1 + tension * t1
-        F[i, 2] += l2 + tension * t2
-        F[j, 0] += l0 - tension * t0
-        F[j, 1] += l1 - tension * t1
-        F[j, 2] += l2 - tension * t2
+        l0 = fn * (aw[k, 0] - ats * t0) + ft * t0
+        l1 = fn * (aw[k, 1] - ats * t1) + ft * t1
+        l2 = fn * (aw[k, 2] - ats * t2) + ft * t2 - (w[k] + (1.0 - phi) * buoy[k]) * half
+        for node, sign in ((i, 1.0), (j, -1.0)):
+            vr0 = uw[k, 0] - v[node, 0]
+            vr1 = uw[k, 1] - v[node, 1]
+            vr2 = uw[k, 2] - v[node, 2]
+            vts = vr0 * t0 + vr1 * t1 + vr2 * t2
+            vn0, vn1, vn2 = vr0 - vts * t0, vr1 - vts * t1, vr2 - vts * t2
+            normal = s * cn[k] * np.sqrt(vn0 * vn0 + vn1 * vn1 + vn2 * vn2)
+            axial = s * ct[k] * abs(vts) * vts
+            F[node, 0] += l0 + normal * vn0 + axial * t0 + sign * tension * t0
+            F[node, 1] += l1 + normal * vn1 + axial * t1 + sign * tension * t1
+            F[node, 2] += l2 + normal * vn2 + axial * t2 + sign * tension * t2
         mass, added = half * (m[k] + phi * ma[k]), half * phi * (ma[k] - mat[k])
         for node in (i, j):
             M[node, 0] += mass - added * t0 * t0
@@ -299,9 +303,11 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
     """Element Jacobian blocks for the implicit scheme.
 
     ``K = d(T t)/dd`` (axial and geometric stiffness), ``C = d(T t)/d(v_j - v_i)`` (Kelvin–
-    Voigt), ``D = d f_d / d v_r`` times ``L0/4`` (drag, per end node and per end velocity),
-    each shape (m, 3, 3). Assembly: ``-dF/dx`` has ``+K`` on the diagonal blocks ``ii, jj``
-    and ``-K`` off it; the same pattern for ``C``; ``+D`` on all four blocks of ``-dF/dv``.
+    Voigt), ``D = d f_d / d v_r`` times ``L0/2`` (drag: each end's half on that end's own
+    velocity, eq. 5, so ``-dF_a/dv_a`` with ``D`` taken at the element's mean relative flow
+    ``u_w - (v_i + v_j)/2`` for both ends — exact where they move together), each shape
+    (m, 3, 3). Assembly: ``-dF/dx`` has ``+K`` on the diagonal blocks ``ii, jj`` and ``-K`` off
+    it; the same pattern for ``C``; ``+D`` on the diagonal blocks ``ii, jj`` of ``-dF/dv``.
     """
     t, dv, vn = np.empty(3), np.empty(3), np.empty(3)
     for k in range(el_i.shape[0]):
@@ -336,7 +342,7 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
                     K[k, r, q] = 0.0
                     C[k, r, q] = 0.0
                 dn = cn[k] * (speed_n * nrq + (vn[r] * vn[q] / speed_n if speed_n > 0 else 0.0))
-                D[k, r, q] = 0.25 * L0[k] * s * (dn + 2.0 * ct[k] * abs(vts) * t[r] * t[q])
+                D[k, r, q] = 0.5 * L0[k] * s * (dn + 2.0 * ct[k] * abs(vts) * t[r] * t[q])
 
 
 @kernel

@@ -43,20 +43,22 @@ def forces_numpy(net, x, v, uw, aw, node_mass, wet=None, mat=None, buoy=None):
         f[sel] = elastic_numpy(net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row],
                                np.maximum(e[sel], 0.0))[0]
     T = np.where(e > 0.0, np.maximum(0.0, f + net.el_damping * edot), 0.0)
-    vr = uw - 0.5 * (v[i] + v[j])
-    vts = np.einsum("kr,kr->k", vr, t)
-    vn = vr - vts[:, None] * t
     s = wet * np.where(net.el_stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
-    fd = s[:, None] * (net.el_cn[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
-                       + (net.el_ct * np.abs(vts) * vts)[:, None] * t)
+
+    def drag(v_end):                                  # eqs. (4)-(5) on one end's own velocity
+        vr = uw - v_end
+        vts = np.einsum("kr,kr->k", vr, t)
+        vn = vr - vts[:, None] * t
+        return s[:, None] * (net.el_cn[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
+                             + (net.el_ct * np.abs(vts) * vts)[:, None] * t)
     at = np.einsum("kr,kr->k", aw, t)[:, None] * t
     fi = wet[:, None] * ((net.el_displaced + net.el_added_mass)[:, None] * (aw - at)
                          + (net.el_displaced + mat)[:, None] * at)
-    load = (fd + fi) * (0.5 * L0)[:, None]
+    load = fi * (0.5 * L0)[:, None]
     load[:, 2] -= (net.el_weight + (1.0 - wet) * buoy) * 0.5 * L0
     F = np.array(net.node_force, dtype=float)
-    np.add.at(F, i, T[:, None] * t + load)
-    np.add.at(F, j, -T[:, None] * t + load)
+    np.add.at(F, i, T[:, None] * t + load + drag(v[i]) * (0.5 * L0)[:, None])
+    np.add.at(F, j, -T[:, None] * t + load + drag(v[j]) * (0.5 * L0)[:, None])
     eye = np.eye(3)
     tt = np.einsum("kr,kq->krq", t, t)
     blocks = (0.5 * L0)[:, None, None] * ((net.el_mass + wet * net.el_added_mass)[:, None, None] * eye

@@ -32,6 +32,7 @@ from kanat.physics import contact
 from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.motion_samples import motion_series, point_series
 from kanat.physics.seabed import seabed_of
+from kanat.physics.ramp import ramp_factor
 from kanat.physics.waves import sea_from_model
 from kanat.vessel.track import VesselTrack
 
@@ -83,7 +84,7 @@ class LumpedSystem:
         self._F, self._M = np.zeros((n, 3)), np.zeros((n, 3, 3))
         self.tension, self.strain = np.zeros(m), np.zeros(m)
         self.wet = np.ones(m)
-        self._uniform = env.current.profile is None and self.sea is None
+        self._uniform = env.current.profile is None and self.sea is None and env.current.ramp == 0.0
         self._u_uniform = np.broadcast_to(env.current.at(0.0), (m, 3)).copy()
         self._zero_m3 = np.zeros((m, 3))
         self.eta_bound = float(np.sum(self.sea.amplitude)) if self.sea is not None else 0.0
@@ -242,7 +243,7 @@ class LumpedSystem:
         """Water velocity and acceleration (current + waves) at ``points`` (k, 3)."""
         if self._uniform:
             return np.broadcast_to(self._u_uniform[0], points.shape), np.zeros(points.shape)
-        u = self.current.at(points[:, 2])
+        u = self.current.at(points[:, 2]) * ramp_factor(t, self.current.ramp)
         if self.sea is None:
             return u, np.zeros_like(u)
         return u + self.sea.velocity(points, t), self.sea.acceleration(points, t)

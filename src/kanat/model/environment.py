@@ -21,6 +21,10 @@ def _as_row(value: Any) -> Any:
 
 ProfileRow = Annotated[tuple[float, float, float, float], BeforeValidator(_as_row)]
 
+RAMP_DESCRIPTION = ("start-up ramp [s]: the half cosine r(t) = (1 - cos(pi t / ramp)) / 2 for t < ramp, "
+                    "1 after, multiplies {what}; 0: none (full strength from t = 0)")
+"""The description every ``ramp`` key shares (:mod:`kanat.physics.ramp`)."""
+
 
 class Current(KanatModel):
     """Steady current: uniform ``velocity`` or a depth ``profile`` (not both).
@@ -36,6 +40,7 @@ class Current(KanatModel):
 
     velocity: Vector3 | None = quantity(None, unit="m/s")
     profile: tuple[ProfileRow, ...] | None = quantity(None, unit="m, m/s")
+    ramp: float = quantity(0.0, unit="s", ge=0, description=RAMP_DESCRIPTION.format(what="the velocity"))
 
     @field_validator("profile")
     @classmethod
@@ -94,7 +99,19 @@ class Current(KanatModel):
         return out
 
 
-class RegularWaves(KanatModel):
+class SeaOptions(KanatModel):
+    """What every kind of sea shares: how its kinematics reach the surface, and its ramp."""
+
+    stretching: Literal["none", "wheeler"] = Field(
+        "none", description="none: each point takes the linear kinematics at its own depth (those at "
+                            "z = 0 above the mean surface); wheeler: those at z_s = h (z + h) / (h + eta) - h, "
+                            "the column under the instantaneous surface eta stretched onto the one under "
+                            "the mean surface (the surface's own above it), as MoorDyn's WaveKin 7")
+    ramp: float = quantity(0.0, unit="s", ge=0,
+                           description=RAMP_DESCRIPTION.format(what="the elevation, velocity and acceleration"))
+
+
+class RegularWaves(SeaOptions):
     """Linear (Airy) regular waves."""
 
     type: Literal["regular"] = "regular"
@@ -105,7 +122,7 @@ class RegularWaves(KanatModel):
                                               "counter-clockwise seen from above")
 
 
-class JonswapWaves(KanatModel):
+class JonswapWaves(SeaOptions):
     """Irregular waves from a JONSWAP spectrum with seeded random phases."""
 
     type: Literal["jonswap"] = "jonswap"
@@ -127,7 +144,7 @@ def _as_component(value: Any) -> Any:
 ComponentRow = Annotated[tuple[float, float, float, float], BeforeValidator(_as_component)]
 
 
-class ComponentWaves(KanatModel):
+class ComponentWaves(SeaOptions):
     """A sea given component by component: a sum of linear (Airy) waves.
 
     The elevation is ``eta = sum a cos(k (x cos b + y sin b) - omega t + phase)`` with ``k``
@@ -226,6 +243,13 @@ class Environment(KanatModel):
     waves: Waves | None = Field(
         None, description="regular (Airy) waves, irregular (JONSWAP) waves, or a sea given component "
                           "by component; none: still water")
+
+    def at_start(self) -> Environment:
+        """The environment at t = 0, where initial states are found: without the current when it is
+        ramped up (its ramp is 0 at the start), else this one."""
+        if self.current.ramp == 0.0:
+            return self
+        return self.model_copy(update={"current": Current(ramp=self.current.ramp)})
 
     @field_validator("seabed")
     @classmethod

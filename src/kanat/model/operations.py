@@ -3,7 +3,10 @@ winch on the first cable (``winch``).
 
 ``vessel.motion`` is written either as a list of harmonics
 (``[{dof: surge, amplitude: 10.0, period: 27.0, phase_deg: 0}, ...]``) or as a table
-(``{table: motion.csv}``, columns ``time, surge, sway, heave, roll, pitch, yaw``). The
+(``{table: motion.csv}``, columns ``time, surge, sway, heave, roll, pitch, yaw``). To ramp it
+up, write the harmonics as a mapping: ``{harmonics: [...], ramp: 20.0}`` (or ``{table:
+motion.csv, ramp: 20.0}``): the displacement is multiplied by the half cosine of
+:mod:`kanat.physics.ramp` and its velocity follows (``r q_dot + r' q``). The
 table's file is read when the case is loaded (:mod:`kanat.io.tables`), so the model holds
 its numbers (``rows``), never a file for a solver to open; rows may also be written inline.
 :func:`kanat.physics.motion.vessel_motion` turns either form into the 6-DOF displacement
@@ -75,6 +78,8 @@ class VesselMotion(KanatModel):
     rows : tuple of (time, surge, sway, heave, roll, pitch, yaw) or None
         [s, m, m, m, deg, deg, deg], time strictly increasing. Before the first and after
         the last row the motion holds the end values.
+    ramp : float
+        Start-up ramp [s] (0: none).
     """
 
     harmonics: tuple[HarmonicMotion, ...] = Field(
@@ -87,6 +92,11 @@ class VesselMotion(KanatModel):
     rows: tuple[TableRow, ...] | None = quantity(
         None, unit="s, m, deg", description="the table's rows [time, surge, sway, heave, roll, "
                                             "pitch, yaw] (read from 'table', or written inline)")
+    ramp: float = quantity(0.0, unit="s", ge=0,
+                           description="start-up ramp [s] (needs the mapping form: {harmonics: [...], ramp: T} "
+                                       "or {table: F, ramp: T}): the half cosine r(t) = (1 - cos(pi t / ramp)) "
+                                       "/ 2 for t < ramp, 1 after, multiplies the displacement (the velocity "
+                                       "is its derivative, r v + r' q); 0: none")
 
     @model_validator(mode="before")
     @classmethod

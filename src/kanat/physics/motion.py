@@ -12,6 +12,8 @@ Conventions (vessel axes: x forward, y port, z up; angles right-handed about the
 * a harmonic is ``A sin(omega t + phase)``, its velocity ``A omega cos(omega t + phase)``;
 * a table is interpolated linearly in time; its velocity is the slope of the interval
   holding ``t`` (the later one at a row); outside the table the end values hold, at rest;
+* a ramp of ``T`` seconds (:mod:`kanat.physics.ramp`) turns ``q, v`` into ``r q`` and
+  ``r v + (dr/dt) q``;
 * a point at offset ``r`` from the vessel origin moves to ``(surge, sway, heave) + R r``
   with ``R = Rz(yaw) Ry(pitch) Rx(roll)``; its velocity is ``v + w x (R r)`` with the
   angular velocity ``w`` of those Euler angles (:func:`angular_velocity`).
@@ -22,6 +24,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from kanat.physics.ramp import ramp_factor, ramp_rate
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 """Order of the degrees of freedom in every array of this module."""
@@ -43,12 +47,15 @@ class Harmonics:
         Angular frequency ``2 pi / period`` [rad/s].
     phase : ndarray, shape (n,)
         [rad].
+    ramp : float
+        Start-up ramp [s] (0: none).
     """
 
     dof: np.ndarray
     amplitude: np.ndarray
     omega: np.ndarray
     phase: np.ndarray
+    ramp: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -61,10 +68,13 @@ class MotionTable:
         Strictly increasing [s].
     values : ndarray, shape (k, 6)
         Displacements [m, m, m, rad, rad, rad].
+    ramp : float
+        Start-up ramp [s] (0: none).
     """
 
     time: np.ndarray
     values: np.ndarray
+    ramp: float = 0.0
 
 
 def compile_motion(motion) -> Harmonics | MotionTable | None:
@@ -80,7 +90,7 @@ def compile_motion(motion) -> Harmonics | MotionTable | None:
         rows = np.array(motion.rows, dtype=float)
         values = rows[:, 1:].copy()
         values[:, ROTATIONS] = np.radians(values[:, ROTATIONS])
-        return MotionTable(rows[:, 0].copy(), values)
+        return MotionTable(rows[:, 0].copy(), values, motion.ramp)
     if not motion.harmonics:
         return None
     dof = np.array([DOFS.index(h.dof) for h in motion.harmonics], dtype=np.int64)
@@ -88,7 +98,7 @@ def compile_motion(motion) -> Harmonics | MotionTable | None:
     amplitude = np.where(dof >= 3, np.radians(amplitude), amplitude)
     omega = np.array([2.0 * math.pi / h.period for h in motion.harmonics])
     phase = np.radians([h.phase_deg for h in motion.harmonics])
-    return Harmonics(dof, amplitude, omega, np.asarray(phase, dtype=float))
+    return Harmonics(dof, amplitude, omega, np.asarray(phase, dtype=float), motion.ramp)
 
 
 def harmonic_motion(t: float, harmonics: Harmonics) -> tuple[np.ndarray, np.ndarray]:
@@ -129,9 +139,9 @@ def motion_at(motion: Harmonics | MotionTable | None, t: float) -> tuple[np.ndar
     """
     if motion is None:
         return np.zeros(6), np.zeros(6)
-    if isinstance(motion, MotionTable):
-        return table_motion(t, motion)
-    return harmonic_motion(t, motion)
+    q, v = table_motion(t, motion) if isinstance(motion, MotionTable) else harmonic_motion(t, motion)
+    r = ramp_factor(t, motion.ramp)
+    return r * q, r * v + ramp_rate(t, motion.ramp) * q
 
 
 def rotation_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:

@@ -4,7 +4,7 @@ Same conventions and equations as :func:`kanat.physics.motion.motion_at` and
 :func:`kanat.physics.motion.rigid_point_motion` (their scalar twins, which the tests compare),
 vectorized over the times, for the lumped model's samples of every step:
 
-* ``q(t)``, ``q_dot(t)`` (k, 6) of harmonics or a table;
+* ``q(t)``, ``q_dot(t)`` (k, 6) of harmonics or a table, ramped (``r q``, ``r q_dot + r' q``);
 * points ``r`` (p, 3) fixed to the vessel move by ``(surge, sway, heave) + R r - r`` with
   velocity ``v + w x (R r)``, ``R = Rz(yaw) Ry(pitch) Rx(roll)``, ``w`` from the Euler rates.
 """
@@ -13,14 +13,21 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.physics.motion import Harmonics, MotionTable
+from kanat.physics.ramp import ramp_series
 
 
 def motion_series(motion, times) -> tuple[np.ndarray, np.ndarray]:
     """Displacement and velocity (k, 6) at ``times`` (k,) of :func:`compile_motion`'s result."""
     t = np.asarray(times, dtype=float)
-    q, v = np.zeros((len(t), 6)), np.zeros((len(t), 6))
     if motion is None:
-        return q, v
+        return np.zeros((len(t), 6)), np.zeros((len(t), 6))
+    q, v = _unramped(motion, t)
+    r, rate = ramp_series(t, motion.ramp)
+    return r[:, None] * q, r[:, None] * v + rate[:, None] * q
+
+
+def _unramped(motion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    q, v = np.zeros((len(t), 6)), np.zeros((len(t), 6))
     if isinstance(motion, MotionTable):
         time, values = motion.time, motion.values
         i = np.clip(np.searchsorted(time, t, side="right") - 1, 0, len(time) - 2)

@@ -17,6 +17,24 @@ Dalrymple 1991, *Water Wave Mechanics*, ch. 3-4)::
 of (3)-(4) at a fixed point. Kinematics above the mean surface are those at
 ``z = 0`` (constant extrapolation), below the seabed those at ``z = -h``.
 
+Wheeler stretching (``stretching="wheeler"``; Wheeler 1970, J. Petrol. Technol. 22, 359)
+maps the water column under the instantaneous surface ``eta`` onto the one under the mean
+surface: a point at height ``z <= eta`` takes the kinematics (3)-(5) at::
+
+    (7)  z_s = h (z + h) / (h + eta) - h        (deep water: z_s = z - eta)
+
+and a point above the surface those at ``z_s = 0`` (the surface's own), as MoorDyn-C's summed
+components (``WaveKin 7``) do. Without stretching (``"none"``, the default) a point takes
+those at its own ``z``.
+
+A ramp of ``T`` seconds (``ramp``) multiplies the elevation, velocity and acceleration by::
+
+    (8)  r(t) = (1 - cos(pi t / T)) / 2  for 0 <= t < T,   r(t) = 1  for t >= T
+
+(:mod:`kanat.physics.ramp`; a half cosine: ``r`` and ``dr/dt`` are continuous, 0 at the start
+and 1 and 0 at ``T``); the acceleration is the sea's times ``r``, without the ``dr/dt`` term of
+the ramped velocity's derivative. ``T = 0``: no ramp.
+
 The JONSWAP spectrum (DNV-RP-C205 §3.5.5; Hasselmann et al. 1973)::
 
     (6)  S(w) = A 5/16 Hs^2 wp^4 w^-5 exp(-5/4 (w/wp)^-4) gamma^exp(-(w - wp)^2 / (2 s^2 wp^2))
@@ -30,11 +48,15 @@ seeded generator, so a seed always gives the same sea.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from kanat.errors import KanatError
+from kanat.physics.ramp import ramp_factor
+
+STRETCHINGS = ("none", "wheeler")
+"""Ways of taking the kinematics up to the instantaneous surface (module docstring, eq. 7)."""
 
 JONSWAP_COMPONENTS = 200      # components of an irregular sea: 200 repeat after > 1 h at Tp 8 s
 JONSWAP_BAND = (0.5, 4.0)     # frequency band in multiples of the peak frequency (holds > 99.5 % of m0)
@@ -89,6 +111,10 @@ class LinearSea:
         ``a`` [m], ``omega`` [rad/s], ``k`` [rad/m], ``beta`` [rad], ``phi`` [rad].
     depth : float or None
         Water depth [m]; None: deep water.
+    stretching : str
+        ``"none"`` or ``"wheeler"`` (eq. 7).
+    ramp : float
+        Duration ``T`` [s] of the start-up ramp (eq. 8); 0: none.
     """
 
     amplitude: np.ndarray
@@ -97,6 +123,12 @@ class LinearSea:
     direction: np.ndarray
     phase: np.ndarray
     depth: float | None = None
+    stretching: str = "none"
+    ramp: float = 0.0
+
+    def __post_init__(self):
+        if self.stretching not in STRETCHINGS:
+            raise KanatError(f"unknown wave stretching '{self.stretching}'; valid: {', '.join(STRETCHINGS)}")
 
     def _theta(self, x, y, t):
         cb, sb = np.cos(self.direction), np.sin(self.direction)
@@ -104,9 +136,22 @@ class LinearSea:
                 - self.omega * t + self.phase)
 
     def elevation(self, x, y, t: float) -> np.ndarray:
-        """Surface elevation ``eta`` [m] at horizontal positions ``x, y`` (eq. 2)."""
+        """Surface elevation ``eta`` [m] at horizontal positions ``x, y`` (eq. 2, ramped by eq. 8)."""
         theta = self._theta(np.asarray(x, float), np.asarray(y, float), t)
-        return np.cos(theta) @ self.amplitude
+        return ramp_factor(t, self.ramp) * (np.cos(theta) @ self.amplitude)
+
+    def stretched(self, points, t: float) -> np.ndarray:
+        """The heights (n,) [m] whose kinematics (3)-(5) ``points`` (n, 3) take: eq. (7) with
+        Wheeler stretching, the points' own ``z`` without."""
+        p = np.atleast_2d(np.asarray(points, dtype=float))
+        if self.stretching == "none":
+            return p[:, 2]
+        eta = self.elevation(p[:, 0], p[:, 1], t)
+        if self.depth is None:
+            z = p[:, 2] - eta
+        else:
+            z = self.depth * (p[:, 2] + self.depth) / (self.depth + eta) - self.depth
+        return np.where(p[:, 2] > eta, 0.0, np.minimum(z, 0.0))
 
     def _profiles(self, z: np.ndarray):
         """``C(z)``, ``S(z)`` of eq. (5), shape (n_points, n_components), overflow-free."""
@@ -124,13 +169,13 @@ class LinearSea:
     def _parts(self, points, t):
         p = np.atleast_2d(np.asarray(points, dtype=float))
         theta = self._theta(p[:, 0], p[:, 1], t)
-        c, s = self._profiles(p[:, 2])
+        c, s = self._profiles(self.stretched(p, t))
         return theta, c, s
 
     def velocity(self, points, t: float) -> np.ndarray:
-        """Water particle velocity [m/s] at ``points`` (shape (n, 3)) (eqs. 3-4)."""
+        """Water particle velocity [m/s] at ``points`` (shape (n, 3)) (eqs. 3-4, 7-8)."""
         theta, c, s = self._parts(points, t)
-        aw = self.amplitude * self.omega
+        aw = ramp_factor(t, self.ramp) * self.amplitude * self.omega
         horizontal = (c * np.cos(theta)) * aw
         out = np.empty((theta.shape[0], 3))
         out[:, 0] = horizontal @ np.cos(self.direction)
@@ -139,9 +184,9 @@ class LinearSea:
         return out
 
     def acceleration(self, points, t: float) -> np.ndarray:
-        """Water particle acceleration ``du/dt`` at fixed points [m/s^2], shape (n, 3)."""
+        """Water particle acceleration ``du/dt`` at fixed points [m/s^2], shape (n, 3) (eqs. 7-8)."""
         theta, c, s = self._parts(points, t)
-        aw2 = self.amplitude * self.omega**2
+        aw2 = ramp_factor(t, self.ramp) * self.amplitude * self.omega**2
         horizontal = (c * np.sin(theta)) * aw2
         out = np.empty((theta.shape[0], 3))
         out[:, 0] = horizontal @ np.cos(self.direction)
@@ -225,7 +270,9 @@ def sea_from_model(environment) -> LinearSea | None:
         return None
     common = {"depth": environment.depth, "gravity": environment.gravity}
     if waves.type == "regular":
-        return regular_wave(waves.height, waves.period, waves.heading_deg, **common)
-    if waves.type == "components":
-        return component_sea(waves.components, **common)
-    return jonswap_sea(waves.hs, waves.tp, waves.gamma, waves.heading_deg, seed=waves.seed, **common)
+        sea = regular_wave(waves.height, waves.period, waves.heading_deg, **common)
+    elif waves.type == "components":
+        sea = component_sea(waves.components, **common)
+    else:
+        sea = jonswap_sea(waves.hs, waves.tp, waves.gamma, waves.heading_deg, seed=waves.seed, **common)
+    return replace(sea, stretching=waves.stretching, ramp=waves.ramp)
