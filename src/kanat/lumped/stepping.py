@@ -42,13 +42,11 @@ STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets th
 IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
                              # band LU) is worth: 8-10 on 20-100 element lines and seed 004's network,
                              # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
-STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's
-                             # WD0050 chain driven at 9 and 12 s, fairlead tension's maximum against MoorDyn's
-                             # -7.8 % at 90 steps per 9 s (0.1 s), -1.1 % at 360 (0.025 s), -0.6 % at 900
-AXIAL_PHASE = 0.2            # largest omega_1 h of the implicit default step on a line's lowest axial mode: a steep
-                             # jumper (170 m, EA 5e8 N, omega_1 24 rad/s) surged 10 m in 27 s, fairlead tension range
-                             # against MoorDyn converged: +99 % at omega_1 h = 1.2, +16 % at 0.48, +3.8 % at 0.24,
-                             # +0.9 % at 0.12
+STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's WD0050
+                             # chain driven at 9 and 12 s (friction 0.5, a chain slapping the seabed) is as accurate
+                             # at 0.1 s as at 0.025 s (fairlead tension within 0.5 % of MoorDyn) but costs 5.2 s of
+                             # CPU there (9 Newton iterations a step, 9741 steps retaken by rk4), 4.4 at 0.05 s,
+                             # 4.2 at 0.025 s
 IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
                              # 0.05-0.1 s, 5.5 on seed 004's network in waves
 
@@ -150,31 +148,8 @@ def excitation_period(system) -> float | None:
     return min(periods) if periods else None
 
 
-def lowest_axial_frequency(net) -> float:
-    """The highest of the cables' lowest axial angular frequencies [1/s]: ``pi sqrt(EA / m) / L``
-    of a string fixed at both ends, per element's law at :data:`STRAIN_REFERENCE` / 10, mass with
-    tangential added mass, over the cable's whole length (its stiffest, lightest element)."""
-    top = 0.0
-    for name in net.cable_names:
-        first = net.cable_first_element[net.cable_names.index(name)]
-        elements = first + np.arange(int(np.sum(net.segment_cable == name)))
-        length = float(np.sum(net.el_length[elements]))
-        for k in elements:
-            stiffness = entries.elastic_row(net.law_kind, net.law_n, net.law_x, net.law_y, int(net.el_law[k]),
-                                            0.1 * STRAIN_REFERENCE)[1]
-            mass = net.el_mass[k] + net.el_added_tangential[k]
-            if mass > 0 and length > 0:
-                top = max(top, math.pi * math.sqrt(stiffness / mass) / length)
-    return top
-
-
 def implicit_default(system, default: float) -> float:
     """The implicit scheme's step without ``dt``: ``default`` (``simulation.step_or_default``), or
-    less where the run is driven: :data:`STEPS_PER_PERIOD` steps per :func:`excitation_period`, and
-    at most :data:`AXIAL_PHASE` / the lines' lowest axial frequency (:func:`lowest_axial_frequency`),
-    whose oscillation a driven steep line carries into its tension."""
+    less where the run is driven: :data:`STEPS_PER_PERIOD` steps per :func:`excitation_period`."""
     period = excitation_period(system)
-    if period is None:
-        return default
-    axial = lowest_axial_frequency(system.net)
-    return min(default, period / STEPS_PER_PERIOD, AXIAL_PHASE / axial if axial > 0 else default)
+    return default if period is None else min(default, period / STEPS_PER_PERIOD)
