@@ -360,13 +360,12 @@ def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
     SolverError
         As :func:`equilibrium`.
     """
-    velocity = system.frame_velocity()
-    x = equilibrium(net, case, velocity=velocity, friction=False)[0]
+    x = equilibrium(net, case, friction=False)[0]          # in the track's frame (_solve's default)
     v = np.zeros_like(x)
-    v[:] = velocity
+    v[:] = system.frame_velocity()
     if system.motion is not None:
         delta = STARTING_DIFFERENCE
-        ahead = equilibrium(net, case, x0=x, velocity=velocity, friction=False, time=delta)[0]
-        behind = equilibrium(net, case, x0=x, velocity=velocity, friction=False, time=-delta)[0]
+        ahead = equilibrium(net, case, x0=x, friction=False, time=delta)[0]
+        behind = equilibrium(net, case, x0=x, friction=False, time=-delta)[0]
         v = (ahead - behind) / (2.0 * delta)
     return x, v
