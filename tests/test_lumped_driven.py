@@ -43,6 +43,26 @@ def fairlead_tension(ds):
     return ds.time.values, ds.segment_tension.values[:, last]
 
 
+def moordyn_fairlead_tension(moordyn, path, point, duration, coupling, dt, every=0.1):
+    """MoorDyn-C (RK2 at ``dt``) on the file ``path`` with its one coupled point at ``point(t)``, moved
+    every ``coupling`` seconds at its mean velocity over the step: rows ``(t, fairlead tension)``
+    every ``every`` seconds."""
+    record, per = [], int(round(every / coupling))
+    with quiet():
+        system = moordyn.Create(str(path))
+        moordyn.SetTimeScheme(system, "RK2")
+        moordyn.SetDt(system, dt)
+        moordyn.Init(system, list(point(0.0)), [0.0] * 3)
+        line = moordyn.GetLine(system, 1)
+        for k in range(int(round(duration / coupling))):
+            t = k * coupling
+            moordyn.Step(system, list(point(t)), list((point(t + coupling) - point(t)) / coupling), t, coupling)
+            if (k + 1) % per == 0:
+                record.append([(k + 1) * coupling, moordyn.GetLineFairTen(line)])
+        moordyn.Close(system)
+    return np.array(record)
+
+
 def test_a_chain_held_by_friction_starts_at_rest():
     """The start is an equilibrium of the run's own equations: eq. (1)'s accelerations vanish, where
     the friction-held state of statics had 4.3 m/s^2 on the laid chain (friction is regularized in
@@ -138,24 +158,10 @@ def test_the_driven_chain_agrees_with_moordyn_side_by_side(tmp_path):
     within 1 %, range and maximum within 3 % over 50-100 s (measured at 200 s: -0.03 %, +0.22 %,
     -0.46 %; docs/lumped.md)."""
     moordyn = pytest.importorskip("moordyn")
-    duration, coupling = 100.0, 0.05
+    duration = 100.0
     copy = tmp_path / WD0050.name                       # MoorDyn writes its outputs beside its input
     copy.write_text(WD0050.read_text())
-    with quiet():
-        system = moordyn.Create(str(copy))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, 0.001)
-        moordyn.Init(system, list(displacement(0.0)), [0.0] * 3)
-        line = moordyn.GetLine(system, 1)
-        record = []
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            moordyn.Step(system, list(displacement(t)), list((displacement(t + coupling) - displacement(t)) / coupling),
-                         t, coupling)
-            if (k + 1) % 2 == 0:
-                record.append([(k + 1) * coupling, moordyn.GetLineFairTen(line)])
-        moordyn.Close(system)
-    theirs = np.array(record)
+    theirs = moordyn_fairlead_tension(moordyn, copy, displacement, duration, coupling=0.05, dt=0.001)
     with quiet():
         ds = api.run(driven(duration)).dataset
     assert ds.attrs["status"] == "ok"
@@ -250,25 +256,12 @@ def test_a_steep_jumper_surged_agrees_with_moordyn_side_by_side(tmp_path):
     moordyn = pytest.importorskip("moordyn")
     path = tmp_path / "jumper.dat"
     path.write_text(JUMPER)
-    duration, coupling = 81.0, 0.002
+    duration = 81.0
 
     def surge(t):
         return np.array([-10.0 * math.cos(2 * math.pi * t / 27.0), 0.0, -5.0])
 
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, 0.0005)
-        moordyn.Init(system, list(surge(0.0)), [0.0] * 3)
-        line = moordyn.GetLine(system, 1)
-        record = []
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            moordyn.Step(system, list(surge(t)), list((surge(t + coupling) - surge(t)) / coupling), t, coupling)
-            if (k + 1) % 50 == 0:
-                record.append([(k + 1) * coupling, moordyn.GetLineFairTen(line)])
-        moordyn.Close(system)
-    theirs = np.array(record)
+    theirs = moordyn_fairlead_tension(moordyn, path, surge, duration, coupling=0.002, dt=0.0005)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         case = load_case(path).replace({"model": "lumped", "simulation.duration": duration,
