@@ -90,8 +90,9 @@ def test_table_is_complete_and_consistent():
 
 
 STATICS_KEYS = ("seabed", "seabed_friction", "seabed_slope", "sections", "attachments", "six_dof_bodies",
-                "body_fairleads", "vessel_fairleads", "point_properties")
-"""New keys that network statics models (tests/test_network_statics*.py)."""
+                "body_fairleads", "vessel_fairleads", "point_properties", "bending_stiffness")
+"""New keys that network statics models (tests/test_network_statics*.py), and bending stiffness, which
+statics solves by the lumped equilibrium (tests/test_lumped_bending.py)."""
 
 
 @pytest.mark.parametrize("name", NEW_KEYS)
@@ -237,12 +238,12 @@ def test_validate_reports_each_use_at_its_line_and_names_who_supports_it():
                                "supported by: lumped")
 
 
-def test_new_keys_say_no_model_supports_them_yet():
+def test_bending_stiffness_is_taken_by_every_model_of_cables():
     case = case_of(**{"line_types.wire.bending_stiffness": 50.0, "simulation.dimensions": 3})
     assert unsupported(case, "continuum") == []                       # bending in 2-D and 3-D continuum runs
     assert unsupported(case_of(**{"line_types.wire.bending_stiffness": 50.0}), "continuum") == []
-    with pytest.raises(CaseError):
-        require_supported(case, "lumped")
+    assert unsupported(case, "lumped") == []                          # kanat.lumped.bending
+    assert unsupported(case, "statics") == []                         # by the lumped equilibrium
 
 
 def test_seabed_contact_without_a_contact_model_is_a_warning_where_cables_reach_it():
