@@ -20,6 +20,8 @@ reported, as ``<check>: ...``):
    without a ``seabed`` block) than the contact allows: :data:`PENETRATION_MARGIN` times the
    static penetration ``w / (k d)`` of its line plus :data:`PENETRATION_FLOOR` with a
    ``seabed`` block, :data:`PENETRATION_FLOOR` without one.
+6. ``grounded``: the length resting on the seabed (a statics result's ``grounded_length``)
+   between 0 and the cable's length.
 
 The checks read a case and node arrays only, so the statics (single cables and networks), the
 lumped model's equilibrium and the dynamic models' initial states (:mod:`kanat.dynamics`) all
@@ -104,7 +106,7 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
     Verdict
     """
     warnings: list[str] = []
-    for check in (_finite, _strain, _tension, _reach, _seabed):
+    for check in (_finite, _strain, _tension, _reach, _seabed, _grounded):
         for cable in case.cables:
             if cable.name not in cables:
                 continue
@@ -132,6 +134,7 @@ class _Nodes:
         self.s = s[self.index]
         self.position = np.asarray(nodes.position, dtype=float).reshape(-1, 3)[self.index]
         self.tension = np.asarray(nodes.tension, dtype=float)[self.index]
+        self.grounded_length = float(getattr(nodes, "grounded_length", 0.0))
         ends = np.cumsum([section.length for section in cable.sections])[:-1]
         types = [case.line_types[section.line_type] for section in cable.sections]
         self.types = types
@@ -264,7 +267,7 @@ def _reach(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
         excess = distance - along * (1 + most) * (1 + RELATIVE_TOLERANCE) - tolerance
         k = int(np.argmax(excess))
         if excess[k] > 0:
-            return (f"{nodes.where(cable, k)} is {distance[k]:.4g} m from the cable's end at s = "
+            return (f"{nodes.where(cable, k)} is {distance[k]:.6g} m from the cable's end at s = "
                     f"{nodes.s[k_end]:.6g} m in {when}, but the {along[k]:.4g} m of line between them reach at "
                     f"most {along[k] * (1 + most):.4g} m stretched by {most:g}: no possible shape; try another "
                     "statics method")
@@ -296,6 +299,15 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
     return text + (f"the contact allows ({PENETRATION_MARGIN:g} x its static penetration w / (k d) + "
                    f"{PENETRATION_FLOOR * 1e3:g} mm): the cable or its body hangs through it; shorten the cable, "
                    "lighten the body or raise environment.seabed.stiffness")
+
+
+def _grounded(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
+    grounded = nodes.grounded_length
+    if 0.0 <= grounded <= cable.length * (1 + RELATIVE_TOLERANCE) + PLACEMENT_TOLERANCE:
+        return None
+    return (f"cable '{cable.name}' has {grounded:.6g} m resting on the seabed in {when}, but it is "
+            f"{cable.length:g} m long: the solver's touchdown point is off the cable; try another statics "
+            "method (method: shooting, collocation) or check the current and the loads")
 
 
 def _type_name(case, line) -> str:
