@@ -23,7 +23,9 @@ object that keeps this contract:
 5. **Status.** ``check(state, values)`` returns ``None`` when the output passes the
    model's own checks (strain within the line's range, no compression where the model
    needs tension, no node below the seabed beyond the contact model's penetration), else
-   the failure message. The loop also refuses any non-finite output.
+   the failure message. The loop also refuses any non-finite output, and checks the
+   initial state of a model built from a case (``model.case``) as a steady state
+   (:mod:`kanat.statics.steady_checks`: strain, tension, reach, seabed).
 6. **Finish.** ``final(state)`` returns ``(variables, attributes)`` written once at the end
    (snap events, counters); variables as ``name -> (dims, values)``.
 
