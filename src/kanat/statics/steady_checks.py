@@ -136,10 +136,25 @@ class _Nodes:
         self.tension = np.asarray(nodes.tension, dtype=float)[self.index]
         self.grounded_length = float(getattr(nodes, "grounded_length", 0.0))
         ends = np.cumsum([section.length for section in cable.sections])[:-1]
-        types = [case.line_types[section.line_type] for section in cable.sections]
-        self.types = types
-        self.node_type = np.searchsorted(ends, self.s, side="left")
+        self.types = [case.line_types[section.line_type] for section in cable.sections]
+        self.before = np.searchsorted(ends, self.s, side="left")     # the section ending at the node,
+        self.after = np.searchsorted(ends, self.s, side="right")     # the one starting there (the same inside)
         self.element_type = np.searchsorted(ends, 0.5 * (self.s[:-1] + self.s[1:]), side="left")
+
+    def kinder(self, score) -> tuple[np.ndarray, np.ndarray]:
+        """Per node, the smaller of ``score(line, nodes)`` (an array over the node indices ``nodes``)
+        for the line types on either side of the node, and the index of that type: a node on a
+        section boundary passes a check when either line passes it."""
+        best = np.full(len(self.s), np.inf)
+        kind = self.before.copy()
+        for side in (self.before, self.after):
+            for i, line in enumerate(self.types):
+                mine = np.flatnonzero(side == i)
+                value = np.asarray(score(line, mine), dtype=float)
+                better = value < best[mine]
+                best[mine[better]] = value[better]
+                kind[mine[better]] = i
+        return best, kind
 
     def where(self, cable, k: int) -> str:
         return f"cable '{cable.name}' node {self.index[k]} (s = {self.s[k]:.6g} m)"
@@ -199,25 +214,20 @@ def _finite(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
 
 
 def _strain(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
-    node_strain = np.zeros(len(nodes.s))
-    bound = np.zeros(len(nodes.s))
-    for i, line in enumerate(nodes.types):
-        mine = nodes.node_type == i
-        node_strain[mine] = law_strain(line, nodes.tension[mine])
-        bound[mine] = strain_bound(line)[0]
+    excess_node, kind = nodes.kinder(lambda line, k: law_strain(line, nodes.tension[k])
+                                     - strain_bound(line)[0] * (1 + RELATIVE_TOLERANCE))
     step = np.diff(nodes.s)
     chord = np.linalg.norm(np.diff(nodes.position, axis=0), axis=1)
     stretched = step > 0
     element = np.where(stretched, chord / np.where(stretched, step, 1.0) - 1.0, 0.0)
     element_bound = np.array([strain_bound(nodes.types[i])[0] for i in nodes.element_type])
-    excess_node = node_strain - bound * (1 + RELATIVE_TOLERANCE)
-    excess_element = element - element_bound * (1 + RELATIVE_TOLERANCE) if len(element) else np.zeros(1) - 1
+    excess_element = np.append(element - element_bound * (1 + RELATIVE_TOLERANCE), -np.inf)
     if max(excess_node.max(), excess_element.max()) <= 0:
         return None
     if excess_node.max() >= excess_element.max():
         k = int(np.argmax(excess_node))
-        line = nodes.types[nodes.node_type[k]]
-        measured = f"strain {node_strain[k]:.4g} (tension {nodes.tension[k]:.4g} N)"
+        line = nodes.types[kind[k]]
+        measured = f"strain {float(law_strain(line, nodes.tension[k])):.4g} (tension {nodes.tension[k]:.4g} N)"
     else:
         j = int(np.argmax(excess_element))
         line = nodes.types[nodes.element_type[j]]
@@ -233,22 +243,19 @@ def _strain(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
 
 
 def _tension(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
+    ratio, kind = nodes.kinder(lambda line, k: nodes.tension[k] / (line.breaking_load or np.inf))
     for i, line in enumerate(nodes.types):
-        if line.breaking_load is None:
-            continue
-        mine = np.flatnonzero(nodes.node_type == i)
+        mine = np.flatnonzero((kind == i) & (ratio > 1.0))
         if not len(mine):
             continue
-        k = int(mine[np.argmax(nodes.tension[mine])])
-        ratio = nodes.tension[k] / line.breaking_load
+        k = int(mine[np.argmax(ratio[mine])])
         name = _type_name(case, line)
-        text = (f"tension {nodes.tension[k] / 1e3:.4g} kN at {nodes.where(cable, k)} in {when} is {ratio:.3g} "
+        text = (f"tension {nodes.tension[k] / 1e3:.4g} kN at {nodes.where(cable, k)} in {when} is {ratio[k]:.3g} "
                 f"times the breaking load {line.breaking_load / 1e3:.4g} kN of line type '{name}'")
-        if ratio > ABSURD_BREAKING_MULTIPLE:
+        if ratio[k] > ABSURD_BREAKING_MULTIPLE:
             return (f"{text}, more than {ABSURD_BREAKING_MULTIPLE:g} times it: no line carries that; check the "
                     "cable's length, the speed, the current, the drag coefficients and the bodies' loads")
-        if ratio > 1.0:
-            warnings.append(f"{text}: the line would break")
+        warnings.append(f"{text}: the line would break")
     return None
 
 
@@ -282,10 +289,11 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
     depth = seabed.penetration(nodes.position)
     allowed = np.full(len(nodes.s), PENETRATION_FLOOR)
     if env.seabed is not None:
-        for i, line in enumerate(nodes.types):
+        def static(line, k):                       # the static penetration w / (k d), negated: the larger wins
             weight = max(line.weight_in_water_value(env.water_density, env.gravity), 0.0)
-            static = weight / (env.seabed.stiffness * line.diameter)
-            allowed[nodes.node_type == i] += PENETRATION_MARGIN * static
+            return np.full(len(k), -weight / (env.seabed.stiffness * line.diameter))
+
+        allowed -= PENETRATION_MARGIN * nodes.kinder(static)[0]
     k = int(np.argmax(depth - allowed))
     if depth[k] <= allowed[k]:
         return None
