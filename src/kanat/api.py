@@ -87,14 +87,13 @@ def _statics(case: Case, method: str = "auto"):
     from kanat.io.statics_table import statics_table
     from kanat.statics import NeedsDrag
     from kanat.statics import solve_statics as solve
-    from kanat.statics.steady_checks import check_result
 
     start = time.perf_counter()
     try:
         result = solve(case, method=method)
     except NeedsDrag as reason:          # a network in a current: the catenary carries no drag
         result = _lumped_statics(case, str(reason))
-    verdict = check_result(result)
+    verdict = result.verdict
     for warning in verdict.warnings:
         logging.getLogger("kanat").warning(warning)
     text = "\n".join([result.summary(), *(f"warning: {w}" for w in verdict.warnings)])
