@@ -460,7 +460,7 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
         return None
     nodes = nodes_by_cable(layout.static["cable"][1], layout.static["s"][1], values["position"], values["tension"])
-    verdict = check_steady(case, nodes, when="the initial state (t = 0)")
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", model=model.name)
     for warning in verdict.warnings:
         log.warning(warning)
     return verdict.failure

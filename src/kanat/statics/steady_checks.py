@@ -18,8 +18,9 @@ reported, as ``<check>: ...``):
    its cable than the arclength between them stretched to the line's limit.
 5. ``seabed``: no node deeper below the seabed (``environment.depth`` is a seabed, with or
    without a ``seabed`` block) than the contact allows: :data:`PENETRATION_MARGIN` times the
-   static penetration ``w / (k d)`` of its line plus :data:`PENETRATION_FLOOR` with a
-   ``seabed`` block, :data:`PENETRATION_FLOOR` without one.
+   static penetration ``w / (k d)`` of its line plus :data:`PENETRATION_FLOOR` where the
+   model has seabed contact (a ``seabed`` block; the continuum model has the block's defaults
+   without one), :data:`PENETRATION_FLOOR` where it has none.
 6. ``grounded``: the length resting on the seabed (a statics result's ``grounded_length``)
    between 0 and the cable's length.
 
@@ -34,6 +35,7 @@ from typing import Mapping, Protocol
 
 import numpy as np
 
+from kanat.model.environment import Seabed
 from kanat.physics.seabed import PENETRATION_FLOOR, PENETRATION_MARGIN, seabed_of
 
 ABSURD_BREAKING_MULTIPLE = 10.0
@@ -45,6 +47,9 @@ PLACEMENT_TOLERANCE = 1e-3
 the cable's length)."""
 RELATIVE_TOLERANCE = 1e-6
 """Round-off allowed on strains and on distances, as a fraction of the quantity."""
+CONTACT_BY_DEFAULT = ("continuum",)
+"""Models that always have the seabed they are told of: with ``depth`` alone, contact with the
+defaults of a ``seabed`` block (the others have none without the block)."""
 POLYNOMIAL_SAMPLES = 2001
 """Strains sampled on [0, 1] to invert a polynomial ``elastic_law``."""
 
@@ -89,7 +94,8 @@ class Verdict:
         return "ok" if self.failure is None else f"failed: {self.failure}"
 
 
-def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady state") -> Verdict:
+def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady state",
+                 model: str = "statics") -> Verdict:
     """Run the checks of the module docstring on the nodes of every cable of ``case``.
 
     Parameters
@@ -100,6 +106,9 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
         at ``s < 0``, line still on a winch's drum, are not checked).
     when : str
         Names the state in the messages (``the initial state`` for a dynamic run's).
+    model : str
+        The model that found the state: its seabed contact sets the allowance below the seabed
+        (:data:`CONTACT_BY_DEFAULT`).
 
     Returns
     -------
@@ -111,7 +120,7 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
             for cable in case.cables:
                 if cable.name not in cables:
                     continue
-                failure = check(case, cable, _Nodes(case, cable, cables[cable.name]), when, warnings)
+                failure = check(case, cable, _Nodes(case, cable, cables[cable.name], model), when, warnings)
                 if failure is not None:
                     return Verdict(f"{check.__name__[1:]}: {failure}", tuple(warnings))
     return Verdict(None, tuple(warnings))
@@ -129,7 +138,8 @@ def nodes_by_cable(cable_of_node, s, position, tension) -> dict[str, NodeArrays]
 class _Nodes:
     """A cable's node arrays with the line type of every node and element."""
 
-    def __init__(self, case, cable, nodes: CableNodes):
+    def __init__(self, case, cable, nodes: CableNodes, model: str):
+        self.model = model
         s = np.asarray(nodes.s, dtype=float)
         self.index = np.flatnonzero(s >= 0.0)             # s < 0: line still on a winch's drum
         self.s = s[self.index]
@@ -289,10 +299,11 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
         return None
     depth = seabed.penetration(nodes.position)
     allowed = np.full(len(nodes.s), PENETRATION_FLOOR)
-    if env.seabed is not None:
+    block = env.seabed if env.seabed is not None or nodes.model not in CONTACT_BY_DEFAULT else Seabed()
+    if block is not None:
         def static(line, k):                       # the static penetration w / (k d), negated: the larger wins
             weight = max(line.weight_in_water_value(env.water_density, env.gravity), 0.0)
-            return np.full(len(k), -weight / (env.seabed.stiffness * line.diameter))
+            return np.full(len(k), -weight / (block.stiffness * line.diameter))
 
         allowed -= PENETRATION_MARGIN * nodes.kinder(static)[0]
     k = int(np.argmax(depth - allowed))
@@ -301,7 +312,7 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
     floor = float(seabed.height(nodes.position[k, 0], nodes.position[k, 1]))
     text = (f"{nodes.where(cable, k)} is {depth[k]:.4g} m below the seabed (z = {nodes.position[k, 2]:.6g} m, "
             f"the seabed at z = {floor:.6g} m) in {when}, more than the {allowed[k]:.3g} m ")
-    if env.seabed is None:
+    if block is None:
         return text + ("allowed without seabed contact (environment.depth is the seabed): the cable or its body "
                        "hangs through it; shorten the cable, lighten the body, raise the speed or deepen the water, "
                        "or add environment.seabed for a line that rests on it")
