@@ -115,12 +115,12 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
     Verdict
     """
     warnings: list[str] = []
+    prepared = [(cable, _Nodes(case, cable, cables[cable.name], model)) for cable in case.cables
+                if cable.name in cables]
     with np.errstate(over="ignore", invalid="ignore"):      # a state at 1e200 m fails, it does not warn
         for check in (_finite, _strain, _tension, _reach, _seabed, _grounded):
-            for cable in case.cables:
-                if cable.name not in cables:
-                    continue
-                failure = check(case, cable, _Nodes(case, cable, cables[cable.name], model), when, warnings)
+            for cable, nodes in prepared:
+                failure = check(case, cable, nodes, when, warnings) if len(nodes.s) > 1 else None
                 if failure is not None:
                     return Verdict(f"{check.__name__[1:]}: {failure}", tuple(warnings))
     return Verdict(None, tuple(warnings))
