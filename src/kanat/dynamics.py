@@ -23,9 +23,10 @@ object that keeps this contract:
 5. **Status.** ``check(state, values)`` returns ``None`` when the output passes the
    model's own checks (strain within the line's range, no compression where the model
    needs tension, no node below the seabed beyond the contact model's penetration), else
-   the failure message. The loop also refuses any non-finite output, and checks the
-   initial state of a model built from a case (``model.case``) as a steady state
-   (:mod:`kanat.statics.steady_checks`: strain, tension, reach, seabed).
+   the failure message. The loop also refuses any non-finite output, and makes the
+   checks of a steady state that ``check`` does not make on the initial state of a model
+   built from a case (``model.case``): tension and reach
+   (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`).
 6. **Finish.** ``final(state)`` returns ``(variables, attributes)`` written once at the end
    (snap events, counters); variables as ``name -> (dims, values)``.
 
@@ -52,7 +53,7 @@ from kanat import jit
 from kanat.errors import SolverError
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
-from kanat.statics.steady_checks import check_steady, nodes_by_cable
+from kanat.statics.steady_checks import LEFT_BY_DYNAMIC_MODELS, check_steady, nodes_by_cable
 from kanat.schemes import label
 
 log = logging.getLogger(__name__)
@@ -453,14 +454,15 @@ def _emit(model, layout: Layout, observers, point: Point) -> str:
 
 
 def _initial_problem(model, layout: Layout, values: dict) -> str | None:
-    """The checks of a steady state (:mod:`kanat.statics.steady_checks`) on the initial state of a
-    model built from a case (``model.case``) whose outputs hold node positions and tensions; their
+    """The checks of a steady state that a model's ``check`` does not make
+    (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`) on the initial state of a model
+    built from a case (``model.case``) whose outputs hold node positions and tensions; their
     warnings are logged. None when it passes (or the model has no case or no such outputs)."""
     case = getattr(model, "case", None)
     if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
         return None
     nodes = nodes_by_cable(layout.static["cable"][1], layout.static["s"][1], values["position"], values["tension"])
-    verdict = check_steady(case, nodes, when="the initial state (t = 0)", model=model.name)
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS)
     for warning in verdict.warnings:
         log.warning(warning)
     return verdict.failure

@@ -18,15 +18,16 @@ reported, as ``<check>: ...``):
    its cable than the arclength between them stretched to the line's limit.
 5. ``seabed``: no node deeper below the seabed (``environment.depth`` is a seabed, with or
    without a ``seabed`` block) than the contact allows: :data:`PENETRATION_MARGIN` times the
-   static penetration ``w / (k d)`` of its line plus :data:`PENETRATION_FLOOR` where the
-   model has seabed contact (a ``seabed`` block; the continuum model has the block's defaults
-   without one), :data:`PENETRATION_FLOOR` where it has none.
+   static penetration ``w / (k d)`` of its line plus :data:`PENETRATION_FLOOR` with a
+   ``seabed`` block, :data:`PENETRATION_FLOOR` without one (statics' seabed is rigid).
 6. ``grounded``: the length resting on the seabed (a statics result's ``grounded_length``)
    between 0 and the cable's length.
 
-The checks read a case and node arrays only, so the statics (single cables and networks), the
-lumped model's equilibrium and the dynamic models' initial states (:mod:`kanat.dynamics`) all
-use this one module.
+The checks read a case and node arrays only, so the statics (single cables and networks) and the
+lumped model's equilibrium use this one module; so does the initial state of a dynamic run
+(:mod:`kanat.dynamics`), for the checks its model's own ``check()`` of every output does not
+make (:data:`LEFT_BY_DYNAMIC_MODELS`: the models check strain and the seabed with their own
+contact models).
 """
 from __future__ import annotations
 
@@ -35,7 +36,6 @@ from typing import Mapping, Protocol
 
 import numpy as np
 
-from kanat.model.environment import Seabed
 from kanat.physics.seabed import PENETRATION_FLOOR, PENETRATION_MARGIN, seabed_of
 
 ABSURD_BREAKING_MULTIPLE = 10.0
@@ -47,9 +47,10 @@ PLACEMENT_TOLERANCE = 1e-3
 the cable's length)."""
 RELATIVE_TOLERANCE = 1e-6
 """Round-off allowed on strains and on distances, as a fraction of the quantity."""
-CONTACT_BY_DEFAULT = ("continuum",)
-"""Models that always have the seabed they are told of: with ``depth`` alone, contact with the
-defaults of a ``seabed`` block (the others have none without the block)."""
+LEFT_BY_DYNAMIC_MODELS = ("tension", "reach")
+"""The checks a dynamic model's own ``check()`` does not make of its outputs (it checks strain and
+the seabed with its own contact model, the run loop finiteness): those :mod:`kanat.dynamics` adds
+at t = 0."""
 POLYNOMIAL_SAMPLES = 2001
 """Strains sampled on [0, 1] to invert a polynomial ``elastic_law``."""
 
@@ -95,7 +96,7 @@ class Verdict:
 
 
 def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady state",
-                 model: str = "statics") -> Verdict:
+                 only: tuple[str, ...] | None = None) -> Verdict:
     """Run the checks of the module docstring on the nodes of every cable of ``case``.
 
     Parameters
@@ -106,19 +107,18 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
         at ``s < 0``, line still on a winch's drum, are not checked).
     when : str
         Names the state in the messages (``the initial state`` for a dynamic run's).
-    model : str
-        The model that found the state: its seabed contact sets the allowance below the seabed
-        (:data:`CONTACT_BY_DEFAULT`).
+    only : tuple of str, optional
+        The names of the checks to make (e.g. :data:`LEFT_BY_DYNAMIC_MODELS`); None: all.
 
     Returns
     -------
     Verdict
     """
     warnings: list[str] = []
-    prepared = [(cable, _Nodes(case, cable, cables[cable.name], model)) for cable in case.cables
-                if cable.name in cables]
+    prepared = [(cable, _Nodes(case, cable, cables[cable.name])) for cable in case.cables if cable.name in cables]
+    checks = [check for check in CHECKS if only is None or check.__name__[1:] in only]
     with np.errstate(over="ignore", invalid="ignore"):      # a state at 1e200 m fails, it does not warn
-        for check in (_finite, _strain, _tension, _reach, _seabed, _grounded):
+        for check in checks:
             for cable, nodes in prepared:
                 failure = check(case, cable, nodes, when, warnings) if len(nodes.s) > 1 else None
                 if failure is not None:
@@ -138,8 +138,7 @@ def nodes_by_cable(cable_of_node, s, position, tension) -> dict[str, NodeArrays]
 class _Nodes:
     """A cable's node arrays with the line type of every node and element."""
 
-    def __init__(self, case, cable, nodes: CableNodes, model: str):
-        self.model = model
+    def __init__(self, case, cable, nodes: CableNodes):
         s = np.asarray(nodes.s, dtype=float)
         self.index = np.flatnonzero(s >= 0.0)             # s < 0: line still on a winch's drum
         self.s = s[self.index]
@@ -299,7 +298,7 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
         return None
     depth = seabed.penetration(nodes.position)
     allowed = np.full(len(nodes.s), PENETRATION_FLOOR)
-    block = env.seabed if env.seabed is not None or nodes.model not in CONTACT_BY_DEFAULT else Seabed()
+    block = env.seabed
     if block is not None:
         def static(line, k):                       # the static penetration w / (k d), negated: the larger wins
             weight = max(line.weight_in_water_value(env.water_density, env.gravity), 0.0)
@@ -332,6 +331,10 @@ def _grounded(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | No
 
 def _type_name(case, line) -> str:
     return next((name for name, other in case.line_types.items() if other is line), "?")
+
+
+CHECKS = (_finite, _strain, _tension, _reach, _seabed, _grounded)
+"""The checks in the order they are made; each named by its function's name without the ``_``."""
 
 
 def check_result(result) -> Verdict:
