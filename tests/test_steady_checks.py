@@ -274,9 +274,11 @@ def independent_checks(case, ds):
             if end.kind == "anchor":
                 assert np.linalg.norm(r[k] - end.position) <= 1e-3 + 1e-6 * cable.length
         assert np.all(np.linalg.norm(r - r[0], axis=1) <= arc * (1 + limit) + 1e-3)
-        depth = case.environment.depth
-        if depth is not None and case.environment.seabed is None:
-            assert r[:, 2].min() >= -depth - 1e-3
+        env = case.environment
+        if env.depth is not None:                                      # flat seabeds in these examples
+            w = max(line.weight_in_water_value(env.water_density, env.gravity), 0.0)
+            sink = 0.0 if env.seabed is None else 10 * w / (env.seabed.stiffness * line.diameter)
+            assert r[:, 2].min() >= -env.depth - sink - 1e-3
 
 
 TOW = st.fixed_dictionaries({
@@ -291,6 +293,11 @@ BUOY = st.fixed_dictionaries({
     "environment.depth": st.floats(100.0, 3000.0),
     "cables[0].length": st.floats(50.0, 2000.0),
 })
+
+
+LEGS = st.builds(lambda length, depth: {**{f"cables[{i}].length": length for i in range(3)},
+                                         "environment.depth": depth},
+                 st.floats(80.0, 3000.0), st.floats(50.0, 1000.0))
 
 
 def _checked(name, changes):
@@ -315,3 +322,9 @@ def test_every_ok_tow_passes_every_check(changes):
 @given(BUOY)
 def test_every_ok_subsurface_buoy_passes_every_check(changes):
     _checked("subsurface_buoy.yaml", changes)
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(LEGS)
+def test_every_ok_three_leg_mooring_passes_every_check(changes):
+    _checked("mooring_3leg.yaml", changes)
