@@ -113,6 +113,8 @@ def test_a_tension_above_the_breaking_load_is_a_warning(mooring_tension):
     outcome = statics("mooring_current.yaml", {"line_types.chain76.breaking_load": mooring_tension / 2})
     assert outcome.ok
     assert "warning: tension" in outcome.text and "2 times the breaking load" in outcome.text
+    assert "2 times the breaking load" in outcome.dataset.attrs["warnings"]
+    assert "warnings" not in statics("mooring_current.yaml").dataset.attrs
 
 
 def test_a_tension_far_above_the_breaking_load_fails(mooring_tension):

@@ -83,7 +83,8 @@ class Outcome:
 def _statics(case: Case, method: str = "auto"):
     """The statics of ``case`` as the table its file holds (no xarray: ``kanat statics`` writes it
     directly), the summary, and the solver's result. The table's ``status`` is that of the checks
-    of a steady state (:mod:`kanat.statics.steady_checks`); their warnings are logged and end the summary."""
+    of a steady state (:mod:`kanat.statics.steady_checks`); their warnings end the summary and are kept in
+    the table's ``warnings`` attribute."""
     from kanat.io.statics_table import statics_table
     from kanat.statics import NeedsDrag
     from kanat.statics import solve_statics as solve
@@ -94,10 +95,10 @@ def _statics(case: Case, method: str = "auto"):
     except NeedsDrag as reason:          # a network in a current: the catenary carries no drag
         result = _lumped_statics(case, str(reason))
     verdict = result.verdict
-    for warning in verdict.warnings:
-        logging.getLogger("kanat").warning(warning)
     text = "\n".join([result.summary(), *(f"warning: {w}" for w in verdict.warnings)])
-    return statics_table(result, wall_time_s=time.perf_counter() - start, status=verdict.status), text, result
+    table = statics_table(result, wall_time_s=time.perf_counter() - start, status=verdict.status,
+                          warnings=verdict.warnings)
+    return table, text, result
 
 
 def _lumped_statics(case: Case, reason: str):

@@ -30,6 +30,8 @@ ATTRIBUTES = {
     "status": "`ok`, or `failed: ...` saying why the run stopped (results up to then are kept); a steady state "
               "(statics, a dynamic run's t = 0) failing a check is `failed: CHECK: ...` (statics.md, \"Checks of a "
               "steady state\")",
+    "warnings": "statics: the warnings of the checks of a steady state, one a line (a tension above the breaking "
+                "load); absent when there are none",
     "Conventions": "CF conventions version the file follows",
     "dt": "time step used [s] (dynamic models)",
     "output_interval": "interval between stored outputs [s] (dynamic models)",
