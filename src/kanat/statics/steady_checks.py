@@ -151,7 +151,7 @@ class _Nodes:
         self.after = np.searchsorted(ends, self.s, side="right")     # the one starting there (the same inside)
         self.element_type = np.searchsorted(ends, 0.5 * (self.s[:-1] + self.s[1:]), side="left")
 
-    def kinder(self, score) -> tuple[np.ndarray, np.ndarray]:
+    def lenient(self, score) -> tuple[np.ndarray, np.ndarray]:
         """Per node, the smaller of ``score(line, nodes)`` (an array over the node indices ``nodes``)
         for the line types on either side of the node, and the index of that type: a node on a
         section boundary passes a check when either line passes it."""
@@ -224,7 +224,7 @@ def _finite(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
 
 
 def _strain(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
-    excess_node, kind = nodes.kinder(lambda line, k: law_strain(line, nodes.tension[k])
+    excess_node, kind = nodes.lenient(lambda line, k: law_strain(line, nodes.tension[k])
                                      - strain_bound(line)[0] * (1 + RELATIVE_TOLERANCE))
     step = np.diff(nodes.s)
     chord = np.linalg.norm(np.diff(nodes.position, axis=0), axis=1)
@@ -253,7 +253,7 @@ def _strain(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
 
 
 def _tension(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None:
-    ratio, kind = nodes.kinder(lambda line, k: nodes.tension[k] / (line.breaking_load or np.inf))
+    ratio, kind = nodes.lenient(lambda line, k: nodes.tension[k] / (line.breaking_load or np.inf))
     for i, line in enumerate(nodes.types):
         mine = np.flatnonzero((kind == i) & (ratio > 1.0))
         if not len(mine):
@@ -304,7 +304,7 @@ def _seabed(case, cable, nodes: _Nodes, when: str, warnings: list) -> str | None
             weight = max(line.weight_in_water_value(env.water_density, env.gravity), 0.0)
             return np.full(len(k), -weight / (block.stiffness * line.diameter))
 
-        allowed -= PENETRATION_MARGIN * nodes.kinder(static)[0]
+        allowed -= PENETRATION_MARGIN * nodes.lenient(static)[0]
     k = int(np.argmax(depth - allowed))
     if depth[k] <= allowed[k]:
         return None
