@@ -330,3 +330,19 @@ def test_every_ok_subsurface_buoy_passes_every_check(changes):
 @given(LEGS)
 def test_every_ok_three_leg_mooring_passes_every_check(changes):
     _checked("mooring_3leg.yaml", changes)
+
+
+def test_a_node_on_a_section_boundary_passes_when_either_line_does():
+    """lazy_wave.yaml's riser: flowline to s = 230 m, buoyant modules to 330 m; the breaking loads
+    set so that a tension passes one line type and fails the other."""
+    case = load_case(EXAMPLES / "lazy_wave.yaml").replace({"line_types.flowline.breaking_load": 1e4,
+                                                           "line_types.buoyant.breaking_load": 1e6})
+    s = np.concatenate([np.linspace(0.0, 230.0, 24), np.linspace(240.0, 330.0, 10), np.linspace(336.0, 490.0, 16)])
+    position = np.column_stack([-400.0 + s * 300.0 / 490.0, 0 * s, -100.0 + s * 90.0 / 490.0])   # a slack chord
+    tension = np.zeros(len(s))
+    tension[23] = 5e5                                     # at s = 230 m: 50 x the flowline's, 0.5 x the modules'
+    assert check_steady(case, {"riser": NodeArrays(s, position, tension)}).failure is None
+    tension[22] = 5e5                                     # at s = 220 m, inside the flowline: 50 times it
+    failure = check_steady(case, {"riser": NodeArrays(s, position, tension)}).failure
+    assert failure.startswith("tension: tension 500 kN at cable 'riser' node 22 (s = 220 m)")
+    assert "is 50 times the breaking load 10 kN of line type 'flowline'" in failure
