@@ -82,7 +82,9 @@ class Outcome:
 
 def _statics(case: Case, method: str = "auto"):
     """The statics of ``case`` as the table its file holds (no xarray: ``kanat statics`` writes it
-    directly), the summary, and the solver's result."""
+    directly), the summary, and the solver's result. The table's ``status`` is that of the checks
+    of a steady state (:mod:`kanat.statics.steady_checks`); their warnings end the summary and are kept in
+    the table's ``warnings`` attribute."""
     from kanat.io.statics_table import statics_table
     from kanat.statics import NeedsLumped
     from kanat.statics import solve_statics as solve
@@ -92,7 +94,11 @@ def _statics(case: Case, method: str = "auto"):
         result = solve(case, method=method)
     except NeedsLumped as reason:        # a network in a current (the catenary carries no drag), bending
         result = _lumped_statics(case, str(reason))
-    return statics_table(result, wall_time_s=time.perf_counter() - start), result.summary(), result
+    verdict = result.verdict
+    text = "\n".join([result.summary(), *(f"warning: {w}" for w in verdict.warnings)])
+    table = statics_table(result, wall_time_s=time.perf_counter() - start, status=verdict.status,
+                          warnings=verdict.warnings)
+    return table, text, result
 
 
 def _lumped_statics(case: Case, reason: str):
@@ -265,9 +271,17 @@ def solve_statics(case: Case, method: str = "auto"):
     ------
     kanat.errors.SolverError
         When no steady state is found (the message says what was tried).
+
+    Warns
+    -----
+    RunFailedWarning
+        When the steady state fails the checks of :mod:`kanat.statics.steady_checks`: the
+        dataset is returned with ``attrs["status"]`` = ``failed: <check>: ...``.
     """
     require_supported(case, "statics")
-    return _statics(case, method)[0].to_dataset()
+    table = _statics(case, method)[0]
+    _warn_failed(table.attrs["status"])
+    return table.to_dataset()
 
 
 @_naming_its_file
@@ -483,4 +497,12 @@ def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcom
             from kanat.io.results import write_result
 
             write_result(result, output)
-    return Outcome("ok", text, result, None if output is None else Path(output), solution=solution)
+    status = getattr(result, "attrs", {}).get("status", "ok")
+    _warn_failed(status)
+    return Outcome(status, text, result, None if output is None else Path(output), solution=solution)
+
+
+def _warn_failed(status: str) -> None:
+    """A :class:`RunFailedWarning` for a steady result that failed its checks (it is returned all the same)."""
+    if status != "ok":
+        warnings.warn(f"the steady state failed its checks: {status}", RunFailedWarning, stacklevel=3)

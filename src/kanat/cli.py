@@ -181,7 +181,8 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
 
     _check_outputs(output, plot, case, debug)
     try:
-        with console.status(f"solving {model} of {case.name} ..."):
+        with console.status(f"solving {model} of {case.name} ..."), warnings.catch_warnings():
+            warnings.simplefilter("ignore", api.RunFailedWarning)        # the status is reported below
             outcome = api.run(loaded, output=output, model=model, method=method)
     except KanatError as error:
         if not isinstance(error, CaseError):
@@ -191,6 +192,8 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
         fail(error, debug, f"{model} failed")
     _log_solved(model, outcome.held)
     show(outcome.text)
+    if not outcome.ok:                           # a steady state that fails its checks, written all the same
+        fail(KanatError(f"{outcome.status}\n\nThe failed steady state is in {output}."), debug, f"{model} failed")
     show(f"status: {outcome.status}")           # as a dynamic run's summary ends
     if plot is not None:
         _draw(model, outcome.solution, plot)

@@ -27,7 +27,11 @@ ATTRIBUTES = {
     "model": "the model that ran: statics, continuum, lumped or pitch",
     "scheme": "time scheme (dynamic models) or statics method",
     "wall_time_s": "wall time of the run [s]",
-    "status": "`ok`, or `failed: ...` saying why the run stopped (results up to then are kept)",
+    "status": "`ok`, or `failed: ...` saying why the run stopped (results up to then are kept); a steady state "
+              "(statics, a dynamic run's t = 0) failing a check is `failed: CHECK: ...` (statics.md, \"Checks of a "
+              "steady state\")",
+    "warnings": "statics: the warnings of the checks of a steady state, one a line (a tension above the breaking "
+                "load); absent when there are none",
     "Conventions": "CF conventions version the file follows",
     "dt": "time step used [s] (dynamic models)",
     "output_interval": "interval between stored outputs [s] (dynamic models)",

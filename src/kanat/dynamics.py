@@ -23,7 +23,10 @@ object that keeps this contract:
 5. **Status.** ``check(state, values)`` returns ``None`` when the output passes the
    model's own checks (strain within the line's range, no compression where the model
    needs tension, no node below the seabed beyond the contact model's penetration), else
-   the failure message. The loop also refuses any non-finite output.
+   the failure message. The loop also refuses any non-finite output, and makes the
+   checks of a steady state that ``check`` does not make on the initial state of a model
+   built from a case (``model.case``): tension and reach
+   (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`).
 6. **Finish.** ``final(state)`` returns ``(variables, attributes)`` written once at the end
    (snap events, counters); variables as ``name -> (dims, values)``.
 
@@ -50,6 +53,7 @@ from kanat import jit
 from kanat.errors import SolverError
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
+from kanat.statics.steady_checks import LEFT_BY_DYNAMIC_MODELS, check_steady, nodes_by_cable
 from kanat.schemes import label
 
 log = logging.getLogger(__name__)
@@ -438,6 +442,8 @@ def _emit(model, layout: Layout, observers, point: Point) -> str:
     """
     non_finite = _non_finite(layout, point)
     problem = non_finite or model.check(point.state, point.values)
+    if not problem and point.index == 0:
+        problem = _initial_problem(model, layout, point.values)
     if not non_finite:
         try:
             for observer in observers:
@@ -445,6 +451,21 @@ def _emit(model, layout: Layout, observers, point: Point) -> str:
         except StopRun as stop:
             problem = problem or str(stop)
     return f"failed: {problem}" if problem else "ok"
+
+
+def _initial_problem(model, layout: Layout, values: dict) -> str | None:
+    """The checks of a steady state that a model's ``check`` does not make
+    (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`) on the initial state of a model
+    built from a case (``model.case``) whose outputs hold node positions and tensions; their
+    warnings are logged. None when it passes (or the model has no case or no such outputs)."""
+    case = getattr(model, "case", None)
+    if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
+        return None
+    nodes = nodes_by_cable(layout.static["cable"][1], layout.static["s"][1], values["position"], values["tension"])
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS)
+    for warning in verdict.warnings:
+        log.warning(warning)
+    return verdict.failure
 
 
 def _non_finite(layout: Layout, point: Point) -> str | None:

@@ -33,7 +33,7 @@ def _label(name: str, values) -> tuple:
     return (name,), _names(values), {}
 
 
-def statics_table(result, wall_time_s: float = 0.0) -> ResultTable:
+def statics_table(result, wall_time_s: float = 0.0, status: str = "ok", warnings=()) -> ResultTable:
     """The result file of a statics run.
 
     Parameters
@@ -41,8 +41,16 @@ def statics_table(result, wall_time_s: float = 0.0) -> ResultTable:
     result : kanat.statics.StaticsResult or kanat.statics.network_result.NetworkResult
     wall_time_s : float
         Solve time recorded in the provenance [s].
+    status : str
+        ``ok``, or ``failed: <check>: ...`` for a solution that fails the checks of a steady
+        state (:mod:`kanat.statics.steady_checks`): written all the same, to show what went wrong.
+    warnings : sequence of str
+        The checks' warnings (a tension above the breaking load), kept one a line in the
+        ``warnings`` attribute when there are any.
     """
-    attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s, status="ok")
+    attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s, status=status)
+    if warnings:
+        attrs["warnings"] = "\n".join(warnings)
     if result.sphere is not None:
         return _sphere_table(result.sphere, attrs)
     names, s, position, tension, angle = [], [], [], [], []

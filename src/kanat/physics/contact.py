@@ -42,12 +42,11 @@ import math
 import numpy as np
 
 from kanat.jit import inner, kernel
-from kanat.physics.seabed import SLIP_VELOCITY, PlaneSeabed  # noqa: F401  v_s of eqs. (3)-(4), re-exported
+from kanat.physics.seabed import (  # noqa: F401  re-exported: v_s of eqs. (3)-(4), the penetration allowed
+    PENETRATION_FLOOR, PENETRATION_MARGIN, SLIP_VELOCITY, PlaneSeabed)
 
 SLIP_DISPLACEMENT = 1.0e-4  # m, u_s of the equilibrium's friction
 DAMPING_RAMP = 2.0e-4      # m, delta_r of eq. (1) (the continuum model ramps over 1 mm: kernels2d.CONTACT_RAMP)
-PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
-PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
 
 
 def seabed_arrays(seabed) -> np.ndarray:

@@ -22,6 +22,8 @@ from typing import Protocol
 import numpy as np
 
 SLIP_VELOCITY = 1.0e-3      # m/s: the velocity scale v_s of regularized Coulomb friction (kanat.physics.contact)
+PENETRATION_MARGIN = 10.0   # a node may sink this many times its static penetration before a run fails
+PENETRATION_FLOOR = 1.0e-3  # m, and at least this much (a light line's static penetration is ~0)
 
 
 class Seabed(Protocol):

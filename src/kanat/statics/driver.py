@@ -17,6 +17,7 @@ from kanat.statics.shooting import solve_shooting
 from kanat.statics.solution import CableSolution
 from kanat.statics.sphere import SphereGroups, SphereSolution, groups_from_dimensional
 from kanat.statics.sphere_solvers import solve_sphere
+from kanat.statics.steady_checks import check_result
 
 METHODS = {
     "shooting": solve_shooting,
@@ -105,6 +106,12 @@ class StaticsResult:
             sol = self.cables[cable.name]
             for label, row, sign in (("from", 0, 1.0), ("to", -1, -1.0)):
                 yield cable, label, sign * sol.force3[row]
+
+    @property
+    def verdict(self):
+        """The checks of a steady state on this result (:func:`kanat.statics.steady_checks.check_result`):
+        its ``status`` is ``ok`` or ``failed: <check>: ...``."""
+        return check_result(self)
 
     def summary(self) -> str:
         """A few lines an engineer reads first: depths, layback, end tensions."""

@@ -26,6 +26,7 @@ from kanat.errors import SolverError
 from kanat.statics.network import NetworkSolution, cross, solve_network
 from kanat.statics.network_setup import NetworkProblem, network_problem
 from kanat.statics.piecewise import sample
+from kanat.statics.steady_checks import check_result
 
 __all__ = ["NetworkCable", "NetworkResult", "first_guess", "solve_network_case"]
 
@@ -114,6 +115,12 @@ class NetworkResult:
     notes: tuple = ()
     vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     sphere: None = None
+
+    @property
+    def verdict(self):
+        """The checks of a steady state on this result (:func:`kanat.statics.steady_checks.check_result`):
+        its ``status`` is ``ok`` or ``failed: <check>: ...``."""
+        return check_result(self)
 
     def summary(self) -> str:
         """A few lines an engineer reads first: fairlead and anchor loads, offsets, uplift."""
