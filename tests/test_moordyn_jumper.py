@@ -34,7 +34,9 @@ x_n``, and its end positions extrapolated from there: the chord of a swinging el
 agreed with each other). The lumped scheme is now the WBZ-α member (``alpha_f = 0``). (2) Drag on
 the element's mean velocity left the mesh's zig-zag mode undamped: waves rang it (0.6 Hz at 20
 segments, 1 Hz at 40) and the range was 26 % (20 segments) and 9 % (40) above MoorDyn's, converging
-to it only at 80. Each end's half of the drag now takes that end's velocity: +3 % and -0.1 %.
+to it only at 80. Each end's half of the drag now takes that end's velocity: RK4 +2.9 % at 20
+segments, -0.1 % at 40; the default scheme at 40 segments: mean -0.03 %, range +0.7 %, maximum
++0.3 %, the same at the three headings.
 """
 import math
 import warnings

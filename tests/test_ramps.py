@@ -140,17 +140,52 @@ def top_tension(case):
 
 @pytest.mark.slow
 def test_a_ramped_run_ends_where_the_unramped_one_does():
-    """Waves, current and motion ramped over 8 s: over 49-63 s (two periods of both) the top tension
-    is the unramped run's to 1 % of its range."""
+    """Waves, current and motion ramped over 8 s: the run starts from the still-water equilibrium
+    and over 49-63 s (two periods of both) its top tension is the unramped run's to 1 % of its
+    range."""
     duration = 63.0
     plain = lumped_case(WAVES, CURRENT, MOTION, duration)
     ramped = lumped_case(dict(WAVES, ramp=RAMP), dict(CURRENT, ramp=RAMP), {"harmonics": MOTION, "ramp": RAMP},
                          duration)
     t, ours = top_tension(ramped)
     _, theirs = top_tension(plain)
+    _, still = top_tension(lumped_case(duration=0.5))
+    assert ours[0] == pytest.approx(still[0], rel=1e-6)        # started in still water, at rest
     late = t >= duration - 14.0
     spread = np.ptp(theirs[late])
     assert spread > 100.0
     assert np.max(np.abs(ours[late] - theirs[late])) < 0.01 * spread
     early = (t > 0) & (t <= 2.0)                              # and the start was gentler
     assert np.ptp(ours[early]) < 0.5 * np.ptp(theirs[early])
+
+
+def continuum_case(environment: dict, duration: float) -> Case:
+    """A 95 m cable between two anchors, 2-D continuum, in ``environment`` (100 m of water)."""
+    return Case.model_validate(dict(
+        model="continuum", environment={"depth": 100.0, **environment},
+        line_types={"c": dict(diameter=0.05, mass=6.0, axial_stiffness=5e6, drag_normal=1.2)},
+        cables=[dict(name="c", line_type="c", length=95.0, segments=20, **{"from": "anchor:[-50, 0, -60]"},
+                     to="anchor:[0, 0, -3]")],
+        simulation=dict(duration=duration, dt=0.1, output_dt=0.5)))
+
+
+def continuum_top_tension(case) -> tuple[np.ndarray, np.ndarray]:
+    ds = api.run(case).dataset
+    assert ds.attrs["status"] == "ok"
+    return ds.time.values, ds.tension.values[:, -1]
+
+
+@pytest.mark.slow
+def test_a_ramped_continuum_run_starts_in_still_water_and_ends_where_the_unramped_one_does():
+    """The continuum model with current and waves ramped over 10 s: it starts from the still-water
+    steady state (the current is 0 at t = 0) and over 46-60 s its top tension is the unramped run's
+    to 1 % of the range."""
+    def sea(ramp):
+        return {"current": {"profile": PLANAR, "ramp": ramp}, "waves": dict(WAVES, heading_deg=0.0, ramp=ramp)}
+    t, ramped = continuum_top_tension(continuum_case(sea(10.0), 60.0))
+    _, plain = continuum_top_tension(continuum_case(sea(0.0), 60.0))
+    _, still = continuum_top_tension(continuum_case({}, 0.5))
+    assert ramped[0] == pytest.approx(still[0], rel=1e-6)
+    assert abs(plain[0] - still[0]) > 10.0                    # the current matters at the start
+    late = t >= 46.0
+    assert np.max(np.abs(ramped[late] - plain[late])) < 0.01 * np.ptp(plain[late])

@@ -109,7 +109,8 @@ class GeneralizedAlphaLumped(Scheme):
     ----------
     lambda_inf : float
         Amplification at infinite frequency, ``-rho_inf``, in [-1, 0]; -1 is the
-        trapezoidal rule (no dissipation), 0 annihilates the highest modes in one step.
+        trapezoidal rule (no dissipation), 0 annihilates the highest modes (their position at
+        once, their velocity and acceleration within two steps).
     max_iterations : int
         Newton iterations per step before the step is halved.
     tolerance : float
