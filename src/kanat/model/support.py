@@ -410,7 +410,7 @@ FEATURES: tuple[Feature, ...] = (
     Feature("attachments", "bodies attached along a cable", _attachments,
             statics=YES, continuum=YES, lumped=YES),
     Feature("vessel_motion", "the vessel's prescribed motion", _vessel_motion,
-            statics=IGNORED, continuum=NO, lumped=YES, note=STEADY),
+            statics=IGNORED, continuum=YES, lumped=YES, note=STEADY),
     Feature("winch", "a winch", _winch, statics=IGNORED, continuum=YES, lumped=NO,
             note="its steady state is before the winch turns"),
     Feature("six_dof_bodies", "a body with 6 degrees of freedom", _body_key("dof", lambda v: v == 6),
