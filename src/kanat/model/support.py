@@ -303,7 +303,7 @@ def has_drag(case: Case) -> bool:
 
 
 NO_STEADY_EFFECT = ("axial_damping", "tangential_added_mass", "consistent_mass",
-                    "initial_state_as_given", "frame_pole")
+                    "initial_state_as_given", "frame_pole", "slack_stop")
 """Rows that do not change a steady state (damping, added mass, solver settings)."""
 
 
@@ -385,6 +385,11 @@ FEATURES: tuple[Feature, ...] = (
             lumped=YES, note="the continuum model starts from its steady state"),
     Feature("frame_pole", "a chosen frame pole", _simulation("frame_pole", "auto"),
             statics=YES, continuum=YES, lumped=IGNORED, note="a 3-D continuum setting"),
+    Feature("slack_stop", "stopping a run when the cable goes slack", _simulation("slack", "continue"),
+            statics=IGNORED, continuum=YES, lumped=IGNORED,
+            note={"statics": "a continuum-model setting",
+                  "lumped": "its elements carry no compression: a run goes on through slack and records "
+                            "the snap events"}),
     # the additions for moorings and real cable systems
     Feature("seabed", "seabed contact properties", _seabed(bool),
             statics=YES, continuum=YES, lumped=YES),
