@@ -111,3 +111,19 @@ def test_slow_motion_follows_the_elastic_catenary():
     swing = np.ptp(ds.tension.values[:, 0]) / ds.tension.values[:, 0].mean()
     assert swing > 0.1                                           # the motion changes the tension
     assert max(errors) < 1e-3, errors
+
+
+@pytest.mark.parametrize("rows, planar", [([[0, 1, 0, 0.5, 0, 2, 0], [10, -1, 0, 0, 0, 0, 0]], True),
+                                          ([[0, 0, 0.5, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0, 0]], False),
+                                          ([[0, 0, 0, 0, 0, 0, 3], [10, 0, 0, 0, 0, 0, 0]], False)],
+                         ids=["surge-heave-pitch", "sway", "yaw"])
+def test_a_motion_table_leaves_the_plane_only_with_sway_roll_or_yaw(rows, planar):
+    model = model_for(mooring("continuum", {"rows": rows}))
+    assert model.dimensions == (2 if planar else 3)
+    if planar:                      # halfway (linear): surge 0, heave 0.25 m, pitch 1 deg turning the arm (0, 0, -5)
+        a = math.radians(1.0)
+        want = np.array([-5.0 * math.sin(a), 0.0, 0.25 - 5.0 * math.cos(a)])
+        np.testing.assert_allclose(model.origin(5.0), want, atol=1e-12)
+        slope = (np.array(rows[1][1:4]) - np.array(rows[0][1:4])) / 10.0           # the table's velocity
+        assert model.velocities(5.0)[0][[0, 2]] == pytest.approx(slope[[0, 2]] + [-5.0 * math.cos(a) * math.radians(
+            -0.2), 5.0 * math.sin(a) * math.radians(-0.2)], abs=1e-12)
