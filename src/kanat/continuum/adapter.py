@@ -107,8 +107,8 @@ class ContinuumModel:
         self.start_from = model_for(start)
         self.notes.append(f"the line lies slack on the seabed in still water (no steady state of its own): the run "
                           f"starts from its steady state under a horizontal pull of {pull:.4g} N on body "
-                          f"'{case.cables[0].to.name}' away from the anchor ({PULL_FRACTION:.0%} of the line's weight in water), "
-                          "released at t = 0, so the body drifts back slowly")
+                          f"'{case.cables[0].to.name}' away from the anchor ({PULL_FRACTION:.0%} of the line's "
+                          "weight in water), released at t = 0, so the body drifts back slowly")
 
     def _refuse_for_factorized(self) -> None:
         """Seed 000's schemes step the uniform flexible cable of SPEC §2.1–2.2 only."""
@@ -185,9 +185,8 @@ class ContinuumModel:
 
     def _observe_slack(self, state) -> None:
         """Hand the step's nodal tensions to the slack log (with the tolerance of :meth:`_compression`)."""
-        tension = state.y[:, 0]
-        scale = max(float(np.max(np.abs(tension))), abs(self.cable_model.cable.params[k.W0]) * self.cable_model.cable.length,
-                    1.0)
+        tension, cable = state.y[:, 0], self.cable_model.cable
+        scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
         self.slack.observe(state.t, tension, self._facts(state).euler[0], COMPRESSION_TOLERANCE * scale)
 
     def _step(self, state, dt: float, level: int):

@@ -14,7 +14,9 @@ nonlinear and averaged as such. With ``Yb`` the two-node mean, ``g = (Y_{j+1} - 
     R5 = g_M + (1 + e(Tb)) Sb                            (bending only: moment balance)
 
 ``H(T)`` is ``T`` itself, or the tension floor of a slack interval (:func:`loads2d.transverse_tension`;
-``simulation.slack: continue``). The shear ``S`` and moment ``M`` rows and terms exist only when the cable has bending stiffness
+``simulation.slack: continue``).
+
+The shear ``S`` and moment ``M`` rows and terms exist only when the cable has bending stiffness
 (``nv = 6``, Gobat & Grosenbaugh 2001): with the force ``T t + S n`` the momentum rows gain
 ``+S phi_s`` and ``-S_s``, and ``dM/ds + (1 + e) S = 0``. Inertia terms use the
 ``[am]``-weighted states and all others the ``[ak]``-weighted ones (:mod:`kanat.continuum.schemes`);
