@@ -84,10 +84,10 @@ def test_a_pitching_vessel_moves_a_lever_arm_tow_point():
         np.testing.assert_allclose(model.origin(t), want, atol=1e-12)
 
 
-@pytest.mark.slow
 SURGE_SWAY = SURGE_HEAVE[:1] + [{"dof": "sway", "amplitude": 4.0, "period": 12.0, "phase_deg": -90.0}]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("motion", [SURGE_HEAVE, SURGE_SWAY], ids=["surge-heave", "surge-sway"])
 def test_a_driven_mooring_line_agrees_with_the_lumped_model(motion):
     continuum = run(mooring("continuum", motion))
