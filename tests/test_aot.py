@@ -83,7 +83,10 @@ def test_arguments_the_compiled_code_would_misread_go_to_numba(monkeypatch):
     monkeypatch.setattr(aot, "_loaded", {"_continuum": compiled})
     aot.kernel.cache_clear()
     assemble = aot.kernel("assemble")
-    sizes = [(5, 4), (5, 4), (5, 4), (5, 6), (4, 40), (16,), (16,), (20,), (11, 20)]
+    from kanat.continuum.layout2d import NPAR
+
+    # the rows hold a 1-knot law, read within them
+    sizes = [(5, 4), (5, 4), (5, 4), (5, 6), (4, NPAR + 4), (16,), (16,), (20,), (11, 20)]
     args = [np.asfortranarray(np.ones(shape)) if len(shape) == 2 else np.ones(shape) for shape in sizes]
     args[4][:, 12] = 1.0                                                   # dt: a finite answer
     expected = [a.copy() for a in args]

@@ -99,10 +99,10 @@ def test_vanishing_bending_stiffness_converges_to_the_flexible_model():
 
 def test_compression_beyond_a_segments_euler_load_stops_the_run():
     """A line with EI is a rod: it may carry compression up to the Euler load of one segment; a run
-    pushed beyond it stops, and says so, with what to do."""
+    pushed beyond it stops (simulation.slack: stop), and says so, with what to do."""
     from kanat.continuum.adapter import ContinuumModel
 
-    model = ContinuumModel(kanat.load_case(with_bending(STEP_CASE, 50.0, 20)))
+    model = ContinuumModel(kanat.load_case(with_bending(STEP_CASE, 50.0, 20) + "  slack: stop\n"))
     state = model.initial()
     values = model.outputs(state)
     assert model.check(state, values) is None
@@ -115,7 +115,7 @@ def test_compression_beyond_a_segments_euler_load_stops_the_run():
     message = model.check(state, values)
     assert "compression" in message and "Euler load of one segment" in message and "use more segments" in message
     assert "(at most 35.4 m long, now 50 m)" in message          # 1/sqrt(2) as long: twice the Euler load
-    flexible = ContinuumModel(kanat.load_case(STEP_CASE.replace("segments: 100", "segments: 20")))
+    flexible = ContinuumModel(kanat.load_case(STEP_CASE.replace("segments: 100", "segments: 20") + "  slack: stop\n"))
     values["tension"][5] = -0.01 * np.max(values["tension"])
     assert "perfectly flexible cable cannot carry" in flexible.check(flexible.initial(), values)
 
@@ -147,7 +147,7 @@ vessel:
     - {straight: {duration: 60}}
 cables:
   - {name: tow, line_type: towcable, length: 200, segments: SEG, from: vessel, to: sled}
-simulation: {scheme: generalized-alpha, duration: 60, dt: 0.5, output_dt: 0.5, dimensions: 2}
+simulation: {scheme: generalized-alpha, duration: 60, dt: 0.5, output_dt: 0.5, dimensions: 2, slack: stop}
 """
 
 

@@ -9,7 +9,10 @@ saying where and what to try. Its checks of every output:
 * compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
   stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``
   (beyond it the grid no longer resolves the buckled shape: :func:`rod_advice` says how fine a
-  grid would, or that the line goes slack);
+  grid would, or that the line goes slack). With ``simulation.slack: continue`` (the default)
+  a run goes on through compression and records every slack event after every step
+  (:mod:`kanat.continuum.slack`): the result's ``slack_*`` variables, its ``slack_events``
+  attribute and a note; with ``stop`` the check fails the run;
 * strain within the line type's range;
 * seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
   penetration ``w / (k_b d)`` below the seabed (a node falling through it).
@@ -23,6 +26,7 @@ from kanat.continuum.courant import check_step
 from kanat.continuum.models import model_for
 from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
+from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure, Steps
@@ -69,13 +73,16 @@ class ContinuumModel:
                                                   lambda_inf=sim.lambda_inf, gamma=sim.gamma)
         self.cable_model = model_for(case)
         self.start_from = None if start_from is None else model_for(start_from)
+        self.notes: list[str] = []
+        if start_from is None:
+            self._start_slack_on_the_seabed(case)
         if self.start_from is not None and (self.start_from.dimensions != self.cable_model.dimensions or
                                             len(self.start_from.cable.s) != len(self.cable_model.cable.s)):
             raise CaseError([Problem("start_from", "the case to start from must have the same cable, grid and "
                                      "dimensions as the case run")])
         self.dt, self.output_interval, self.duration = sim.dt, sim.output_interval, sim.duration
         cable = self.cable_model.cable
-        self.notes: list[str] = list(cable.grid.notes) if cable.grid is not None else []
+        self.notes += list(cable.grid.notes) if cable.grid is not None else []
         self._refuse_for_factorized()
         self.max_strain = min(case.line_types[name].strain_limit() for name in case.cables[0].line_types)
         self.body = case.cables[0].to.kind == "body"
@@ -84,10 +91,24 @@ class ContinuumModel:
         self.stations = (material_stations(case, cable.s, cable.winch, self.dt, self.duration)
                          if cable.winch is not None else None)
         self._own, self._winch_facts = RowFacts(cable.rows(), cable.seabed), None
+        self.slack = SlackLog() if sim.slack == "continue" else None
         if cable.winch is not None:
             self.notes.append(f"winch: the grid grows from the winch (a node every {cable.winch.segment:.4g} m paid "
                               f"out); s is each node's arclength at t = 0 (negative: still on the drum, where "
                               "its outputs sit at the winch)")
+
+    def _start_slack_on_the_seabed(self, case) -> None:
+        """A line lying slack on the seabed under its body in still water starts from a small pull on the
+        body, released at t = 0 (:func:`kanat.continuum.slack.pulled_start`), and says so."""
+        pulled = pulled_start(case)
+        if pulled is None:
+            return
+        start, pull = pulled
+        self.start_from = model_for(start)
+        self.notes.append(f"the line lies slack on the seabed in still water (no steady state of its own): the run "
+                          f"starts from its steady state under a horizontal pull of {pull:.4g} N on body "
+                          f"'{case.cables[0].to.name}' away from the anchor ({PULL_FRACTION:.0%} of the line's "
+                          "weight in water), released at t = 0, so the body drifts back slowly")
 
     def _refuse_for_factorized(self) -> None:
         """Seed 000's schemes step the uniform flexible cable of SPEC §2.1–2.2 only."""
@@ -133,15 +154,19 @@ class ContinuumModel:
                 f"{error}. Tried: the case's statics, then Newton on the steady box equations from it. The "
                 "continuum model needs a taut cable from the start: it starts from the steady shape of a "
                 "perfectly flexible line, with or without bending stiffness (which carries compression only up "
-                "to about the Euler load of one segment), so a slack line, such as a grounded one in still "
-                "water, runs with model: lumped, whose equilibrium carries slack line") from None
+                "to about the Euler load of one segment), so a slack line runs with model: lumped, whose "
+                "equilibrium carries slack line (with simulation.slack: continue, the default, a line lying slack "
+                "on the seabed under its body in still water starts from a small pull on the body)") from None
         check_step(self.scheme, self.cable_model, state, self.dt)     # seed 000's schemes: their known range
         return state
 
     def save(self, state) -> dict:
-        return {"t": np.array(state.t), **self.cable_model.save(state)}
+        slack = {} if self.slack is None else {"slack_events": self.slack.events}
+        return {"t": np.array(state.t), **self.cable_model.save(state), **slack}
 
     def restore(self, arrays: dict):
+        if self.slack is not None:
+            self.slack = SlackLog(arrays.get("slack_events"))
         return self.cable_model.restore(float(arrays["t"]), arrays)
 
     # 3. step -----------------------------------------------------------------------------
@@ -154,7 +179,15 @@ class ContinuumModel:
             except NewtonFailure as failure:
                 raise StepFailure(self._failure(failure, state)) from None
             done = done + work
+            if self.slack is not None:
+                self._observe_slack(state)
         return state, done
+
+    def _observe_slack(self, state) -> None:
+        """Hand the step's nodal tensions to the slack log (with the tolerance of :meth:`_compression`)."""
+        tension, cable = state.y[:, 0], self.cable_model.cable
+        scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
+        self.slack.observe(state.t, tension, self._facts(state).euler[0], COMPRESSION_TOLERANCE * scale)
 
     def _step(self, state, dt: float, level: int):
         """One step of ``dt``, cut into halves recursively when Newton fails."""
@@ -236,8 +269,8 @@ class ContinuumModel:
     def check(self, state, values: dict) -> str | None:
         if self.winch is not None:                           # the checks look at the nodes in the water
             values = self.cable_model.outputs(state)
-        return (self._compression(state, values) or self._strain(state, values)
-                or self._seabed(state, values))
+        slack = self._compression(state, values) if self.slack is None else None
+        return slack or self._strain(state, values) or self._seabed(state, values)
 
     def _compression(self, state, values) -> str | None:
         cable = self.cable_model.cable
@@ -293,7 +326,17 @@ class ContinuumModel:
 
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state) -> tuple[dict, dict]:
-        return {}, {}
+        """The slack events (``simulation.slack: continue``) as variables on dimension ``slack_event``,
+        their count as attribute ``slack_events``, and a note naming the worst."""
+        if self.slack is None:
+            return {}, {}
+        events = self.slack.events
+        note = self.slack.note(self._s(state), self.cable_model.cable.name)
+        if note is not None:
+            self.notes.append(note)
+        variables = {f"slack_{name}": (("slack_event",), events[:, j] if name != "node" else events[:, j].astype(int))
+                     for j, name in enumerate(("start", "end", "node", "tension"))}
+        return variables, {"slack_events": len(events)}
 
 
 class RowFacts:

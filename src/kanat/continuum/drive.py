@@ -14,7 +14,8 @@ class Drive:
     Parameters
     ----------
     cable : PlanarCable
-    track : VesselTrack
+    track : VesselTrack or kanat.continuum.vessel_motion.MovedTrack
+        The tow point's track (with the prescribed motion, when the case has one).
     """
 
     def __init__(self, cable: PlanarCable, track: VesselTrack):

@@ -59,6 +59,7 @@ from kanat import aot
 from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module is the kernels' one import
     M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA, GRAV, EI, CONV, PRED, KIND, SECTION, SB_ON,
     SB_K, SB_C, SB_MUA, SB_MUL, SB_C0, SB_N0, SB_N1, SB_N2, JB_MASS, JB_BUOY, JB_DRAG, JB_F0, JB_F1, JB_F2, JB_WAVE,
+    TFLOOR,
     NPAR, LAW, CABLE, JUNCTION, UX, UZ, AX, AZ, RX, RZ, NENV, VELOCITY, BODY, FREE, B_KIND, B_V0, B_V1, B_MASS,
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
     CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
@@ -68,6 +69,6 @@ _ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, ao
 aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
 _NUMBA = {name: "kanat.continuum.loads2d" for name in (
-    "strain", "compliance", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
+    "strain", "compliance", "transverse_tension", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
     "seabed_force_jacobian", "extra_load", "extra_load_jacobian", "weighted", "surface_buoyancy", "end_jacobian")}
 __getattr__ = aot.loader(globals(), ("assemble",), _NUMBA)       # the kernels, on first use (module docstring)

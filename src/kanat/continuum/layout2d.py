@@ -16,7 +16,9 @@ SB_ON, SB_K, SB_C, SB_MUA, SB_MUL, SB_C0, SB_N0, SB_N1, SB_N2 = range(20, 29)
 # an inline body (interval of kind JUNCTION): mass + added mass, net buoyancy, 0.5 rho C_D S,
 # constant force (3 components), wave-inertia coefficient M_a + rho Vol
 JB_MASS, JB_BUOY, JB_DRAG, JB_F0, JB_F1, JB_F2, JB_WAVE = range(29, 36)
-NPAR = 36
+# the tension floor T_f [N] of the normal momentum row (0: none; :func:`loads2d.transverse_tension`)
+TFLOOR = 36
+NPAR = 37
 # The elastic law follows the scalars: p[LAW] = n knots, then n tensions (ascending), then n strains.
 LAW = NPAR
 CABLE, JUNCTION = 0, 1

@@ -29,6 +29,25 @@ def _law_segment(T, p):
 
 
 @kernel
+def transverse_tension(T, p):
+    """The tension of the normal momentum row and its slope: ``T`` at or above the floor
+    ``T_f = p[TFLOOR]``, below it ``T_f (1 + exp(2 (T - T_f) / T_f)) / 2`` (equal to ``T`` with its slope
+    at ``T_f``, falling to ``T_f / 2`` at full compression); ``T`` when ``T_f = 0``.
+
+    A slack interval (``T <= 0``) then keeps a small geometric stiffness: the normal row of a cable
+    in compression, ``m v_t = T phi_s + ...``, is ill-posed (its short waves grow at a rate
+    ``sqrt(-T / m) pi / ds``), and the floor keeps it a string's, as WHOI Cable's does; the
+    tangential and compatibility rows keep the true ``T`` (the compression the result reports).
+    Complex-capable (branch on ``Re T``).
+    """
+    floor = p[TFLOOR]
+    if floor <= 0.0 or T.real >= floor:
+        return T, 1.0 + 0.0 * T
+    slope = np.exp(2.0 * (T - floor) / floor)
+    return 0.5 * floor * (1.0 + slope), slope
+
+
+@kernel
 def strain(T, p):
     """Strain ``e(T)`` of the elastic law: piecewise linear through its knots, extended linearly.
 

@@ -204,6 +204,7 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     z, rows = case.environment.current.table()
     if check_plane and out_of_plane(case):
         raise CaseError(out_of_plane(case))
+    grid.rows[:, k.TFLOOR] = tension_floor(case, grid.rows)
     first = grid.rows[0].copy()
     winch = Winch.from_case(case, float(grid.rows[0, k.DS]))
     if winch is not None and start.kind != k.VELOCITY:
@@ -212,6 +213,23 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
     plain = grid.uniform and not grid.bending and seabed is None and winch is None
     return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
                        None if plain else grid, sea_from_model(env), seabed, winch, env.current.ramp)
+
+
+SLACK_FLOOR = 0.01
+"""The default tension floor of ``simulation.slack: continue``, as a fraction of the cable's weight in
+water (at least 1 N): small beside the tensions of a hanging line, enough to keep a slack interval's
+normal row a string's (:func:`kanat.continuum.loads2d.transverse_tension`)."""
+
+
+def tension_floor(case, rows: np.ndarray) -> float:
+    """The tension floor [N] of a case's cable with interval ``rows``: ``simulation.tension_floor``, or
+    :data:`SLACK_FLOOR` of its weight in water (at least 1 N); 0 (none) with ``simulation.slack: stop``."""
+    sim = case.simulation
+    if sim.slack == "stop":
+        return 0.0
+    if sim.tension_floor is not None:
+        return float(sim.tension_floor)
+    return max(SLACK_FLOOR * float(np.sum(np.abs(rows[:, k.W0] * rows[:, k.DS]))), 1.0)
 
 
 REACH = 1.1

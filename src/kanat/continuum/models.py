@@ -27,8 +27,8 @@ from kanat.continuum.drive import Drive
 from kanat.continuum.model2d import planar_cable, positions
 from kanat.continuum.start import STEADY_PASSES, static_shape
 from kanat.continuum.stepper import State, steady, step
+from kanat.continuum.vessel_motion import vessel_track
 from kanat.model.plane import out_of_plane
-from kanat.vessel.track import VesselTrack
 
 
 def bending_guess(cable, y: np.ndarray) -> np.ndarray:
@@ -69,7 +69,7 @@ class PlanarModel:
     def from_case(cls, case) -> PlanarModel:
         """The planar model of a case's single cable (refusing what leaves the x–z plane)."""
         cable = planar_cable(case)
-        return cls(cable, Drive(cable, VesselTrack.from_model(case.vessel)), case)
+        return cls(cable, Drive(cable, vessel_track(case.vessel)), case)
 
     def initial(self) -> State:
         cable, drive = self.cable, self.drive

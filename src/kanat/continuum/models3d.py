@@ -15,7 +15,7 @@ from kanat.continuum.model2d import _end as planar_end
 from kanat.continuum.model2d import planar_cable
 from kanat.continuum.start import STEADY_PASSES, static_shape
 from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
-from kanat.vessel.track import VesselTrack
+from kanat.continuum.vessel_motion import vessel_track
 
 
 def bending_guess3(cable, y: np.ndarray) -> np.ndarray:
@@ -42,7 +42,7 @@ class SpatialModel:
     def __init__(self, case):
         self.case = case
         self.cable = spatial_cable(case)
-        self.track = VesselTrack.from_model(case.vessel)
+        self.track = vessel_track(case.vessel)
         self._rows = self.cable.rows()              # a uniform cable builds its rows at every call
 
     def velocities(self, t):

@@ -71,7 +71,8 @@ def interval_residual(xl, xr, yl, yr, dl, dr, el, er, p, out):
     c = p[k.INERTIA]
     mass, normal_mass = p[k.M], p[k.M] + p[k.MA]
     out[0] = c * mass * (rate[1] - mb[2] * rate[3]) - grad[0] - 0.5 * (ftl + ftr + etl + etr)
-    out[1] = c * normal_mass * (rate[2] + mb[1] * rate[3]) - kb[0] * grad[3] - 0.5 * (fnl + fnr + enl + enr)
+    out[1] = (c * normal_mass * (rate[2] + mb[1] * rate[3]) - k.transverse_tension(kb[0], p)[0] * grad[3]
+              - 0.5 * (fnl + fnr + enl + enr))
     out[2] = c * k.compliance(mb[0], p) * rate[0] - grad[1] + kb[2] * grad[3]
     out[3] = c * (1.0 + k.strain(mb[0], p)) * rate[3] - grad[2] - kb[1] * grad[3]
     if nv == 6:

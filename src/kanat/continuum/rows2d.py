@@ -7,11 +7,14 @@ nonlinear and averaged as such. With ``Yb`` the two-node mean, ``g = (Y_{j+1} - 
 ``r`` the mean rate (``+ c g / 2`` with ``c`` the winch's convective speed, first interval only):
 
     R0 = c0 m (r_u - Yb_v r_phi)              - g_T + Sb g_phi - Fb_t
-    R1 = c0 (m + m_a)(r_v + Yb_u r_phi)       - Tb g_phi - g_S - Fb_n
+    R1 = c0 (m + m_a)(r_v + Yb_u r_phi)       - H(Tb) g_phi - g_S - Fb_n
     R2 = c0 e'(Tb) r_T     - g_u + Yb_v g_phi
     R3 = c0 (1 + e(Tb)) r_phi - g_v - Yb_u g_phi
     R4 = EI g_phi - Mb                                   (bending only: curvature, M = EI kappa)
     R5 = g_M + (1 + e(Tb)) Sb                            (bending only: moment balance)
+
+``H(T)`` is ``T`` itself, or the tension floor of a slack interval (:func:`loads2d.transverse_tension`;
+``simulation.slack: continue``).
 
 The shear ``S`` and moment ``M`` rows and terms exist only when the cable has bending stiffness
 (``nv = 6``, Gobat & Grosenbaugh 2001): with the force ``T t + S n`` the momentum rows gain
@@ -137,7 +140,8 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band, extra
                       0.5 * (wr[l, 2] + wr[r, 2]) + 0.5 * conv * g2, 0.5 * (wr[l, 3] + wr[r, 3]) + 0.5 * conv * g3)
     row = nv // 2 + nv * j
     res[row] = c * mass * (r1 - mb2 * r3) - g0 - 0.5 * (load[l, 0, 0] + load[r, 1, 0])
-    res[row + 1] = c * normal_mass * (r2 + mb1 * r3) - kb0 * g3 - 0.5 * (load[l, 0, 1] + load[r, 1, 1])
+    held, held_slope = k.transverse_tension(kb0, p)
+    res[row + 1] = c * normal_mass * (r2 + mb1 * r3) - held * g3 - 0.5 * (load[l, 0, 1] + load[r, 1, 1])
     t0, e0, flex = k._law_segment(mb0, p)
     stretch = 1.0 + e0 + flex * (mb0 - t0)
     res[row + 2] = c * flex * r0 - g1 + kb2 * g3
@@ -169,8 +173,8 @@ def _interval_rows(j, wm, wk, wr, load, dload, p, chain, width, res, band, extra
         dm[1, 1] = 0.5 * c * normal_mass * r3
         dr[1, 2] = 0.5 * c * normal_mass
         dr[1, 3] = 0.5 * c * normal_mass * mb1
-        dk[1, 0] = -0.5 * g3
-        dk[1, 3] = -kb0 * sign / ds
+        dk[1, 0] = -0.5 * held_slope * g3
+        dk[1, 3] = -held * sign / ds
         dr[2, 0] = 0.5 * c * flex
         dk[2, 1] = -sign / ds
         dk[2, 2] = 0.5 * g3

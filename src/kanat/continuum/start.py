@@ -30,7 +30,18 @@ def needs_spatial_statics(case) -> bool:
     ends = [case.bodies[e.name] for e in cable.ends if e.kind == "body"]
     slope = env.seabed is not None and (env.seabed.slope_deg != 0 or env.seabed.friction > 0)
     return (len(cable.sections) > 1 or bool(cable.attachments) or bool(out_of_plane(case, at_start=True))
-            or slope or any(b.surface_buoy is not None for b in ends))
+            or slope or any(b.surface_buoy is not None for b in ends) or grounds_under_body(case))
+
+
+def grounds_under_body(case) -> bool:
+    """True for a line from an anchor on the seabed to a body that is longer than the anchor is deep: its
+    lower part may rest on the seabed, which the planar statics, marched down from the body, does not
+    lay it on (the 3-D statics does)."""
+    cable, depth = case.cables[0], case.environment.depth
+    if depth is None or cable.from_.kind != "anchor" or cable.to.kind != "body":
+        return False
+    anchor_z = cable.from_.position[2]
+    return anchor_z <= -depth + 1e-6 * cable.length and cable.length > -anchor_z
 
 
 def static_shape(case, name, s) -> CableSolution:

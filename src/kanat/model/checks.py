@@ -317,8 +317,9 @@ def check_towing(case: Case, out: Findings) -> None:
     if not towed:                  # none, or only fairleads of a moored vessel (they need no track)
         return
     if not case.vessel.track:
+        moves = " but for its prescribed motion (vessel.motion)" if case.vessel.motion.is_used else ""
         out.warning(("vessel", "track"), f"cable '{towed[0]}' hangs from the vessel but the "
-                    "vessel has no track: the tow point stays at rest (speed 0 m/s)")
+                    f"vessel has no track: the tow point stays at rest (speed 0 m/s){moves}")
     elif case.model == "statics" and case.vessel.initial_speed == 0:
         out.warning(("vessel", "track", 0), "the initial tow speed is 0 m/s: the statics will "
                     "hang the cable in still water; give the first segment a speed")

@@ -52,8 +52,19 @@ def out_of_plane(case, at_start: bool = False) -> list[Problem]:
         later = any(not isinstance(before, SpeedStep) for before in case.vessel.track[:index])
         if isinstance(segment, (Turn, Heading)) and not (at_start and later):
             found.append((f"vessel.track[{index}]", f"the vessel turns ({segment.KEY})"))
-    for index, motion in enumerate(getattr(case.vessel, "motion", None) or ()):
-        dof = getattr(motion, "dof", None)
-        if dof in OUT_OF_PLANE_DOFS:
-            found.append((f"vessel.motion[{index}]", f"the vessel's {dof} moves the tow point out of the plane"))
+    found += _motion_out_of_plane(case.vessel.motion)
     return [Problem(key, f"{what}, which leaves the x–z plane; set simulation.dimensions: 3") for key, what in found]
+
+
+def _motion_out_of_plane(motion) -> list[tuple[str, str]]:
+    """``(key, what)`` for each harmonic of ``vessel.motion`` in sway, roll or yaw, or for a motion
+    table with any of those columns non-zero."""
+    found = [(f"vessel.motion[{index}]", f"the vessel's {h.dof} moves the tow point out of the plane")
+             for index, h in enumerate(motion.harmonics) if h.dof in OUT_OF_PLANE_DOFS and h.amplitude]
+    if motion.rows is not None:
+        columns = {"sway": 2, "roll": 4, "yaw": 6}
+        moved = [dof for dof in OUT_OF_PLANE_DOFS if any(row[columns[dof]] for row in motion.rows)]
+        if moved:
+            found.append(("vessel.motion", f"the motion table's {' and '.join(moved)} move the tow point out "
+                                           "of the plane"))
+    return found

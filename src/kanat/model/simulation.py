@@ -91,6 +91,16 @@ class Simulation(KanatModel):
     initial_state : {"equilibrium", "as_given"}
         Lumped model: start from the network's equilibrium at the initial tow speed
         (SPEC §4), or from straight cables between the given end positions at rest.
+    slack : {"continue", "stop"}
+        Continuum model: what a run does when the cable goes slack (compression beyond what
+        its bending stiffness carries): ``continue`` carries the small compression the box
+        equations give (the planar model with a tension floor in its normal rows), records
+        each slack event (times, node, lowest tension) in the result and its notes, and goes
+        on; ``stop`` ends the run there with ``status: failed``.
+    tension_floor : float or None
+        Continuum model, ``slack: continue``: the least tension the normal momentum rows of the
+        planar model carry [N] (a slack interval keeps a string's small stiffness, the other
+        rows the true tension); None: 1 % of the cable's weight in water, at least 1 N; 0: none.
     """
 
     scheme: str | None = None
@@ -103,6 +113,8 @@ class Simulation(KanatModel):
     frame_pole: str = "auto"
     mass_matrix: Literal["lumped", "consistent"] = "lumped"
     initial_state: Literal["equilibrium", "as_given"] = "equilibrium"
+    slack: Literal["continue", "stop"] = "continue"
+    tension_floor: float | None = quantity(None, unit="N", ge=0)
 
     @property
     def output_interval(self) -> float:

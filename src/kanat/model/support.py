@@ -303,7 +303,7 @@ def has_drag(case: Case) -> bool:
 
 
 NO_STEADY_EFFECT = ("axial_damping", "tangential_added_mass", "consistent_mass",
-                    "initial_state_as_given", "frame_pole")
+                    "initial_state_as_given", "frame_pole", "slack_stop")
 """Rows that do not change a steady state (damping, added mass, solver settings)."""
 
 
@@ -385,6 +385,11 @@ FEATURES: tuple[Feature, ...] = (
             lumped=YES, note="the continuum model starts from its steady state"),
     Feature("frame_pole", "a chosen frame pole", _simulation("frame_pole", "auto"),
             statics=YES, continuum=YES, lumped=IGNORED, note="a 3-D continuum setting"),
+    Feature("slack_stop", "stopping a run when the cable goes slack", _simulation("slack", "continue"),
+            statics=IGNORED, continuum=YES, lumped=IGNORED,
+            note={"statics": "a continuum-model setting",
+                  "lumped": "its elements carry no compression: a run goes on through slack and records "
+                            "the snap events"}),
     # the additions for moorings and real cable systems
     Feature("seabed", "seabed contact properties", _seabed(bool),
             statics=YES, continuum=YES, lumped=YES),
@@ -409,7 +414,7 @@ FEATURES: tuple[Feature, ...] = (
     Feature("attachments", "bodies attached along a cable", _attachments,
             statics=YES, continuum=YES, lumped=YES),
     Feature("vessel_motion", "the vessel's prescribed motion", _vessel_motion,
-            statics=IGNORED, continuum=NO, lumped=YES, note=STEADY),
+            statics=IGNORED, continuum=YES, lumped=YES, note=STEADY),
     Feature("winch", "a winch", _winch, statics=IGNORED, continuum=YES, lumped=NO,
             note="its steady state is before the winch turns"),
     Feature("six_dof_bodies", "a body with 6 degrees of freedom", _body_key("dof", lambda v: v == 6),
