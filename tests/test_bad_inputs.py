@@ -262,6 +262,13 @@ CLASSES: dict[str, Bad] = {
     "an infinite diameter": Bad(base("diameter: 0.0173", "diameter: 1e400"), ("finite number",), 9),
     "a NaN written as text": Bad(base("diameter: 0.0173", "diameter: 'nan'"), ("finite number",), 9),
     "a boolean diameter": Bad(base("diameter: 0.0173", "diameter: yes"), ("must be a number, not true",), 9),
+    "a quoted length": Bad(base("length: 1000", "length: '1000'"),
+                           ("must be a number, not the text '1000'", "without quotes"), 23),
+    "a quoted exponent": Bad(base("axial_stiffness: 1.2717e7", "axial_stiffness: '1e3'"),
+                             ("not the text '1e3'",), 12),
+    "a quoted segment count": Bad(base("segments: 100", 'segments: "100"'), ("not the text '100'",), 24),
+    "a quoted vector component": Bad(base("tow_point: [0, 0, 0]", "tow_point: [0, '0', 0]"),
+                                     ("not the text '0'",), 16),
     "a boolean segment count": Bad(base("segments: 100", "segments: true"), ("must be a number",), 24),
     "a fractional segment count": Bad(base("segments: 100", "segments: 2.5"), ("whole number",), 24),
     "zero segments": Bad(base("segments: 100", "segments: 0"), ("at least 1",), 24),
@@ -458,6 +465,13 @@ def test_kanat_validate_prints_it_and_exits_1(bad):
 
 
 # --- the limits themselves --------------------------------------------------------------
+
+def test_a_quoted_number_names_its_key_path(tmp_path):
+    path = tmp_path / "case.yaml"
+    path.write_text(edit("axial_stiffness: 1.2717e7", "axial_stiffness: '1e3'"))
+    found = [p for p in check_case(path) if "not the text" in p.message]
+    assert [(p.key, p.line) for p in found] == [("line_types.towcable.axial_stiffness", 12)]
+
 
 def test_output_limit_from_argument_and_environment(monkeypatch):
     big = edit("segments: 100", "segments: 50000", edit("  dt: 1.0", "  dt: 0.1",
