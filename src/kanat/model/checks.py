@@ -344,25 +344,46 @@ def check_dimensions(case: Case, out: Findings) -> None:
 
 
 def check_sphere(case: Case, out: Findings) -> None:
-    """The line and the cable of the sphere problem must reach between the anchors."""
+    """The sphere problem's groups must admit an equilibrium (the solver's own conditions).
+
+    The line (``LoL`` cable lengths) and the cable (1) meet at the sphere, so the anchors
+    must lie between ``|LoL - 1|`` and ``LoL + 1`` cable lengths apart; ``chi`` below 1;
+    ``QkL`` and ``RkL`` not both zero.
+    """
     sphere = case.sphere_two_cables
     if sphere is None:
         return
     if sphere.dimensionless is not None:
         groups = sphere.dimensionless
-        if abs(groups.x_C) > groups.LoL + 1:
-            out.error(("sphere_two_cables", "dimensionless", "x_C"),
-                      f"the anchors are |x_C| = {fmt(abs(groups.x_C))} cable lengths apart but the "
-                      f"line (LoL = {fmt(groups.LoL)}) and the cable (1) reach only "
-                      f"{fmt(groups.LoL + 1)}: no equilibrium")
+        where = ("sphere_two_cables", "dimensionless")
+        _check_sphere_span(out, (*where, "x_C"), abs(groups.x_C), groups.LoL, 1.0,
+                           f"|x_C| = {fmt(abs(groups.x_C))} cable lengths",
+                           f"line (LoL = {fmt(groups.LoL)}) and the cable (1)", " cable lengths")
+        if groups.chi >= 1:
+            out.error((*where, "chi"), f"chi = C_0/C_90 = {fmt(groups.chi)} must be below 1 "
+                      "(the tangential drag of a cable is a fraction of its normal drag)")
+        if groups.QkL == 0 and groups.RkL == 0:
+            out.error((*where, "QkL"), "QkL and RkL are both 0: the sphere has neither net "
+                      "buoyancy nor drag, and its cable's tension no scale; give either")
     else:
         dims = sphere.dimensional
-        reach = dims.line_length + dims.cable_length
-        if abs(dims.anchor_x) > reach:
-            out.error(("sphere_two_cables", "dimensional", "anchor_x"),
-                      f"the anchors are {fmt(abs(dims.anchor_x))} m apart but the line "
-                      f"({fmt(dims.line_length)} m) and the cable ({fmt(dims.cable_length)} m) "
-                      f"reach only {fmt(reach)} m: no equilibrium")
+        _check_sphere_span(out, ("sphere_two_cables", "dimensional", "anchor_x"),
+                           abs(dims.anchor_x), dims.line_length, dims.cable_length,
+                           f"{fmt(abs(dims.anchor_x))} m", f"line ({fmt(dims.line_length)} m) "
+                           f"and the cable ({fmt(dims.cable_length)} m)", " m")
+
+
+def _check_sphere_span(out: Findings, path: Path, span: float, line: float, cable: float,
+                       apart: str, lengths: str, unit: str) -> None:
+    """The anchors ``span`` apart must be reached by ``line`` and ``cable`` meeting at A."""
+    if span >= line + cable:
+        out.error(path, f"the anchors are {apart} apart but the {lengths} reach only "
+                  f"{fmt(line + cable)}{unit}: no equilibrium; bring the anchors closer than that")
+    elif span <= abs(line - cable):
+        out.error(path, f"the anchors are {apart} apart but the {lengths} differ by "
+                  f"{fmt(abs(line - cable))}{unit}: they cannot meet at the sphere with both "
+                  f"taut; set the anchors between {fmt(abs(line - cable))}{unit} and "
+                  f"{fmt(line + cable)}{unit} apart")
 
 
 def check_pitch(case: Case, out: Findings) -> None:
