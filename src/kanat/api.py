@@ -326,6 +326,7 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         raise KanatError(f"model '{name}' is not available in kanat {__version__} (available: "
                          f"{', '.join(MODELS)}).{hint}")
     require_supported(case, name)
+    _check_checkpoint_every(checkpoint_every)
     if resume and output is None:
         raise KanatError("resume needs the result file of the run to continue (output)")
     if output is None:
@@ -335,6 +336,16 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     output = check_output_file(output)
     with OutputLock(output):                    # a second run on this output is refused, not interleaved
         return _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method)
+
+
+def _check_checkpoint_every(every) -> None:
+    """``checkpoint_every`` is None or a whole number of outputs, at least 1."""
+    if every is None:
+        return
+    if isinstance(every, bool) or not isinstance(every, int) or every < 1:
+        raise KanatError(f"checkpoint_every must be a whole number of outputs, at least 1 (got "
+                         f"{every!r}); leave it out to checkpoint every "
+                         f"{dynamics.CHECKPOINT_WALL_S:g} s of wall time")
 
 
 def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method) -> Outcome:
@@ -475,6 +486,12 @@ def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcom
         if output is not None and not isinstance(error, CaseError):
             failed_table(case, str(error), model=name, scheme=method,
                          wall_time_s=time.perf_counter() - start).write(output)
+        raise
+    except KeyboardInterrupt:                   # Ctrl-C: the file says so, as a dynamic run's does
+        if output is not None:
+            elapsed = time.perf_counter() - start
+            failed_table(case, f"interrupted after {elapsed:.1f} s, before a steady state was found",
+                         model=name, scheme=method, wall_time_s=elapsed).write(output)
         raise
     if output is not None:
         if hasattr(result, "write"):

@@ -90,8 +90,9 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
         scheme: Optional[str] = typer.Option(None, "--scheme", help="Override simulation.scheme."),
         resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
-        checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every",
-                                                       help="Checkpoint every N output steps."),
+        checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every", min=1,
+                                                       help="Checkpoint every N output steps (N >= 1; "
+                                                            "default: every 5 s of wall time)."),
         max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP),
         debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run any case with the model its file names, writing the result to OUTPUT as it goes."""
@@ -183,6 +184,9 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
     try:
         with console.status(f"solving {model} of {case.name} ..."):
             outcome = api.run(loaded, output=output, model=model, method=method)
+    except KeyboardInterrupt:
+        log.warning(f"interrupted; {output} says so and holds no steady state")
+        raise typer.Exit(130)
     except KanatError as error:
         if not isinstance(error, CaseError):
             log.warning(f"wrote {output}: no solution, its status says why")
