@@ -19,6 +19,7 @@ from .case import Case
 from .environment import JonswapWaves, RegularWaves
 from . import limits
 from .paths import Path, key_path, line_of
+from .run_cost import check_node_steps, run_cost
 from .setup_checks import check_continuum_cable, check_lumped_network, check_scheme, check_sea, check_track
 from .support import check_support
 from .vessel import Heading, Turn
@@ -493,20 +494,16 @@ def check_run_size(case: Case, out: Findings) -> None:
     sim = case.simulation
     if sim is None or case.model not in ("continuum", "lumped"):
         return
-    step = sim.step_or_default
-    steps = sim.duration / step
-    nodes = sum(c.segments + 1 for c in case.cables)
-    if nodes > limits.MAX_SEGMENTS_TOTAL + len(case.cables):
-        return  # check_discretization says so
+    cost = run_cost(case)
+    nodes = cost.nodes
     where = ("simulation", "dt") if sim.dt is not None else ("simulation", "duration")
-    span = f"duration {fmt(sim.duration)} s / dt {fmt(step)} s = {steps:.4g} time steps"
-    if steps > limits.MAX_TIME_STEPS:
-        out.error(where, f"{span}, more than the limit of {limits.MAX_TIME_STEPS:.3g}; use a "
-                  "larger dt or a shorter duration")
-    elif nodes * steps > limits.MAX_NODE_STEPS:
-        out.error(where, f"{span} x {nodes:,} nodes = {nodes * steps:.3g} node-steps, more than "
-                  f"the limit of {limits.MAX_NODE_STEPS:.3g} (hours to days of computing); use "
-                  "a larger dt, fewer segments or a shorter duration")
+    try:
+        refused = check_node_steps(cost.steps, cost.nodes, cost.step, cost.why)
+    except ValueError as exc:
+        out.error(("simulation",), str(exc))
+        return
+    if refused:
+        out.error(where, f"duration {fmt(sim.duration)} s is {refused}")
     try:
         limit = limits.max_output_bytes(out.max_output_bytes)
     except ValueError as exc:
@@ -523,6 +520,19 @@ def check_run_size(case: Case, out: Findings) -> None:
                   f"more than the limit of {_size(limit)}; store less often (output_dt), shorten "
                   f"the duration or use fewer segments, or raise the limit "
                   f"(kanat --max-output 8G, {limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=\"8G\" in Python)")
+
+
+def check_run_length(case: Case, out: Findings) -> None:
+    """A warning when a run's node-steps exceed :data:`limits.WARN_NODE_STEPS` (minutes to hours)."""
+    cost = run_cost(case)
+    if cost is None or cost.node_steps <= limits.WARN_NODE_STEPS:
+        return
+    where = ("simulation", "dt") if case.simulation.dt is not None else ("simulation", "duration")
+    out.warning(where, f"a long run: {cost.steps:.3g} time steps of {cost.step:.3g} s ({cost.why}) x "
+                f"{cost.nodes:,} nodes = {cost.node_steps:.3g} node-steps, at least "
+                f"{cost.node_steps * limits.FASTEST_NODE_STEP_S / 60:.0f} minutes of computing "
+                f"(the warning starts at {limits.WARN_NODE_STEPS:.3g}); a larger dt, an implicit "
+                "scheme or fewer segments would shorten it")
 
 
 def check_pitch_size(case: Case, out: Findings) -> None:
@@ -555,6 +565,7 @@ CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
     check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
     check_support, check_scheme, check_track, check_sea, check_continuum_cable, check_lumped_network,
+    check_run_length,
 )
 
 
