@@ -124,6 +124,27 @@ def check_anchors(case: Case, out: Findings) -> None:
                             f"anchor at z = {fmt(z)} m is above the free surface z = 0")
 
 
+def check_positions_above_seabed(case: Case, out: Findings) -> None:
+    """A body's or a point's given position lies above the seabed (the solvers would start it
+    inside the ground and fail later as an element "stretched by 1510 %")."""
+    placed = [(("bodies", name, "position"), f"body '{name}'", body.position)
+              for name, body in case.bodies.items() if body.position is not None]
+    placed += [(("points", name, "position"), f"point '{name}'", getattr(point, "position", None))
+               for name, point in case.points.items() if getattr(point, "position", None) is not None]
+    if not placed or case.environment.depth is None:
+        return
+    from ..physics.seabed import seabed_of
+
+    depth = case.environment.depth
+    seabed = seabed_of(case.environment)
+    for path, what, position in placed:
+        floor = float(seabed.height(position[0], position[1]))
+        if position[2] < floor - 1e-9 * depth:
+            out.error(path, f"{what} at z = {fmt(position[2])} m is {fmt(floor - position[2])} m below the "
+                      f"seabed at z = {fmt(floor)} m (depth {fmt(depth)} m): place it in the water, "
+                      f"above z = {fmt(floor)} m, or deepen environment.depth")
+
+
 def check_fixed_span(case: Case, out: Findings) -> None:
     """A cable between two fixed ends must be long enough to reach both."""
     for i, cable in enumerate(case.cables):
@@ -561,7 +582,7 @@ sanity checks of :data:`CHECKS` (which assume numbers in range) are skipped."""
 
 
 CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
-    check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
+    check_line_types, check_bodies, check_anchors, check_positions_above_seabed, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
     check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
     check_support, check_scheme, check_track, check_sea, check_continuum_cable, check_lumped_network,
