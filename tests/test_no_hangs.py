@@ -79,6 +79,18 @@ def test_a_1000_m_s_vertical_current_ends_within_the_time_budget(monkeypatch, tm
     assert status.startswith("failed: the statics of cable 'mooring' gave up") and "no steady state" in status
 
 
+def test_a_dynamic_run_whose_initial_statics_makes_no_progress_fails_within_the_budget(monkeypatch):
+    monkeypatch.setenv(budget.SECONDS_ENV, "2")
+    case = kanat.load_case(example("surface_mooring_waves.yaml", **{
+        "environment.current": {"profile": [[0, 0.5, 0, 0], [-50, 0.5, 0, 1000], [-100, 0.5, 0, 0]]}}))
+    start = time.perf_counter()
+    with pytest.warns(api.RunFailedWarning):
+        outcome = api.run(case)
+    assert time.perf_counter() - start < 2.0 + 8.0                   # the budget, and the model's set-up
+    assert outcome.status.startswith("failed: no initial state: the statics of cable 'mooring' (the initial "
+                                     "state of the run) gave up after 2 s")
+
+
 def test_the_budget_counts_evaluations_and_time():
     counted = budget.Budget(seconds=math.inf, evaluations=100)
     for _ in range(100):

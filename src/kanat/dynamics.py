@@ -48,6 +48,7 @@ import numpy as np
 
 from kanat import jit
 from kanat.errors import OutputWriteError, SolverError
+from kanat.statics.budget import BudgetExceeded
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
 from kanat.schemes import label
@@ -367,7 +368,7 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
         _log_setup(model)
         try:
             index, state, done = _first(model, resume)
-        except SolverError as error:
+        except (SolverError, BudgetExceeded) as error:
             return _failed_start(model, observers, error, start, compiled[0], output)
         layout = model.layout()
         log.info(("initial state found" if resume is None else
