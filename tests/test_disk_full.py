@@ -16,7 +16,7 @@ import pytest
 import kanat
 from kanat import api
 from kanat.errors import OutputWriteError
-from kanat.io import stream
+from kanat.io import space
 from kanat.io.results import read_result
 from kanat.io.stream import Checkpoint, part_path
 
@@ -41,13 +41,13 @@ def test_space_running_out_stops_cleanly_and_resume_is_bit_identical(tmp_path, m
     case = kanat.load_case(CASE.replace("duration: 1500", "duration: 200"))
     reference = api.run(case).dataset
     out = tmp_path / "out.nc"
-    real = stream._free_bytes
+    real = space._free_bytes
     calls = {"n": 0}
 
     def running_out(path):                              # room for the file and 6 blocks or checkpoints
         calls["n"] += 1
         return real(path) if calls["n"] <= 7 else 0.0
-    monkeypatch.setattr(stream, "_free_bytes", running_out)
+    monkeypatch.setattr(space, "_free_bytes", running_out)
     with pytest.raises(OutputWriteError) as stopped:
         api.run(case, output=out, checkpoint_every=50)
     message = str(stopped.value)
@@ -56,7 +56,7 @@ def test_space_running_out_stops_cleanly_and_resume_is_bit_identical(tmp_path, m
     kept = read_result(part_path(out))
     assert kept.attrs["status"] == "running" and f"keeps the outputs up to t = {float(kept.time[-1]):.6g} s" in message
     assert "out.nc.ckpt.npz the state at t = " in message and Checkpoint.path_for(out).stat().st_size > 0
-    monkeypatch.setattr(stream, "_free_bytes", real)
+    monkeypatch.setattr(space, "_free_bytes", real)
     api.run(case, output=out, resume=True)
     same_result(out, reference)
 
@@ -102,3 +102,16 @@ def test_a_full_tmpfs_ends_the_run_in_one_sentence_and_resume_is_bit_identical(t
                           timeout=600)
     assert done.returncode == 0, done.stdout + done.stderr
     same_result(out, read_result(whole))
+
+
+def test_a_steady_result_on_a_full_disk_is_not_written_and_says_so(tmp_path, monkeypatch):
+    """Statics write their result whole or not at all (an HDF5 write that fails crashed the process)."""
+    from helpers import EXAMPLES
+
+    monkeypatch.setattr(space, "_free_bytes", lambda path: 1000.0)
+    out = tmp_path / "steady.nc"
+    with pytest.raises(OutputWriteError, match=r"steady.nc was not written: the disk holding .* is full "
+                                               r"\(0.0 MiB free, 1.0 MiB needed for the result steady.nc\); "
+                                               r"free some space and solve again"):
+        api.run(kanat.load_case(EXAMPLES / "towed_body.yaml"), output=out, model="statics")
+    assert list(tmp_path.iterdir()) == []

@@ -484,8 +484,8 @@ def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcom
         result, text, solution = entry.solve(case, method)
     except KanatError as error:
         if output is not None and not isinstance(error, CaseError):
-            failed_table(case, str(error), model=name, scheme=method,
-                         wall_time_s=time.perf_counter() - start).write(output)
+            _write_steady(failed_table(case, str(error), model=name, scheme=method,
+                                       wall_time_s=time.perf_counter() - start), output)
         raise
     except KeyboardInterrupt:                   # Ctrl-C: the file says so, as a dynamic run's does
         if output is not None:
@@ -494,10 +494,18 @@ def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcom
                          model=name, scheme=method, wall_time_s=elapsed).write(output)
         raise
     if output is not None:
-        if hasattr(result, "write"):
-            result.write(output)
-        else:
-            from kanat.io.results import write_result
-
-            write_result(result, output)
+        _write_steady(result, output)
     return Outcome("ok", text, result, None if output is None else Path(output), solution=solution)
+
+
+def _write_steady(result, output) -> None:
+    """Write a steady model's result (atomically: a write that fails leaves no file)."""
+    from kanat.errors import OutputWriteError
+    from kanat.io.results import write_result
+
+    try:
+        result.write(output) if hasattr(result, "write") else write_result(result, output)
+    except OutputWriteError as error:
+        raise OutputWriteError(f"{output} was not written: {error}; free some space and solve again") from None
+    except OSError as error:
+        raise OutputWriteError(f"{output} was not written ({error}); free some space and solve again") from error

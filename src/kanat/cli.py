@@ -185,7 +185,7 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
             method: str = "auto") -> None:
     """Solve a steady model (statics, pitch), write its result and, optionally, its pictures."""
     from kanat import api
-    from kanat.errors import CaseError
+    from kanat.errors import CaseError, OutputWriteError
 
     _check_outputs(output, plot, case, debug)
     try:
@@ -195,7 +195,7 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
         log.warning(f"interrupted; {output} says so and holds no steady state")
         raise typer.Exit(130)
     except KanatError as error:
-        if not isinstance(error, CaseError):
+        if not isinstance(error, (CaseError, OutputWriteError)):
             log.warning(f"wrote {output}: no solution, its status says why")
         fail(error, debug, f"{model} failed")
     except Exception as error:  # noqa: BLE001 - reported by fail

@@ -24,8 +24,6 @@ import contextlib
 import json
 import math
 import os
-import shutil
-import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,48 +32,10 @@ import numpy as np
 
 from kanat.errors import KanatError, OutputWriteError
 from kanat.io.schema import TIME_COORD, Layout, attributes, netcdf_attr, time_dims
+from kanat.io.space import close_quietly, require_space
 
 CHUNK_OUTPUTS = 64
 """Outputs per HDF5 chunk along ``time`` (appends stay cheap; reads by time stay quick)."""
-SPACE_MARGIN = 1024**2
-"""Bytes kept free beyond what a block or a checkpoint needs (HDF5 metadata, the rename)."""
-
-
-def _free_bytes(path: Path) -> float:
-    """Free space where ``path`` is (or would be) [bytes]; infinite when it cannot be told."""
-    try:
-        return float(shutil.disk_usage(path.parent).free)
-    except OSError:
-        return float("inf")
-
-
-def _close_quietly(file) -> None:
-    """Close an HDF5 file whose disk is full: h5py reports each dataset it fails to close as an
-    ignored exception (a screenful of tracebacks for one cause, already reported)."""
-    hook = sys.unraisablehook
-    sys.unraisablehook = lambda unraisable: None
-    try:
-        file.close()
-    except (OSError, RuntimeError, ValueError):
-        pass
-    finally:
-        sys.unraisablehook = hook
-
-
-def require_space(path: Path, needed: float, what: str) -> None:
-    """Refuse to write ``needed`` bytes beside ``path`` when the disk has not that much to spare.
-
-    Raises
-    ------
-    OutputWriteError
-        Naming ``what`` would have been written and how much space is left.
-    """
-    free = _free_bytes(path)
-    if free < needed + SPACE_MARGIN:
-        raise OutputWriteError(f"the disk holding {path.parent} is full ({free / 1024**2:.1f} MiB free, "
-                               f"{(needed + SPACE_MARGIN) / 1024**2:.1f} MiB needed for {what})")
-
-
 def part_path(path) -> Path:
     """Where a run streams its result until it ends: ``OUT.nc.part``."""
     path = Path(path)
@@ -211,7 +171,7 @@ class ResultStream:
         (a close that fails, on a full disk, leaves the file as its last flush did)."""
         if self._file is not None:
             self._buffer.clear()
-            _close_quietly(self._file)
+            close_quietly(self._file)
             self._file = None
 
     # --- the file --------------------------------------------------------------------
