@@ -6,7 +6,9 @@ one point, a current of hundreds of m/s) either can take tiny step after tiny st
 ever failing. Every evaluation of the steady equations (:func:`kanat.statics.problem.steady_rhs`,
 :func:`kanat.statics.spatial.rhs`) is charged to the budget of the solve in progress, which
 ends the solve with :class:`BudgetExceeded` (a clear message, written as the result's status)
-once it has run for :data:`MAX_SECONDS` or made :data:`MAX_EVALUATIONS` evaluations.
+once it has run for :data:`MAX_SECONDS` or made :data:`MAX_EVALUATIONS` evaluations. Solvers
+whose iterations are few and long (the lumped model's equilibrium, network statics) call
+:func:`check_time` once an iteration.
 
 The examples solve in under 3 s and with at most ~5 500 evaluations (subsurface_mooring.yaml);
 the limits are 40 and 90 times that. The environment variable ``KANAT_STATICS_SECONDS`` sets
@@ -70,14 +72,20 @@ class Budget:
                 "is making no progress, which usually means the case has no steady state (both ends "
                 "of a line at one point, a current of hundreds of m/s, ...); check the case")
         if self.used % CLOCK_EVERY == 0:
-            elapsed = time.perf_counter() - self.started
-            if elapsed > self.seconds:
-                raise BudgetExceeded(
-                    f"{self.what} gave up after {elapsed:.0f} s (the limit is {self.seconds:g} s; "
-                    f"{self.used:,} evaluations of the steady equations): the solver is making no "
-                    "progress, which usually means the case has no steady state (both ends of a "
-                    "line at one point, a current of hundreds of m/s, ...); check the case, or "
-                    f"raise the limit with {SECONDS_ENV}=600")
+            self.check_time()
+
+    def check_time(self) -> None:
+        """Raise :class:`BudgetExceeded` past the time limit (an iteration of a solver whose
+        iterations are few and long calls it each time)."""
+        elapsed = time.perf_counter() - self.started
+        if elapsed > self.seconds:
+            work = f"; {self.used:,} evaluations of the steady equations" if self.used else ""
+            raise BudgetExceeded(
+                f"{self.what} gave up after {elapsed:.3g} s (the limit is {self.seconds:g} s{work}): "
+                "the solver is making no "
+                "progress, which usually means the case has no steady state (both ends of a "
+                "line at one point, a current of hundreds of m/s, ...); check the case, or "
+                f"raise the limit with {SECONDS_ENV}=600")
 
 
 _ACTIVE: ContextVar[Budget | None] = ContextVar("kanat_statics_budget", default=None)
@@ -120,6 +128,13 @@ def budget(what: str = "the steady solve", seconds: float | None = None,
         yield active
     finally:
         _ACTIVE.reset(token)
+
+
+def check_time() -> None:
+    """The time limit of the solve in progress (nothing outside a :func:`budget`)."""
+    active = _ACTIVE.get()
+    if active is not None:
+        active.check_time()
 
 
 def charge(count: int = 1) -> None:
