@@ -112,3 +112,17 @@ def test_compiled_calls_in_batches_give_the_same_run(monkeypatch, name, toleranc
     batched = api.run(case).dataset
     assert whole.attrs["status"] == batched.attrs["status"] == "ok"
     np.testing.assert_allclose(batched["position"].values, whole["position"].values, rtol=0, atol=tolerance)
+
+
+def test_the_command_line_raises_the_limit_for_one_command(tmp_path, monkeypatch):
+    from typer.testing import CliRunner
+
+    from kanat.cli import app
+
+    monkeypatch.setenv(limits.NODE_STEPS_ENV, repr(limits.MAX_NODE_STEPS))   # restored after the test
+    path = tmp_path / "long.yaml"
+    path.write_text(decay(segments=10_000, axial_damping=0.0))
+    refused = CliRunner().invoke(app, ["validate", str(path)])
+    assert refused.exit_code == 1 and "node-steps, more than the limit of 2e+10" in refused.output
+    raised = CliRunner().invoke(app, ["validate", str(path), "--max-node-steps", "1e12"])
+    assert raised.exit_code == 0 and "a long run" in raised.output and "valid (4 warning(s))" in raised.output
