@@ -262,6 +262,13 @@ CLASSES: dict[str, Bad] = {
     "an infinite diameter": Bad(base("diameter: 0.0173", "diameter: 1e400"), ("finite number",), 9),
     "a NaN written as text": Bad(base("diameter: 0.0173", "diameter: 'nan'"), ("finite number",), 9),
     "a boolean diameter": Bad(base("diameter: 0.0173", "diameter: yes"), ("must be a number, not true",), 9),
+    "a quoted length": Bad(base("length: 1000", "length: '1000'"),
+                           ("must be a number, not the text '1000'", "without quotes"), 23),
+    "a quoted exponent": Bad(base("axial_stiffness: 1.2717e7", "axial_stiffness: '1e3'"),
+                             ("not the text '1e3'",), 12),
+    "a quoted segment count": Bad(base("segments: 100", 'segments: "100"'), ("not the text '100'",), 24),
+    "a quoted vector component": Bad(base("tow_point: [0, 0, 0]", "tow_point: [0, '0', 0]"),
+                                     ("not the text '0'",), 16),
     "a boolean segment count": Bad(base("segments: 100", "segments: true"), ("must be a number",), 24),
     "a fractional segment count": Bad(base("segments: 100", "segments: 2.5"), ("whole number",), 24),
     "zero segments": Bad(base("segments: 100", "segments: 0"), ("at least 1",), 24),
@@ -382,6 +389,19 @@ CLASSES: dict[str, Bad] = {
                                          "net_buoyancy: 1, cable_diameter: 0.01, cable_length: 1, "
                                          "cable_weight: 1, line_length: 1, anchor_x: 0}\n"),
                                     ("exactly one of",), 3),
+    "sphere anchors too close (x_C 0)": Bad(text(edit("x_C: -1.732", "x_C: 0", SPHERE)),
+                                            ("differ by 1 cable lengths", "between 1 cable lengths and 3"), 4),
+    "sphere anchors 1e-9 apart": Bad(text(edit("x_C: -1.732", "x_C: -1e-9", SPHERE)),
+                                     ("cannot meet at the sphere",), 4),
+    "sphere anchors out of reach": Bad(text(edit("x_C: -1.732", "x_C: -3", SPHERE)),
+                                       ("reach only 3 cable lengths",), 4),
+    "sphere chi 1": Bad(text(edit("RkL: 0.4}", "RkL: 0.4, chi: 1}", SPHERE)), ("must be below 1",), 4),
+    "sphere with no load": Bad(text(edit("QkL: 0.45, RkL: 0.4", "QkL: 0, RkL: 0", SPHERE)),
+                               ("both 0",), 4),
+    "dimensional sphere anchors too close": Bad(text(edit("dimensionless: {Psi: 0.02, LoL: 2.0, x_C: -1.732, QkL: 0.45, RkL: 0.4}",
+        "dimensional: {flow_speed: 0.5, sphere_diameter: 1.178, net_buoyancy: 69.19, cable_diameter: 0.01, "
+        "cable_length: 100, cable_weight: 0.03075, line_length: 200, anchor_x: 50}", SPHERE)),
+        ("differ by 100 m", "between 100 m and 300 m apart"), 4),
     "a body and a point of one name": Bad(base("bodies:", "points:\n  sled: {}\nbodies:"),
                                           ("names both a body and a point",)),
     "dimensions 2 with a turn": Bad(base("output_dt: 1.0", "output_dt: 1.0\n  dimensions: 2"),
@@ -458,6 +478,13 @@ def test_kanat_validate_prints_it_and_exits_1(bad):
 
 
 # --- the limits themselves --------------------------------------------------------------
+
+def test_a_quoted_number_names_its_key_path(tmp_path):
+    path = tmp_path / "case.yaml"
+    path.write_text(edit("axial_stiffness: 1.2717e7", "axial_stiffness: '1e3'"))
+    found = [p for p in check_case(path) if "not the text" in p.message]
+    assert [(p.key, p.line) for p in found] == [("line_types.towcable.axial_stiffness", 12)]
+
 
 def test_output_limit_from_argument_and_environment(monkeypatch):
     big = edit("segments: 100", "segments: 50000", edit("  dt: 1.0", "  dt: 0.1",

@@ -118,6 +118,18 @@ BAD = {
         "waves: {type: components, components: [[0.7854, 1.0, 0, 0], [6.283185307, 1.0, 0, 0]]}",
         "environment.waves.components", "warning", "waves:",
         ["components 2 m over the wavelength 1.561 m", "period 2 pi/omega 1 s", "steepness of 1.28"]),
+    "JONSWAP sea steeper than 1/7": (
+        "waves: {type: regular, height: 2.0, period: 8.0}", "waves: {type: jonswap, hs: 2.0, tp: 1.0, seed: 1}",
+        "environment.waves.hs", "warning", "waves:",
+        ["hs 2 m over the wavelength 1.561 m", "tp 1 s", "steepness of 1.28", "1/7"]),
+    "JONSWAP sea higher than the depth allows": (
+        "depth: 1000\n  waves: {type: regular, height: 2.0, period: 8.0}",
+        "depth: 10\n  waves: {type: jonswap, hs: 9.0, tp: 30.0, seed: 1}",
+        "environment.waves.hs", "warning", "waves:", ["hs 9 m exceeds 0.78 × depth = 7.8 m"]),
+    "body 400 m below a 1000 m seabed": (
+        "buoy: {mass: 100, net_buoyancy: 3000}", "buoy: {mass: 100, net_buoyancy: 3000, position: [300, 0, -1400]}",
+        "bodies.buoy.position", "error", "buoy:",
+        ["body 'buoy' at z = -1400 m is 400 m below the seabed at z = -1000 m", "deepen environment.depth"]),
     "towed cable without a track": (
         "  track:\n    - {straight: {speed: 2.0, duration: 100}}\n", "  tow_point: [0, 0, 0]\n",
         "vessel.track", "warning", "vessel:", ["vessel has no track", "0 m/s"]),
@@ -267,3 +279,13 @@ def test_ignored_sections_warn():
 ])
 def test_wavelength(period, depth, expected):
     assert wavelength(period, 9.81, depth) == pytest.approx(expected, rel=2e-3)
+
+
+def test_the_audits_body_below_the_seabed_fails_in_validate():
+    """mooring_buoy_decay.yaml with its buoy 400 m below the 100 m seabed: refused by validate
+    (the run used to fail later, as an element stretched by 1510 %)."""
+    text = (Path(__file__).parents[1] / "examples" / "mooring_buoy_decay.yaml").read_text()
+    text = edit("position: [12, 0, -2]", "position: [12, 0, -500]", text)
+    errors = [p for p in findings(text) if p.severity == "error"]
+    assert [(p.key, p.line) for p in errors] == [("bodies.buoy.position", line_with(text, "position: [12"))]
+    assert "is 400 m below the seabed at z = -100 m (depth 100 m)" in errors[0].message

@@ -361,6 +361,29 @@ def test_motion_table_errors_name_the_key_and_line(tmp_path, content, words):
     assert words in problem.message
 
 
+SECRET = "root:x:0:0:root:/root:/bin/bash"
+
+
+@pytest.mark.parametrize("name, content, words", [
+    ("passwd", SECRET + "\n", "'passwd' is not a .csv file; a motion table is a CSV file (motion.csv)"),
+    ("passwd.csv", SECRET + "\n", "passwd.csv: its first row is not a header of column names (column 1"),
+    ("image.csv", b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR", "image.csv: not a text file (it is not UTF-8)"),
+    ("nul.csv", "time, surge\n0, 1\x00\n", "'1\\x00' is not a number"),
+    ("folder.csv", None, "folder.csv: not a regular file"),
+])
+def test_a_motion_table_must_be_a_csv_of_the_columns_and_is_not_echoed(tmp_path, name, content, words):
+    target = tmp_path / name
+    if content is None:
+        target.mkdir()
+    else:
+        (target.write_bytes if isinstance(content, bytes) else target.write_text)(content)
+    text = BASE.replace("simulation:", f"vessel:\n  motion: {{table: {name}}}\nsimulation:")
+    (problem,) = [p for p in errors_at(text, tmp_path) if p.key.startswith("vessel")]
+    assert problem.key == "vessel.motion.table" and problem.line == line_of(text, name)
+    assert words in problem.message
+    assert "root:" not in problem.message and "PNG" not in problem.message
+
+
 def errors_at(text: str, folder: Path) -> list:
     path = folder / "case.yaml"
     path.write_text(text)

@@ -63,6 +63,21 @@ def test_result_file_has_the_case_format_names(ran):
     assert back.attrs["method_feedback"] == "shooting"
 
 
+def test_nan_for_not_applicable_says_so_in_the_attributes(ran, tmp_path):
+    out, _, _ = ran
+    back = read_result(out / "pitch.nc")
+    check = back["fourier_vs_shooting"].attrs
+    assert check["not_applicable_modes"] == "feedback" and check["comment"].startswith("NaN means not applicable")
+    assert "comment" not in back["amplitude_reduction"].attrs           # every mode has its reduction
+    text = EXAMPLE.read_text().replace("modes: [off, sinusoidal, rectangular, feedback, optimal]",
+                                       "modes: [sinusoidal, feedback]")
+    ds, _ = run_pitch_case(parse_case(text), tmp_path / "no_off.nc")
+    for name in ("amplitude_reduction", "max_abs_reduction"):
+        assert np.isnan(ds[name].values).all()
+        assert ds[name].attrs["not_applicable_modes"] == "sinusoidal, feedback"
+        assert "'off', which was not among the modes solved" in ds[name].attrs["comment"]
+
+
 def test_figures_and_table(ran):
     out, _, table = ran
     for name in FILES.values():

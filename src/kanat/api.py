@@ -340,6 +340,7 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         raise KanatError(f"model '{name}' is not available in kanat {__version__} (available: "
                          f"{', '.join(MODELS)}).{hint}")
     require_supported(case, name)
+    _check_checkpoint_every(checkpoint_every)
     if resume and output is None:
         raise KanatError("resume needs the result file of the run to continue (output)")
     if output is None:
@@ -349,6 +350,16 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     output = check_output_file(output)
     with OutputLock(output):                    # a second run on this output is refused, not interleaved
         return _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method)
+
+
+def _check_checkpoint_every(every) -> None:
+    """``checkpoint_every`` is None or a whole number of outputs, at least 1."""
+    if every is None:
+        return
+    if isinstance(every, bool) or not isinstance(every, int) or every < 1:
+        raise KanatError(f"checkpoint_every must be a whole number of outputs, at least 1 (got "
+                         f"{every!r}); leave it out to checkpoint every "
+                         f"{dynamics.CHECKPOINT_WALL_S:g} s of wall time")
 
 
 def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method) -> Outcome:
@@ -487,16 +498,17 @@ def _steady(entry: Steady, case: Case, name: str, output, method: str) -> Outcom
         result, text, solution = entry.solve(case, method)
     except KanatError as error:
         if output is not None and not isinstance(error, CaseError):
-            failed_table(case, str(error), model=name, scheme=method,
-                         wall_time_s=time.perf_counter() - start).write(output)
+            _write_steady(failed_table(case, str(error), model=name, scheme=method,
+                                       wall_time_s=time.perf_counter() - start), output)
+        raise
+    except KeyboardInterrupt:                   # Ctrl-C: the file says so, as a dynamic run's does
+        if output is not None:
+            elapsed = time.perf_counter() - start
+            failed_table(case, f"interrupted after {elapsed:.1f} s, before a steady state was found",
+                         model=name, scheme=method, wall_time_s=elapsed).write(output)
         raise
     if output is not None:
-        if hasattr(result, "write"):
-            result.write(output)
-        else:
-            from kanat.io.results import write_result
-
-            write_result(result, output)
+        _write_steady(result, output)
     status = getattr(result, "attrs", {}).get("status", "ok")
     _warn_failed(status)
     return Outcome(status, text, result, None if output is None else Path(output), solution=solution)
@@ -506,3 +518,16 @@ def _warn_failed(status: str) -> None:
     """A :class:`RunFailedWarning` for a steady result that failed its checks (it is returned all the same)."""
     if status != "ok":
         warnings.warn(f"the steady state failed its checks: {status}", RunFailedWarning, stacklevel=3)
+
+
+def _write_steady(result, output) -> None:
+    """Write a steady model's result (atomically: a write that fails leaves no file)."""
+    from kanat.errors import OutputWriteError
+    from kanat.io.results import write_result
+
+    try:
+        result.write(output) if hasattr(result, "write") else write_result(result, output)
+    except OutputWriteError as error:
+        raise OutputWriteError(f"{output} was not written: {error}; free some space and solve again") from None
+    except OSError as error:
+        raise OutputWriteError(f"{output} was not written ({error}); free some space and solve again") from error

@@ -23,8 +23,9 @@ from typing import Optional  # noqa: E402
 
 import typer  # noqa: E402
 
-from kanat.cli_common import (LOG_FILE_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP, CONTEXT, console, describe,  # noqa: E402
-                              fail, load, print_problems, setup_logging, show)
+from kanat.cli_common import (LOG_FILE_HELP, MAX_NODE_STEPS_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP,  # noqa: E402
+                              CONTEXT, console, describe, fail, load, print_problems, set_max_node_steps,
+                              setup_logging, show)
 from kanat.errors import KanatError  # noqa: E402
 
 log = logging.getLogger("kanat")
@@ -54,10 +55,13 @@ def main(version: bool = typer.Option(False, "--version", callback=_version, is_
 
 @app.command()
 def validate(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)."),
-             max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP)):
+             max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP),
+             max_node_steps: Optional[float] = typer.Option(None, "--max-node-steps", min=1.0,
+                                                            help=MAX_NODE_STEPS_HELP)):
     """Check a case file and report every problem at once (exit 1 on errors)."""
     from kanat.io import check_case
 
+    set_max_node_steps(max_node_steps)
     try:
         problems = check_case(case, max_output_bytes=max_output)
     except KanatError as error:
@@ -90,13 +94,17 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
         scheme: Optional[str] = typer.Option(None, "--scheme", help="Override simulation.scheme."),
         resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
-        checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every",
-                                                       help="Checkpoint every N output steps."),
+        checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every", min=1,
+                                                       help="Checkpoint every N output steps (N >= 1; "
+                                                            "default: every 5 s of wall time)."),
         max_output: Optional[str] = typer.Option(None, "--max-output", help=MAX_OUTPUT_HELP),
+        max_node_steps: Optional[float] = typer.Option(None, "--max-node-steps", min=1.0,
+                                                       help=MAX_NODE_STEPS_HELP),
         debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run any case with the model its file names, writing the result to OUTPUT as it goes."""
     from kanat import api
 
+    set_max_node_steps(max_node_steps)
     if (case is None) == (from_result is None):
         fail(KanatError("give a case file, or --from-result RESULT.nc (not both)"), debug, "nothing to run")
     if from_result is not None:
@@ -177,15 +185,18 @@ def _steady(loaded, case: Path, output: Path, plot: Optional[Path], debug: bool,
             method: str = "auto") -> None:
     """Solve a steady model (statics, pitch), write its result and, optionally, its pictures."""
     from kanat import api
-    from kanat.errors import CaseError
+    from kanat.errors import CaseError, OutputWriteError
 
     _check_outputs(output, plot, case, debug)
     try:
         with console.status(f"solving {model} of {case.name} ..."), warnings.catch_warnings():
             warnings.simplefilter("ignore", api.RunFailedWarning)        # the status is reported below
             outcome = api.run(loaded, output=output, model=model, method=method)
+    except KeyboardInterrupt:
+        log.warning(f"interrupted; {output} says so and holds no steady state")
+        raise typer.Exit(130)
     except KanatError as error:
-        if not isinstance(error, CaseError):
+        if not isinstance(error, (CaseError, OutputWriteError)):
             log.warning(f"wrote {output}: no solution, its status says why")
         fail(error, debug, f"{model} failed")
     except Exception as error:  # noqa: BLE001 - reported by fail

@@ -161,6 +161,19 @@ def print_problems(problems) -> None:
 
 
 MAX_OUTPUT_HELP = "Largest result a run may write, e.g. 8G (default: KANAT_MAX_OUTPUT_BYTES, else 2G)."
+MAX_NODE_STEPS_HELP = ("Largest run allowed, in node-steps (time steps x nodes), e.g. 1e11 (default: "
+                       "KANAT_MAX_NODE_STEPS, else 2e10: half an hour to a day of computing).")
+
+
+def set_max_node_steps(value: float | None) -> None:
+    """``--max-node-steps``: the limit for this command, through the environment variable the case
+    checks and the models read (:func:`kanat.model.limits.max_node_steps`)."""
+    import os
+
+    from kanat.model import limits
+
+    if value is not None:
+        os.environ[limits.NODE_STEPS_ENV] = repr(float(value))
 
 
 def load(case: Path, debug: bool, max_output: str | None = None, solver: str | None = None):

@@ -50,7 +50,8 @@ from typing import Callable, Protocol, Sequence
 import numpy as np
 
 from kanat import jit
-from kanat.errors import SolverError
+from kanat.errors import OutputWriteError, SolverError
+from kanat.statics.budget import BudgetExceeded
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
 from kanat.statics.steady_checks import LEFT_BY_DYNAMIC_MODELS, check_steady, nodes_by_cable
@@ -285,6 +286,7 @@ class Checkpointer:
         self.path, self.case_sha256 = Path(path), case_sha256
         self.every, self.before = every, tuple(before)
         self._last = time.perf_counter()
+        self._saved_at: float | None = None
 
     def load(self, model) -> Checkpoint:
         """The checkpoint to resume ``model`` from (refusing another case or scheme)."""
@@ -307,6 +309,16 @@ class Checkpointer:
                    point.model.save(point.state),
                    {"steps": s.steps, "iterations": s.iterations, "cuts": s.cuts}).save(self.path)
         self._last = time.perf_counter()
+        self._saved_at = point.time
+
+    def kept(self) -> str:
+        """Where a run stopped by a write error continues from, for its message."""
+        path = Checkpoint.path_for(self.path)
+        if self._saved_at is not None:
+            return f"{path} the state at t = {self._saved_at:.6g} s"
+        if path.exists():
+            return f"{path} the state it held before this run"
+        return "no checkpoint was written yet (--resume will start afresh)"
 
     def flush(self) -> None:
         """Nothing buffered."""
@@ -360,7 +372,7 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
         _log_setup(model)
         try:
             index, state, done = _first(model, resume)
-        except SolverError as error:
+        except (SolverError, BudgetExceeded) as error:
             return _failed_start(model, observers, error, start, compiled[0], output)
         layout = model.layout()
         log.info(("initial state found" if resume is None else
@@ -395,11 +407,28 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
                                "--resume", done, index, start, setup - setup_compile, solver, compiled[0], output)
             _finish(observers, summary, {})
             raise
+        except OutputWriteError as error:
+            raise _write_failure(error, index * model.output_interval, observers) from None
         final, extra = model.final(state)
         summary = _summary(model, status, done, index, start, setup - setup_compile, solver, compiled[0], output,
                            extra)
-    _finish(observers, summary, final)
+    try:
+        _finish(observers, summary, final)
+    except OutputWriteError as error:
+        raise _write_failure(error, model.duration, observers) from None
     return summary
+
+
+def _write_failure(error: OutputWriteError, t: float, observers) -> OutputWriteError:
+    """The one sentence of a run stopped because its files could not be written: why, what the
+    files keep, how to continue. Every observer's file is closed as a kill would leave it."""
+    for observer in observers:
+        abandon = getattr(observer, "abandon", None)
+        if abandon is not None:
+            abandon()
+    kept = [observer.kept() for observer in observers if hasattr(observer, "kept")]
+    return OutputWriteError(f"the run stopped at t = {t:.6g} s because {error}; " + " and ".join(kept)
+                            + "; free some space and continue with --resume")
 
 
 def _log_setup(model) -> None:

@@ -69,5 +69,15 @@ class CaseError(KanatError, ValueError):
         return CaseError([p.located(source) for p in self.problems])
 
 
+class OutputWriteError(KanatError, OSError):
+    """A result or checkpoint that could not be written (a full disk, a quota, an I/O error).
+
+    Raised before anything is half-written where it can be foreseen (the free space is checked
+    before each block), so that the file keeps every output up to its last complete block and
+    the checkpoint stays the last complete one: a run continues with ``--resume`` once the
+    cause is gone.
+    """
+
+
 class SolverError(KanatError, RuntimeError):
     """A solver that did not converge; the message says where and what to try."""

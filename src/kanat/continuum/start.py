@@ -12,6 +12,7 @@ import numpy as np
 
 from kanat.model.plane import out_of_plane
 from kanat.statics import CableSolution
+from kanat.statics.budget import budget
 from kanat.statics.march import steady_guess
 from kanat.statics.setup import cable_problems
 
@@ -48,16 +49,18 @@ def static_shape(case, name, s) -> CableSolution:
     """The statics solution of the case's cable at stations ``s`` (the initial guess).
 
     A cable with a free tail has no statics solution of its own (statics refuses free ends);
-    its guess is :func:`free_tail_guess`, which the discrete steady solve then corrects.
+    its guess is :func:`free_tail_guess`, which the discrete steady solve then corrects. The
+    statics solve has the budget of any (:mod:`kanat.statics.budget`).
     """
     if case.cables[0].to.kind == "free":
         return free_tail_guess(case, s)
-    if needs_spatial_statics(case):
-        from kanat.statics.setup3d import cable_problem3
-        from kanat.statics.solve3d import solve_cable3
+    with budget(f"the statics of cable '{name}' (the initial state of the run)"):
+        if needs_spatial_statics(case):
+            from kanat.statics.setup3d import cable_problem3
+            from kanat.statics.solve3d import solve_cable3
 
-        return solve_cable3(cable_problem3(case), "auto", s)
-    return steady_guess(cable_problems(case)[name], s)
+            return solve_cable3(cable_problem3(case), "auto", s)
+        return steady_guess(cable_problems(case)[name], s)
 
 
 def free_tail_guess(case, s) -> CableSolution:

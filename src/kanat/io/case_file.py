@@ -29,7 +29,7 @@ from ..errors import CaseError, CaseWarning, Problem
 from ..model import Case
 from ..model.checks import physical_checks
 from ..model.support import unsupported
-from ..model.validation import bool_problems, validate_data
+from ..model.validation import number_problems, validate_data
 from .case_source import read_document
 from .case_read import read_case_text
 
@@ -41,7 +41,7 @@ def _check(text: str, file: str | None, max_output_bytes: float | str | None = N
     problems = list(doc.problems)
     if doc.data is None and problems:
         return None, problems
-    problems += bool_problems(doc.data, doc.lines, file)
+    problems += number_problems(doc.data, doc.lines, file)
     case, found = validate_data(doc.data, file, doc.lines)
     problems += found
     if case is not None:

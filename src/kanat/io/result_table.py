@@ -18,6 +18,7 @@ from typing import Iterable
 import numpy as np
 
 from kanat.io.schema import netcdf_attr
+from kanat.io.space import require_space
 
 
 def _string_dtype():
@@ -60,6 +61,10 @@ def write_netcdf(path, sizes: dict, variables: Iterable[tuple[str, tuple, np.nda
     variables = [(name, tuple(dims), np.asarray(values), var_attrs) for name, dims, values, var_attrs in variables]
     dims_of = {name: dims for name, dims, _, _ in variables}
     extra = [name for name in coords if name not in sizes]
+    text_bytes = sum(len(repr(v)) for _, _, values, _ in variables if values.dtype.kind in "OUS"
+                     for v in values.ravel())
+    require_space(path, sum(v.nbytes for _, _, v, _ in variables) + text_bytes + len(repr(attrs)),
+                  f"the result {path.name}")
     with atomic_path(path) as tmp, h5netcdf.File(tmp, "w") as f:
         f.dimensions = dict(sizes)
         for name, dims, values, var_attrs in variables:

@@ -144,4 +144,18 @@ def pitch_dataset(result, case, wall_time_s: float = 0.0) -> xr.Dataset:
                 "time": ("time", time, {"units": "s", "long_name": "time within one steady wave period"})},
         attrs=attrs,
     )
+    _say_not_applicable(ds, "amplitude_reduction", "max_abs_reduction",
+                        why="the reduction compares a mode with 'off', which was not among the modes solved")
+    _say_not_applicable(ds, "fourier_vs_shooting",
+                        why="the mode was solved one way only (a feedback law has no open-loop shooting "
+                            "twin), so there is no difference to measure")
     return annotate(ds)
+
+
+def _say_not_applicable(ds: xr.Dataset, *names: str, why: str) -> None:
+    """Name the modes where ``names`` hold NaN, and why, in their attributes (CF ``comment``)."""
+    for name in names:
+        missing = [str(m) for m, value in zip(ds["mode"].values, ds[name].values) if np.isnan(value)]
+        if missing:
+            ds[name].attrs["comment"] = f"NaN means not applicable: {why}"
+            ds[name].attrs["not_applicable_modes"] = ", ".join(missing)

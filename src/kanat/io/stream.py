@@ -20,7 +20,9 @@ recorder, so both read back as the same dataset.
 """
 from __future__ import annotations
 
+import contextlib
 import json
+import math
 import os
 import time
 from dataclasses import dataclass
@@ -28,13 +30,12 @@ from pathlib import Path
 
 import numpy as np
 
-from kanat.errors import KanatError
+from kanat.errors import KanatError, OutputWriteError
 from kanat.io.schema import TIME_COORD, Layout, attributes, netcdf_attr, time_dims
+from kanat.io.space import close_quietly, require_space
 
 CHUNK_OUTPUTS = 64
 """Outputs per HDF5 chunk along ``time`` (appends stay cheap; reads by time stay quick)."""
-
-
 def part_path(path) -> Path:
     """Where a run streams its result until it ends: ``OUT.nc.part``."""
     path = Path(path)
@@ -65,6 +66,7 @@ class ResultStream:
         self._buffer: list[tuple[float, dict]] = []
         self._oldest = 0.0
         self._names: tuple = ()
+        self._bytes_per_output = 0.0
 
     # --- observer protocol ---------------------------------------------------------
 
@@ -73,17 +75,21 @@ class ResultStream:
         import h5netcdf
 
         self._names = layout.time_variables
+        sizes = layout.sizes()
+        self._bytes_per_output = 8.0 * (1 + sum(math.prod(sizes[d] for d in time_dims(name)[1:])
+                                                for name in self._names))
         if resume_at is None:
             self._create(layout)
         elif not self.part.exists():
             if not self.path.exists():
                 raise KanatError(f"no result {self.path} (or {self.part}) to resume; run without --resume")
             os.replace(self.path, self.part)
-        self._file = h5netcdf.File(self.part, "a")
-        if resume_at is not None:
-            self._file.resize_dimension("time", resume_at)
-        self._file.attrs["status"] = "running"
-        self._sync()
+        with self._writing("the start of the run"):
+            self._file = h5netcdf.File(self.part, "a")
+            if resume_at is not None:
+                self._file.resize_dimension("time", resume_at)
+            self._file.attrs["status"] = "running"
+            self._sync()
 
     def record(self, point) -> None:
         """Buffer one output (a :class:`kanat.dynamics.Point`); write the buffer when it is older
@@ -95,17 +101,49 @@ class ResultStream:
             self.flush()
 
     def flush(self) -> None:
-        """Write the buffered slices as one block and push them to disk."""
+        """Write the buffered slices as one block and push them to disk.
+
+        Raises
+        ------
+        OutputWriteError
+            When the disk cannot take the block (checked before writing: the new chunks
+            of every variable and a margin), or a write fails.
+        """
         if not self._buffer:
             return
         f = self._file
         n, m = f.dimensions["time"].size, len(self._buffer)
-        f.resize_dimension("time", n + m)
-        f.variables["time"][n:n + m] = [t for t, _ in self._buffer]
-        for name in self._names:
-            f.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
-        self._sync()
+        require_space(self.part, (m + 2 * CHUNK_OUTPUTS) * self._bytes_per_output, f"{m} more outputs")
+        with self._writing(f"{m} more outputs"):
+            f.resize_dimension("time", n + m)
+            f.variables["time"][n:n + m] = [t for t, _ in self._buffer]
+            for name in self._names:
+                f.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
+            self._sync()
         self._buffer.clear()
+
+    def kept(self) -> str:
+        """What the result file holds, for the message of a run stopped by a write error."""
+        try:
+            import h5netcdf
+
+            with h5netcdf.File(self.part, "r") as f:
+                times = f.variables["time"][...]
+        except (OSError, KeyError, ValueError):
+            return f"{self.part} may be damaged"
+        if len(times) == 0:
+            return f"{self.part} holds no output yet"
+        return f"{self.part} keeps the outputs up to t = {float(times[-1]):.6g} s"
+
+    @contextlib.contextmanager
+    def _writing(self, what: str):
+        """Turn an OS error while writing ``what`` into an :class:`OutputWriteError`."""
+        try:
+            yield
+        except OutputWriteError:
+            raise
+        except OSError as error:
+            raise OutputWriteError(f"writing {what} to {self.part} failed ({error})") from error
 
     def finish(self, status: str, final: dict, attrs: dict) -> None:
         """Write what is buffered, the end-of-run variables and attributes; rename to ``OUT.nc``.
@@ -115,21 +153,25 @@ class ResultStream:
         """
         self.flush()
         f = self._file
-        for name, (dims, values) in final.items():
-            self._final_variable(name, dims, np.asarray(values))
-        for key, value in {**attrs, "status": status}.items():
-            f.attrs[key] = netcdf_attr(value)
-        f.close()
+        needed = sum(np.asarray(values).nbytes for _, values in final.values())
+        require_space(self.part, needed + 64 * 1024, "the end of the run")
+        with self._writing("the end of the run"):
+            for name, (dims, values) in final.items():
+                self._final_variable(name, dims, np.asarray(values))
+            for key, value in {**attrs, "status": status}.items():
+                f.attrs[key] = netcdf_attr(value)
+            f.close()
         self._file = None
         os.replace(self.part, self.path)
         if status == "ok":
             Checkpoint.path_for(self.path).unlink(missing_ok=True)
 
     def abandon(self) -> None:
-        """Close the file as a killed run leaves it: status ``running``, unflushed outputs lost."""
+        """Close the file as a killed run leaves it: status ``running``, unflushed outputs lost
+        (a close that fails, on a full disk, leaves the file as its last flush did)."""
         if self._file is not None:
             self._buffer.clear()
-            self._file.close()
+            close_quietly(self._file)
             self._file = None
 
     # --- the file --------------------------------------------------------------------
@@ -139,6 +181,17 @@ class ResultStream:
 
         self.path.parent.mkdir(parents=True, exist_ok=True)
         sizes = layout.sizes()
+        static = sum(np.asarray(values).nbytes for _, values in layout.static.values())
+        require_space(self.part, static + 2 * CHUNK_OUTPUTS * self._bytes_per_output, "a new result file")
+        try:
+            self._write_layout(layout, sizes)
+        except OSError as error:
+            self.part.unlink(missing_ok=True)
+            raise OutputWriteError(f"creating {self.part} failed ({error})") from error
+
+    def _write_layout(self, layout: Layout, sizes: dict) -> None:
+        import h5netcdf
+
         with h5netcdf.File(self.part, "w") as f:
             f.dimensions = {**sizes, "time": None}
             for name, values in layout.labels.items():
@@ -213,13 +266,29 @@ class Checkpoint:
         return Path(str(result_path) + ".ckpt.npz")
 
     def save(self, result_path) -> Path:
-        """Write atomically beside the result file (write, then rename)."""
+        """Write atomically beside the result file (write, sync, then rename): a checkpoint that
+        cannot be written whole leaves the previous one as it was.
+
+        Raises
+        ------
+        OutputWriteError
+            When the disk cannot take it (checked before writing) or a write fails.
+        """
         path = self.path_for(result_path)
         tmp = path.with_name(path.name + ".part.npz")
         meta = json.dumps({"time": self.time, "outputs": self.outputs, "case_sha256": self.case_sha256,
                            "scheme": self.scheme, "info": self.info})
-        np.savez(tmp, __meta__=np.array(meta), **self.state)
-        os.replace(tmp, path)
+        needed = len(meta) + sum(np.asarray(v).nbytes + 1024 for v in self.state.values())
+        require_space(path, 2 * needed, "a checkpoint")
+        try:
+            with open(tmp, "wb") as stream:
+                np.savez(stream, __meta__=np.array(meta), **self.state)
+                stream.flush()
+                os.fsync(stream.fileno())
+            os.replace(tmp, path)
+        except OSError as error:
+            tmp.unlink(missing_ok=True)
+            raise OutputWriteError(f"writing the checkpoint {path} failed ({error})") from error
         return path
 
     @classmethod

@@ -6,6 +6,11 @@ and no solver opens a file. The CSV has a header row naming its columns (``time`
 of ``surge, sway, heave, roll, pitch, yaw``, in any order; a unit in parentheses or
 brackets after a name is allowed: ``surge (m)``); missing degrees of freedom are zero;
 lines starting with ``#`` are comments. Units: s, m and deg.
+
+The name must end in ``.csv`` and name a regular file of UTF-8 text of at most
+:data:`MAX_TABLE_BYTES`; a file that is anything else (``/etc/passwd``, a device, a
+binary) is refused without quoting its content: the messages quote a header cell only
+when it looks like a column name, and a bad value by its first 20 characters.
 """
 from __future__ import annotations
 
@@ -21,7 +26,11 @@ from ..model.paths import Path, key_path, line_of
 
 MAX_TABLE_ROWS = 1_000_000
 """Most rows of a motion table (a day at 0.1 s is 864 000 rows)."""
+MAX_TABLE_BYTES = 128 * 1024**2
+"""Largest motion table [bytes]: a million rows of seven 15-character numbers are 112 MB."""
 _UNIT = re.compile(r"\s*[\(\[].*[\)\]]\s*$")
+_COLUMN_NAME = re.compile(r"[a-z][a-z0-9_ ]{0,23}")
+"""What a header cell looks like once its unit is removed: a short word, quoted in messages."""
 
 
 class TableError(ValueError):
@@ -31,10 +40,15 @@ class TableError(ValueError):
 def _columns(header: list[str], source: str) -> list[int | None]:
     """For each of :data:`TABLE_COLUMNS`, its index in the CSV (None: absent)."""
     names = [_UNIT.sub("", h).strip().lower() for h in header]
-    for name in names:
-        if name not in TABLE_COLUMNS:
-            raise TableError(f"{source}: unknown column '{name}'{suggest(name, list(TABLE_COLUMNS))}; "
-                             f"columns: {', '.join(TABLE_COLUMNS)}")
+    for number, name in enumerate(names, 1):
+        if name in TABLE_COLUMNS:
+            continue
+        if not _COLUMN_NAME.fullmatch(name):      # not a header: say so without quoting the file
+            raise TableError(f"{source}: its first row is not a header of column names (column "
+                             f"{number} is no column name); a motion table is a CSV file whose first "
+                             f"row names its columns: {', '.join(TABLE_COLUMNS)}")
+        raise TableError(f"{source}: unknown column '{name}'{suggest(name, list(TABLE_COLUMNS))}; "
+                         f"columns: {', '.join(TABLE_COLUMNS)}")
     repeated = sorted({n for n in names if names.count(n) > 1})
     if repeated:
         raise TableError(f"{source}: column '{repeated[0]}' appears twice")
@@ -42,6 +56,19 @@ def _columns(header: list[str], source: str) -> list[int | None]:
         raise TableError(f"{source}: needs a 'time' column (s); the header row names the "
                          f"columns: {', '.join(TABLE_COLUMNS)}")
     return [names.index(c) if c in names else None for c in TABLE_COLUMNS]
+
+
+def _check_file(path: FilePath) -> None:
+    """A ``.csv`` name, a regular file, at most :data:`MAX_TABLE_BYTES` (OSError when missing)."""
+    if path.suffix.lower() != ".csv":
+        raise TableError(f"'{path.name}' is not a .csv file; a motion table is a CSV file (motion.csv) "
+                         f"whose first row names its columns: {', '.join(TABLE_COLUMNS)}")
+    size = path.stat().st_size                    # OSError: missing, no permission
+    if not path.is_file():
+        raise TableError(f"{path.name}: not a regular file (a directory, a device or a pipe)")
+    if size > MAX_TABLE_BYTES:
+        raise TableError(f"{path.name}: {size / 1024**2:.0f} MiB, more than the "
+                         f"{MAX_TABLE_BYTES / 1024**2:.0f} MiB a motion table may hold")
 
 
 def read_motion_table(path: str | FilePath) -> list[list[float]]:
@@ -55,9 +82,16 @@ def read_motion_table(path: str | FilePath) -> list[list[float]]:
         With the file, the row and the column of the first bad entry.
     """
     path = FilePath(path)
-    with path.open(newline="", encoding="utf-8") as handle:
-        lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)
-                 if row and not row[0].lstrip().startswith("#")]
+    _check_file(path)
+    try:
+        with path.open(newline="", encoding="utf-8") as handle:
+            lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)
+                     if row and not row[0].lstrip().startswith("#")]
+    except UnicodeDecodeError:
+        raise TableError(f"{path.name}: not a text file (it is not UTF-8); a motion table is a CSV "
+                         f"file whose first row names its columns: {', '.join(TABLE_COLUMNS)}") from None
+    except csv.Error as error:
+        raise TableError(f"{path.name}: not a CSV file ({error})") from None
     if not lines:
         raise TableError(f"{path.name}: empty; the first row names the columns "
                          f"({', '.join(TABLE_COLUMNS)})")
@@ -75,7 +109,7 @@ def read_motion_table(path: str | FilePath) -> list[list[float]]:
             try:
                 values.append(float(text))
             except ValueError:
-                raise TableError(f"{path.name}, line {number}, column {name}: '{text[:20]}' is "
+                raise TableError(f"{path.name}, line {number}, column {name}: {text[:20]!r} is "
                                  "not a number") from None
         rows.append(values)
     return rows
@@ -114,10 +148,10 @@ def resolve_tables(data: Any, base: FilePath, file: str | None,
     except OSError as error:
         message = (f"cannot read the motion table '{name}' ({error.strerror or error}); the path "
                    f"is relative to the case file's folder {base}")
-    except (TableError, UnicodeDecodeError) as error:
+    except TableError as error:
         message = str(error)
     del motion["table"]            # reported here; the rest of the case is still checked
     return [Problem(key_path(where), message, file, line_of(lines, where))]
 
 
-__all__ = ["DOFS", "MAX_TABLE_ROWS", "TableError", "read_motion_table", "resolve_tables"]
+__all__ = ["DOFS", "MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "TableError", "read_motion_table", "resolve_tables"]

@@ -31,6 +31,7 @@ from kanat.lumped.equilibrium import starting_state
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
+from kanat.model.run_cost import check_node_steps
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, state_positions
 from kanat.lumped.mooring_outputs import (
@@ -81,6 +82,7 @@ class LumpedModel:
         self.scheme = self._choose(scheme)
         self.dt = self._step_size()
         self.output_interval, self.duration = sim.output_interval, sim.duration
+        self._check_length()
         self.node_tension = NodeTension(self.net)
         self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
@@ -124,6 +126,15 @@ class LumpedModel:
                               f"({stepping.SAFETY} x stability limit / highest axial frequency, shortest axial "
                               f"nodal period {info.axial_period:.3g} s); stepping at {h:.4g} s")
         return h
+
+    def _check_length(self) -> None:
+        """Refuse a run whose exact step count is past the limits, before anything is allocated
+        for its steps (``kanat validate`` estimates it; :mod:`kanat.model.run_cost`)."""
+        why = (f"{self.scheme.name}'s safe step, from the shortest axial nodal period "
+               f"{self.info.axial_period:.3g} s" if self.scheme.explicit else "dt")
+        refused = check_node_steps(self.duration / self.dt, self.net.n_nodes, self.dt, why)
+        if refused:
+            raise CaseError([Problem("simulation.duration", f"duration {self.duration:g} s is {refused}")])
 
     # 1. set up ------------------------------------------------------------------------
     def layout(self) -> Layout:

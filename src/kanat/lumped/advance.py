@@ -20,6 +20,10 @@ from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, pack, st
 
 
 COMPILED_HALVINGS = 3       # a failed compiled implicit step is retried as 2, 4, 8 compiled half steps
+CALL_STEPS = 50_000
+"""Most steps of one compiled call: the interpreter gets control back (and Ctrl-C is handled)
+every 50 000 steps, a few seconds of a large network at most, and the vessel's samples for a
+call (``2 steps + 1`` times) stay a few MB, whatever the output interval."""
 
 
 def supports(system, scheme) -> bool:
@@ -144,13 +148,14 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
         tracker.update(state["t"], tensions(state))
         taken += 1
     while taken < steps:
+        batch = min(steps - taken, CALL_STEPS)
         if isinstance(scheme, GeneralizedAlphaLumped):
-            done, failed = _fused_implicit(scheme, system, state, h, steps - taken, tracker)
+            done, failed = _fused_implicit(scheme, system, state, h, batch, tracker)
             if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
                 _explicit(system, state, h, tracker)
             done += failed
         else:
-            done = _fused(scheme, system, state, h, steps - taken, tracker)
+            done = _fused(scheme, system, state, h, batch, tracker)
         taken += done
         if not np.all(np.isfinite(state_positions(state)[0])):
             break

@@ -27,6 +27,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
+from kanat.statics import budget
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
 
@@ -160,8 +161,15 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     each stage starting from the last: a softer line's equilibrium is stretched more, so every
     element stays taut when it stiffens and Newton's method sees no slack kinks.
 
-    Parameters and returns as :func:`_solve`.
+    Parameters and returns as :func:`_solve`. The whole search has the time budget of a steady
+    solve (:mod:`kanat.statics.budget`).
     """
+    with budget.budget("the equilibrium of the lumped network"):
+        return _equilibrium(net, case, x0, velocity, friction, time)
+
+
+def _equilibrium(net, case, x0, velocity, friction, time):
+    """:func:`equilibrium` under its budget."""
     solve = functools.partial(_solve, friction=friction, time=time)
     start = "given" if x0 is not None else "network"
     if x0 is None and velocity is None:
@@ -282,6 +290,7 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
     for iteration in range(1, max_iterations + 1):
         if norm <= tolerance:
             break
+        budget.check_time()
         J = _jacobian(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
         trials = [t for t in (_pseudo_transient(J, M, F, xf, forces, length, dtau, norm),
                               _newton(J, F, xf, forces, length)) if t is not None]

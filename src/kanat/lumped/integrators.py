@@ -29,6 +29,7 @@ from typing import ClassVar
 import numpy as np
 
 from kanat.lumped.implicit import generalized_alpha_step
+from kanat.model.limits import EXPLICIT_STABILITY
 from kanat.schemes import Scheme, registry
 
 
@@ -58,7 +59,7 @@ class RK4(Scheme):
     model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
     explicit: ClassVar[bool] = True
-    stability_limit: ClassVar[float] = 2.8    # imaginary-axis bound 2 sqrt(2) = 2.83, real 2.79
+    stability_limit: ClassVar[float] = EXPLICIT_STABILITY["rk4"]    # imaginary-axis bound 2 sqrt(2) = 2.83, real 2.79
     evaluations_per_step: ClassVar[int] = 4
 
     def start(self, system, t, xf, vf, h):
@@ -80,7 +81,7 @@ class ABM4(Scheme):
     model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
     explicit: ClassVar[bool] = True
-    stability_limit: ClassVar[float] = 0.3    # PECE is weakly unstable on the imaginary axis (growth
+    stability_limit: ClassVar[float] = EXPLICIT_STABILITY["abm4"]    # 0.3: PECE is weakly unstable on the imaginary axis (growth
                                               # 1e-4 per step at 0.3, 1.5e-3 at 0.5; real-axis bound 1.28):
                                               # it relies on some physical damping (tests measure it)
     evaluations_per_step: ClassVar[int] = 2

@@ -34,9 +34,10 @@ import numpy as np
 
 from kanat.lumped import entries
 from kanat.lumped.bending import bending_frequency
+from kanat.model.limits import EXPLICIT_SAFETY
 from kanat.physics.contact import SLIP_VELOCITY
 
-SAFETY = 0.8                 # margin below the stability limit
+SAFETY = EXPLICIT_SAFETY     # margin below the stability limit (0.8)
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
 IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,

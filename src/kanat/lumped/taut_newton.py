@@ -26,6 +26,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.lumped import entries
 from kanat.physics.seabed import seabed_of
+from kanat.statics import budget
 
 TAUT_ITERATIONS = 40         # Newton iterations of the taut phase before the caller takes over
 SLACK_STRAIN = 1e-6          # strain at which a law's slope f'(0+) is taken
@@ -104,6 +105,7 @@ def taut_newton(forces, jacobian, xf, tolerance, max_step, guard, taut_forces):
     (xf, iterations) if the true residual met ``tolerance``, else None.
     """
     for iteration in range(1, TAUT_ITERATIONS + 1):
+        budget.check_time()
         F = taut_forces(xf)
         if not np.all(np.isfinite(F)):
             return None

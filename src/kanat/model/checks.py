@@ -19,6 +19,7 @@ from .case import Case
 from .environment import JonswapWaves, RegularWaves
 from . import limits
 from .paths import Path, key_path, line_of
+from .run_cost import check_node_steps, run_cost
 from .setup_checks import check_continuum_cable, check_lumped_network, check_scheme, check_sea, check_track
 from .support import check_support
 from .vessel import Heading, Turn
@@ -133,6 +134,27 @@ def check_anchors(case: Case, out: Findings) -> None:
             elif z > 0:
                 out.warning(("cables", i, key),
                             f"anchor at z = {fmt(z)} m is above the free surface z = 0")
+
+
+def check_positions_above_seabed(case: Case, out: Findings) -> None:
+    """A body's or a point's given position lies above the seabed (the solvers would start it
+    inside the ground and fail later as an element "stretched by 1510 %")."""
+    placed = [(("bodies", name, "position"), f"body '{name}'", body.position)
+              for name, body in case.bodies.items() if body.position is not None]
+    placed += [(("points", name, "position"), f"point '{name}'", getattr(point, "position", None))
+               for name, point in case.points.items() if getattr(point, "position", None) is not None]
+    if not placed or case.environment.depth is None:
+        return
+    from ..physics.seabed import seabed_of
+
+    depth = case.environment.depth
+    seabed = seabed_of(case.environment)
+    for path, what, position in placed:
+        floor = float(seabed.height(position[0], position[1]))
+        if position[2] < floor - 1e-9 * depth:
+            out.error(path, f"{what} at z = {fmt(position[2])} m is {fmt(floor - position[2])} m below the "
+                      f"seabed at z = {fmt(floor)} m (depth {fmt(depth)} m): place it in the water, "
+                      f"above z = {fmt(floor)} m, or deepen environment.depth")
 
 
 def check_fixed_span(case: Case, out: Findings) -> None:
@@ -357,25 +379,46 @@ def check_dimensions(case: Case, out: Findings) -> None:
 
 
 def check_sphere(case: Case, out: Findings) -> None:
-    """The line and the cable of the sphere problem must reach between the anchors."""
+    """The sphere problem's groups must admit an equilibrium (the solver's own conditions).
+
+    The line (``LoL`` cable lengths) and the cable (1) meet at the sphere, so the anchors
+    must lie between ``|LoL - 1|`` and ``LoL + 1`` cable lengths apart; ``chi`` below 1;
+    ``QkL`` and ``RkL`` not both zero.
+    """
     sphere = case.sphere_two_cables
     if sphere is None:
         return
     if sphere.dimensionless is not None:
         groups = sphere.dimensionless
-        if abs(groups.x_C) > groups.LoL + 1:
-            out.error(("sphere_two_cables", "dimensionless", "x_C"),
-                      f"the anchors are |x_C| = {fmt(abs(groups.x_C))} cable lengths apart but the "
-                      f"line (LoL = {fmt(groups.LoL)}) and the cable (1) reach only "
-                      f"{fmt(groups.LoL + 1)}: no equilibrium")
+        where = ("sphere_two_cables", "dimensionless")
+        _check_sphere_span(out, (*where, "x_C"), abs(groups.x_C), groups.LoL, 1.0,
+                           f"|x_C| = {fmt(abs(groups.x_C))} cable lengths",
+                           f"line (LoL = {fmt(groups.LoL)}) and the cable (1)", " cable lengths")
+        if groups.chi >= 1:
+            out.error((*where, "chi"), f"chi = C_0/C_90 = {fmt(groups.chi)} must be below 1 "
+                      "(the tangential drag of a cable is a fraction of its normal drag)")
+        if groups.QkL == 0 and groups.RkL == 0:
+            out.error((*where, "QkL"), "QkL and RkL are both 0: the sphere has neither net "
+                      "buoyancy nor drag, and its cable's tension no scale; give either")
     else:
         dims = sphere.dimensional
-        reach = dims.line_length + dims.cable_length
-        if abs(dims.anchor_x) > reach:
-            out.error(("sphere_two_cables", "dimensional", "anchor_x"),
-                      f"the anchors are {fmt(abs(dims.anchor_x))} m apart but the line "
-                      f"({fmt(dims.line_length)} m) and the cable ({fmt(dims.cable_length)} m) "
-                      f"reach only {fmt(reach)} m: no equilibrium")
+        _check_sphere_span(out, ("sphere_two_cables", "dimensional", "anchor_x"),
+                           abs(dims.anchor_x), dims.line_length, dims.cable_length,
+                           f"{fmt(abs(dims.anchor_x))} m", f"line ({fmt(dims.line_length)} m) "
+                           f"and the cable ({fmt(dims.cable_length)} m)", " m")
+
+
+def _check_sphere_span(out: Findings, path: Path, span: float, line: float, cable: float,
+                       apart: str, lengths: str, unit: str) -> None:
+    """The anchors ``span`` apart must be reached by ``line`` and ``cable`` meeting at A."""
+    if span >= line + cable:
+        out.error(path, f"the anchors are {apart} apart but the {lengths} reach only "
+                  f"{fmt(line + cable)}{unit}: no equilibrium; bring the anchors closer than that")
+    elif span <= abs(line - cable):
+        out.error(path, f"the anchors are {apart} apart but the {lengths} differ by "
+                  f"{fmt(abs(line - cable))}{unit}: they cannot meet at the sphere with both "
+                  f"taut; set the anchors between {fmt(abs(line - cable))}{unit} and "
+                  f"{fmt(line + cable)}{unit} apart")
 
 
 def check_pitch(case: Case, out: Findings) -> None:
@@ -485,20 +528,16 @@ def check_run_size(case: Case, out: Findings) -> None:
     sim = case.simulation
     if sim is None or case.model not in ("continuum", "lumped"):
         return
-    step = sim.step_or_default
-    steps = sim.duration / step
-    nodes = sum(c.segments + 1 for c in case.cables)
-    if nodes > limits.MAX_SEGMENTS_TOTAL + len(case.cables):
-        return  # check_discretization says so
+    cost = run_cost(case)
+    nodes = cost.nodes
     where = ("simulation", "dt") if sim.dt is not None else ("simulation", "duration")
-    span = f"duration {fmt(sim.duration)} s / dt {fmt(step)} s = {steps:.4g} time steps"
-    if steps > limits.MAX_TIME_STEPS:
-        out.error(where, f"{span}, more than the limit of {limits.MAX_TIME_STEPS:.3g}; use a "
-                  "larger dt or a shorter duration")
-    elif nodes * steps > limits.MAX_NODE_STEPS:
-        out.error(where, f"{span} x {nodes:,} nodes = {nodes * steps:.3g} node-steps, more than "
-                  f"the limit of {limits.MAX_NODE_STEPS:.3g} (hours to days of computing); use "
-                  "a larger dt, fewer segments or a shorter duration")
+    try:
+        refused = check_node_steps(cost.steps, cost.nodes, cost.step, cost.why)
+    except ValueError as exc:
+        out.error(("simulation",), str(exc))
+        return
+    if refused:
+        out.error(where, f"duration {fmt(sim.duration)} s is {refused}")
     try:
         limit = limits.max_output_bytes(out.max_output_bytes)
     except ValueError as exc:
@@ -515,6 +554,19 @@ def check_run_size(case: Case, out: Findings) -> None:
                   f"more than the limit of {_size(limit)}; store less often (output_dt), shorten "
                   f"the duration or use fewer segments, or raise the limit "
                   f"(kanat --max-output 8G, {limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=\"8G\" in Python)")
+
+
+def check_run_length(case: Case, out: Findings) -> None:
+    """A warning when a run's node-steps exceed :data:`limits.WARN_NODE_STEPS` (minutes to hours)."""
+    cost = run_cost(case)
+    if cost is None or cost.node_steps <= limits.WARN_NODE_STEPS:
+        return
+    where = ("simulation", "dt") if case.simulation.dt is not None else ("simulation", "duration")
+    out.warning(where, f"a long run: {cost.steps:.3g} time steps of {cost.step:.3g} s ({cost.why}) x "
+                f"{cost.nodes:,} nodes = {cost.node_steps:.3g} node-steps, at least "
+                f"{cost.node_steps * limits.FASTEST_NODE_STEP_S / 60:.0f} minutes of computing "
+                f"(the warning starts at {limits.WARN_NODE_STEPS:.3g}); a larger dt, an implicit "
+                "scheme or fewer segments would shorten it")
 
 
 def check_pitch_size(case: Case, out: Findings) -> None:
@@ -543,10 +595,11 @@ sanity checks of :data:`CHECKS` (which assume numbers in range) are skipped."""
 
 
 CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
-    check_line_types, check_bodies, check_anchors, check_fixed_span, check_hanging_loads,
+    check_line_types, check_bodies, check_anchors, check_positions_above_seabed, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
     check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
     check_support, check_scheme, check_track, check_sea, check_continuum_cable, check_lumped_network,
+    check_run_length,
 )
 
 

@@ -14,6 +14,10 @@ MAX_DOCUMENT_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES, MAX_YAML_ALIASES
     The YAML text.
 MAX_SEGMENTS_PER_CABLE, MAX_SEGMENTS_TOTAL, MAX_TIME_STEPS, MAX_NODE_STEPS
     The work of a run.
+WARN_NODE_STEPS, NODE_STEPS_ENV, max_node_steps, FASTEST_NODE_STEP_S
+    When a run's length is worth a warning; the node-step limit in force (configurable).
+EXPLICIT_STABILITY, EXPLICIT_SAFETY
+    The explicit lumped schemes' stability limits (the estimated cost of their runs).
 MAX_HARMONICS, MAX_TIME_POINTS, MAX_PITCH_SAMPLES
     The pitch problem's Fourier series.
 DEFAULT_MAX_OUTPUT_BYTES, OUTPUT_BYTES_ENV, max_output_bytes
@@ -72,6 +76,27 @@ MAX_NODE_STEPS = 2e10
 0.1 us (compiled lumped model) to 7 us (3-D continuum model, ``benchmarks/RESULTS.md``)
 per node and step, 2e10 is half an hour to a day and a half of one core. A 3-hour storm
 of a 1000-segment line at dt = 0.01 s is 1.1e9."""
+
+WARN_NODE_STEPS = 1e9
+"""Node-steps above which ``kanat validate`` warns that a run will be long: 2 minutes
+(compiled lumped model) to 2 hours (3-D continuum model) of one core."""
+
+NODE_STEPS_ENV = "KANAT_MAX_NODE_STEPS"
+"""Environment variable overriding :data:`MAX_NODE_STEPS` (a number, ``1e11``); ``kanat run
+--max-node-steps`` and ``kanat validate --max-node-steps`` set it for one command."""
+
+FASTEST_NODE_STEP_S = 1e-7
+"""Wall time of one node-step of the compiled lumped model [s], the cheapest measured
+(``benchmarks/RESULTS.md``): what a number of node-steps costs at the very least."""
+
+EXPLICIT_STABILITY = {"rk4": 2.8, "abm4": 0.3}
+"""Largest stable ``|lambda h|`` of the lumped model's explicit schemes (their
+``stability_limit``, :mod:`kanat.lumped.integrators`, which reads it from here): RK4's
+imaginary-axis bound 2 sqrt(2) = 2.83 (real axis 2.79); ABM4 (PECE) 0.3, weakly unstable
+on the imaginary axis beyond."""
+
+EXPLICIT_SAFETY = 0.8
+"""Margin below the stability limit at which an explicit scheme steps (:mod:`kanat.lumped.stepping`)."""
 
 MAX_HARMONICS = 10_000
 """Most harmonics of the pitch problem's Fourier series: the rectangular law's coefficients
@@ -158,6 +183,24 @@ def max_output_bytes(value: float | str | None = None) -> float:
     except (TypeError, ValueError):
         raise ValueError(f"max_output_bytes={value!r} is not a size in bytes "
                          "(e.g. 4e9, '512M', '8G')") from None
+
+
+def max_node_steps() -> float:
+    """The node-step limit in force: :data:`NODE_STEPS_ENV` when set, else :data:`MAX_NODE_STEPS`.
+
+    Raises
+    ------
+    ValueError
+        When the environment variable is not a number above 0.
+    """
+    env = os.environ.get(NODE_STEPS_ENV, "").strip()
+    if not env:
+        return MAX_NODE_STEPS
+    try:
+        return _positive(env)
+    except ValueError:
+        raise ValueError(f"the environment variable {NODE_STEPS_ENV}={env!r} is not a number of "
+                         "node-steps above 0 (e.g. 1e11)") from None
 
 
 def _positive(value: float) -> float:

@@ -3,12 +3,13 @@ problem at its key path and line.
 
 :func:`validate_data` turns pydantic's errors into :class:`~kanat.errors.Problem` records that
 name the key path, the line (when the data came with lines), what was given and what would
-be valid, with units where the model declares them; :func:`bool_problems` catches numbers
-written ``yes``/``no``. The YAML reading is in :mod:`kanat.io.case_file`; :meth:`Case.replace`
+be valid, with units where the model declares them; :func:`number_problems` catches numbers
+written ``yes``/``no`` or quoted (``'100'``). The YAML reading is in :mod:`kanat.io.case_file`; :meth:`Case.replace`
 validates its edited data here.
 """
 from __future__ import annotations
 
+import math
 import types
 from typing import Annotated, Any, Literal, Union, get_args, get_origin
 
@@ -286,28 +287,51 @@ def _misspelt(errors: list[dict[str, Any]]) -> set[tuple[Any, ...]]:
     return found
 
 
-# --- numbers written as true/false ---------------------------------------------------
+# --- numbers written as true/false or as quoted text ----------------------------------
 
 def _is_number_type(tp: Any) -> bool:
     tp = _unwrap(tp)
+    if get_origin(tp) in (Union, types.UnionType):   # float | Law: a number is one choice
+        members = [_unwrap(a) for a in get_args(tp)]
+        return any(_is_number_type(m) for m in members) and str not in members
     return isinstance(tp, type) and issubclass(tp, (int, float)) and tp is not bool
 
 
-def bool_problems(data: Any, lines: dict[Path, int], file: str | None,
-                   path: Path = ()) -> list[Problem]:
-    """``diameter: yes``: YAML reads yes/no/on/off/true/false as booleans, which pydantic
-    would take as the numbers 1 and 0. A boolean where the case wants a number is an error."""
-    if isinstance(data, bool):
-        if path and _is_number_type(field_at(path)[3]):
+def _reads_as_number(text: str) -> bool:
+    """True for text that reads as a finite number: ``'100'``, ``' 1e3'``, ``'-0.5'`` (``'nan'``
+    and ``'inf'`` are left to the schema, which asks for a finite number)."""
+    try:
+        return math.isfinite(float(text))
+    except ValueError:
+        return False
+
+
+def number_problems(data: Any, lines: dict[Path, int], file: str | None,
+                    path: Path = ()) -> list[Problem]:
+    """Numbers a case writes as something else where the case wants a number.
+
+    ``diameter: yes``: YAML reads yes/no/on/off/true/false as booleans, which pydantic
+    would take as the numbers 1 and 0. ``length: '100'``: a quoted number is text, which
+    pydantic would read as the number. Both are errors at the key (text that is no number
+    at all is left to the schema, which says what it wanted).
+    """
+    if isinstance(data, (bool, str)):
+        if not path or not _is_number_type(field_at(path)[3]):
+            return []
+        if isinstance(data, bool):
             written = "true (or yes/on)" if data else "false (or no/off)"
-            return [Problem(key_path(path), f"must be a number, not {written}", file,
-                            line_of(lines, path))]
-        return []
+            message = f"must be a number, not {written}"
+        elif _reads_as_number(data):
+            message = (f"must be a number, not the text {data!r}: write it without quotes "
+                       f"({data.strip()})")
+        else:
+            return []
+        return [Problem(key_path(path), message, file, line_of(lines, path))]
     items = (data.items() if isinstance(data, dict)
              else enumerate(data) if isinstance(data, list) else ())
     found: list[Problem] = []
     for key, value in items:
-        found += bool_problems(value, lines, file, path + (key,))
+        found += number_problems(value, lines, file, path + (key,))
     return found
 
 
@@ -342,7 +366,7 @@ def replaced(case: Case, changes) -> Case:
             problems.append(Problem(key, str(error)))
     if problems:
         raise CaseError(problems).located(case.source)
-    problems = bool_problems(data, {}, None)
+    problems = number_problems(data, {}, None)
     new, found = validate_data(data)
     problems += found
     if new is not None and not problems:

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.statics.budget import budget
 from kanat.model.support import has_drag, needs_network, require_supported, single_cable
 from kanat.statics.collocation import solve_collocation
 from kanat.statics.guess import solve_catenary
@@ -152,7 +153,8 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
     StaticsResult
     """
     if case.sphere_two_cables is not None:
-        return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
+        with budget("the statics of the sphere on two cables"):
+            return StaticsResult(case, method, sphere=_solve_sphere_block(case.sphere_two_cables, case, method))
     require_supported(case, "statics")
     bent = [name for name, line in case.line_types.items() if line.bending_stiffness > 0]
     if bent:
@@ -164,15 +166,18 @@ def solve_statics(case, method: str = "auto") -> StaticsResult:
     if needs_network(case):
         if has_drag(case) and single_cable(case):
             log.debug("statics: one cable in 3-D (sections, attachments or a cross current)")
-            return _solve_single_3d(case, method)
+            with budget(f"the statics of cable '{case.cables[0].name}'"):
+                return _solve_single_3d(case, method)
         log.debug("statics: a network (points, shared bodies, fairleads or sections), solved as a whole")
-        return _solve_network(case, method)
+        with budget("the network statics"):
+            return _solve_network(case, method)
     problems = cable_problems(case)
     solutions, bodies = {}, {}
     for cable in case.cables:
         problem = problems[cable.name]
         s_out = np.linspace(0.0, cable.length, cable.segments + 1)
-        solution = solve_cable(problem, method, s_out)
+        with budget(f"the statics of cable '{cable.name}'"):
+            solution = solve_cable(problem, method, s_out)
         solutions[cable.name] = solution
         for end, index in ((cable.from_, 0), (cable.to, -1)):
             if end.kind == "body":

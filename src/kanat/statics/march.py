@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 
+from kanat.statics import budget
 from kanat.statics.problem import BodyEnd, CableBVP
 from kanat.statics.solution import CableSolution
 
@@ -139,8 +140,10 @@ def scalar_rhs(problem: CableBVP):
     area = 0.5 * line.water_density * line.diameter
     normal, tangential = line.drag_normal, math.pi * line.drag_tangential
     stiffness, weight = line.axial_stiffness, line.weight
+    charge = budget.charge
 
     def rhs(z, fx, fz):
+        charge()
         if uniform:
             u, w = table_u[0], table_w[0]
         else:

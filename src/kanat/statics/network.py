@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.statics import budget
 from kanat.statics.line_solve import LineSolution, solve_line
 from kanat.statics.network_setup import NetworkProblem, fairlead_rotation
 from kanat.statics.piecewise import Ground
@@ -329,6 +330,7 @@ def _newton(problem, q, shift, scale, tolerance, caps, max_iterations, starts=No
         R = current[0] - shift
         if np.max(np.abs(R) / scale, initial=0.0) <= tolerance:
             return q, iteration - 1, True, current
+        budget.check_time()
         base = merit(current)
         for attempt in range(MAX_SHRINKS):
             trial_q = q + _step(current[1], R, radius * caps)
@@ -361,6 +363,7 @@ def _relax(problem, q, shift, scale, tolerance, caps, max_iterations):
         size = np.max(np.abs(R) / scale, initial=0.0)
         if size <= tolerance:
             return q, iteration - 1, True, current
+        budget.check_time()
         dq = np.linalg.solve(current[1] - mass / dtau, -R)
         dq *= min(1.0, float(np.min(caps / np.maximum(np.abs(dq), 1e-300))))
         trial = _try(problem, q + dq, warm_starts(current[3]))

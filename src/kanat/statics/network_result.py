@@ -219,9 +219,28 @@ def solve_network_case(case, method: str = "catenary") -> NetworkResult:
     SolverError
         When no equilibrium is found, or it puts a line below the seabed.
     """
+    _check_loaded(case)
     problem = network_problem(case)
     solution = solve_network(problem, first_guess(problem))
     return _result(case, method, solution)
+
+
+def _check_loaded(case) -> None:
+    """Refuse a network that nothing loads: weightless lines, bodies of no net buoyancy, force or
+    waterplane, and no current (network statics has none) leave every line slack and the free
+    bodies and points anywhere: no equilibrium is the answer."""
+    env = case.environment
+    weights = [case.line_types[s.line_type].weight_in_water_value(env.water_density, env.gravity)
+               for cable in case.cables for s in cable.sections]
+    loaded_bodies = [name for name, body in case.bodies.items()
+                     if body.net_buoyancy != 0 or any(body.force) or body.surface_buoy is not None
+                     or getattr(body, "waterplane_area", None)]
+    if any(w != 0 for w in weights) or loaded_bodies or not (case.bodies or case.points):
+        return
+    raise SolverError("nothing loads this network: its lines weigh nothing in water and its bodies have "
+                      "no net buoyancy, force or waterplane, so every line is slack and the bodies and "
+                      "points could be anywhere; give the lines weight_in_water or the bodies "
+                      "net_buoyancy")
 
 
 def _cable(problem: NetworkProblem, line, state) -> NetworkCable:

@@ -169,6 +169,12 @@ def _asinhc(y: float) -> float:
     return 1.0 - y * y / 6.0 if abs(y) < SERIES_LIMIT else math.asinh(y) / y
 
 
+def _log1pc(r: float) -> float:
+    """``log(1 + r)/r`` for ``r >= 0`` (1 at r = 0: a weightless piece, whose tension does not change
+    along it; ``log1p`` is accurate down to the smallest ``r``)."""
+    return math.log1p(r) / r if r > 0.0 else 1.0
+
+
 def suspended_piece(H, V0, l, w, EA):
     """Eqs. (1)-(2) for one piece and their partial derivatives.
 
@@ -210,7 +216,7 @@ def _vertical_piece(V0, V1, l, w, EA):
     if (V0 >= 0.0 and V1 >= 0.0) or (V0 <= 0.0 and V1 <= 0.0):
         sign = 1.0 if V0 + V1 > 0.0 else (-1.0 if V0 + V1 < 0.0 else 0.0)
         low, high = sorted((abs(V0), abs(V1)))
-        per_h = math.log(high / low) / abs(w) if low > 0.0 else math.inf
+        per_h = l * _log1pc((high - low) / low) / low if low > 0.0 else math.inf   # log(high/low)/|w|
         return 0.0, sign * l + stretch, (per_h + l / EA, 0.0, 0.0, 0.0, l / EA,
                                          (1.0 if V1 > 0.0 else -1.0 if V1 < 0.0 else 0.0) + V1 / EA)
     T0, T1 = abs(V0), abs(V1)

@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.statics import budget
 from kanat.physics.drag import body_drag, cable_drag
 
 
@@ -225,6 +226,7 @@ def steady_rhs(problem: CableBVP, y):
     -------
     ndarray, shape (4, n)
     """
+    budget.charge()
     line = problem.line
     force = y[2:4]
     tension = np.hypot(force[0], force[1])
@@ -256,19 +258,32 @@ def end_residual(problem: CableBVP, which: int, y_end) -> np.ndarray:
     return y_end[2:4] - sign * load
 
 
+COINCIDENT_ENDS = 1e-9
+"""Distance between two fixed ends, relative to the cable length, below which they are one point."""
+
+
 def check_solvable(problem: CableBVP) -> None:
     """Refuse problems with no steady solution before any solver tries them.
 
     Raises
     ------
     SolverError
-        Both ends are bodies (nothing holds the cable), or a body exerts no force on
-        the cable whatever its depth (the end is slack and its direction undefined).
+        Both ends are bodies (nothing holds the cable), both are fixed at one point (the
+        line doubles back on itself: its end conditions do not fix its tension, and the
+        shooting and collocation solvers would search forever), or a body exerts no force
+        on the cable whatever its depth (the end is slack and its direction undefined).
     """
     ends = (problem.start, problem.end)
     if all(isinstance(e, BodyEnd) for e in ends):
         raise SolverError("both ends of the cable are bodies, so nothing holds it in place; "
                           "fix one end (anchor, vessel) to solve its statics")
+    if all(isinstance(e, FixedEnd) for e in ends) and np.allclose(
+            ends[0].position, ends[1].position, rtol=0.0, atol=COINCIDENT_ENDS * problem.length):
+        x, z = ends[0].position
+        raise SolverError(f"both ends of the cable are at the same point (x = {x:.6g} m, z = {z:.6g} m): "
+                          "the line would double back on itself, a shape whose tension its ends do "
+                          "not fix and which the shooting and collocation solvers cannot find; give "
+                          "the ends distinct positions")
     for end in ends:
         if (isinstance(end, BodyEnd) and end.net_buoyancy == 0 and not any(end.force)
                 and (end.drag_area == 0 or not np.any(problem.flow.velocity))):

@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.statics import budget
 from kanat.physics.drag import body_drag, cable_drag
 from kanat.statics.problem import LineProperties
 
@@ -201,6 +202,7 @@ class CableBVP3:
 
 def rhs(piece: Piece, flow: Flow3, y) -> np.ndarray:
     """``dy/ds`` of the steady equations for states ``y`` (6, n) on one piece (vectorized)."""
+    budget.charge()
     line = piece.line
     force = y[3:6]
     tension = np.sqrt(np.sum(force * force, axis=0))
@@ -218,6 +220,7 @@ def rhs(piece: Piece, flow: Flow3, y) -> np.ndarray:
 def rhs_point(piece: Piece, flow: Flow3, y) -> np.ndarray:
     """:func:`rhs` for one state (6,), in scalar arithmetic: what the shooting integrator calls
     (twenty times faster than the vectorized form on one point)."""
+    budget.charge()
     line = piece.line
     fx, fy, fz = float(y[3]), float(y[4]), float(y[5])
     tension = math.sqrt(fx * fx + fy * fy + fz * fz)
