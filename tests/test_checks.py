@@ -289,3 +289,21 @@ def test_the_audits_body_below_the_seabed_fails_in_validate():
     errors = [p for p in findings(text) if p.severity == "error"]
     assert [(p.key, p.line) for p in errors] == [("bodies.buoy.position", line_with(text, "position: [12"))]
     assert "is 400 m below the seabed at z = -100 m (depth 100 m)" in errors[0].message
+
+
+def test_a_surface_buoy_s_hull_lifts_its_mooring_before_it_is_said_to_sink():
+    """WHOI Cable's bimoor buoy (examples/whoi/bimoor.yaml) weighs more than it displaces below its
+    waterline (a negative net buoyancy) but floats on its hull, rho g A h above it: no warning that
+    it sinks; a hull 1 cm high would not hold the lines and is warned."""
+    import warnings
+
+    from kanat.io import load_case
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "whoi" / "bimoor.yaml"
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        case = load_case(path)
+    assert not [w for w in caught if "will sink" in str(w.message)]
+    buoy = next(name for name, body in case.bodies.items() if body.surface_buoy is not None)
+    with pytest.warns(Warning, match="from its hull awash.*it will sink"):
+        case.replace({f"bodies.{buoy}.surface_buoy.height": 0.01})

@@ -223,10 +223,16 @@ def check_mooring_buoys(case: Case, out: Findings) -> None:
         weight = sum(_line_weight(case, c) for c in attached)
         if case.environment.seabed is not None:      # chain may rest on the seabed: only what must hang
             weight = sum(_hanging_at_least(case, c) for c in attached)
-        if weight > 0 and body.net_buoyancy < weight:
+        lift = body.net_buoyancy
+        buoy = body.surface_buoy
+        if buoy is not None:                          # its hull, immersed to the deck, lifts this much more
+            env = case.environment
+            lift += env.water_density * env.gravity * buoy.waterplane_area * buoy.height
+        if weight > 0 and lift < weight:
             names = ", ".join(f"'{c.name}'" for c in attached)
+            hull = "" if buoy is None else f" and {lift - body.net_buoyancy:.6g} N more from its hull awash"
             out.warning(("bodies", name, "net_buoyancy"),
-                        f"buoy '{name}' has net buoyancy {fmt(body.net_buoyancy)} N, less than "
+                        f"buoy '{name}' has net buoyancy {fmt(body.net_buoyancy)} N{hull}, less than "
                         f"the weight in water {weight:.6g} N of its mooring line(s) {names}: "
                         "it will sink")
 
