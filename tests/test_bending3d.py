@@ -271,7 +271,8 @@ def test_a_turning_rod_rotated_about_the_vertical_keeps_its_tensions_and_moments
 def test_compression_beyond_a_segments_euler_load_stops_a_3d_run_with_the_planar_advice():
     from kanat.continuum.adapter import ContinuumModel
 
-    model = ContinuumModel(kanat.load_case(with_bending(TURN.replace("  depth: 2000\n", CROSS_CURRENT), 50.0, 20)))
+    case = kanat.load_case(with_bending(TURN.replace("  depth: 2000\n", CROSS_CURRENT), 50.0, 20))
+    model = ContinuumModel(case.replace({"simulation.slack": "stop"}))         # a run told to stop on slack
     assert model.cable_model.dimensions == 3 and model.cable_model.cable.nv == 10
     state = model.initial()
     values = model.outputs(state)

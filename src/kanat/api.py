@@ -523,10 +523,14 @@ def _warn_failed(status: str) -> None:
 def _write_steady(result, output) -> None:
     """Write a steady model's result (atomically: a write that fails leaves no file)."""
     from kanat.errors import OutputWriteError
-    from kanat.io.results import write_result
 
     try:
-        result.write(output) if hasattr(result, "write") else write_result(result, output)
+        if hasattr(result, "write"):                 # a statics table: no xarray
+            result.write(output)
+        else:
+            from kanat.io.results import write_result
+
+            write_result(result, output)
     except OutputWriteError as error:
         raise OutputWriteError(f"{output} was not written: {error}; free some space and solve again") from None
     except OSError as error:

@@ -94,12 +94,12 @@ class SlackLog:
 def pulled_start(case):
     """``(case with the pull, pull [N])`` to start a slack grounded line from (module docstring), or None
     when the case's line is not one (or ``simulation.slack: stop``, which keeps the refusal)."""
-    from kanat.statics.setup3d import cable_problem3
-    from kanat.statics.solve3d import refuse_slack_in_still_water
-
     cable = case.cables[0]
     if case.simulation.slack == "stop" or cable.from_.kind != "anchor" or cable.to.kind != "body":
         return None
+    from kanat.statics.setup3d import cable_problem3            # (SciPy's solvers: only for such a line)
+    from kanat.statics.solve3d import refuse_slack_in_still_water
+
     problem = cable_problem3(case)
     try:
         refuse_slack_in_still_water(problem)

@@ -173,8 +173,9 @@ def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, 
     ``mat`` (default 0) and ``buoy`` (default 0): wetted fraction, tangential added mass, ``rho g A``.
     """
     ones, zeros = np.ones(len(el_i)), np.zeros(len(el_i))
+    none = np.zeros(0, dtype=np.int64)                 # no bending triples: element_forces reads none
     el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
-          zeros if mat is None else mat, zeros if buoy is None else buoy, zeros)
+          zeros if mat is None else mat, zeros if buoy is None else buoy, zeros, none, none, none, np.zeros(0))
     packed = np.empty((x.shape[0], 6))
     entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force,
                            node_mass, el, F, packed, T, strain)

@@ -21,7 +21,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..physics.contact import SLIP_VELOCITY
 from . import limits
 from .case import Case
 
@@ -70,6 +69,8 @@ def _largest_rate(case: Case, line, element: float) -> tuple[float, str]:
                             4.0 * line.axial_damping / element / mass)
     seabed = case.environment.seabed
     if seabed is not None:
+        from ..physics.seabed import SLIP_VELOCITY              # (NumPy: only for a case with a seabed)
+
         env = case.environment
         per_mass = line.diameter / line.mass       # contact area / node mass, per metre alike
         weight = line.weight_in_water_value(env.water_density, env.gravity)
