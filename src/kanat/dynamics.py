@@ -385,23 +385,26 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
         solver, status = 0.0, "ok"
         last = int(round(model.duration / model.output_interval))
         try:
-            if resume is None:
-                status = _emit(model, layout, observers, Point(0, 0.0, _values(model, layout, state, Steps()),
-                                                               state, done, model))
-            while status == "ok" and index < last:
-                index += 1
-                t_end = index * model.output_interval
-                began, compiling = time.perf_counter(), compiled[0]
-                try:
-                    state, work = model.advance(state, t_end)
-                except StepFailure as failure:
-                    status = f"failed: {failure}"
-                    break
-                finally:
-                    solver += time.perf_counter() - began - (compiled[0] - compiling)
-                done = done + work
-                status = _emit(model, layout, observers, Point(index, t_end, _values(model, layout, state, work),
-                                                               state, done, model))
+            with _interrupt_between_outputs() as interrupted:
+                if resume is None:
+                    status = _emit(model, layout, observers, Point(0, 0.0, _values(model, layout, state, Steps()),
+                                                                   state, done, model))
+                while status == "ok" and index < last:
+                    if interrupted[0]:
+                        raise KeyboardInterrupt
+                    index += 1
+                    t_end = index * model.output_interval
+                    began, compiling = time.perf_counter(), compiled[0]
+                    try:
+                        state, work = model.advance(state, t_end)
+                    except StepFailure as failure:
+                        status = f"failed: {failure}"
+                        break
+                    finally:
+                        solver += time.perf_counter() - began - (compiled[0] - compiling)
+                    done = done + work
+                    status = _emit(model, layout, observers, Point(index, t_end, _values(model, layout, state, work),
+                                                                   state, done, model))
         except KeyboardInterrupt:
             summary = _summary(model, f"interrupted at t = {index * model.output_interval:.6g} s; continue with "
                                "--resume", done, index, start, setup - setup_compile, solver, compiled[0], output)
@@ -417,6 +420,31 @@ def run(build: Callable[[], DynamicModel], observers: Sequence = (), *, resume: 
     except OutputWriteError as error:
         raise _write_failure(error, model.duration, observers) from None
     return summary
+
+
+@contextmanager
+def _interrupt_between_outputs():
+    """Ctrl-C (SIGINT) during a run, taken between two outputs: ``[True]`` once it came, and the run loop
+    raises :class:`KeyboardInterrupt` at the next output. Python raises it wherever the signal lands
+    otherwise, and where that is a finalizer (a weakref callback of h5py or numba) it is printed and
+    dropped ("Exception ignored"), and the run went on to the end. Only the main thread can take
+    signals; elsewhere nothing changes."""
+    import signal
+    import threading
+
+    came = [False]
+    if threading.current_thread() is not threading.main_thread():
+        yield came
+        return
+
+    def note(signum, frame):
+        came[0] = True
+
+    previous = signal.signal(signal.SIGINT, note)
+    try:
+        yield came
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def _write_failure(error: OutputWriteError, t: float, observers) -> OutputWriteError:
