@@ -150,7 +150,8 @@ def test_a_ramped_run_ends_where_the_unramped_one_does():
     t, ours = top_tension(ramped)
     _, theirs = top_tension(plain)
     _, still = top_tension(lumped_case(duration=0.5))
-    assert ours[0] == pytest.approx(still[0], rel=1e-6)        # started in still water, at rest
+    assert ours[0] == pytest.approx(still[0], rel=1e-4)        # started in still water, at rest (two
+    # equilibria met to their force tolerance, 1e-9 of the load scale, on a line of EA 1e8 N: 4e-5 apart)
     late = t >= duration - 14.0
     spread = np.ptp(theirs[late])
     assert spread > 100.0

@@ -181,7 +181,9 @@ def test_towing_top_tension_is_the_weight_of_sled_and_cable():
     case = case_of("towing")
     top = end_tensions(statics(case))["tow"][0]
     weight = -case.bodies["sled"].net_buoyancy + 1000 * case.line_types["cable"].weight_in_water
-    assert top == pytest.approx(weight, rel=1e-4)              # a 0.05 m/s current barely tilts it
+    # a 0.05 m/s current barely tilts it; the line's EI makes statics the lumped equilibrium, whose
+    # top tension is its first element's, half an element's weight below the end
+    assert top == pytest.approx(weight, rel=1e-4, abs=0.6 * element_weight(case, "tow"))
 
 
 def test_multi_leg_sphere_sits_at_the_3_4_5_apex_with_legs_stretched_by_their_tension():
@@ -277,20 +279,17 @@ def test_towing_winch_pays_out_one_metre_a_second():
 
 # What kanat cannot run yet (product failures; see README.md) -----------------------------------
 
-@pytest.mark.xfail(strict=True, reason="the continuum model stops on momentary compression at t = 8.7 s")
 def test_mine_in_waves_runs_through_its_slack_instant():
     ds = run_for(case_of("mine"), 10.0, 0.1, 0.1)
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
 
 
-@pytest.mark.xfail(strict=True, reason="the continuum residual is not finite at t = 0.14 s (waves without a ramp)")
 def test_taut_mooring_in_waves_runs_in_the_continuum_model():
     ds = run_for(case_of("taut"), 1.0, 0.01, 0.1)
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="lumped Newton fails at t = 0.34 s even with the step cut to 0.000625 s")
 def test_bottom_mooring_in_waves_runs_in_the_lumped_model():
     ds = run_for(case_of("bottom"), 1.0, 0.01, 0.1)
     assert ds.attrs["status"] == "ok", ds.attrs["status"]

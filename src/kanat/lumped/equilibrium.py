@@ -221,8 +221,9 @@ def statics_guess(net, case):
     case is one it takes (planar single cables ending at the vessel, anchors or bodies), else
     None: a far better start than the network's straight guess for a long towed cable."""
     from kanat.statics import solve_statics
-    try:
-        result = solve_statics(case)
+    flexible = {name: line.model_copy(update={"bending_stiffness": 0.0}) for name, line in case.line_types.items()}
+    try:                         # the flexible line's shape (statics of a line with EI is this equilibrium)
+        result = solve_statics(case.model_copy(update={"line_types": flexible}))
     except Exception:                                        # networks, free ends, 3-D loads: no guess
         return None
     x = net.x_guess.copy()
