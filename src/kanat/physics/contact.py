@@ -134,14 +134,22 @@ def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal
 
 
 @inner
-def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F):
-    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form)."""
+def plane_tangent(a, nx, nz, tangent):
+    """The line's direction at node ``a`` (``tangent[a]``, a sum of unit vectors) projected on the seabed
+    plane of normal ``(nx, 0, nz)`` and normalized (zero where it is normal to the plane): eq. (3)'s ``a``."""
     t0, t1, t2 = tangent[a, 0], tangent[a, 1], tangent[a, 2]
     tn = t0 * nx + t2 * nz
     t0, t2 = t0 - tn * nx, t2 - tn * nz
     size = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
     if size > 0.0:
         t0, t1, t2 = t0 / size, t1 / size, t2 / size
+    return t0, t1, t2
+
+
+@inner
+def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F):
+    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form)."""
+    t0, t1, t2 = plane_tangent(a, nx, nz, tangent)
     if mode > 0.0:
         ref, direction, s = laid
         d0, d1, d2 = direction[a, 0], direction[a, 1], direction[a, 2]
@@ -205,12 +213,7 @@ def contact_tangent(x, v, area, bed, params, normal_force, line_tangent, K, C):
 @inner
 def add_friction_tangent(a, v, N, nx, nz, mu_a, mu_l, vs, line_tangent, C):
     """Add eqs. (5)-(6) of node ``a`` to ``C`` (``-dF/dv``)."""
-    t0, t1, t2 = line_tangent[a, 0], line_tangent[a, 1], line_tangent[a, 2]
-    tn = t0 * nx + t2 * nz
-    t0, t2 = t0 - tn * nx, t2 - tn * nz
-    size = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
-    if size > 0.0:
-        t0, t1, t2 = t0 / size, t1 / size, t2 / size
+    t0, t1, t2 = plane_tangent(a, nx, nz, line_tangent)
     vn = v[a, 0] * nx + v[a, 2] * nz
     s0, s1, s2 = v[a, 0] - vn * nx, v[a, 1], v[a, 2] - vn * nz
     va = s0 * t0 + s1 * t1 + s2 * t2
