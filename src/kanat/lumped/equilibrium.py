@@ -169,11 +169,26 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
 
 
 def _equilibrium(net, case, x0, velocity, friction, time):
-    """:func:`equilibrium` under its budget."""
+    """:func:`equilibrium` under its budget; from the statics solver's shape first where it gives one,
+    and from the still-water catenaries where that start does not converge (a line with bending
+    stiffness, whose statics guess is the flexible line's: a tether of EI 100 N m^2 in a current)."""
     solve = functools.partial(_solve, friction=friction, time=time)
     start = "given" if x0 is not None else "network"
     if x0 is None and velocity is None:
         x0, start = first_guess(net, case)
+        if start == "statics":
+            try:
+                return _equilibrium_from(net, case, x0, velocity, solve, start)
+            except SolverError:
+                from kanat.lumped.catenary_guess import catenary_guess
+
+                x0 = catenary_guess(net, case)
+                start = "catenary" if x0 is not None else "network"
+    return _equilibrium_from(net, case, x0, velocity, solve, start)
+
+
+def _equilibrium_from(net, case, x0, velocity, solve, start):
+    """The equilibrium from ``x0`` (None: the network's guess), directly, else by continuation."""
     stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
     if stiffest <= CONTINUATION_START:
         x, info = solve(net, case, x0, velocity, MAX_ITERATIONS)
