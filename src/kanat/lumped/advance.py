@@ -40,7 +40,7 @@ class FusedArrays:
     nodes, el, bodies, env, work : tuple
         See :func:`kanat.lumped.fast.loads`: ``nodes`` (free, vessel, anchor nodes, anchor
         positions, nodal loads and masses, free flags, 6-DOF pseudo-nodes' free-local rows),
-        ``el`` the element arrays, ``bodies`` (load nodes, drag, spreading, added mass, buoys,
+        ``el`` the element arrays, ``bodies`` (load nodes, drag, spreading, fluid inertia, buoys,
         rigid bodies, seabed contact), ``env`` (rho, g, current table, sea, still, elevation
         bound, current ramp [s]), ``work`` the scratch arrays.
     """
@@ -56,7 +56,7 @@ class FusedArrays:
         self.el = system.el_args
         buoys = net.body_node[net.buoy_body] if len(net.buoy_body) else np.zeros(0, np.int64)
         self.bodies = (net.load_node.astype(np.int64), net.load_drag_area.astype(float),
-                       net.load_spreading.astype(float), net.node_added_mass.astype(float), buoys.astype(np.int64),
+                       net.load_spreading.astype(float), net.node_fluid_inertia.astype(float), buoys.astype(np.int64),
                        net.buoy_area.astype(float), net.buoy_height.astype(float),
                        system.rig if net.rigid.count else None,                     # None: pruned from the kernels
                        system.contact if len(system.contact[0]) else None)

@@ -245,7 +245,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         work[8]
     bx, bu, ba, wet = work[9], work[10], work[11], work[13]
     rho, g, cz, cu, sea, still, bound, current_ramp = env
-    body_node, drag_area, spreading, added_mass, buoy_node, buoy_area, buoy_height, rig, contact = bodies
+    body_node, drag_area, spreading, fluid_inertia, buoy_node, buoy_area, buoy_height, rig, contact = bodies
     place(y, vpos, vvel, nodes, x, v)
     place_rigid(x, v, rig)
     el_i, el_j = el[0], el[1]
@@ -264,7 +264,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
                 for r in range(3):
                     bx[b, r] = x[body_node[b], r]
             water(bx, t, cz, cu, current_ramp, sea, bu, ba)
-        kernels.add_body_loads(x, v, bu, ba, body_node, drag_area, spreading, added_mass, rho, heading, F)
+        kernels.add_body_loads(x, v, bu, ba, body_node, drag_area, spreading, fluid_inertia, rho, heading, F)
     for b in range(buoy_node.shape[0]):
         keel = buoy_node[b]
         immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]

@@ -361,10 +361,10 @@ def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
             T[k] = max(0.0, f + c[k] * edot)
 
 
-def body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
+def body_loads(x, v, uw, aw, body_node, drag_area, spreading, fluid_inertia, rho, heading, F):
     """:func:`add_body_loads` from Python: the water kinematics as writable C arrays, whatever
     array the environment gave (one compiled version for every run)."""
-    entries.add_body_loads(x, v, _writable(uw), _writable(aw), body_node, drag_area, spreading, added_mass,
+    entries.add_body_loads(x, v, _writable(uw), _writable(aw), body_node, drag_area, spreading, fluid_inertia,
                            float(rho), float(heading), F)
 
 
@@ -373,18 +373,21 @@ def _writable(a) -> np.ndarray:
 
 
 @kernel
-def add_body_loads(x, v, uw, aw, body_node, drag_area, spreading, added_mass, rho, heading, F):
+def add_body_loads(x, v, uw, aw, body_node, drag_area, spreading, fluid_inertia, rho, heading, F):
     """Body drag, spreading force and fluid inertia added to ``F`` (system eq. 2).
 
-    ``uw, aw`` (n_body, 3) water velocity and acceleration at the bodies.
+    ``uw, aw`` (n_body, 3) water velocity and acceleration at the bodies; ``fluid_inertia`` (n,)
+    the Morison inertia ``rho V + m_a`` [kg] at nodes, so the water's acceleration pulls a body
+    with its Froude–Krylov part ``rho V a_w`` and its added-mass part ``m_a a_w`` (the body's
+    ``m_a`` is also on the left-hand side, in the node's mass).
     """
     sn, cs = np.sin(heading), np.cos(heading)
     for b in range(body_node.shape[0]):
         node = body_node[b]
         ur0, ur1, ur2 = uw[b, 0] - v[node, 0], uw[b, 1] - v[node, 1], uw[b, 2] - v[node, 2]
         drag = 0.5 * rho * drag_area[b] * np.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
-        F[node, 0] += drag * ur0 + added_mass[node] * aw[b, 0]
-        F[node, 1] += drag * ur1 + added_mass[node] * aw[b, 1]
-        F[node, 2] += drag * ur2 + added_mass[node] * aw[b, 2]
+        F[node, 0] += drag * ur0 + fluid_inertia[node] * aw[b, 0]
+        F[node, 1] += drag * ur1 + fluid_inertia[node] * aw[b, 1]
+        F[node, 2] += drag * ur2 + fluid_inertia[node] * aw[b, 2]
         F[node, 0] -= spreading[b] * sn
         F[node, 1] += spreading[b] * cs

@@ -67,6 +67,10 @@ class Network:
         Initial positions (cables sagging between guessed ends; Euler angles on ``body_rot``).
     node_mass, node_added_mass : ndarray, shape (n,)
         Body, attachment and point masses and added masses [kg] at nodes.
+    node_fluid_inertia : ndarray, shape (n,)
+        Morison inertia of the point bodies and points at nodes, displaced plus added mass
+        ``rho V + m_a`` [kg]: the water's acceleration ``a_w`` pulls them with
+        ``(rho V + m_a) a_w`` (Froude–Krylov and added-mass parts, as on elements).
     node_force : ndarray, shape (n, 3)
         Constant nodal loads [N]: net buoyancy and force of bodies, point weight, buoyancy, force.
     node_contact_area, node_weight : ndarray, shape (n,)
@@ -106,6 +110,7 @@ class Network:
     x_guess: np.ndarray
     node_mass: np.ndarray
     node_added_mass: np.ndarray
+    node_fluid_inertia: np.ndarray
     node_force: np.ndarray
     node_contact_area: np.ndarray
     node_weight: np.ndarray
@@ -437,12 +442,14 @@ def _element_arrays(case, rows, laws, rho, g):
 
 def _node_loads(case, b, n, g, rho):
     node_mass, node_added, node_force = np.zeros(n), np.zeros(n), np.zeros((n, 3))
+    displaced = np.zeros(n)          # rho V [kg] of point bodies and points (Froude–Krylov)
     loads = []                      # (node, drag area, spreading) of point-like loads
     for name, body in case.bodies.items():
         if name in b.named and body.dof == 3:
             node = b.named[name]
             node_mass[node] += body.mass
             node_added[node] += body.added_mass
+            displaced[node] += body.buoyancy(g) / g
             node_force[node] += np.asarray(body.force) + np.array([0.0, 0.0, body.net_buoyancy])
             loads.append((node, body.drag_area, body.spreading_force))
     for name, point in case.points.items():
@@ -450,10 +457,11 @@ def _node_loads(case, b, n, g, rho):
             node = b.named[name]
             node_mass[node] += point.mass
             node_added[node] += point.added_mass
+            displaced[node] += rho * point.volume
             node_force[node] += np.asarray(point.force) + np.array([0.0, 0.0, point.net_buoyancy(rho, g)])
-            if point.drag_area or point.added_mass:
+            if point.drag_area or point.added_mass or point.volume:
                 loads.append((node, point.drag_area, 0.0))
-    return node_mass, node_added, node_force, loads
+    return node_mass, node_added, node_added + displaced, node_force, loads
 
 
 def _contact_arrays(n, cols, node_force):
@@ -469,7 +477,7 @@ def _contact_arrays(n, cols, node_force):
 def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
     n = len(x)
     kinds = np.array(b.kinds + ["body_ref", "body_rot"] * rigid.count)
-    node_mass, node_added, node_force, loads = _node_loads(case, b, n, g, rho)
+    node_mass, node_added, node_fluid, node_force, loads = _node_loads(case, b, n, g, rho)
     body_names = [name for name in case.bodies if name in b.named or name in rigid.names]
     body_node = np.array([b.named[k] if k in b.named else rigid.ref_node[rigid.names.index(k)]
                           for k in body_names], dtype=np.int64)
@@ -492,7 +500,7 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
         vessel_offset=np.array([arm for _, arm in b.vessel], dtype=float).reshape(-1, 3),
         anchor_nodes=np.flatnonzero(kinds == "anchor"), anchor_position=x[kinds == "anchor"].copy(),
         anchor_names=list(b.anchor_names), x_guess=x,
-        node_mass=node_mass, node_added_mass=node_added, node_force=node_force,
+        node_mass=node_mass, node_added_mass=node_added, node_fluid_inertia=node_fluid, node_force=node_force,
         node_contact_area=area, node_weight=weight,
         el_i=arr("i", np.int64), el_j=arr("j", np.int64), el_length=arr("L"), el_mass=arr("m"),
         el_added_mass=arr("ma"), el_weight=arr("w"), el_displaced=arr("disp"),

@@ -73,7 +73,7 @@ class LumpedSystem:
         self.current = env.current
         self.sea = sea_from_model(env) if waves else None
         self.track = VesselTrack.from_model(case.vessel) if case.vessel.track else None
-        self.motion = compile_motion(case.vessel.motion)
+        self.motion = compile_motion(case.vessel.motion, env)
         self._translational = translational(self.motion)
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
@@ -290,7 +290,7 @@ class LumpedSystem:
         nodes = net.load_node
         u, a = self.water(t, x[nodes])
         kernels.body_loads(x, v, np.ascontiguousarray(u), np.ascontiguousarray(a), nodes, net.load_drag_area,
-                           net.load_spreading, net.node_added_mass, self.rho, heading, F)
+                           net.load_spreading, net.node_fluid_inertia, self.rho, heading, F)
         if len(net.buoy_body):
             keel = x[net.body_node[net.buoy_body]]
             eta = self.sea.elevation(keel[:, 0], keel[:, 1], t) if self.sea is not None else 0.0
