@@ -69,7 +69,7 @@ class PlanarModel:
     def from_case(cls, case) -> PlanarModel:
         """The planar model of a case's single cable (refusing what leaves the x–z plane)."""
         cable = planar_cable(case)
-        return cls(cable, Drive(cable, vessel_track(case.vessel)), case)
+        return cls(cable, Drive(cable, vessel_track(case.vessel, case.environment)), case)
 
     def initial(self) -> State:
         cable, drive = self.cable, self.drive

@@ -42,7 +42,7 @@ class SpatialModel:
     def __init__(self, case):
         self.case = case
         self.cable = spatial_cable(case)
-        self.track = vessel_track(case.vessel)
+        self.track = vessel_track(case.vessel, case.environment)
         self._rows = self.cable.rows()              # a uniform cable builds its rows at every call
 
     def velocities(self, t):

@@ -64,9 +64,9 @@ class MovedTrack:
                            base.heading, base.yaw_rate, base.speed)
 
 
-def vessel_track(vessel) -> VesselTrack | MovedTrack:
+def vessel_track(vessel, environment=None) -> VesselTrack | MovedTrack:
     """The tow point's track of a case's ``vessel`` block: :meth:`VesselTrack.from_model`, moved by
-    ``vessel.motion`` when the block has one."""
+    ``vessel.motion`` when the block has one (RAOs in the sea of ``environment``)."""
     track = VesselTrack.from_model(vessel)
-    motion = compile_motion(vessel.motion)
+    motion = compile_motion(vessel.motion, environment)
     return track if motion is None else MovedTrack(track, motion)

@@ -137,6 +137,8 @@ def resolve_tables(data: Any, base: FilePath, file: str | None,
     """
     vessel = data.get("vessel") if isinstance(data, dict) else None
     motion = vessel.get("motion") if isinstance(vessel, dict) else None
+    if isinstance(motion, dict) and isinstance(motion.get("rao"), str) and motion.get("rao_rows") is None:
+        return _resolve_raos(motion, base, file, lines)
     if not isinstance(motion, dict) or not isinstance(motion.get("table"), str) \
             or motion.get("rows") is not None:
         return []
@@ -151,6 +153,25 @@ def resolve_tables(data: Any, base: FilePath, file: str | None,
     except TableError as error:
         message = str(error)
     del motion["table"]            # reported here; the rest of the case is still checked
+    return [Problem(key_path(where), message, file, line_of(lines, where))]
+
+
+def _resolve_raos(motion: dict, base: FilePath, file: str | None, lines: dict[Path, int]) -> list[Problem]:
+    """``motion['rao_rows']`` from the RAO file ``motion['rao']`` (:mod:`kanat.io.raos`)."""
+    from .raos import RaoError, read_raos
+
+    where: Path = ("vessel", "motion", "rao")
+    name = motion["rao"]
+    ulen = motion.get("ulen", 1.0)
+    try:
+        motion["rao_rows"] = read_raos(base / name, ulen if isinstance(ulen, (int, float)) and ulen > 0 else 1.0)
+        return []
+    except OSError as error:
+        message = (f"cannot read the RAO file '{name}' ({error.strerror or error}); the path "
+                   f"is relative to the case file's folder {base}")
+    except RaoError as error:
+        message = str(error)
+    del motion["rao"]
     return [Problem(key_path(where), message, file, line_of(lines, where))]
 
 

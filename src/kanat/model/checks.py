@@ -75,11 +75,11 @@ def _end_position(case: Case, end: CableEnd) -> tuple[float, float, float] | Non
 def _motion_at_start(case: Case) -> tuple[float, float, float]:
     """Surge, sway and heave of ``vessel.motion`` at t = 0 [m] (zeros without one)."""
     block = case.vessel.motion
-    if not block.harmonics and block.rows is None:          # (no arrays, nor NumPy, for a case without one)
+    if not block.is_used:                                    # (no arrays, nor NumPy, for a case without one)
         return (0.0, 0.0, 0.0)
     from ..physics.motion import compile_motion, motion_at
 
-    return tuple(float(q) for q in motion_at(compile_motion(block), 0.0)[0][:3])
+    return tuple(float(q) for q in motion_at(compile_motion(block, case.environment), 0.0)[0][:3])
 
 
 def _line_weight(case: Case, cable: Cable) -> float:

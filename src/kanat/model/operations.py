@@ -57,6 +57,8 @@ def _as_table_row(value: Any) -> Any:
 
 TableRow = Annotated[tuple[float, float, float, float, float, float, float],
                      BeforeValidator(_as_table_row)]
+RaoRow = tuple[float, float, Dof, float, float]
+"""A displacement RAO: ``(omega [rad/s], heading_deg, dof, amplitude [m/m or deg/m], phase_deg)``."""
 
 
 def _written_form(value: Any) -> Any:
@@ -67,7 +69,7 @@ def _written_form(value: Any) -> Any:
 
 
 class VesselMotion(KanatModel):
-    """Prescribed motion of the vessel about its track: harmonics or a table (not both).
+    """Prescribed motion of the vessel about its track: harmonics, a table or RAOs (one of them).
 
     Attributes
     ----------
@@ -78,6 +80,12 @@ class VesselMotion(KanatModel):
     rows : tuple of (time, surge, sway, heave, roll, pitch, yaw) or None
         [s, m, m, m, deg, deg, deg], time strictly increasing. Before the first and after
         the last row the motion holds the end values.
+    rao : str or None
+        File of displacement RAOs (:mod:`kanat.io.raos`; for messages: solvers never open it).
+    rao_rows : tuple of RaoRow or None
+        The RAOs, read from ``rao`` when the case is loaded.
+    ulen : float
+        WAMIT's length scale of a ``.4`` file's rotations [m].
     ramp : float
         Start-up ramp [s] (0: none).
     """
@@ -92,6 +100,17 @@ class VesselMotion(KanatModel):
     rows: tuple[TableRow, ...] | None = quantity(
         None, unit="s, m, deg", description="the table's rows [time, surge, sway, heave, roll, "
                                             "pitch, yaw] (read from 'table', or written inline)")
+    rao: str | None = Field(
+        None, description="file of displacement RAOs applied to the case's sea (first-order motion at "
+                          "zero forward speed): a CSV table with columns omega [rad/s], heading_deg, dof, "
+                          "amplitude [m/m or deg/m], phase_deg (motion = amplitude x wave amplitude x "
+                          "cos(omega t - phase) for the wave crest at the vessel origin at t = 0), a WAMIT "
+                          ".4 file or a Capytaine .nc dataset; relative to the case file")
+    rao_rows: tuple[RaoRow, ...] | None = Field(
+        None, description="the RAOs' rows (omega, heading_deg, dof, amplitude, phase_deg), read from 'rao'")
+    ulen: float = quantity(1.0, unit="m", gt=0,
+                           description="WAMIT's length scale ULEN of a .4 RAO file (its rotations are "
+                                       "xi ULEN / A)")
     ramp: float = quantity(0.0, unit="s", ge=0,
                            description="start-up ramp [s] (needs the mapping form: {harmonics: [...], ramp: T} "
                                        "or {table: F, ramp: T}): the half cosine r(t) = (1 - cos(pi t / ramp)) "
@@ -119,8 +138,13 @@ class VesselMotion(KanatModel):
 
     @model_validator(mode="after")
     def _one_form(self) -> VesselMotion:
-        if self.harmonics and self.rows is not None:
-            raise ValueError("give either harmonics (a list) or a table, not both")
+        given = [name for name, used in (("harmonics", bool(self.harmonics)), ("a table", self.rows is not None),
+                                          ("RAOs", self.rao_rows is not None)) if used]
+        if len(given) > 1:
+            raise ValueError(f"give one of harmonics (a list), a table or RAOs, not {' and '.join(given)}")
+        if self.rao is not None and self.rao_rows is None:
+            raise ValueError(f"the RAO file '{self.rao}' was not read; load the case with "
+                             "kanat.io.load_case, which reads it next to the case file")
         if self.table is not None and self.rows is None:
             raise ValueError(f"the table '{self.table}' was not read; load the case with "
                              "kanat.io.load_case, which reads it next to the case file")
@@ -129,7 +153,7 @@ class VesselMotion(KanatModel):
     @property
     def is_used(self) -> bool:
         """True when the vessel moves about its track."""
-        return bool(self.harmonics) or self.rows is not None
+        return bool(self.harmonics) or self.rows is not None or self.rao_rows is not None
 
 
 class WinchStep(KanatModel):

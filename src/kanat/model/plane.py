@@ -67,4 +67,8 @@ def _motion_out_of_plane(motion) -> list[tuple[str, str]]:
         if moved:
             found.append(("vessel.motion", f"the motion table's {' and '.join(moved)} move the tow point out "
                                            "of the plane"))
+    if motion.rao_rows is not None:
+        moved = sorted({row[2] for row in motion.rao_rows if row[2] in OUT_OF_PLANE_DOFS and row[3]})
+        if moved:
+            found.append(("vessel.motion.rao", f"the RAOs' {' and '.join(moved)} move the tow point out of the plane"))
     return found

@@ -269,8 +269,21 @@ class Vessel(KanatModel):
     motion: VesselMotion = Field(
         default_factory=VesselMotion,
         description="prescribed motion about the track, in vessel axes: a list of harmonics "
-                    "[{dof, amplitude, period, phase_deg}] or {table: FILE} (see "
+                    "[{dof, amplitude, period, phase_deg}], {table: FILE} or {rao: FILE} (see "
                     "kanat.model.operations)")
+
+    @model_validator(mode="after")
+    def _raos_at_rest(self) -> Vessel:
+        """RAOs move a vessel at zero forward speed: a track that sets a speed is refused."""
+        if self.motion.rao_rows is None:
+            return self
+        for segment in self.track:
+            speeds = [getattr(segment, key, None) for key in ("speed_ms", "to_speed_ms")]
+            if any(speed for speed in speeds if speed is not None):
+                raise ValueError("vessel.motion.rao: RAOs give the motion at zero forward speed, and the "
+                                 "track moves the vessel (no encounter frequency is modelled); keep the "
+                                 "vessel on station or give the motion as harmonics or a table")
+        return self
 
     @property
     def initial_speed(self) -> float:

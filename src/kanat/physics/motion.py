@@ -77,15 +77,20 @@ class MotionTable:
     ramp: float = 0.0
 
 
-def compile_motion(motion) -> Harmonics | MotionTable | None:
+def compile_motion(motion, environment=None) -> Harmonics | MotionTable | None:
     """Arrays of a ``vessel.motion`` block (SI units, radians); None when it is empty.
 
     Parameters
     ----------
     motion : kanat.model.operations.VesselMotion
-        Reads ``harmonics`` (``dof``, ``amplitude`` [m or deg], ``period``, ``phase_deg``)
-        or ``rows`` (time, surge, sway, heave [m], roll, pitch, yaw [deg]).
+        Reads ``harmonics`` (``dof``, ``amplitude`` [m or deg], ``period``, ``phase_deg``),
+        ``rows`` (time, surge, sway, heave [m], roll, pitch, yaw [deg]) or ``rao_rows``.
+    environment : kanat.model.Environment, optional
+        The sea RAOs apply to (:mod:`kanat.physics.rao`); their motion ramps with the sea's
+        ramp unless the motion has its own.
     """
+    if motion.rao_rows is not None:
+        return _rao_motion(motion, environment)
     if motion.rows is not None:
         rows = np.array(motion.rows, dtype=float)
         values = rows[:, 1:].copy()
@@ -99,6 +104,23 @@ def compile_motion(motion) -> Harmonics | MotionTable | None:
     omega = np.array([2.0 * math.pi / h.period for h in motion.harmonics])
     phase = np.radians([h.phase_deg for h in motion.harmonics])
     return Harmonics(dof, amplitude, omega, np.asarray(phase, dtype=float), motion.ramp)
+
+
+def _rao_motion(motion, environment) -> Harmonics:
+    import warnings
+
+    from kanat.errors import KanatError
+    from kanat.physics.rao import rao_harmonics
+    from kanat.physics.waves import sea_from_model
+
+    sea = sea_from_model(environment) if environment is not None else None
+    if sea is None:
+        raise KanatError("vessel.motion.rao moves the vessel with the sea: give environment.waves")
+    harmonics, outside = rao_harmonics(motion.rao_rows, sea, motion.ramp or sea.ramp)
+    if outside > 1e-3:
+        warnings.warn(f"{100 * outside:.2g} % of the sea's variance lies at frequencies outside the RAO "
+                      f"table ({motion.rao}); those components do not move the vessel", stacklevel=3)
+    return harmonics
 
 
 def harmonic_motion(t: float, harmonics: Harmonics) -> tuple[np.ndarray, np.ndarray]:
