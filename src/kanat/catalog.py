@@ -406,3 +406,33 @@ def line_type(catalog: str, nominal_diameter: float, grade: str | None = None,
             "drag_tangential": p.drag_tangential,
             "added_mass": p.added_mass_coefficient * displaced,
             "added_mass_tangential": p.added_mass_tangential_coefficient * displaced}
+
+
+def catalog_table() -> str:
+    """The catalogue as text: one line per entry with its grades and diameter range."""
+    rows = []
+    for name, c in CATALOG.items():
+        low, high = DIAMETER_RANGE[name]
+        grades = " | ".join(CHAIN_GRADES) if c.is_chain else "-"
+        stiffness = "static and dynamic EA" if c.is_fibre else "EA"
+        rows.append(f"{name:<16} {c.description}; grade: {grades}; nominal_diameter "
+                    f"{low:g} to {high:g} m; {stiffness}")
+    return "\n".join(rows)
+
+
+def line_type_text(catalog: str, nominal_diameter: float, grade: str | None = None,
+                   water_density: float = SEAWATER_DENSITY) -> str:
+    """A catalogue line as the lines of a case's ``line_types`` entry (YAML, with units)."""
+    units = {"diameter": "m, volume-equivalent", "mass": "kg/m", "axial_stiffness": "N, static",
+             "breaking_load": "N", "drag_normal": "-, on diameter",
+             "drag_tangential": "-, on pi diameter", "added_mass": "kg/m",
+             "added_mass_tangential": "kg/m"}
+    keys = line_type(catalog, nominal_diameter, grade, water_density)
+    lines = [f"catalog: {catalog}", *([f"grade: {grade}"] if grade else []),
+             f"nominal_diameter: {nominal_diameter:g}  # m"]
+    lines += [f"{key}: {value:.6g}  # {units[key]}" for key, value in keys.items()]
+    p = properties(catalog, nominal_diameter, grade)
+    if p.dynamic_stiffness_per_mbl:
+        lines.append(f"# dynamic axial stiffness: {p.dynamic_axial_stiffness():.6g} N + "
+                     f"{p.dynamic_stiffness_per_mean:g} x mean tension")
+    return "\n".join(lines)
