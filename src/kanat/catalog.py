@@ -32,7 +32,7 @@ modulus on the nominal area of the link's two bars, ``A = 2 pi d^2 / 4``)::
   5.45e10 and 5.6e10.
 
 Chain, mass and volume (Vryhof *Anchor manual* and Orcina's OrcaFlex chain data, as in
-MoorPy's ``MoorProps.getLineProps``): ``m = 19.9e3 d^2`` kg/m (studless), ``21.9e3 d^2``
+the retired ``getLineProps`` kept in MoorPy's ``MoorProps.py``): ``m = 19.9e3 d^2`` kg/m (studless), ``21.9e3 d^2``
 (studlink), d in m; volume-equivalent diameter (steel of 7850 kg/m^3) ``1.80 d`` and
 ``1.89 d`` (MoorPy ``dvol_dnom``).
 
@@ -41,8 +41,8 @@ Chain, hydrodynamics: DNV-OS-E301 drag coefficients on the nominal diameter, 2.4
 volume-equivalent diameter (as MoorPy's ``Cd``, ``Cd_ax``); added-mass coefficients 1.0
 normal and 0.5 tangential (Bureau Veritas NR 493, as MoorPy's ``Ca``, ``Ca_ax``).
 
-Six-strand wire rope with a steel core (IWRC) (Orcina's OrcaFlex wire data, as in MoorPy's
-``MoorProps.getLineProps`` 'Orcaflex-original' and ddjokic/Mooring-Line-Properties
+Six-strand wire rope with a steel core (IWRC) (Orcina's OrcaFlex wire data, as in the
+retired ``getLineProps`` of MoorPy's ``MoorProps.py``, 'Orcaflex-original', and ddjokic/Mooring-Line-Properties
 ``moorwire.py``): ``m = 3989.7 d^2`` kg/m, ``EA = 4.04e10 d^2`` N, ``MBL = 633.358e6 d^2`` N,
 ``d_vol = 0.80 d``; drag 1.2 normal on ``d_vol``, 0 tangential; added mass 1.0 (DNV-RP-C205
 circular cylinder), 0 tangential.
@@ -82,6 +82,11 @@ CHAIN_GRADES = ("R3", "R3S", "R4", "R4S", "R5")
 
 CHAIN_MBL_FACTOR = {"R3": 0.0223, "R3S": 0.0249, "R4": 0.0274, "R4S": 0.0304, "R5": 0.0320}
 """``c`` in ``MBL = c d^2 (44 - 0.08 d)`` [kN, d in mm] per grade (DNV-OS-E302)."""
+
+ORQ_MBL_FACTOR = 0.0211
+"""``c`` of ORQ (oil rig quality) chain [kN/mm^2] in the same formula: the reference breaking
+strength of API RP 2SK's chain T-N curves (the factor in MoorPy's ``MoorProps.py``,
+``ORQ=2.11e4`` with d in m, and of ddjokic/Mooring-Line-Properties)."""
 
 STUDLESS_MODULUS = {"R3": (5.40e10, 0.0040e10), "R3S": (5.40e10, 0.0040e10),
                     "R4": (5.45e10, 0.0025e10), "R4S": (5.45e10, 0.0025e10),
@@ -257,8 +262,25 @@ def chain_breaking_load(nominal_diameter: float, grade: str) -> float:
     grade : str
         One of :data:`CHAIN_GRADES`.
     """
+    return _chain_formula(nominal_diameter, CHAIN_MBL_FACTOR[grade])
+
+
+def chain_reference_breaking_load(nominal_diameter: float) -> float:
+    """Reference breaking strength of chain in API RP 2SK's T-N curves [N]: the MBL of ORQ
+    chain of the same diameter, ``0.0211 d^2 (44 - 0.08 d)`` kN (d in mm), whatever the grade.
+
+    Parameters
+    ----------
+    nominal_diameter : float
+        Bar diameter [m].
+    """
+    return _chain_formula(nominal_diameter, ORQ_MBL_FACTOR)
+
+
+def _chain_formula(nominal_diameter: float, factor: float) -> float:
+    """``1000 c d^2 (44 - 0.08 d)`` N with d in mm."""
     d_mm = 1000.0 * nominal_diameter
-    return 1000.0 * CHAIN_MBL_FACTOR[grade] * d_mm**2 * (44.0 - 0.08 * d_mm)
+    return 1000.0 * factor * d_mm**2 * (44.0 - 0.08 * d_mm)
 
 
 def chain_axial_stiffness(nominal_diameter: float, grade: str, studlink: bool) -> float:
