@@ -14,6 +14,7 @@ for chain, as DNV-OS-E302 and DNV-OS-E301 do), not from kanat's code. Sources:
   MBL 633358 d^2 kN, d in m.
 """
 import math
+from pathlib import Path
 
 import pytest
 import yaml
@@ -24,8 +25,6 @@ from kanat import catalog
 from kanat.cli import app
 from kanat.errors import CaseError
 from kanat.model.components import LineType
-
-from pathlib import Path
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 DNV_E302_FACTOR = {"R3": 0.0223, "R3S": 0.0249, "R4": 0.0274, "R4S": 0.0304, "R5": 0.0320}
@@ -86,13 +85,13 @@ def test_orq_reference_strength_and_a_published_table_value():
 
 # --- MoorPy side by side ------------------------------------------------------------------
 
-moorpy_helpers = pytest.importorskip("moorpy.helpers")
 MOORPY_NAME = {"studless_chain": "chain", "studlink_chain": "chain_studlink", "wire_spiral": "wire",
                "polyester": "polyester", "nylon": "nylon", "hmpe": "hmpe"}
 ROPE_DIAMETERS_MM = (48.0, 96.0, 160.0)
 
 
 def _moorpy(name, d_mm):
+    moorpy_helpers = pytest.importorskip("moorpy.helpers")
     return moorpy_helpers.getLineProps(d_mm, MOORPY_NAME[name], source="default", rho=1025.0, g=9.81)
 
 
@@ -159,7 +158,8 @@ def test_catalogue_fills_missing_keys_and_explicit_keys_override():
 
 
 @pytest.mark.parametrize("line_type, key, words", [
-    ({"catalog": "studles_chain", "grade": "R3", "nominal_diameter": 0.076}, "catalog", "did you mean 'studless_chain'"),
+    ({"catalog": "studles_chain", "grade": "R3", "nominal_diameter": 0.076}, "catalog",
+     "did you mean 'studless_chain'"),
     ({"catalog": "studless_chain", "nominal_diameter": 0.076}, "grade", "needs a grade"),
     ({"catalog": "studless_chain", "grade": "R6", "nominal_diameter": 0.076}, "grade", "R3, R3S, R4, R4S, R5"),
     ({"catalog": "polyester", "grade": "R4", "nominal_diameter": 0.12}, "grade", "only chains have a grade"),
@@ -188,3 +188,16 @@ def test_cli_lists_the_catalogue_and_prints_a_line():
     assert LineType(**printed).mass == pytest.approx(114.942, rel=1e-5)
     bad = runner.invoke(app, ["catalog", "nylon", "-d", "0.1", "-g", "R3"])
     assert bad.exit_code == 2 and "only chains have a grade" in bad.output
+
+
+def test_continuum_case_says_how_to_use_a_catalogue_line():
+    """The continuum model has no tangential added mass: the catalogue's is refused at its key
+    with the way out, and writing it as 0 runs the line."""
+    data = yaml.safe_load((EXAMPLES / "seed000_accel.yaml").read_text())
+    name = next(iter(data["line_types"]))
+    data["line_types"][name] = {"catalog": "polyester", "nominal_diameter": 0.05}
+    with pytest.raises(CaseError, match="write added_mass_tangential: 0"):
+        kanat.load_case(data)
+    data["line_types"][name]["added_mass_tangential"] = 0
+    line = kanat.load_case(data).line_types[name]
+    assert line.mass == pytest.approx(679.0 * 0.05**2, rel=1e-12) and line.added_mass_tangential == 0.0

@@ -110,8 +110,8 @@ def test_gumbel_fit_recovers_a_known_distribution_and_its_law_for_longer_storms(
     # the law mpm uses for a storm k times the record: max of k Gumbel(mu, beta) is Gumbel(mu + beta ln k, beta)
     x = np.linspace(4.0, 9.0, 11)
     k = 6.0
-    np.testing.assert_allclose(stats.gumbel_r.cdf(x, mu, beta) ** k, stats.gumbel_r.cdf(x, mu + beta * math.log(k), beta),
-                               rtol=1e-12)
+    shifted = stats.gumbel_r.cdf(x, mu + beta * math.log(k), beta)
+    np.testing.assert_allclose(stats.gumbel_r.cdf(x, mu, beta) ** k, shifted, rtol=1e-12)
     # through mpm: records whose maxima are these samples (a flat record with one spike each)
     t = np.arange(0.0, 101.0)
     records = np.zeros((60, t.size))
