@@ -169,6 +169,27 @@ def pitch(case: Path = typer.Argument(..., help="Case file with a pitch block.")
     _steady(load(case, debug), case, output, plot, debug, model="pitch")
 
 
+@app.command()
+def catalog(name: Optional[str] = typer.Argument(None, help="A catalogue line; omit to list them."),
+            diameter: Optional[float] = typer.Option(None, "-d", "--nominal-diameter",
+                                                     help="Nominal diameter [m] (with NAME)."),
+            grade: Optional[str] = typer.Option(None, "-g", "--grade", help="Chain grade R3 ... R5."),
+            water_density: float = typer.Option(1025.0, "--water-density", help="[kg/m^3], for added mass.")):
+    """The line catalogue: its lines, or one line's line-type keys (docs/design.md)."""
+    from kanat import catalog as line_catalog
+
+    if name is None:
+        typer.echo(line_catalog.catalog_table())
+        return
+    if diameter is None:
+        raise typer.BadParameter("give the nominal diameter in metres, e.g. -d 0.076", param_hint="-d")
+    try:
+        typer.echo(line_catalog.line_type_text(name, diameter, grade, water_density))
+    except line_catalog.CatalogError as error:
+        typer.echo(f"error: {error}", err=True)
+        raise typer.Exit(2) from None
+
+
 def _check_outputs(output: Path, plot: Optional[Path], case: Path, debug: bool) -> None:
     """Refuse, before any work, an output that is an input, a directory or unwritable."""
     from kanat.io.outputs import check_output_file

@@ -20,6 +20,11 @@ summary_statistics(ds, window=None, duration=None)
     One row of numbers per result (used by :mod:`kanat.sweep`).
 select_nodes(ds, nodes), time_window(ds, window)
     Node selectors (indices or ``CABLE@S``) and time windows.
+
+Modules for any tension series (import them by name): :mod:`kanat.analysis.extremes`
+(``mpm(series, time, duration, method)``: Rayleigh, Weibull, Gumbel most probable maxima)
+and :mod:`kanat.analysis.fatigue` (``rainflow``, ``damage`` on API RP 2SK T-N curves,
+``stress_damage`` on DNV-OS-E301 S-N curves).
 """
 from kanat.analysis.bodies import body_depth_excursions
 from kanat.analysis.events import has_events, snap_events, snap_summary

@@ -102,6 +102,10 @@ class Case(KanatModel):
         if isinstance(info.context, dict):
             info.context["names"] = {"line_types": _names(data.get("line_types", {})),
                                      "bodies": bodies, "points": points}
+            density = (data.get("environment") or {}).get("water_density") \
+                if isinstance(data.get("environment"), dict) else None
+            if isinstance(density, (int, float)) and not isinstance(density, bool) and density > 0:
+                info.context["water_density"] = float(density)  # catalogue added masses
         return data
 
     @field_validator("points")

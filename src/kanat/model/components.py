@@ -3,9 +3,11 @@ are in :mod:`kanat.model.body` (imported here too)."""
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
-from pydantic import BeforeValidator, Field, model_validator
+from pydantic import BeforeValidator, Field, ValidationInfo, field_validator, model_validator
+
+from kanat import catalog as line_catalog
 
 from ._base import ZERO3, KanatModel, Vector3, fmt, quantity
 from .body import Body, SurfaceBuoy  # noqa: F401 - bodies lived here; kept importable
@@ -88,6 +90,11 @@ class LineType(KanatModel):
         Strain limit of the line [-]; None: from the material (:meth:`strain_limit`).
     added_mass_tangential : float
         Tangential added mass per length [kg/m] (MoorDyn's CaAx rho pi d^2 / 4).
+    catalog, grade, nominal_diameter : str, str, float or None
+        A catalogue line (:mod:`kanat.catalog`) that gives every key not written: the
+        volume-equivalent ``diameter``, ``mass``, static ``axial_stiffness``,
+        ``breaking_load``, drag and added-mass coefficients (added masses at the case's
+        water density when validated from a case file, else 1025 kg/m^3).
     """
 
     diameter: float = quantity(unit="m", gt=0)
@@ -124,6 +131,71 @@ class LineType(KanatModel):
         0.0, unit="kg/m", ge=0,
         description="added mass per length for accelerations along the line (MoorDyn's "
                     "CaAx times rho pi d^2 / 4)")
+    catalog: Literal[tuple(line_catalog.CATALOG)] | None = Field(  # type: ignore[valid-type]
+        None, description="a line from the catalogue (docs/design.md) giving every key not "
+                          "written here: diameter (volume-equivalent), mass, axial_stiffness "
+                          "(static), breaking_load, drag and added-mass coefficients")
+    grade: Literal[line_catalog.CHAIN_GRADES] | None = Field(  # type: ignore[valid-type]
+        None, validate_default=True,
+        description="chain grade (chains of the catalogue only), DNV-OS-E302")
+    nominal_diameter: float | None = quantity(
+        None, unit="m", gt=0, validate_default=True,
+        description="bar diameter of a chain, rope diameter otherwise (with catalog)")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _from_catalog(cls, data: Any, info: ValidationInfo) -> Any:
+        """Fill the keys not written from ``catalog`` (explicit keys override it)."""
+        if not isinstance(data, dict) or data.get("catalog") is None:
+            return data
+        density = (info.context or {}).get("water_density", line_catalog.SEAWATER_DENSITY)
+        try:
+            if data.get("nominal_diameter") is None:
+                raise line_catalog.CatalogError("nominal_diameter: missing")
+            filled = line_catalog.line_type(data["catalog"], data["nominal_diameter"],
+                                            data.get("grade"), water_density=density)
+        except line_catalog.CatalogError:
+            # the catalogue keys are wrong: their own validators say so at their keys; the
+            # placeholders keep the keys the catalogue would give from being reported missing
+            filled = dict.fromkeys(("diameter", "mass", "axial_stiffness"), 1.0)
+        except TypeError:  # a diameter that is not a number: its own error, nothing filled
+            return data
+        return {**filled, **data}
+
+    @field_validator("grade")
+    @classmethod
+    def _grade_for_chains(cls, grade: str | None, info: ValidationInfo) -> str | None:
+        if "catalog" not in info.data:  # an unknown catalogue: said at its key
+            return grade
+        name = info.data["catalog"]
+        if name is not None:
+            try:
+                line_catalog.check_grade(line_catalog.CATALOG[name], grade)
+            except line_catalog.CatalogError as error:
+                raise ValueError(str(error).removeprefix("grade: ")) from None
+        elif grade is not None:
+            raise ValueError("a grade goes with a chain of the catalogue: add catalog: "
+                             "studless_chain or studlink_chain")
+        return grade
+
+    @field_validator("nominal_diameter")
+    @classmethod
+    def _diameter_in_range(cls, diameter: float | None, info: ValidationInfo) -> float | None:
+        if "catalog" not in info.data:  # an unknown catalogue: said at its key
+            return diameter
+        name = info.data["catalog"]
+        if name is None:
+            if diameter is not None:
+                raise ValueError("a nominal_diameter goes with a catalogue line: add catalog "
+                                 f"({' | '.join(line_catalog.CATALOG)})")
+            return diameter
+        if diameter is None:
+            raise ValueError(f"catalog '{name}' needs the nominal_diameter [m]")
+        try:
+            line_catalog.check_diameter(line_catalog.CATALOG[name], diameter)
+        except line_catalog.CatalogError as error:
+            raise ValueError(str(error).removeprefix("nominal_diameter: ")) from None
+        return diameter
 
     @property
     def area(self) -> float:
