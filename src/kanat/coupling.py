@@ -1,0 +1,358 @@
+"""Drive the lumped model from another program's time loop: :class:`Coupling`.
+
+A host program (a floating-body integrator, a ship simulator, a controller study) moves the
+points where the lines meet its structure and asks for the lines' forces on them, step by step,
+as MoorDyn's coupling API does (``Init``, ``Step(x, xd, t, dt) -> forces``)::
+
+    coupling = kanat.Coupling(case)
+    forces = coupling.initialize(positions)            # the equilibrium with the points there
+    for k in range(n):
+        forces = coupling.step(t, dt, positions, velocities)    # the forces at t + dt
+        ...                                            # the host moves its body with them
+
+The driven points are the case's vessel points (``{vessel: [x, y, z]}`` ends, the tow point), in
+:attr:`Coupling.points` order: a MoorDyn file's ``Coupled``/``Vessel`` points in file order (named
+``pointN``), a YAML case's vessel ends in cable order (named ``CABLE.from`` / ``CABLE.to``, the
+first end at each point). The host's positions replace the vessel's track and motion, which the
+coupling does not use (:attr:`Coupling.notes` says so when the case has them).
+
+Interpolation (MoorDyn's convention, its ``Point::updateFairlead``): over a step from ``t`` to
+``t + dt`` each driven point moves at the given velocity from the given position::
+
+    (1)  r(tau) = r_t + v_t (tau - t),   r_dot(tau) = v_t,    t <= tau <= t + dt
+
+and the forces returned are the lines' forces on the points at ``t + dt``: the node's force of the
+lumped model (element tensions, the half elements' weight, drag and seabed contact next to it),
+positive as the lines pull the host. A host that knows its points at both ends of the step passes
+``v_t = (r_t+dt - r_t) / dt``: the motion is then the straight line between them.
+
+Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
+cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): ``simulation.dt`` if the case gives
+it, else the explicit scheme's safe step or the implicit scheme's default step, cut to divide the
+coupling step exactly. The state after a step is what a run of the same case with the same
+motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
+"""
+from __future__ import annotations
+
+import dataclasses
+from os import PathLike
+from pathlib import Path
+
+import numpy as np
+
+from kanat.errors import KanatError, SolverError
+from kanat.lumped import stepping
+from kanat.lumped.advance import advance
+from kanat.lumped.equilibrium import STARTING_DIFFERENCE, equilibrium
+from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.network import build_network
+from kanat.lumped.snap import SnapTracker
+from kanat.lumped.system import LumpedSystem
+from kanat.model import Case
+from kanat.model.operations import VesselMotion
+from kanat.model.simulation import Simulation
+from kanat.model.support import require_supported
+from kanat.schemes import get_scheme
+
+TIME_TOLERANCE = 1e-9
+"""A step must start at the coupling's time, to this fraction of the step (or of 1 s)."""
+
+
+class DrivenSystem(LumpedSystem):
+    """The lumped equations of motion with the vessel's points moved by the host, eq. (1).
+
+    :meth:`drive` sets the motion of the step about to be taken; every sample of the vessel's
+    points (the Python schemes' and the compiled steps', :func:`kanat.lumped.advance.track_samples`)
+    comes from it.
+    """
+
+    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray) -> None:
+        """Eq. (1) from ``t``: ``positions``, ``velocities`` (p, 3) of the vessel nodes."""
+        self._t0 = float(t)
+        self._r0, self._v0 = np.array(positions, float), np.array(velocities, float)
+
+    def vessel_points(self, times, arms=None):
+        """Positions, velocities (k, p, 3) and heading (k,) of the driven points at ``times`` (k,),
+        eq. (1); ``arms`` must be None (the driven points are the vessel nodes)."""
+        if arms is not None:
+            raise KanatError("a coupled system's vessel has no lever arms: its points are driven")
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        late = (times - self._t0)[:, None, None]
+        pos = self._r0[None] + self._v0[None] * late
+        vel = np.broadcast_to(self._v0, pos.shape).copy()
+        return pos, vel, np.zeros(len(times))
+
+
+class Coupling:
+    """A case's lines driven at their vessel points by a host program (module docstring).
+
+    Parameters
+    ----------
+    case : kanat.model.Case or path-like
+        Any case the lumped model runs (``model: lumped`` or ``statics``: a MoorDyn file without
+        ``TMax`` couples as well); its ``simulation`` block gives the scheme and substep, if any.
+    scheme : str or kanat.schemes.Scheme, optional
+        Overrides ``simulation.scheme``.
+
+    Attributes
+    ----------
+    points : list of str
+        The driven points' names, in the order of every array (module docstring).
+    notes : list of str
+        Decisions taken for the user (scheme, parts of the case not used).
+    time : float
+        The time of the state [s] (None before :meth:`initialize`).
+    """
+
+    def __init__(self, case: Case | str | PathLike, scheme=None):
+        if not isinstance(case, Case):
+            from kanat.io import load_case
+
+            case = load_case(case)
+        require_supported(case, "lumped")
+        self.notes: list[str] = []
+        self.case = self._held(case)
+        self.net = build_network(self.case)
+        if not len(self.net.vessel_nodes):
+            raise KanatError(f"case '{case.name}' has no vessel points to drive: give the lines' ends on "
+                             "the host as {vessel: [x, y, z]} (MoorDyn: Coupled points)")
+        self.points, self.net = driven_points(case, self.net)
+        sim = self.case.simulation
+        self.system = DrivenSystem(self.net, self.case, sim.mass_matrix)
+        self.scheme = self._choose(scheme)
+        self._state = self._snaps = None
+        self._T = np.zeros(self.net.n_elements)
+
+    def _held(self, case: Case) -> Case:
+        """The case without the vessel's track and motion (the host moves the points), noted."""
+        vessel = case.vessel
+        for key, used in (("vessel.track", bool(vessel.track)), ("vessel.motion", vessel.motion != VesselMotion()),
+                          ("vessel.pitch", vessel.pitch is not None)):
+            if used:
+                self.notes.append(f"{key} not used: the host moves the driven points")
+        held = vessel.model_copy(update={"track": (), "motion": VesselMotion(), "pitch": None})
+        simulation = case.simulation or Simulation(duration=1.0)     # a statics case: the defaults (no duration used)
+        return case.model_copy(update={"vessel": held, "simulation": simulation})
+
+    def _choose(self, scheme):
+        sim = self.case.simulation
+        spec = scheme if scheme is not None else sim.scheme
+        rigid = self.net.rigid.count > 0
+        info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent",
+                                  self.case.environment.seabed)
+        self.info = info
+        if spec is None:
+            chosen = stepping.choose_scheme(info, self._implicit_step(), SCHEMES, explicit_only=rigid)
+            self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
+            spec = chosen.name
+        chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
+        if rigid and not chosen.explicit:
+            raise KanatError(f"scheme {chosen.name} does not take bodies with dof: 6 yet (body "
+                             f"'{self.net.rigid.names[0]}'); use scheme abm4 or rk4")
+        return chosen
+
+    def _implicit_step(self) -> float:
+        sim = self.case.simulation
+        return sim.dt if sim.dt is not None else sim.step_or_default
+
+    def substep(self, dt: float) -> float:
+        """The lumped model's step [s] inside a coupling step ``dt`` (module docstring)."""
+        sim = self.case.simulation
+        if self.scheme.explicit:
+            top = self.info.safe_step(self.scheme)
+            top = min(top, sim.dt) if sim.dt is not None else top
+        else:
+            top = self._implicit_step()
+        return stepping.fit_step(min(top, dt), dt)
+
+    # --- the host's calls ------------------------------------------------------------------
+    def initialize(self, positions, velocities=None, t: float = 0.0) -> np.ndarray:
+        """Start at the equilibrium with the driven points at ``positions``; return its forces.
+
+        Parameters
+        ----------
+        positions : array_like, shape (len(points), 3)
+            [m], global axes (z up, 0 at the mean surface).
+        velocities : array_like, shape (len(points), 3), optional
+            [m/s]. Given, the lines start with the quasi-static response to them (the central
+            difference of the equilibria at ``positions -+ velocities * 0.01 s``, as a run under a
+            prescribed motion starts: :func:`kanat.lumped.equilibrium.starting_state`); default at rest.
+        t : float
+            The time of the start [s].
+
+        Returns
+        -------
+        ndarray, shape (len(points), 3)
+            The lines' forces on the points [N].
+
+        Raises
+        ------
+        kanat.errors.SolverError
+            When the equilibrium is not found (the message says where).
+        """
+        r = self._points_array(positions, "positions")
+        v = np.zeros_like(r) if velocities is None else self._points_array(velocities, "velocities")
+        start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
+        x = self._equilibrium(start, r, None)
+        speed = np.zeros_like(x)
+        if np.any(v != 0.0):
+            ahead = self._equilibrium(start, r + STARTING_DIFFERENCE * v, x)
+            behind = self._equilibrium(start, r - STARTING_DIFFERENCE * v, x)
+            speed = (ahead - behind) / (2.0 * STARTING_DIFFERENCE)
+        free = self.system.free_index
+        velocity = speed[free]
+        velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0        # Euler angle rates
+        self.system.drive(t, r, v)
+        self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.substep(1.0))
+        self._snaps = SnapTracker(float(t), self._tensions(self._state))
+        return self.forces()
+
+    def _equilibrium(self, case, positions, x0):
+        net = dataclasses.replace(self.net, vessel_offset=positions)
+        try:
+            return equilibrium(net, case, x0=x0, friction=False)[0]
+        except SolverError as error:
+            raise SolverError(f"{error}. Tried: the lines' equilibrium with the driven points at the given "
+                              "positions; give them near where the case file has them") from None
+
+    def step(self, t: float, dt: float, positions, velocities) -> np.ndarray:
+        """Advance from ``t`` to ``t + dt`` with the points moving by eq. (1); return the forces there.
+
+        Parameters
+        ----------
+        t : float
+            The coupling's time [s] (:attr:`time`).
+        dt : float
+            The coupling step [s], > 0.
+        positions, velocities : array_like, shape (len(points), 3)
+            The points at ``t`` [m, m/s].
+
+        Returns
+        -------
+        ndarray, shape (len(points), 3)
+            The lines' forces on the points at ``t + dt`` [N].
+
+        Raises
+        ------
+        kanat.errors.SolverError
+            When a step cannot be taken (non-finite state): the message says when.
+        """
+        if self._state is None:
+            raise KanatError("call initialize(positions) before step(...)")
+        if not dt > 0.0:
+            raise KanatError(f"dt must be positive (got {dt!r} s)")
+        now = self.time
+        if abs(t - now) > TIME_TOLERANCE * max(dt, 1.0):
+            raise KanatError(f"step(t = {t:.9g} s, ...): the coupling is at t = {now:.9g} s; step from there "
+                             "(or restore() a state saved at t)")
+        self.system.drive(now, self._points_array(positions, "positions"),
+                          self._points_array(velocities, "velocities"))
+        h = self.substep(dt)
+        steps = int(round(dt / h))
+        state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
+        if taken < steps or not np.all(np.isfinite(state_positions(state)[0])):
+            raise SolverError(f"the lines' state became non-finite at t = {state['t']:.6g} s (substep {h:.3g} s, "
+                              f"{self.scheme.name}); reduce simulation.dt or name scheme rk4")
+        self._state = state
+        return self.forces()
+
+    # --- what the host may read -------------------------------------------------------------
+    @property
+    def time(self) -> float | None:
+        return None if self._state is None else float(self._state["t"])
+
+    def forces(self) -> np.ndarray:
+        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]."""
+        x, v, _, heading = self.system.full(self.time, *state_positions(self._state))
+        F = self.system.loads(self.time, x, v, heading)[0]
+        return F[self.net.vessel_nodes].copy()
+
+    def nodes(self) -> tuple[np.ndarray, np.ndarray]:
+        """Positions and velocities (n, 3) of the cables' nodes at :attr:`time` [m, m/s], in a
+        result file's ``node`` order."""
+        x, v = self.system.full(self.time, *state_positions(self._state))[:2]
+        return x[self.net.node_index], v[self.net.node_index]
+
+    def state(self) -> dict:
+        """Everything needed to continue exactly (copies): give it to :meth:`restore`."""
+        if self._state is None:
+            raise KanatError("nothing to save: call initialize(positions) first")
+        return {"scheme": _copied(self._state), "snaps": _copied(self._snaps.state()),
+                "drive": (self.system._t0, self.system._r0.copy(), self.system._v0.copy())}
+
+    def restore(self, state: dict) -> None:
+        """Continue from a :meth:`state` of this coupling (or of another of the same case)."""
+        scheme = _copied(state["scheme"])
+        self._state = scheme
+        self.system.drive(*state["drive"])
+        self._snaps = SnapTracker(scheme["t"], self._tensions(scheme), _copied(state["snaps"]))
+
+    def _tensions(self, scheme_state) -> np.ndarray:
+        from kanat.lumped import entries
+
+        net = self.net
+        x, v = self.system.full(scheme_state["t"], *state_positions(scheme_state))[:2]
+        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+                         net.law_n, net.law_x, net.law_y, self._T)
+        return self._T
+
+    def _points_array(self, values, what: str) -> np.ndarray:
+        array = np.asarray(values, dtype=float)
+        shape = (len(self.points), 3)
+        if array.size != shape[0] * shape[1]:
+            raise KanatError(f"{what} must have shape {shape} (points {', '.join(self.points)}); got "
+                             f"{np.shape(values)}")
+        array = array.reshape(shape)
+        if not np.all(np.isfinite(array)):
+            raise KanatError(f"{what} must be finite (got {array.tolist()})")
+        return array
+
+
+def _copied(state: dict) -> dict:
+    return {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+
+
+def driven_points(case: Case, net):
+    """The names of the driven points (module docstring) and ``net`` with its vessel nodes in their
+    order: a MoorDyn file's coupled points by number (``pointN``) in file order, else the first cable
+    end at each (``CABLE.from``, ``CABLE.to``) in cable order (the network's own)."""
+    arms = np.asarray(net.vessel_offset, float)
+    names: list[str | None] = [None] * len(arms)
+    coupled = moordyn_coupled_points(case)
+    for name, xyz in coupled:
+        hit = np.flatnonzero(np.all(np.isclose(arms, xyz, rtol=0.0, atol=1e-9), axis=1))
+        if len(hit) and names[hit[0]] is None:
+            names[hit[0]] = name
+    if coupled and all(names):
+        rank = {name: k for k, (name, _) in enumerate(coupled)}
+        order = np.argsort([rank[name] for name in names], kind="stable")
+        net = dataclasses.replace(net, vessel_nodes=net.vessel_nodes[order], vessel_offset=arms[order])
+        return [names[k] for k in order], net
+    names = [None] * len(arms)
+    for cable in case.cables:
+        for label, end in ((f"{cable.name}.from", cable.from_), (f"{cable.name}.to", cable.to)):
+            if end.kind != "vessel":
+                continue
+            arm = np.asarray(case.vessel.tow_point if end.offset is None else end.offset, float)
+            hit = np.flatnonzero(np.all(arms == arm, axis=1))
+            if len(hit) and names[hit[0]] is None:
+                names[hit[0]] = label
+    return [name or f"vessel{k}" for k, name in enumerate(names)], net
+
+
+def moordyn_coupled_points(case: Case) -> list[tuple[str, np.ndarray]]:
+    """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
+    in file order; empty for any other case."""
+    source = getattr(case, "source", None)
+    if not source or not Path(source).is_file():
+        return []
+    from kanat.io.moordyn_map import Reader, file_version, read_bodies, read_points
+    from kanat.io.moordyn_text import looks_like_moordyn, split
+
+    text = Path(source).read_text(errors="replace")
+    if not looks_like_moordyn(text):
+        return []
+    reader = Reader(split(text), str(source), Path(source).parent)
+    reader.version = file_version(reader)
+    points = read_points(reader, read_bodies(reader))
+    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
