@@ -33,10 +33,13 @@ def wd0050(**keys):
         return load_case(WD0050).replace(keys) if keys else load_case(WD0050)
 
 
-def driven_run(motion, duration, dt):
-    """WD0050 under a prescribed ``motion``, implicit at ``dt``, an output every step."""
+def driven_run(motion, duration, dt, scheme="generalized-alpha-lumped"):
+    """WD0050 under a prescribed ``motion``, an output every ``dt``: implicit at ``dt``, or an explicit
+    ``scheme`` at its safe step."""
+    explicit = scheme != "generalized-alpha-lumped"
     case = wd0050(**{"model": "lumped", "vessel.motion": motion, "simulation.duration": duration,
-                     "simulation.output_dt": dt, "simulation.dt": dt})
+                     "simulation.output_dt": dt, "simulation.dt": None if explicit else dt,
+                     "simulation.scheme": scheme})
     with quiet():
         return case, kanat.simulate(case)
 
@@ -99,15 +102,16 @@ def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
         coupling.step(1.0, 0.1, [[1.0, 0.0, -5.0], [-1.0, 0.0, -5.0]], np.zeros((2, 3)))
 
 
-def test_a_coupled_drift_is_the_prescribed_motion_run_to_round_off():
+@pytest.mark.parametrize("scheme", ["generalized-alpha-lumped", "rk4"])
+def test_a_coupled_drift_is_the_prescribed_motion_run_to_round_off(scheme):
     """The fairlead drifts at 0.1 m/s (a motion table, linear from before t = 0 to after the end): the
     host's positions and velocity at each step's start move it exactly as the run's table does, so at
-    every one of 60 coupling steps of 0.05 s the nodes and the fairlead force are the run's outputs
-    (at the implicit scheme's step 0.05 s) to round-off."""
-    dt, steps = 0.05, 60
+    every coupling step of 0.05 s the nodes and the fairlead force are the run's outputs to round-off
+    (the implicit scheme at 0.05 s, 60 steps; rk4 at its safe step, 10 steps)."""
+    dt, steps = 0.05, 60 if scheme == "generalized-alpha-lumped" else 10
     rows = [[-10.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0], [100.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0]]
-    case, ds = driven_run({"rows": rows}, steps * dt, dt)
-    assert ds.attrs["status"] == "ok" and ds.attrs["scheme"] == "generalized-alpha-lumped"
+    case, ds = driven_run({"rows": rows}, steps * dt, dt, scheme)
+    assert ds.attrs["status"] == "ok" and ds.attrs["scheme"] == scheme
 
     def path(t):
         return np.array([[0.1 * t, 0.0, 0.0]])

@@ -71,6 +71,10 @@ class DrivenSystem(LumpedSystem):
         self._t0 = float(t)
         self._r0, self._v0 = np.array(positions, float), np.array(velocities, float)
 
+    def driven(self) -> tuple[float, np.ndarray, np.ndarray]:
+        """The motion set by :meth:`drive`: ``(t, positions, velocities)`` (copies)."""
+        return self._t0, self._r0.copy(), self._v0.copy()
+
     def vessel_points(self, times, arms=None):
         """Positions, velocities (k, p, 3) and heading (k,) of the driven points at ``times`` (k,),
         eq. (1); ``arms`` must be None (the driven points are the vessel nodes)."""
@@ -278,7 +282,7 @@ class Coupling:
         if self._state is None:
             raise KanatError("nothing to save: call initialize(positions) first")
         return {"scheme": _copied(self._state), "snaps": _copied(self._snaps.state()),
-                "drive": (self.system._t0, self.system._r0.copy(), self.system._v0.copy())}
+                "drive": self.system.driven()}
 
     def restore(self, state: dict) -> None:
         """Continue from a :meth:`state` of this coupling (or of another of the same case)."""
