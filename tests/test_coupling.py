@@ -124,6 +124,42 @@ def test_a_coupled_drift_is_the_prescribed_motion_run_to_round_off(scheme):
         np.testing.assert_allclose(forces[k], reference, rtol=0, atol=1e-7 * np.max(np.abs(reference)))
 
 
+def test_a_rigid_vessel_drifting_and_turning_is_the_prescribed_motion_run_to_round_off():
+    """The three-chain platform driven as one rigid body (``rigid_vessel=True``): surge 0.2 m/s, roll
+    0.5, pitch -0.3, yaw 1 deg/s from before t = 0 (a motion table), the host giving (x, y, z, roll,
+    pitch, yaw) and their rates at each step's start: every node and the resultant force are the
+    run's to round-off, and the moment is that of the run's fairlead forces about the moved origin,
+    eq. (3) of kanat.coupling, at every one of 10 steps of 0.1 s."""
+    dt, steps = 0.1, 10
+    rate = np.array([0.2, 0.0, 0.0, *np.radians([0.5, -0.3, 1.0])])
+    rows = [[t, *(t * rate[:3]), *np.degrees(t * rate[3:])] for t in (-10.0, 100.0)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = load_case(THREE).replace({"model": "lumped", "vessel.motion": {"rows": rows},
+                                         "simulation": {"duration": steps * dt, "output_dt": dt, "dt": dt}})
+    with quiet():
+        ds = kanat.simulate(case)
+    assert ds.attrs["status"] == "ok"
+    coupling = kanat.Coupling(case, rigid_vessel=True)
+    assert coupling.points == ["vessel"]
+    forces, nodes = [coupling.initialize([np.zeros(6)], [rate])], [coupling.nodes()[0]]
+    for k in range(steps):
+        forces.append(coupling.step(k * dt, dt, [k * dt * rate], [rate]))
+        nodes.append(coupling.nodes()[0])
+    forces, nodes = np.array(forces)[:, 0], np.array(nodes)
+    assert np.max(np.abs(nodes - ds.position.values)) < 1e-9 * np.max(np.abs(ds.position.values))
+    net = build_network(case)
+    system = LumpedSystem(net, case)
+    for k in (0, 1, steps):
+        x, v = np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3))
+        x[net.node_index], v[net.node_index] = ds.position.values[k], ds.velocity.values[k]
+        F = system.loads(float(ds.time.values[k]), x, v, 0.0)[0][net.vessel_nodes]
+        origin = k * dt * rate[:3]
+        moment = np.cross(x[net.vessel_nodes] - origin, F).sum(axis=0)
+        np.testing.assert_allclose(forces[k, :3], F.sum(axis=0), rtol=0, atol=1e-7 * np.max(np.abs(F)))
+        np.testing.assert_allclose(forces[k, 3:], moment, rtol=0, atol=1e-7 * 40.0 * np.max(np.abs(F)))
+
+
 @pytest.mark.slow
 def test_a_coupled_oscillation_converges_on_the_prescribed_motion_run():
     """The fairlead moves surge -4 cos(2 pi t / 12) m, heave -cos(2 pi t / 9) m (from rest): the host

@@ -26,6 +26,18 @@ lumped model (element tensions, the half elements' weight, drag and seabed conta
 positive as the lines pull the host. A host that knows its points at both ends of the step passes
 ``v_t = (r_t+dt - r_t) / dt``: the motion is then the straight line between them.
 
+With ``rigid_vessel=True`` the host drives the vessel as one rigid body: ``positions`` (1, 6) are
+its ``q = (x, y, z, roll, pitch, yaw)`` [m, rad] (the displacement of the vessel origin, and the
+angles of ``R = Rz(yaw) Ry(pitch) Rx(roll)`` as in ``vessel.motion``), ``velocities`` their rates
+``q_dot`` [m/s, rad/s]; each point at lever arm ``a`` (its case position at q = 0) follows::
+
+    (2)  q(tau) = q_t + q_dot_t (tau - t),    r = (x, y, z) + R a,    r_dot = (x_dot, y_dot, z_dot) + w x R a
+
+``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`);
+and the forces (1, 6) are the lines' resultant and moment about ``(x, y, z)``::
+
+    (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i
+
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): ``simulation.dt`` if the case gives
 it, else the explicit scheme's safe step or the implicit scheme's default step, cut to divide the
@@ -52,6 +64,7 @@ from kanat.model import Case
 from kanat.model.operations import VesselMotion
 from kanat.model.simulation import Simulation
 from kanat.model.support import require_supported
+from kanat.physics.motion_samples import point_series
 from kanat.schemes import get_scheme
 
 TIME_TOLERANCE = 1e-9
@@ -63,28 +76,38 @@ class DrivenSystem(LumpedSystem):
 
     :meth:`drive` sets the motion of the step about to be taken; every sample of the vessel's
     points (the Python schemes' and the compiled steps', :func:`kanat.lumped.advance.track_samples`)
-    comes from it.
+    comes from it. With ``arms`` the host drives the vessel as a rigid body, eq. (2).
     """
 
-    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray) -> None:
-        """Eq. (1) from ``t``: ``positions``, ``velocities`` (p, 3) of the vessel nodes."""
+    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray, arms=None) -> None:
+        """Eq. (1) from ``t`` for ``positions``, ``velocities`` (p, 3) of the vessel nodes; or, given their
+        lever ``arms`` (p, 3), eq. (2) for the vessel's ``(x, y, z, roll, pitch, yaw)`` and rates (1, 6)."""
         self._t0 = float(t)
         self._r0, self._v0 = np.array(positions, float), np.array(velocities, float)
+        self._arms = None if arms is None else np.asarray(arms, float)
 
-    def driven(self) -> tuple[float, np.ndarray, np.ndarray]:
-        """The motion set by :meth:`drive`: ``(t, positions, velocities)`` (copies)."""
-        return self._t0, self._r0.copy(), self._v0.copy()
+    def driven(self) -> tuple:
+        """The motion set by :meth:`drive`: ``(t, positions, velocities, arms)`` (copies)."""
+        arms = None if self._arms is None else self._arms.copy()
+        return self._t0, self._r0.copy(), self._v0.copy(), arms
 
     def vessel_points(self, times, arms=None):
         """Positions, velocities (k, p, 3) and heading (k,) of the driven points at ``times`` (k,),
-        eq. (1); ``arms`` must be None (the driven points are the vessel nodes)."""
+        eq. (1) or (2); ``arms`` must be None (the driven points are the vessel nodes)."""
         if arms is not None:
             raise KanatError("a coupled system's vessel has no lever arms: its points are driven")
         times = np.atleast_1d(np.asarray(times, dtype=float))
         late = (times - self._t0)[:, None, None]
-        pos = self._r0[None] + self._v0[None] * late
-        vel = np.broadcast_to(self._v0, pos.shape).copy()
-        return pos, vel, np.zeros(len(times))
+        q = self._r0[None] + self._v0[None] * late
+        v = np.broadcast_to(self._v0, q.shape).copy()
+        if self._arms is not None:
+            displacement, v = point_series(self._arms, q[:, 0], v[:, 0])
+            q = self._arms[None] + displacement
+        return q, v, np.zeros(len(times))
+
+    def reference(self, t: float) -> np.ndarray:
+        """The rigid vessel's ``(x, y, z, roll, pitch, yaw)`` (6,) at ``t``, eq. (2)."""
+        return self._r0[0] + self._v0[0] * (t - self._t0)
 
 
 class Coupling:
@@ -97,6 +120,9 @@ class Coupling:
         ``TMax`` couples as well); its ``simulation`` block gives the scheme and substep, if any.
     scheme : str or kanat.schemes.Scheme, optional
         Overrides ``simulation.scheme``.
+    rigid_vessel : bool
+        Drive the vessel as one rigid body instead of point by point, eq. (2): ``points`` is then
+        ``["vessel"]`` and every array (1, 6).
 
     Attributes
     ----------
@@ -108,7 +134,7 @@ class Coupling:
         The time of the state [s] (None before :meth:`initialize`).
     """
 
-    def __init__(self, case: Case | str | PathLike, scheme=None):
+    def __init__(self, case: Case | str | PathLike, scheme=None, rigid_vessel: bool = False):
         if not isinstance(case, Case):
             from kanat.io import load_case
 
@@ -121,6 +147,9 @@ class Coupling:
             raise KanatError(f"case '{case.name}' has no vessel points to drive: give the lines' ends on "
                              "the host as {vessel: [x, y, z]} (MoorDyn: Coupled points)")
         self.points, self.net = driven_points(case, self.net)
+        self.arms = None
+        if rigid_vessel:
+            self.points, self.arms = ["vessel"], self.net.vessel_offset.copy()
         sim = self.case.simulation
         self.system = DrivenSystem(self.net, self.case, sim.mass_matrix)
         self.scheme = self._choose(scheme)
@@ -187,7 +216,7 @@ class Coupling:
         Returns
         -------
         ndarray, shape (len(points), 3)
-            The lines' forces on the points [N].
+            The lines' forces on the points [N] (a rigid vessel: (1, 6), eq. (3)).
 
         Raises
         ------
@@ -197,19 +226,26 @@ class Coupling:
         r = self._points_array(positions, "positions")
         v = np.zeros_like(r) if velocities is None else self._points_array(velocities, "velocities")
         start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
-        x = self._equilibrium(start, r, None)
+        x = self._equilibrium(start, self._placed(r), None)
         speed = np.zeros_like(x)
         if np.any(v != 0.0):
-            ahead = self._equilibrium(start, r + STARTING_DIFFERENCE * v, x)
-            behind = self._equilibrium(start, r - STARTING_DIFFERENCE * v, x)
+            ahead = self._equilibrium(start, self._placed(r + STARTING_DIFFERENCE * v), x)
+            behind = self._equilibrium(start, self._placed(r - STARTING_DIFFERENCE * v), x)
             speed = (ahead - behind) / (2.0 * STARTING_DIFFERENCE)
         free = self.system.free_index
         velocity = speed[free]
         velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0        # Euler angle rates
-        self.system.drive(t, r, v)
+        self.system.drive(t, r, v, self.arms)
         self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.substep(1.0))
         self._snaps = SnapTracker(float(t), self._tensions(self._state))
         return self.forces()
+
+    def _placed(self, q: np.ndarray) -> np.ndarray:
+        """The vessel nodes' positions (p, 3) for the host's ``q``: the points themselves, or the rigid
+        vessel's points, eq. (2)."""
+        if self.arms is None:
+            return q
+        return self.arms + point_series(self.arms, q, np.zeros_like(q))[0][0]
 
     def _equilibrium(self, case, positions, x0):
         net = dataclasses.replace(self.net, vessel_offset=positions)
@@ -234,7 +270,7 @@ class Coupling:
         Returns
         -------
         ndarray, shape (len(points), 3)
-            The lines' forces on the points at ``t + dt`` [N].
+            The lines' forces on the points at ``t + dt`` [N] (a rigid vessel: (1, 6), eq. (3)).
 
         Raises
         ------
@@ -250,7 +286,7 @@ class Coupling:
             raise KanatError(f"step(t = {t:.9g} s, ...): the coupling is at t = {now:.9g} s; step from there "
                              "(or restore() a state saved at t)")
         self.system.drive(now, self._points_array(positions, "positions"),
-                          self._points_array(velocities, "velocities"))
+                          self._points_array(velocities, "velocities"), self.arms)
         h = self.substep(dt)
         steps = int(round(dt / h))
         state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
@@ -266,10 +302,14 @@ class Coupling:
         return None if self._state is None else float(self._state["t"])
 
     def forces(self) -> np.ndarray:
-        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]."""
+        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for a rigid
+        vessel (1, 6), their sum and moment about the vessel's reference point [N, N m], eq. (3)."""
         x, v, _, heading = self.system.full(self.time, *state_positions(self._state))
-        F = self.system.loads(self.time, x, v, heading)[0]
-        return F[self.net.vessel_nodes].copy()
+        F = self.system.loads(self.time, x, v, heading)[0][self.net.vessel_nodes].copy()
+        if self.arms is None:
+            return F
+        lever = x[self.net.vessel_nodes] - self.system.reference(self.time)[:3]
+        return np.concatenate([F.sum(axis=0), np.cross(lever, F).sum(axis=0)])[None]
 
     def nodes(self) -> tuple[np.ndarray, np.ndarray]:
         """Positions and velocities (n, 3) of the cables' nodes at :attr:`time` [m, m/s], in a
@@ -302,7 +342,7 @@ class Coupling:
 
     def _points_array(self, values, what: str) -> np.ndarray:
         array = np.asarray(values, dtype=float)
-        shape = (len(self.points), 3)
+        shape = (len(self.points), 3 if self.arms is None else 6)
         if array.size != shape[0] * shape[1]:
             raise KanatError(f"{what} must have shape {shape} (points {', '.join(self.points)}); got "
                              f"{np.shape(values)}")
