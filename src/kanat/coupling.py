@@ -122,7 +122,7 @@ class Coupling:
         Overrides ``simulation.scheme``.
     rigid_vessel : bool
         Drive the vessel as one rigid body instead of point by point, eq. (2): ``points`` is then
-        ``["vessel"]`` and every array (1, 6).
+        ``["vessel"]`` (a MoorDyn file's one ``Coupled`` body: ``["bodyN"]``) and every array (1, 6).
 
     Attributes
     ----------
@@ -149,7 +149,9 @@ class Coupling:
         self.points, self.net = driven_points(case, self.net)
         self.arms = None
         if rigid_vessel:
-            self.points, self.arms = ["vessel"], self.net.vessel_offset.copy()
+            bodies = moordyn_coupled_bodies(case)
+            self.points = bodies if len(bodies) == 1 else ["vessel"]
+            self.arms = self.net.vessel_offset.copy()
         sim = self.case.simulation
         self.system = DrivenSystem(self.net, self.case, sim.mass_matrix)
         self.scheme = self._choose(scheme)
@@ -387,16 +389,31 @@ def driven_points(case: Case, net):
 def moordyn_coupled_points(case: Case) -> list[tuple[str, np.ndarray]]:
     """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
     in file order; empty for any other case."""
+    read = _moordyn_items(case)
+    if read is None:
+        return []
+    points, _ = read
+    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
+
+
+def moordyn_coupled_bodies(case: Case) -> list[str]:
+    """``bodyN`` of the ``Coupled`` bodies of the MoorDyn file ``case`` was read from; empty otherwise."""
+    read = _moordyn_items(case)
+    return [] if read is None else [f"body{number}" for number, b in read[1].items() if b.kind == "coupled"]
+
+
+def _moordyn_items(case: Case):
+    """The MoorDyn file's points and bodies by number (:mod:`kanat.io.moordyn_map`), or None."""
     source = getattr(case, "source", None)
     if not source or not Path(source).is_file():
-        return []
+        return None
     from kanat.io.moordyn_map import Reader, file_version, read_bodies, read_points
     from kanat.io.moordyn_text import looks_like_moordyn, split
 
     text = Path(source).read_text(errors="replace")
     if not looks_like_moordyn(text):
-        return []
+        return None
     reader = Reader(split(text), str(source), Path(source).parent)
     reader.version = file_version(reader)
-    points = read_points(reader, read_bodies(reader))
-    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
+    bodies = read_bodies(reader)
+    return read_points(reader, bodies), bodies
