@@ -95,6 +95,10 @@ def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
                                         "from": {"anchor": [-110.0, 0.0, -50.0]}, "to": {"vessel": [-1.0, 0.0, -5.0]}}]})
     coupling = kanat.Coupling(case)
     assert coupling.points == ["east.from", "west.to"]
+    implicit = kanat.Coupling(case, scheme="generalized-alpha-lumped")
+    assert implicit.inner_step(0.05) == 0.05 and implicit.inner_step(0.25) == 0.125      # 0.1 s at most
+    given = kanat.Coupling(case, scheme="generalized-alpha-lumped", substep=0.02)
+    assert given.inner_step(0.05) == pytest.approx(0.05 / 3)
     forces = coupling.initialize([[1.0, 0.0, -5.0], [-1.0, 0.0, -5.0]])
     assert forces[0, 0] > 0.0 > forces[1, 0]
     assert forces[0, 0] == pytest.approx(-forces[1, 0], rel=1e-6)

@@ -39,8 +39,8 @@ and the forces (1, 6) are the lines' resultant and moment about ``(x, y, z)``::
     (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i
 
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
-cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): ``simulation.dt`` if the case gives
-it, else the explicit scheme's safe step or the implicit scheme's default step, cut to divide the
+cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
+``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit scheme's default step, cut to divide the
 coupling step exactly. The state after a step is what a run of the same case with the same
 motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
 """
@@ -123,6 +123,10 @@ class Coupling:
     rigid_vessel : bool
         Drive the vessel as one rigid body instead of point by point, eq. (2): ``points`` is then
         ``["vessel"]`` (a MoorDyn file's one ``Coupled`` body: ``["bodyN"]``) and every array (1, 6).
+    substep : float, optional
+        The lumped model's largest step inside a coupling step [s] (an explicit scheme's is also
+        capped at its safe step); default ``simulation.dt`` (a MoorDyn file's ``dtM`` is read only with
+        ``TMax``), else the scheme's own (module docstring).
 
     Attributes
     ----------
@@ -134,13 +138,17 @@ class Coupling:
         The time of the state [s] (None before :meth:`initialize`).
     """
 
-    def __init__(self, case: Case | str | PathLike, scheme=None, rigid_vessel: bool = False):
+    def __init__(self, case: Case | str | PathLike, scheme=None, rigid_vessel: bool = False,
+                 substep: float | None = None):
         if not isinstance(case, Case):
             from kanat.io import load_case
 
             case = load_case(case)
         require_supported(case, "lumped")
+        if substep is not None and not substep > 0.0:
+            raise KanatError(f"substep must be positive (got {substep!r} s)")
         self.notes: list[str] = []
+        self._substep = substep
         self.case = self._held(case)
         self.net = build_network(self.case)
         if not len(self.net.vessel_nodes):
@@ -167,6 +175,8 @@ class Coupling:
                 self.notes.append(f"{key} not used: the host moves the driven points")
         held = vessel.model_copy(update={"track": (), "motion": VesselMotion(), "pitch": None})
         simulation = case.simulation or Simulation(duration=1.0)     # a statics case: the defaults (no duration used)
+        if self._substep is not None:
+            simulation = simulation.model_copy(update={"dt": self._substep})
         return case.model_copy(update={"vessel": held, "simulation": simulation})
 
     def _choose(self, scheme):
@@ -190,7 +200,7 @@ class Coupling:
         sim = self.case.simulation
         return sim.dt if sim.dt is not None else sim.step_or_default
 
-    def substep(self, dt: float) -> float:
+    def inner_step(self, dt: float) -> float:
         """The lumped model's step [s] inside a coupling step ``dt`` (module docstring)."""
         sim = self.case.simulation
         if self.scheme.explicit:
@@ -238,7 +248,7 @@ class Coupling:
         velocity = speed[free]
         velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0        # Euler angle rates
         self.system.drive(t, r, v, self.arms)
-        self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.substep(1.0))
+        self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.inner_step(1.0))
         self._snaps = SnapTracker(float(t), self._tensions(self._state))
         return self.forces()
 
@@ -289,7 +299,7 @@ class Coupling:
                              "(or restore() a state saved at t)")
         self.system.drive(now, self._points_array(positions, "positions"),
                           self._points_array(velocities, "velocities"), self.arms)
-        h = self.substep(dt)
+        h = self.inner_step(dt)
         steps = int(round(dt / h))
         state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
         if taken < steps or not np.all(np.isfinite(state_positions(state)[0])):
