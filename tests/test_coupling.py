@@ -87,12 +87,13 @@ def test_points_are_a_moordyn_files_coupled_points_in_file_order():
 
 
 def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
+    east = {"name": "east", "line_type": "chain", "length": 120.0, "segments": 10,
+            "from": {"vessel": [1.0, 0.0, -5.0]}, "to": {"anchor": [110.0, 0.0, -50.0]}}
+    west = {"name": "west", "line_type": "chain", "length": 120.0, "segments": 10,
+            "from": {"anchor": [-110.0, 0.0, -50.0]}, "to": {"vessel": [-1.0, 0.0, -5.0]}}
     case = kanat.load_case({"name": "two", "model": "statics", "environment": {"depth": 50.0},
                             "line_types": {"chain": {"diameter": 0.1, "mass": 100.0, "axial_stiffness": 1e8}},
-                            "cables": [{"name": "east", "line_type": "chain", "length": 120.0, "segments": 10,
-                                        "from": {"vessel": [1.0, 0.0, -5.0]}, "to": {"anchor": [110.0, 0.0, -50.0]}},
-                                       {"name": "west", "line_type": "chain", "length": 120.0, "segments": 10,
-                                        "from": {"anchor": [-110.0, 0.0, -50.0]}, "to": {"vessel": [-1.0, 0.0, -5.0]}}]})
+                            "cables": [east, west]})
     coupling = kanat.Coupling(case)
     assert coupling.points == ["east.from", "west.to"]
     implicit = kanat.Coupling(case, scheme="generalized-alpha-lumped")

@@ -40,8 +40,8 @@ and the forces (1, 6) are the lines' resultant and moment about ``(x, y, z)``::
 
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
-``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit scheme's default step, cut to divide the
-coupling step exactly. The state after a step is what a run of the same case with the same
+``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
+scheme's default step, cut to divide the coupling step exactly. The state after a step is what a run of the same case with the same
 motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
 """
 from __future__ import annotations
@@ -304,7 +304,8 @@ class Coupling:
         state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
         if taken < steps or not np.all(np.isfinite(state_positions(state)[0])):
             raise SolverError(f"the lines' state became non-finite at t = {state['t']:.6g} s (substep {h:.3g} s, "
-                              f"{self.scheme.name}); reduce simulation.dt or name scheme rk4")
+                              f"{self.scheme.name}); the coupling stays at t = {self.time:.6g} s: pass a smaller "
+                              "substep, or scheme='rk4'")
         self._state = state
         return self.forces()
 
