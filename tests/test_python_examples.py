@@ -23,7 +23,18 @@ def current_step_settles_on_the_statics(printed: str) -> None:
     assert float(distance) < 0.2
 
 
-PRINTED = {"subsurface_current_step.py": current_step_settles_on_the_statics}
+def coupled_float_swings_at_its_mooring_period(printed: str) -> None:
+    """coupled_float.py: the platform's surge period under kanat.Coupling within 5 % of 2 pi sqrt((m + a) / k),
+    k from kanat's equilibria either side (measured 109.9 s against 107.3 s: the lines' own inertia and
+    drag add to the body's), and the free surge decays."""
+    period, expected, start, end = (float(v) for v in re.search(
+        r"surge period ([\d.]+) s; .*: ([\d.]+) s; surge from ([\d.-]+) m to ([\d.-]+) m", printed).groups())
+    assert period == pytest.approx(expected, rel=0.05)
+    assert abs(end) < 0.8 * abs(start)
+
+
+PRINTED = {"subsurface_current_step.py": current_step_settles_on_the_statics,
+           "coupled_float.py": coupled_float_swings_at_its_mooring_period}
 """What a script prints, checked beside its run (the other scripts' numbers are checked below)."""
 
 

@@ -4,7 +4,7 @@
 
 examples/subsurface_mooring.yaml holds an anchor - wire - float - nylon - top buoy mooring in a
 current sheared in depth and turning with it. Here the current doubles at t = 0: the run starts
-from the steady state of the case's own current (``ContinuumModel(..., start_from=case)``) and
+from the steady state of the case's own current (``kanat.run(doubled, start=case)``) and
 steps in the doubled one, so the line leans over to its new steady state (which the 3-D statics
 of the doubled current give: the run's last output is compared with it).
 """
@@ -18,8 +18,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import kanat  # noqa: E402
-from kanat.continuum.adapter import ContinuumModel  # noqa: E402
-from kanat.dynamics import Recorder, run  # noqa: E402
 
 EXAMPLES = Path(__file__).resolve().parents[1]
 
@@ -29,13 +27,12 @@ def main(picture: str = "subsurface_current_step.png") -> None:
     rows = [[z, 2 * ux, 2 * uy, uz] for z, ux, uy, uz in base.environment.current.profile]
     stepped = base.replace({"environment.current.profile": rows, "simulation.duration": 1500,
                             "simulation.output_dt": 10})
-    recorder = Recorder()
-    summary = run(lambda: ContinuumModel(stepped, start_from=base), [recorder])
-    ds = recorder.dataset()
+    outcome = kanat.run(stepped, start=base)
+    ds = outcome.dataset
     steady = kanat.solve_statics(stepped.replace({"model": "statics"}))
     buoy = ds.body_position.sel(body="top_buoy")
     final = steady.body_position.sel(body="top_buoy").values
-    print(f"status: {summary.status}; top buoy from {buoy.values[0].round(2)} m to {buoy.values[-1].round(2)} m; "
+    print(f"status: {outcome.status}; top buoy from {buoy.values[0].round(2)} m to {buoy.values[-1].round(2)} m; "
           f"statics of the doubled current: {final.round(2)} m (difference "
           f"{np.linalg.norm(buoy.values[-1] - final):.3f} m)")
 

@@ -14,13 +14,16 @@ read_result(path) -> xarray.Dataset
     A result file.
 report(result | path | study_dir, html_path) -> Path
     One self-contained HTML page (:mod:`kanat.report`, whose package is callable).
+Coupling(case)
+    The lines driven by another program's time loop: ``initialize(positions)``,
+    ``step(t, dt, positions, velocities) -> forces`` (:mod:`kanat.coupling`).
 
 The names are loaded on first use, so ``import kanat`` stays light.
 """
 from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
-__all__ = ["__version__", *_API, "report"]
+__all__ = ["__version__", *_API, "report", "Coupling"]
 
 
 def __getattr__(name):
@@ -28,6 +31,10 @@ def __getattr__(name):
         from kanat import api
 
         return getattr(api, name)
+    if name == "Coupling":
+        from kanat.coupling import Coupling
+
+        return Coupling
     if name == "report":
         import kanat.report  # noqa: F401 - binds the (callable) package kanat.report
 

@@ -25,7 +25,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from kanat import dynamics
-from kanat.errors import CaseError, KanatError, SolverError
+from kanat.errors import CaseError, KanatError, Problem, SolverError
 from kanat.model import Case
 from kanat.model.support import require_supported
 from kanat.schemes import registry
@@ -140,16 +140,19 @@ def _pitch_dataset(case: Case, method: str = "auto"):
     return pitch_dataset(result, case, wall_time_s=time.perf_counter() - start), result.table(), result
 
 
-def _continuum(case: Case, scheme=None):
+def _continuum(case: Case, scheme=None, start=None):
     from kanat.continuum.adapter import ContinuumModel
 
-    return ContinuumModel(case, scheme)
+    if start is not None and not isinstance(start, Case):
+        raise CaseError([Problem("start", "the continuum model starts from a case's steady state (start=case); "
+                                 "from a result's last output, only the lumped model does")])
+    return ContinuumModel(case, scheme, start_from=start)
 
 
-def _lumped(case: Case, scheme=None):
+def _lumped(case: Case, scheme=None, start=None):
     from kanat.lumped.adapter import LumpedModel
 
-    return LumpedModel(case, scheme)
+    return LumpedModel(case, scheme, start_from=start)
 
 
 @dataclass(frozen=True)
@@ -162,7 +165,8 @@ class Steady:
 
 @dataclass(frozen=True)
 class Dynamic:
-    """A model run by :func:`kanat.dynamics.run`: ``build(case, scheme) -> DynamicModel``."""
+    """A model run by :func:`kanat.dynamics.run`: ``build(case, scheme, start) -> DynamicModel``
+    (``start``: None, or what :func:`run` documents)."""
 
     build: Callable
 
@@ -285,8 +289,9 @@ def solve_statics(case: Case, method: str = "auto"):
 
 
 @_naming_its_file
-def dynamic_model(case: Case, scheme=None):
-    """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme``.
+def dynamic_model(case: Case, scheme=None, start=None):
+    """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme`` (and ``start``, as
+    :func:`run` takes it).
 
     Raises
     ------
@@ -298,12 +303,13 @@ def dynamic_model(case: Case, scheme=None):
         dynamic = ", ".join(k for k, v in MODELS.items() if isinstance(v, Dynamic))
         raise KanatError(f"model '{case.model}' is not a dynamic model; dynamic models: {dynamic}")
     require_supported(case, case.model)
-    return entry.build(case, scheme)
+    return entry.build(case, scheme, start)
 
 
 @_naming_its_file
 def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=None,
-        checkpoint_every: int | None = None, observers=(), method: str = "auto", model: str | None = None) -> Outcome:
+        checkpoint_every: int | None = None, observers=(), method: str = "auto", model: str | None = None,
+        start=None) -> Outcome:
     """Run any case with a model of :data:`MODELS`; the command line's ``kanat run``.
 
     Parameters
@@ -327,10 +333,22 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     model : str, optional
         Run the case with this model instead of its own (``statics`` for the steady state of
         a dynamic case).
+    start : kanat.model.Case or xarray.Dataset, optional
+        Dynamic models: start from this instead of the case's own initial state. A case: its
+        steady (initial) state, which must have the same cables and grid (the same line in another
+        current: the run is then the response to the change). A result of the lumped model of the
+        same network: its last output's positions and velocities (a run continued in a changed
+        sea, say). The run's time starts at 0 all the same.
 
     Returns
     -------
     Outcome
+
+    Examples
+    --------
+    >>> calm = kanat.load_case("examples/subsurface_mooring.yaml")           # doctest: +SKIP
+    >>> storm = calm.replace({"environment.current.profile": doubled})     # doctest: +SKIP
+    >>> kanat.run(storm, start=calm)                                       # doctest: +SKIP
     """
     name = model or case.model
     entry = MODELS.get(name)
@@ -343,6 +361,12 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     _check_checkpoint_every(checkpoint_every)
     if resume and output is None:
         raise KanatError("resume needs the result file of the run to continue (output)")
+    if start is not None and not isinstance(entry, Dynamic):
+        raise KanatError(f"start: model '{name}' solves a steady state; start applies to dynamic runs")
+    if isinstance(start, Case):
+        require_supported(start, name)
+    build = functools.partial(entry.build, start=start) if isinstance(entry, Dynamic) else None
+    entry = Dynamic(build) if build is not None else entry
     if output is None:
         return _run(entry, case, name, None, scheme, resume, progress, checkpoint_every, observers, method)
     from kanat.io.outputs import OutputLock, check_output_file
@@ -406,7 +430,7 @@ def _announce_compile(model) -> None:
             f"~{estimate:.0f} s of CPU")
 
 
-def simulate(case: Case, scheme=None, output=None, resume: bool = False, progress=None):
+def simulate(case: Case, scheme=None, output=None, resume: bool = False, progress=None, start=None):
     """Run a case with its model and return its result.
 
     Parameters
@@ -424,6 +448,8 @@ def simulate(case: Case, scheme=None, output=None, resume: bool = False, progres
         Continue a killed run from its checkpoint beside ``output``.
     progress : callable, optional
         ``progress(t, info)`` after every output step.
+    start : kanat.model.Case or xarray.Dataset, optional
+        Start from another case's steady state or a lumped result's last output (:func:`run`).
 
     Returns
     -------
@@ -432,7 +458,7 @@ def simulate(case: Case, scheme=None, output=None, resume: bool = False, progres
         stopped (then the outputs up to the failure are kept, and a
         :class:`RunFailedWarning` is issued).
     """
-    return run(case, scheme=scheme, output=output, resume=resume, progress=progress).dataset
+    return run(case, scheme=scheme, output=output, resume=resume, progress=progress, start=start).dataset
 
 
 def read_result(path):

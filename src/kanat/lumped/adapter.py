@@ -68,11 +68,15 @@ class LumpedModel:
     case : kanat.model.Case
     scheme : str or kanat.schemes.Scheme, optional
         Overrides ``simulation.scheme``; None and none in the case: the fastest safe one.
+    start_from : kanat.model.Case or xarray.Dataset, optional
+        Start from this case's initial state (its equilibrium: the same network in another current,
+        say) or from the last output of this result of the lumped model (:func:`start_state`),
+        instead of the case's own.
     """
 
     name = "lumped"
 
-    def __init__(self, case, scheme=None):
+    def __init__(self, case, scheme=None, start_from=None):
         sim = case.simulation
         self.case, self.net = case, build_network(case)
         self.system = LumpedSystem(self.net, case, sim.mass_matrix)
@@ -90,6 +94,7 @@ class LumpedModel:
         self.penetration = allowed_penetration(self.net, case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
         self._anchors_on_seabed = anchors_on_seabed(self.net, case.environment)
+        self.start_from = start_from
 
     def _choose(self, scheme):
         sim = self.case.simulation
@@ -154,7 +159,10 @@ class LumpedModel:
     def initial(self) -> LumpedState:
         sim, system = self.case.simulation, self.system
         free = system.free_index
-        if sim.initial_state == "equilibrium":
+        if self.start_from is not None:
+            x, v = start_state(self.net, self.start_from, sim.mass_matrix)
+            velocity = v[free]
+        elif sim.initial_state == "equilibrium":
             try:
                 start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
                 x, v = starting_state(self.net, start, system)
@@ -281,3 +289,53 @@ class LumpedModel:
                               "failed even on the step cut to 1/8")
         return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations,
                            "explicit_steps": explicit}
+
+
+def start_state(net, start, mass_matrix: str = "lumped") -> tuple[np.ndarray, np.ndarray]:
+    """Positions and velocities (n, 3) of every node of ``net`` from another case's initial state or
+    from a result's last output.
+
+    Parameters
+    ----------
+    net : kanat.lumped.network.Network
+    start : kanat.model.Case or xarray.Dataset
+        A case of the same network (same cables, segments and ends; another current, say): its
+        initial state (:func:`kanat.lumped.equilibrium.starting_state`). Or a lumped model's result
+        of the same network whose status is ok: the positions and velocities of its last output.
+
+    Raises
+    ------
+    kanat.errors.CaseError
+        When the networks differ, the result failed, or holds 6-DOF bodies (whose attitude rates a
+        result does not keep).
+    """
+    if hasattr(start, "data_vars"):
+        return _result_state(net, start)
+    other = build_network(start)
+    if other.n_nodes != net.n_nodes or not np.array_equal(other.free, net.free):
+        raise CaseError([Problem("start", f"the case to start from ('{start.name}') must have the same "
+                                 f"network (cables, segments, ends): {other.n_nodes} nodes against "
+                                 f"{net.n_nodes}")])
+    system = LumpedSystem(other, start, mass_matrix)
+    at_start = start.model_copy(update={"environment": start.environment.at_start()})
+    return starting_state(other, at_start, system)
+
+
+def _result_state(net, ds) -> tuple[np.ndarray, np.ndarray]:
+    """The last output of a lumped result ``ds`` as all nodes' positions and velocities (n, 3)."""
+    status = ds.attrs.get("status", "ok")
+    if ds.attrs.get("model") != "lumped" or "time" not in ds.dims:
+        raise CaseError([Problem("start", "a result to start from must be a run of the lumped model "
+                                 f"(this one is model '{ds.attrs.get('model')}')")])
+    if status != "ok":
+        raise CaseError([Problem("start", f"the result to start from did not finish: {status}")])
+    if net.rigid.count:
+        raise CaseError([Problem("start", "a result does not keep a 6-DOF body's attitude rates: start "
+                                 f"from its case instead (body '{net.rigid.names[0]}')")])
+    cables = np.asarray(ds.cable.values, dtype=str)
+    if len(cables) != len(net.node_index) or not np.array_equal(cables, net.node_cable.astype(str)):
+        raise CaseError([Problem("start", "the result to start from must have the same network (cables and "
+                                 f"segments): {len(cables)} nodes against {len(net.node_index)}")])
+    x, v = net.x_guess.copy(), np.zeros((net.n_nodes, 3))
+    x[net.node_index], v[net.node_index] = ds.position.values[-1], ds.velocity.values[-1]
+    return x, v

@@ -1,0 +1,430 @@
+"""Drive the lumped model from another program's time loop: :class:`Coupling`.
+
+A host program (a floating-body integrator, a ship simulator, a controller study) moves the
+points where the lines meet its structure and asks for the lines' forces on them, step by step,
+as MoorDyn's coupling API does (``Init``, ``Step(x, xd, t, dt) -> forces``)::
+
+    coupling = kanat.Coupling(case)
+    forces = coupling.initialize(positions)            # the equilibrium with the points there
+    for k in range(n):
+        forces = coupling.step(t, dt, positions, velocities)    # the forces at t + dt
+        ...                                            # the host moves its body with them
+
+The driven points are the case's vessel points (``{vessel: [x, y, z]}`` ends, the tow point), in
+:attr:`Coupling.points` order: a MoorDyn file's ``Coupled``/``Vessel`` points in file order (named
+``pointN``), a YAML case's vessel ends in cable order (named ``CABLE.from`` / ``CABLE.to``, the
+first end at each point). The host's positions replace the vessel's track and motion, which the
+coupling does not use (:attr:`Coupling.notes` says so when the case has them).
+
+Interpolation (MoorDyn's convention, its ``Point::updateFairlead``): over a step from ``t`` to
+``t + dt`` each driven point moves at the given velocity from the given position::
+
+    (1)  r(tau) = r_t + v_t (tau - t),   r_dot(tau) = v_t,    t <= tau <= t + dt
+
+and the forces returned are the lines' forces on the points at ``t + dt``: the node's force of the
+lumped model (element tensions, the half elements' weight, drag and seabed contact next to it),
+positive as the lines pull the host. A host that knows its points at both ends of the step passes
+``v_t = (r_t+dt - r_t) / dt``: the motion is then the straight line between them.
+
+With ``rigid_vessel=True`` the host drives the vessel as one rigid body: ``positions`` (1, 6) are
+its ``q = (x, y, z, roll, pitch, yaw)`` [m, rad] (the displacement of the vessel origin, and the
+angles of ``R = Rz(yaw) Ry(pitch) Rx(roll)`` as in ``vessel.motion``), ``velocities`` their rates
+``q_dot`` [m/s, rad/s]; each point at lever arm ``a`` (its case position at q = 0) follows::
+
+    (2)  q(tau) = q_t + q_dot_t (tau - t),    r = (x, y, z) + R a,    r_dot = (x_dot, y_dot, z_dot) + w x R a
+
+``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`);
+and the forces (1, 6) are the lines' resultant and moment about ``(x, y, z)``::
+
+    (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i
+
+Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
+cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
+``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
+scheme's default step, cut to divide the coupling step exactly. The state after a step is what a run of the same case with the same
+motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
+"""
+from __future__ import annotations
+
+import dataclasses
+from os import PathLike
+from pathlib import Path
+
+import numpy as np
+
+from kanat.errors import KanatError, SolverError
+from kanat.lumped import stepping
+from kanat.lumped.advance import advance
+from kanat.lumped.equilibrium import STARTING_DIFFERENCE, equilibrium
+from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.network import build_network
+from kanat.lumped.snap import SnapTracker
+from kanat.lumped.system import LumpedSystem
+from kanat.model import Case
+from kanat.model.operations import VesselMotion
+from kanat.model.simulation import Simulation
+from kanat.model.support import require_supported
+from kanat.physics.motion_samples import point_series
+from kanat.schemes import get_scheme
+
+TIME_TOLERANCE = 1e-9
+"""A step must start at the coupling's time, to this fraction of the step (or of 1 s)."""
+
+
+class DrivenSystem(LumpedSystem):
+    """The lumped equations of motion with the vessel's points moved by the host, eq. (1).
+
+    :meth:`drive` sets the motion of the step about to be taken; every sample of the vessel's
+    points (the Python schemes' and the compiled steps', :func:`kanat.lumped.advance.track_samples`)
+    comes from it. With ``arms`` the host drives the vessel as a rigid body, eq. (2).
+    """
+
+    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray, arms=None) -> None:
+        """Eq. (1) from ``t`` for ``positions``, ``velocities`` (p, 3) of the vessel nodes; or, given their
+        lever ``arms`` (p, 3), eq. (2) for the vessel's ``(x, y, z, roll, pitch, yaw)`` and rates (1, 6)."""
+        self._t0 = float(t)
+        self._r0, self._v0 = np.array(positions, float), np.array(velocities, float)
+        self._arms = None if arms is None else np.asarray(arms, float)
+
+    def driven(self) -> tuple:
+        """The motion set by :meth:`drive`: ``(t, positions, velocities, arms)`` (copies)."""
+        arms = None if self._arms is None else self._arms.copy()
+        return self._t0, self._r0.copy(), self._v0.copy(), arms
+
+    def vessel_points(self, times, arms=None):
+        """Positions, velocities (k, p, 3) and heading (k,) of the driven points at ``times`` (k,),
+        eq. (1) or (2); ``arms`` must be None (the driven points are the vessel nodes)."""
+        if arms is not None:
+            raise KanatError("a coupled system's vessel has no lever arms: its points are driven")
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        late = (times - self._t0)[:, None, None]
+        q = self._r0[None] + self._v0[None] * late
+        v = np.broadcast_to(self._v0, q.shape).copy()
+        if self._arms is not None:
+            displacement, v = point_series(self._arms, q[:, 0], v[:, 0])
+            q = self._arms[None] + displacement
+        return q, v, np.zeros(len(times))
+
+    def reference(self, t: float) -> np.ndarray:
+        """The rigid vessel's ``(x, y, z, roll, pitch, yaw)`` (6,) at ``t``, eq. (2)."""
+        return self._r0[0] + self._v0[0] * (t - self._t0)
+
+
+class Coupling:
+    """A case's lines driven at their vessel points by a host program (module docstring).
+
+    Parameters
+    ----------
+    case : kanat.model.Case or path-like
+        Any case the lumped model runs (``model: lumped`` or ``statics``: a MoorDyn file without
+        ``TMax`` couples as well); its ``simulation`` block gives the scheme and substep, if any.
+    scheme : str or kanat.schemes.Scheme, optional
+        Overrides ``simulation.scheme``.
+    rigid_vessel : bool
+        Drive the vessel as one rigid body instead of point by point, eq. (2): ``points`` is then
+        ``["vessel"]`` (a MoorDyn file's one ``Coupled`` body: ``["bodyN"]``) and every array (1, 6).
+    substep : float, optional
+        The lumped model's largest step inside a coupling step [s] (an explicit scheme's is also
+        capped at its safe step); default ``simulation.dt`` (a MoorDyn file's ``dtM`` is read only with
+        ``TMax``), else the scheme's own (module docstring).
+
+    Attributes
+    ----------
+    points : list of str
+        The driven points' names, in the order of every array (module docstring).
+    notes : list of str
+        Decisions taken for the user (scheme, parts of the case not used).
+    time : float
+        The time of the state [s] (None before :meth:`initialize`).
+    """
+
+    def __init__(self, case: Case | str | PathLike, scheme=None, rigid_vessel: bool = False,
+                 substep: float | None = None):
+        if not isinstance(case, Case):
+            from kanat.io import load_case
+
+            case = load_case(case)
+        require_supported(case, "lumped")
+        if substep is not None and not substep > 0.0:
+            raise KanatError(f"substep must be positive (got {substep!r} s)")
+        self.notes: list[str] = []
+        self._substep = substep
+        self.case = self._held(case)
+        self.net = build_network(self.case)
+        if not len(self.net.vessel_nodes):
+            raise KanatError(f"case '{case.name}' has no vessel points to drive: give the lines' ends on "
+                             "the host as {vessel: [x, y, z]} (MoorDyn: Coupled points)")
+        self.points, self.net = driven_points(case, self.net)
+        self.arms = None
+        if rigid_vessel:
+            bodies = moordyn_coupled_bodies(case)
+            self.points = bodies if len(bodies) == 1 else ["vessel"]
+            self.arms = self.net.vessel_offset.copy()
+        sim = self.case.simulation
+        self.system = DrivenSystem(self.net, self.case, sim.mass_matrix)
+        self.scheme = self._choose(scheme)
+        self._state = self._snaps = None
+        self._T = np.zeros(self.net.n_elements)
+
+    def _held(self, case: Case) -> Case:
+        """The case without the vessel's track and motion (the host moves the points), noted."""
+        vessel = case.vessel
+        for key, used in (("vessel.track", bool(vessel.track)), ("vessel.motion", vessel.motion != VesselMotion()),
+                          ("vessel.pitch", vessel.pitch is not None)):
+            if used:
+                self.notes.append(f"{key} not used: the host moves the driven points")
+        held = vessel.model_copy(update={"track": (), "motion": VesselMotion(), "pitch": None})
+        simulation = case.simulation or Simulation(duration=1.0)     # a statics case: the defaults (no duration used)
+        if self._substep is not None:
+            simulation = simulation.model_copy(update={"dt": self._substep})
+        return case.model_copy(update={"vessel": held, "simulation": simulation})
+
+    def _choose(self, scheme):
+        sim = self.case.simulation
+        spec = scheme if scheme is not None else sim.scheme
+        rigid = self.net.rigid.count > 0
+        info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent",
+                                  self.case.environment.seabed)
+        self.info = info
+        if spec is None:
+            chosen = stepping.choose_scheme(info, self._implicit_step(), SCHEMES, explicit_only=rigid)
+            self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
+            spec = chosen.name
+        chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
+        if rigid and not chosen.explicit:
+            raise KanatError(f"scheme {chosen.name} does not take bodies with dof: 6 yet (body "
+                             f"'{self.net.rigid.names[0]}'); use scheme abm4 or rk4")
+        return chosen
+
+    def _implicit_step(self) -> float:
+        sim = self.case.simulation
+        return sim.dt if sim.dt is not None else sim.step_or_default
+
+    def inner_step(self, dt: float) -> float:
+        """The lumped model's step [s] inside a coupling step ``dt`` (module docstring)."""
+        sim = self.case.simulation
+        if self.scheme.explicit:
+            top = self.info.safe_step(self.scheme)
+            top = min(top, sim.dt) if sim.dt is not None else top
+        else:
+            top = self._implicit_step()
+        return stepping.fit_step(min(top, dt), dt)
+
+    # --- the host's calls ------------------------------------------------------------------
+    def initialize(self, positions, velocities=None, t: float = 0.0) -> np.ndarray:
+        """Start at the equilibrium with the driven points at ``positions``; return its forces.
+
+        Parameters
+        ----------
+        positions : array_like, shape (len(points), 3)
+            [m], global axes (z up, 0 at the mean surface).
+        velocities : array_like, shape (len(points), 3), optional
+            [m/s]. Given, the lines start with the quasi-static response to them (the central
+            difference of the equilibria at ``positions -+ velocities * 0.01 s``, as a run under a
+            prescribed motion starts: :func:`kanat.lumped.equilibrium.starting_state`); default at rest.
+        t : float
+            The time of the start [s].
+
+        Returns
+        -------
+        ndarray, shape (len(points), 3)
+            The lines' forces on the points [N] (a rigid vessel: (1, 6), eq. (3)).
+
+        Raises
+        ------
+        kanat.errors.SolverError
+            When the equilibrium is not found (the message says where).
+        """
+        r = self._points_array(positions, "positions")
+        v = np.zeros_like(r) if velocities is None else self._points_array(velocities, "velocities")
+        start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
+        x = self._equilibrium(start, self._placed(r), None)
+        speed = np.zeros_like(x)
+        if np.any(v != 0.0):
+            ahead = self._equilibrium(start, self._placed(r + STARTING_DIFFERENCE * v), x)
+            behind = self._equilibrium(start, self._placed(r - STARTING_DIFFERENCE * v), x)
+            speed = (ahead - behind) / (2.0 * STARTING_DIFFERENCE)
+        free = self.system.free_index
+        velocity = speed[free]
+        velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0        # Euler angle rates
+        self.system.drive(t, r, v, self.arms)
+        self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.inner_step(1.0))
+        self._snaps = SnapTracker(float(t), self._tensions(self._state))
+        return self.forces()
+
+    def _placed(self, q: np.ndarray) -> np.ndarray:
+        """The vessel nodes' positions (p, 3) for the host's ``q``: the points themselves, or the rigid
+        vessel's points, eq. (2)."""
+        if self.arms is None:
+            return q
+        return self.arms + point_series(self.arms, q, np.zeros_like(q))[0][0]
+
+    def _equilibrium(self, case, positions, x0):
+        net = dataclasses.replace(self.net, vessel_offset=positions)
+        try:
+            return equilibrium(net, case, x0=x0, friction=False)[0]
+        except SolverError as error:
+            raise SolverError(f"{error}. Tried: the lines' equilibrium with the driven points at the given "
+                              "positions; give them near where the case file has them") from None
+
+    def step(self, t: float, dt: float, positions, velocities) -> np.ndarray:
+        """Advance from ``t`` to ``t + dt`` with the points moving by eq. (1); return the forces there.
+
+        Parameters
+        ----------
+        t : float
+            The coupling's time [s] (:attr:`time`).
+        dt : float
+            The coupling step [s], > 0.
+        positions, velocities : array_like, shape (len(points), 3)
+            The points at ``t`` [m, m/s].
+
+        Returns
+        -------
+        ndarray, shape (len(points), 3)
+            The lines' forces on the points at ``t + dt`` [N] (a rigid vessel: (1, 6), eq. (3)).
+
+        Raises
+        ------
+        kanat.errors.SolverError
+            When a step cannot be taken (non-finite state): the message says when.
+        """
+        if self._state is None:
+            raise KanatError("call initialize(positions) before step(...)")
+        if not dt > 0.0:
+            raise KanatError(f"dt must be positive (got {dt!r} s)")
+        now = self.time
+        if abs(t - now) > TIME_TOLERANCE * max(dt, 1.0):
+            raise KanatError(f"step(t = {t:.9g} s, ...): the coupling is at t = {now:.9g} s; step from there "
+                             "(or restore() a state saved at t)")
+        self.system.drive(now, self._points_array(positions, "positions"),
+                          self._points_array(velocities, "velocities"), self.arms)
+        h = self.inner_step(dt)
+        steps = int(round(dt / h))
+        state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
+        if taken < steps or not np.all(np.isfinite(state_positions(state)[0])):
+            raise SolverError(f"the lines' state became non-finite at t = {state['t']:.6g} s (substep {h:.3g} s, "
+                              f"{self.scheme.name}); the coupling stays at t = {self.time:.6g} s: pass a smaller "
+                              "substep, or scheme='rk4'")
+        self._state = state
+        return self.forces()
+
+    # --- what the host may read -------------------------------------------------------------
+    @property
+    def time(self) -> float | None:
+        return None if self._state is None else float(self._state["t"])
+
+    def forces(self) -> np.ndarray:
+        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for a rigid
+        vessel (1, 6), their sum and moment about the vessel's reference point [N, N m], eq. (3)."""
+        x, v, _, heading = self.system.full(self.time, *state_positions(self._state))
+        F = self.system.loads(self.time, x, v, heading)[0][self.net.vessel_nodes].copy()
+        if self.arms is None:
+            return F
+        lever = x[self.net.vessel_nodes] - self.system.reference(self.time)[:3]
+        return np.concatenate([F.sum(axis=0), np.cross(lever, F).sum(axis=0)])[None]
+
+    def nodes(self) -> tuple[np.ndarray, np.ndarray]:
+        """Positions and velocities (n, 3) of the cables' nodes at :attr:`time` [m, m/s], in a
+        result file's ``node`` order."""
+        x, v = self.system.full(self.time, *state_positions(self._state))[:2]
+        return x[self.net.node_index], v[self.net.node_index]
+
+    def state(self) -> dict:
+        """Everything needed to continue exactly (copies): give it to :meth:`restore`."""
+        if self._state is None:
+            raise KanatError("nothing to save: call initialize(positions) first")
+        return {"scheme": _copied(self._state), "snaps": _copied(self._snaps.state()),
+                "drive": self.system.driven()}
+
+    def restore(self, state: dict) -> None:
+        """Continue from a :meth:`state` of this coupling (or of another of the same case)."""
+        scheme = _copied(state["scheme"])
+        self._state = scheme
+        self.system.drive(*state["drive"])
+        self._snaps = SnapTracker(scheme["t"], self._tensions(scheme), _copied(state["snaps"]))
+
+    def _tensions(self, scheme_state) -> np.ndarray:
+        from kanat.lumped import entries
+
+        net = self.net
+        x, v = self.system.full(scheme_state["t"], *state_positions(scheme_state))[:2]
+        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
+                         net.law_n, net.law_x, net.law_y, self._T)
+        return self._T
+
+    def _points_array(self, values, what: str) -> np.ndarray:
+        array = np.asarray(values, dtype=float)
+        shape = (len(self.points), 3 if self.arms is None else 6)
+        if array.size != shape[0] * shape[1]:
+            raise KanatError(f"{what} must have shape {shape} (points {', '.join(self.points)}); got "
+                             f"{np.shape(values)}")
+        array = array.reshape(shape)
+        if not np.all(np.isfinite(array)):
+            raise KanatError(f"{what} must be finite (got {array.tolist()})")
+        return array
+
+
+def _copied(state: dict) -> dict:
+    return {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+
+
+def driven_points(case: Case, net):
+    """The names of the driven points (module docstring) and ``net`` with its vessel nodes in their
+    order: a MoorDyn file's coupled points by number (``pointN``) in file order, else the first cable
+    end at each (``CABLE.from``, ``CABLE.to``) in cable order (the network's own)."""
+    arms = np.asarray(net.vessel_offset, float)
+    names: list[str | None] = [None] * len(arms)
+    coupled = moordyn_coupled_points(case)
+    for name, xyz in coupled:
+        hit = np.flatnonzero(np.all(np.isclose(arms, xyz, rtol=0.0, atol=1e-9), axis=1))
+        if len(hit) and names[hit[0]] is None:
+            names[hit[0]] = name
+    if coupled and all(names):
+        rank = {name: k for k, (name, _) in enumerate(coupled)}
+        order = np.argsort([rank[name] for name in names], kind="stable")
+        net = dataclasses.replace(net, vessel_nodes=net.vessel_nodes[order], vessel_offset=arms[order])
+        return [names[k] for k in order], net
+    names = [None] * len(arms)
+    for cable in case.cables:
+        for label, end in ((f"{cable.name}.from", cable.from_), (f"{cable.name}.to", cable.to)):
+            if end.kind != "vessel":
+                continue
+            arm = np.asarray(case.vessel.tow_point if end.offset is None else end.offset, float)
+            hit = np.flatnonzero(np.all(arms == arm, axis=1))
+            if len(hit) and names[hit[0]] is None:
+                names[hit[0]] = label
+    return [name or f"vessel{k}" for k, name in enumerate(names)], net
+
+
+def moordyn_coupled_points(case: Case) -> list[tuple[str, np.ndarray]]:
+    """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
+    in file order; empty for any other case."""
+    read = _moordyn_items(case)
+    if read is None:
+        return []
+    points, _ = read
+    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
+
+
+def moordyn_coupled_bodies(case: Case) -> list[str]:
+    """``bodyN`` of the ``Coupled`` bodies of the MoorDyn file ``case`` was read from; empty otherwise."""
+    read = _moordyn_items(case)
+    return [] if read is None else [f"body{number}" for number, b in read[1].items() if b.kind == "coupled"]
+
+
+def _moordyn_items(case: Case):
+    """The MoorDyn file's points and bodies by number (:mod:`kanat.io.moordyn_map`), or None."""
+    source = getattr(case, "source", None)
+    if not source or not Path(source).is_file():
+        return None
+    from kanat.io.moordyn_map import Reader, file_version, read_bodies, read_points
+    from kanat.io.moordyn_text import looks_like_moordyn, split
+
+    text = Path(source).read_text(errors="replace")
+    if not looks_like_moordyn(text):
+        return None
+    reader = Reader(split(text), str(source), Path(source).parent)
+    reader.version = file_version(reader)
+    bodies = read_bodies(reader)
+    return read_points(reader, bodies), bodies
