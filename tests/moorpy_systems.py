@@ -63,7 +63,7 @@ def moorpy_system(case, vessel: str = "fixed"):
                 raise ValueError("MoorPy's body has a heave spring about z = 0 only: give the body "
                                  "hydrostatic_stiffness [0, 0, C33, 0, 0, 0] and position z = 0")
             ms.addBody(0, r6, m=body.mass, v=body.buoyancy(g) / (rho * g), rCG=np.array(body.center_of_gravity),
-                       rM=np.array(body.center_of_buoyancy), AWP=C[2, 2] / (rho * g),
+                       rM=np.array(body.buoyancy_point), AWP=C[2, 2] / (rho * g),
                        f6Ext=np.array([*body.force, 0.0, 0.0, 0.0]))
             names["bodies"][name] = len(ms.bodyList)
     for cable in case.cables:

@@ -182,12 +182,19 @@ class Body(KanatModel):
                                  "(a 3-DOF body is a point)")
             return self
         self._check_rigid()
-        if self.buoyancy_at is not None:
-            if tuple(self.center_of_buoyancy) != ZERO3:
-                raise ValueError("give either buoyancy_at or center_of_buoyancy, not both")
-            at = self.center_of_gravity if self.buoyancy_at == "cg" else ZERO3
-            object.__setattr__(self, "center_of_buoyancy", tuple(at))     # what the solvers read
+        if self.buoyancy_at is not None and tuple(self.center_of_buoyancy) != ZERO3:
+            raise ValueError("give either buoyancy_at or center_of_buoyancy, not both")
         return self
+
+    @property
+    def buoyancy_point(self) -> tuple[float, float, float]:
+        """Where the buoyancy acts, in body axes from the reference point [m]: the centre of gravity
+        (``buoyancy_at: cg``), the reference point (``reference``), else ``center_of_buoyancy``."""
+        if self.buoyancy_at == "cg":
+            return tuple(self.center_of_gravity)
+        if self.buoyancy_at == "reference":
+            return ZERO3
+        return tuple(self.center_of_buoyancy)
 
     def _check_rigid(self) -> None:
         import numpy as np

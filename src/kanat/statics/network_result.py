@@ -27,7 +27,7 @@ import numpy as np
 from kanat.errors import SolverError
 from kanat.statics.coupled import VESSEL, coupled_stiffness
 from kanat.statics.network import NetworkSolution, cross, solve_network
-from kanat.statics.network_setup import NetworkProblem, network_problem
+from kanat.statics.network_setup import NeedsLumped, NetworkProblem, network_problem
 from kanat.statics.piecewise import sample
 from kanat.statics.steady_checks import check_result
 
@@ -271,16 +271,17 @@ def _cable(problem: NetworkProblem, line, state) -> NetworkCable:
 
 
 def _check_seabed(problem: NetworkProblem, cables: dict) -> None:
-    """No node may lie below the seabed (a line touching down between two suspended ends)."""
+    """No node may lie below the seabed: a line touching down between two suspended ends, which
+    the catenary lines do not model, goes to the lumped model's equilibrium (:class:`NeedsLumped`)."""
     if problem.seabed is None:
         return
     for name, cable in cables.items():
         below = problem.seabed.height(cable.position[:, 0], cable.position[:, 1]) - cable.position[:, 2]
         worst = int(np.argmax(below))
         if below[worst] > SEABED_TOLERANCE * problem.seabed.depth:
-            raise SolverError(f"cable '{name}' passes {below[worst]:.4g} m below the seabed at s = "
+            raise NeedsLumped(f"cable '{name}' passes {below[worst]:.4g} m below the seabed at s = "
                               f"{cable.s[worst]:.6g} m: it touches down between two suspended ends, which "
-                              "the catenary network statics does not model yet")
+                              "the catenary lines do not model (the lumped model's equilibrium does)")
 
 
 def condensed_stiffness(solution: NetworkSolution) -> dict:
