@@ -145,6 +145,11 @@ class NetworkResult:
         for name, r in {**self.bodies, **self.points}.items():
             lines.append(f"{'body' if name in self.bodies else 'point'} {name}: x = {r[0]:.3f}, y = {r[1]:.3f}, "
                          f"z = {r[2]:.3f} m")
+        for name in self.coupled_bodies:
+            K, F = np.diag(self.stiffness[name]), self.body_forces[name]
+            lines.append(f"coupled body {name}: line force ({', '.join(f'{f / 1e3:.3f}' for f in F)}) kN; "
+                         f"stiffness surge, sway, heave {', '.join(f'{k / 1e3:.4g}' for k in K[:3])} kN/m, "
+                         f"roll, pitch, yaw {', '.join(f'{k / 1e3:.4g}' for k in K[3:])} kN m/rad")
         lines += [f"note: {note}" for note in self.notes]
         return "\n".join(lines)
 
