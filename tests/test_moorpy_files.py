@@ -181,3 +181,26 @@ cables:
     assert ds.attrs["status"] == "ok" and ds.attrs["scheme"] == "lumped equilibrium"
     assert ds.tension.values[0] == pytest.approx(line.TA, rel=0.03)
     assert float(ds.seabed_contact_length.values[0]) == pytest.approx(line.LBot, rel=0.03)
+
+
+@pytest.mark.parametrize("keys, words", [
+    ({"buoyancy_at": "reference", "center_of_buoyancy": [0, 0, -1]}, "either buoyancy_at or center_of_buoyancy"),
+    ({"dof": 3, "buoyancy_at": "cg"}, "buoyancy_at is for rigid bodies"),
+])
+def test_buoyancy_at_refuses_what_contradicts_it(keys, words):
+    from kanat.model.body import Body
+
+    base = {"dof": 6, "mass": 1.0, "net_buoyancy": 0.0, "inertia": [1, 1, 1]}
+    if keys.get("dof") == 3:
+        base = {"mass": 1.0, "net_buoyancy": 0.0}
+    with pytest.raises(ValueError, match=words):
+        Body(**{**base, **keys})
+
+
+def test_buoyancy_at_places_the_buoyancy():
+    from kanat.model.body import Body
+
+    body = {"dof": 6, "mass": 1.0, "net_buoyancy": 0.0, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, -1]}
+    assert Body(**body, buoyancy_at="cg").buoyancy_point == (0, 0, -1)
+    assert Body(**body, buoyancy_at="reference").buoyancy_point == (0, 0, 0)
+    assert Body(**body, center_of_buoyancy=[0, 0, 2]).buoyancy_point == (0, 0, 2)

@@ -131,3 +131,16 @@ def test_a_case_without_a_vessel_end_is_refused():
     assert "vessel" not in text
     with pytest.raises(CaseError, match="no cable ends at the vessel"):
         offsets(_load(text), direction=0.0, to=5.0)
+
+
+def test_a_case_in_a_current_is_refused_with_the_reason():
+    """The catenary network carries no drag: a current is refused, at its key."""
+    from kanat.errors import CaseError
+
+    text = _spread().replace("environment: {water_density: 1025, depth: 120}",
+                             "environment: {water_density: 1025, depth: 120, current: {velocity: [0.5, 0, 0]}}")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = load_case(text, solver="lumped")
+    with pytest.raises(CaseError, match="current"):
+        offsets(case, direction=0.0, to=5.0)
