@@ -78,6 +78,24 @@ cables:
      to: {vessel: [-10, -5, -10]}}
 """
 
+PENDULUM = """
+name: pendulum
+model: statics
+environment: {water_density: 1025, depth: 200}
+line_types:
+  wire: {diameter: 0.05, mass: 12.0, axial_stiffness: 2.0e8}
+bodies:
+  weight:
+    dof: 6
+    mass: 2.0e4
+    net_buoyancy: -1.5e5
+    inertia: [1e4, 1e4, 1e4]
+    center_of_gravity: [0, 0, -1]
+cables:
+  - {name: hang, line_type: wire, length: 60, segments: 10, from: {vessel: [5, 0, -5]},
+     to: {body: weight, offset: [0, 0, 1]}}
+"""
+
 SYSTEMS = {"spread": ROOT / "examples" / "moordyn" / "three_leg_vessel_v1.dat", "taut": TAUT, "shared": SHARED}
 
 
@@ -186,3 +204,21 @@ def test_statics_file_holds_the_coupled_stiffness(tmp_path):
     np.testing.assert_allclose(ds.point_stiffness.sel(point="leg2.to").values, result.stiffness["leg2.to"])
     np.testing.assert_allclose(ds.body_force.sel(body=VESSEL).values, result.body_forces[VESSEL])
     np.testing.assert_allclose(ds.body_position.sel(body=VESSEL).values, 0.0)
+
+
+def test_a_free_body_whose_yaw_nothing_restores():
+    """A weight hanging from the vessel on one wire: its yaw is free (the free tangent is
+    singular). Re-balanced, it follows the fairlead wherever it moves, so the line's force on the
+    vessel stays its weight: the translation stiffness is zero (the pendulum's T/L holds only with
+    the weight held), and so is the re-solved statics' slope."""
+    SYSTEMS["pendulum"] = PENDULUM
+    try:
+        case = _case("pendulum")
+    finally:
+        del SYSTEMS["pendulum"]
+    result = solve_network_case(case)
+    K = result.stiffness[VESSEL]
+    pendulum = result.cables["hang"].tension[0] / 62.0                    # N/m: wire 60 m, lever 2 m
+    assert np.all(np.isfinite(K))
+    np.testing.assert_allclose(K[:3, :3], 0.0, atol=1e-9 * pendulum)
+    np.testing.assert_allclose(_kanat_differences(case)[:3, :3], 0.0, atol=1e-4 * pendulum)

@@ -95,12 +95,16 @@ def _augmented(problem: NetworkProblem, nodes: list, where) -> NetworkProblem:
 
 
 def _condensed(J: np.ndarray, n_free: int) -> np.ndarray:
-    """Eq. (1) from the full tangent ``J = dR/dq`` whose first ``n_free`` unknowns are free."""
+    """Eq. (1) from the full tangent ``J = dR/dq`` whose first ``n_free`` unknowns are free.
+
+    ``K_ff^-1 K_fc`` is the least-squares solution of least norm: a free body whose yaw nothing
+    restores leaves ``K_ff`` singular, and that turn then carries no load (as in
+    :func:`kanat.statics.network_result.condensed_stiffness`)."""
     K = -J
     c, f = slice(n_free, None), slice(0, n_free)
     if n_free == 0:
         return K[c, c]
-    return K[c, c] - K[c, f] @ np.linalg.solve(K[f, f], K[f, c])
+    return K[c, c] - K[c, f] @ np.linalg.lstsq(K[f, f], K[f, c], rcond=None)[0]
 
 
 def coupled_stiffness(solution: NetworkSolution) -> CoupledStiffness | None:
