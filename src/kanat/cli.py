@@ -89,7 +89,7 @@ def statics(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
 
 @app.command()
 def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input) of a moored vessel."),
-            direction: float = typer.Option(..., "--direction", help="Direction of the offset [deg], from x towards y."),
+            direction: float = typer.Option(..., "--direction", help="Offset direction [deg], from x towards y."),
             to: float = typer.Option(..., "--to", help="Largest offset [m]."),
             steps: int = typer.Option(20, "--steps", min=1, help="Offsets after 0, evenly spaced."),
             output: Path = typer.Option(..., "-o", "--output", help="Result file: netCDF, or CSV for a .csv name."),
