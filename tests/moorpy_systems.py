@@ -22,8 +22,12 @@ import io
 import numpy as np
 
 
-def moorpy_system(case):
+def moorpy_system(case, vessel: str = "fixed"):
     """A MoorPy ``System`` of the kanat ``case`` (module docstring), initialized.
+
+    ``vessel``: how the vessel's fairleads enter MoorPy: ``fixed`` points, ``points`` (coupled
+    points, one per fairlead position) or ``body`` (points on a coupled body at the origin, of
+    no mass or volume).
 
     Returns
     -------
@@ -45,7 +49,10 @@ def moorpy_system(case):
         ms.lineTypes[name] = dict(name=name, d_vol=lt.diameter, m=lt.mass, EA=lt.axial_stiffness,
                                   w=lt.weight_in_water_value(rho, g), MBL=1e12, Cd=lt.drag_normal, Ca=1.0,
                                   CdAx=lt.drag_tangential, CaAx=0.0)
-    names = {"lines": {}, "points": {}, "bodies": {}, "anchors": {}}
+    names = {"lines": {}, "points": {}, "bodies": {}, "anchors": {}, "vessel": vessel, "coupled": {}}
+    if vessel == "body":
+        ms.addBody(-1, np.zeros(6), m=0.0, v=0.0)
+        names["bodies"]["vessel"] = len(ms.bodyList)
     for name, body in case.bodies.items():
         if body.dof == 6:
             r6 = [*(body.position or (0.0, 0.0, 0.0)), *np.radians(body.orientation_deg)]
@@ -56,7 +63,7 @@ def moorpy_system(case):
                 raise ValueError("MoorPy's body has a heave spring about z = 0 only: give the body "
                                  "hydrostatic_stiffness [0, 0, C33, 0, 0, 0] and position z = 0")
             ms.addBody(0, r6, m=body.mass, v=body.buoyancy(g) / (rho * g), rCG=np.array(body.center_of_gravity),
-                       rM=np.array(body.center_of_buoyancy), AWP=C[2, 2] / (rho * g),
+                       rM=np.array(body.buoyancy_point), AWP=C[2, 2] / (rho * g),
                        f6Ext=np.array([*body.force, 0.0, 0.0, 0.0]))
             names["bodies"][name] = len(ms.bodyList)
     for cable in case.cables:
@@ -83,6 +90,15 @@ def moorpy_system(case):
 def _end(ms, case, cable, end, label, names) -> int:
     env = case.environment
     rho, g = env.water_density, env.gravity
+    if end.kind == "vessel" and names["vessel"] != "fixed":
+        xyz = tuple(end.offset or case.vessel.tow_point)
+        if xyz not in names["coupled"]:
+            if names["vessel"] == "body":
+                ms.addPoint(1, list(xyz), body=names["bodies"]["vessel"])
+            else:
+                ms.addPoint(-1, list(xyz))
+            names["coupled"][xyz] = len(ms.pointList)
+        return names["coupled"][xyz]
     if end.kind in ("anchor", "vessel"):
         xyz = end.position if end.kind == "anchor" else (end.offset or case.vessel.tow_point)
         ms.addPoint(1, list(xyz))

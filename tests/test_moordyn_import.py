@@ -113,7 +113,8 @@ def test_spread_mooring_numbers():
     assert (env.depth, env.seabed.stiffness, env.seabed.damping, env.gravity) == (120, 3e6, 3e5, 9.81)
     assert (case.model, sim.duration, sim.dt, sim.output_dt) == ("lumped", 600, 0.002, 0.5)
     notes = {p.key for p in result.problems}
-    assert notes == {"OPTIONS.dtIC", "OPTIONS.TmaxIC", "OUTPUTS"}
+    assert notes == {"OPTIONS.dtIC", "OPTIONS.TmaxIC", "OUTPUTS", "BODIES 1.CG"}   # the CG: buoyancy_at stated
+    assert buoy.buoyancy_at == "cg" and buoy.buoyancy_point == buoy.center_of_gravity
 
 
 def test_clump_and_float_numbers():

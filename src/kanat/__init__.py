@@ -10,6 +10,8 @@ simulate(case, scheme=None, output=None, resume=False, progress=None) -> xarray.
     Run any case with its model: in memory, or streamed to a netCDF file.
 run(case, ...) -> Outcome
     The same, with the run summary and its text (what ``kanat run`` prints).
+offsets(case, direction, to, steps=20) -> xarray.Dataset
+    Restoring force and line tensions of a moored vessel against its offset.
 read_result(path) -> xarray.Dataset
     A result file.
 report(result | path | study_dir, html_path) -> Path
@@ -22,7 +24,7 @@ The names are loaded on first use, so ``import kanat`` stays light.
 """
 from kanat.version import __version__
 
-_API = ("load_case", "solve_statics", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
+_API = ("load_case", "solve_statics", "offsets", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
 __all__ = ["__version__", *_API, "report", "Coupling"]
 
 
@@ -35,6 +37,10 @@ def __getattr__(name):
         from kanat.coupling import Coupling
 
         return Coupling
+    if name == "catalog":
+        import kanat.catalog  # noqa: F401 - binds the module kanat.catalog
+
+        return globals()["catalog"]
     if name == "report":
         import kanat.report  # noqa: F401 - binds the (callable) package kanat.report
 

@@ -288,6 +288,55 @@ def solve_statics(case: Case, method: str = "auto"):
     return table.to_dataset()
 
 
+def offset_table(case: Case, direction: float, to: float, steps: int = 20):
+    """The offset curve of ``case`` (:func:`offsets`) as the table ``kanat offsets`` writes, and the curve."""
+    from kanat.io.offsets_table import offsets_table
+    from kanat.statics import NeedsLumped
+    from kanat.statics.offsets import offset_curve
+
+    require_supported(case, "statics")
+    start = time.perf_counter()
+    try:
+        curve = offset_curve(case, direction, to, steps)
+    except NeedsLumped as reason:
+        raise SolverError(f"offsets re-solve the catenary network statics, which this case is beyond: {reason}; "
+                          "remove the current and the lines' bending stiffness for the offset curve") from None
+    return offsets_table(curve, case, wall_time_s=time.perf_counter() - start), curve
+
+
+@_naming_its_file
+def offsets(case: Case, direction: float, to: float, steps: int = 20):
+    """Restoring force and line tensions of a moored vessel against its offset.
+
+    The vessel (every cable end ``{vessel: [x, y, z]}``) moves rigidly by ``steps`` even
+    steps from 0 to ``to`` metres along ``direction`` degrees (from x towards y); the network
+    statics is solved again at each offset (:mod:`kanat.statics.offsets`).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+        A network in still water with cables ending at the vessel.
+    direction : float
+        [deg].
+    to : float
+        Largest offset [m].
+    steps : int
+
+    Returns
+    -------
+    xarray.Dataset
+        ``restoring_force(offset, xyz)`` [N], ``restoring_moment(offset, xyz)`` [N m] about
+        the vessel's moved origin, ``end_tension(offset, cable, end)`` [N].
+
+    Examples
+    --------
+    >>> case = kanat.load_case("examples/moordyn/three_leg_vessel_v1.dat")   # doctest: +SKIP
+    >>> ds = kanat.offsets(case, direction=0.0, to=30.0, steps=15)         # doctest: +SKIP
+    >>> ds.restoring_force.sel(xyz="x").plot(x="offset")                   # doctest: +SKIP
+    """
+    return offset_table(case, direction, to, steps)[0].to_dataset()
+
+
 @_naming_its_file
 def dynamic_model(case: Case, scheme=None, start=None):
     """The dynamic model of ``case`` from :data:`MODELS`, set up with ``scheme`` (and ``start``, as

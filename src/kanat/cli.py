@@ -17,6 +17,7 @@ for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_name, "1")
 
 import logging  # noqa: E402
+import math  # noqa: E402
 import warnings  # noqa: E402
 from pathlib import Path  # noqa: E402
 from typing import Optional  # noqa: E402
@@ -84,6 +85,31 @@ def statics(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Solve the steady state of a case and write it to OUTPUT."""
     _steady(load(case, debug, solver="statics"), case, output, plot, debug, model="statics", method=method)
+
+
+@app.command()
+def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input) of a moored vessel."),
+            direction: float = typer.Option(..., "--direction", help="Offset direction [deg], from x towards y."),
+            to: float = typer.Option(..., "--to", help="Largest offset [m]."),
+            steps: int = typer.Option(20, "--steps", min=1, help="Offsets after 0, evenly spaced."),
+            output: Path = typer.Option(..., "-o", "--output", help="Result file: netCDF, or CSV for a .csv name."),
+            debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Restoring force and every line's end tensions against the vessel's offset, written to OUTPUT."""
+    from kanat import api
+    from kanat.io.offsets_table import write_offsets_csv
+
+    loaded = load(case, debug, solver="statics")
+    _check_outputs(output, None, case, debug)
+    try:
+        table, curve = api.offset_table(loaded, direction, to, steps)
+        write_offsets_csv(curve, output) if output.suffix.lower() == ".csv" else table.write(output)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "offsets failed")
+    show(f"offset [m]  force along {direction:g} deg [kN]  largest tension [kN]")
+    unit = (math.cos(math.radians(direction)), math.sin(math.radians(direction)))
+    for d, f, T in zip(curve.offset, curve.force, curve.tension):
+        show(f"{d:10.3f}  {(f[0] * unit[0] + f[1] * unit[1]) / 1e3:26.3f}  {T.max() / 1e3:20.3f}")
+    show(f"wrote {output}")
 
 
 @app.command()

@@ -37,7 +37,9 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
   -> ``added_mass = Ca rho V`` [kg]; v1's ``FX, FY, FZ`` [N, as MoorDyn documents them]
   -> ``force``. ``BodyN`` points are fairleads on body N.
 * Bodies: a ``Free`` body is a kanat body with ``dof: 6``: ``net_buoyancy = (rho V -
-  Mass) g``, buoyancy and weight at ``CG`` (as MoorDyn applies them), ``I`` ->
+  Mass) g``, buoyancy and weight at ``CG`` (as MoorDyn-C applies them: ``buoyancy_at: cg``,
+  which the importer writes and states; MoorPy applies the buoyancy at the reference point,
+  ``buoyancy_at: reference``), ``I`` (0 allowed in statics, as MoorPy writes it) ->
   ``inertia``, ``CdA`` -> ``drag_areas`` (1 value: all six; 2: translations, rotations;
   3: x, y, z for both; 6: as given -- as MoorDyn documents it; MoorDyn-C v2's reader
   (MoorDyn2.cpp) skips the first of 3 or 6 values), ``Ca`` -> ``added_mass_matrix = rho V diag(Ca)``

@@ -273,8 +273,12 @@ def read_bodies(reader: Reader) -> dict[int, _Body]:
             mass = nums[6]
             body.data = {"dof": 6, "mass": mass, "net_buoyancy": (rho * volume - mass) * g,
                          "position": list(body.xyz), "orientation_deg": list(body.angles_deg),
-                         "center_of_gravity": cg, "center_of_buoyancy": cg, "inertia": inertia,
+                         "center_of_gravity": cg, "buoyancy_at": "cg", "inertia": inertia,
                          "drag_areas": cda, "added_mass_matrix": [rho * volume * c for c in ca]}
+            if any(cg) and volume:
+                reader.warn(row.line, f"{where}.CG", "the buoyancy acts at the CG, as MoorDyn-C applies it "
+                            "(buoyancy_at: cg); MoorPy applies it at the reference point: for its "
+                            "convention import the file to YAML and write buoyancy_at: reference")
         elif kind != "free" and (nums[6] or volume):
             reader.warn(row.line, where, f"a {kind} body's mass and volume have no effect (its "
                         "motion is prescribed, as in MoorDyn); not imported")

@@ -63,14 +63,15 @@ def statics_table(result, wall_time_s: float = 0.0, status: str = "ok", warnings
         attrs[f"method_{name}"] = sol.method
         attrs[f"grounded_length_{name}_m"] = sol.grounded_length
     position = np.concatenate(position)
-    bodies = list(result.bodies)
+    placed = {**result.bodies, **getattr(result, "coupled_bodies", {})}     # free, then coupled bodies
+    bodies = list(placed)
     v = {
         "position": _known("position", ("node", "xyz"), position),
         "velocity": _known("velocity", ("node", "xyz"), np.tile(result.vessel_velocity, (len(position), 1))),
         "tension": _known("tension", ("node",), np.concatenate(tension)),
         "angle": _known("angle", ("node",), np.concatenate(angle)),
         "body_position": _known("body_position", ("body", "xyz"),
-                                np.array([result.bodies[b] for b in bodies]).reshape(-1, 3)),
+                                np.array([placed[b] for b in bodies]).reshape(-1, 3)),
         "vessel_position": _known("vessel_position", ("xyz",),
                                   np.asarray(result.case.vessel.tow_point, dtype=float)),
         "vessel_heading": _known("vessel_heading", (), np.array(0.0)),
@@ -104,15 +105,16 @@ def _mooring_variables(result, bodies: list) -> dict:
     }
     if not hasattr(result, "attitudes"):
         return out
-    points = list(result.points)
+    located = {**result.points, **getattr(result, "coupled_points", {})}     # free, then coupled points
+    points = list(located)
     out.update({
         "body_moment": _known("body_moment", ("body", "xyz"),
                               _forces([result.body_moments.get(b, np.zeros(3)) for b in bodies], len(bodies), 3)),
         "body_attitude": _known("body_attitude", ("body", "xyz"),
-                                _forces([result.attitudes[b] for b in bodies], len(bodies), 3)),
+                                _forces([result.attitudes.get(b, np.zeros(3)) for b in bodies], len(bodies), 3)),
         "point": _label("point", points),
         "point_position": _known("point_position", ("point", "xyz"),
-                                 _forces([result.points[p] for p in points], len(points), 3)),
+                                 _forces([located[p] for p in points], len(points), 3)),
     })
     if result.stiffness:                                  # the catenary network's, not the fallback's
         out.update({

@@ -117,7 +117,7 @@ def rigid_bodies(case, builder) -> RigidBodies:
         rows["quadratic"].append(_matrix(body.quadratic_damping))
         rows["drag"].append(np.zeros(6) if body.drag_areas is None else np.asarray(body.drag_areas, float))
         rows["cog"].append(np.asarray(body.center_of_gravity, float))
-        rows["cob"].append(np.asarray(body.center_of_buoyancy, float))
+        rows["cob"].append(np.asarray(body.buoyancy_point, float))
         hydro_on = body.hydrostatic_stiffness is not None or body.waterplane_area is not None
         buoyancy = body.buoyancy(g)
         rows["scalars"].append([body.mass * g, buoyancy, buoyancy / g, float(hydro_on),

@@ -124,7 +124,8 @@ class Body(KanatModel):
     inertia: Matrix3 | None = quantity(
         None, unit="kg m^2",
         description="dof 6: moments of inertia about the centre of gravity in body axes, "
-                    "[Ixx, Iyy, Izz] or a symmetric 3x3 matrix")
+                    "[Ixx, Iyy, Izz] or a symmetric 3x3 matrix; positive definite for a dynamic "
+                    "run, zero allowed in statics")
     center_of_gravity: Vector3 = quantity(
         ZERO3, unit="m", description="dof 6: centre of gravity in body axes, from the "
                                      "reference point; the weight mass * g acts there")
@@ -132,6 +133,10 @@ class Body(KanatModel):
         ZERO3, unit="m", description="dof 6: centre of buoyancy in body axes, from the "
                                      "reference point; the buoyancy net_buoyancy + mass * g "
                                      "acts there")
+    buoyancy_at: Literal["cg", "reference"] | None = Field(
+        None, description="dof 6: where the buoyancy acts, instead of center_of_buoyancy: cg, the centre "
+                          "of gravity (MoorDyn-C's convention; the MoorDyn importer writes it), or "
+                          "reference, the reference point (MoorPy's); none: at center_of_buoyancy")
     orientation_deg: Vector3 = quantity(
         ZERO3, unit="deg", description="dof 6: initial roll, pitch, yaw of the body axes "
                                        "about the global x, y, z axes (R = Rz(yaw) Ry(pitch) "
@@ -170,14 +175,26 @@ class Body(KanatModel):
     @model_validator(mode="after")
     def _rigid_body(self) -> Body:
         if self.dof == 3:
-            used = [k for k in SIX_DOF_ONLY if getattr(self, k) not in (None, ZERO3)]
+            used = [k for k in (*SIX_DOF_ONLY, "buoyancy_at") if getattr(self, k) not in (None, ZERO3)]
             if used:
                 verb = "is" if len(used) == 1 else "are"
                 raise ValueError(f"{', '.join(used)} {verb} for rigid bodies: add dof: 6 "
                                  "(a 3-DOF body is a point)")
             return self
         self._check_rigid()
+        if self.buoyancy_at is not None and tuple(self.center_of_buoyancy) != ZERO3:
+            raise ValueError("give either buoyancy_at or center_of_buoyancy, not both")
         return self
+
+    @property
+    def buoyancy_point(self) -> tuple[float, float, float]:
+        """Where the buoyancy acts, in body axes from the reference point [m]: the centre of gravity
+        (``buoyancy_at: cg``), the reference point (``reference``), else ``center_of_buoyancy``."""
+        if self.buoyancy_at == "cg":
+            return tuple(self.center_of_gravity)
+        if self.buoyancy_at == "reference":
+            return ZERO3
+        return tuple(self.center_of_buoyancy)
 
     def _check_rigid(self) -> None:
         import numpy as np
@@ -187,9 +204,9 @@ class Body(KanatModel):
                              "the centre of gravity")
         _symmetric(self.inertia, "inertia")
         low = float(np.min(np.linalg.eigvalsh(np.asarray(self.inertia))))
-        if low <= 0:
-            raise ValueError(f"inertia must be positive definite (its smallest principal "
-                             f"moment is {fmt(low)} kg m^2)")
+        if low < -SYMMETRY_RTOL * float(np.max(np.abs(self.inertia))):
+            raise ValueError(f"inertia must not be negative (its smallest principal moment is "
+                             f"{fmt(low)} kg m^2)")
         if self.drag_area or self.added_mass:
             raise ValueError("a dof: 6 body takes drag_areas (6 values) and added_mass_matrix "
                              "(6 or 6x6) instead of drag_area and added_mass")
@@ -210,6 +227,19 @@ class Body(KanatModel):
             if matrix is not None and min(np.diag(np.asarray(matrix))) < 0:
                 raise ValueError(f"{key} must not be negative on its diagonal (it would feed "
                                  "energy into the body)")
+
+    @property
+    def has_inertia(self) -> bool:
+        """True for a point body, and for a rigid body whose inertia is positive definite (Sylvester's
+        leading minors): a dynamic run needs it to turn the body; statics does not (MoorPy writes
+        ``I = 0`` in the MoorDyn files it makes)."""
+        if self.dof == 3:
+            return True
+        a = self.inertia
+        minors = (a[0][0], a[0][0] * a[1][1] - a[0][1] * a[1][0],
+                  a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+                  + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+        return all(m > 0 for m in minors)
 
     def submerged_weight(self) -> float:
         """Downward pull in still water, ``-net_buoyancy`` [N] (negative: it floats up)."""

@@ -225,6 +225,10 @@ def _body_key(key: str, test) -> Callable[[Case], list[Use]]:
     return uses
 
 
+def _without_inertia(case: Case) -> list[Use]:
+    return [(("bodies", name, "inertia"), "") for name, body in case.bodies.items() if not body.has_inertia]
+
+
 def _vessel_pitch(case: Case) -> list[Use]:
     return [(("vessel", "pitch"), "")] if case.vessel.pitch is not None else []
 
@@ -400,6 +404,10 @@ FEATURES: tuple[Feature, ...] = (
             statics=IGNORED, continuum=YES, lumped=YES,
             note={"statics": "statics lays each grounded line straight in its own vertical plane, so "
                              "nothing pushes it sideways for lateral friction to resist"}),
+    Feature("zero_inertia", "a rigid body without inertia (zero, as MoorPy writes it)", _without_inertia,
+            statics=YES, continuum=NO, lumped=NO,
+            note="a dynamic run turns the body, which needs its moments of inertia [Ixx, Iyy, Izz] (kg m^2) "
+                 "about the centre of gravity; statics does not use them"),
     Feature("seabed_slope", "a sloping seabed", _seabed(lambda s: s.slope_deg != 0, "slope_deg"),
             statics=YES, continuum=YES, lumped=YES),
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),

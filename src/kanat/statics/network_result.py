@@ -13,7 +13,9 @@ other free node re-balanced (static condensation of the full tangent, analytic, 
 eq. 3 of :mod:`kanat.statics.network`): 6x6 at a rigid body about its reference point, per
 metre of translation and per radian of small rotation about the global axes (the roll,
 pitch, yaw columns turned by the angular-rate matrix of the body's attitude); 3x3 at a
-point and at a point body (MoorPy's ``getStiffnessA`` and ``getCoupledStiffnessA``).
+point and at a point body (MoorPy's ``getStiffnessA`` and ``getCoupledStiffnessA``). The
+vessel's ends, held in statics, get theirs too (:mod:`kanat.statics.coupled`): the vessel,
+named ``vessel``, as a coupled rigid body about its origin, and each coupled point.
 """
 from __future__ import annotations
 
@@ -23,8 +25,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.statics.coupled import VESSEL, coupled_stiffness
 from kanat.statics.network import NetworkSolution, cross, solve_network
-from kanat.statics.network_setup import NetworkProblem, network_problem
+from kanat.statics.network_setup import NeedsLumped, NetworkProblem, network_problem
 from kanat.statics.piecewise import sample
 from kanat.statics.steady_checks import check_result
 
@@ -92,7 +95,8 @@ class NetworkResult:
     anchor_forces : dict of str to ndarray, shape (3,)
         Force of the line on each anchor, named by cable end (``line1.from``) [N].
     stiffness : dict of str to ndarray
-        Mooring stiffness, 6x6 at a body (3x3 block for a point body, the rest 0), 3x3 at a point.
+        Mooring stiffness, 6x6 at a body (3x3 block for a point body, the rest 0), 3x3 at a point;
+        the coupled ones included.
     iterations, stages : int
     residual : float
         Largest force residual at equilibrium [N].
@@ -115,6 +119,11 @@ class NetworkResult:
     notes: tuple = ()
     vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     sphere: None = None
+    coupled_bodies: dict = field(default_factory=dict)
+    """Coupled bodies (the vessel, ``vessel``) by name: their reference point [m]; their line
+    force and moment are in ``body_forces`` and ``body_moments``."""
+    coupled_points: dict = field(default_factory=dict)
+    """Coupled points (the vessel's fairleads, named by their first cable end) by name: position [m]."""
 
     @property
     def verdict(self):
@@ -136,6 +145,11 @@ class NetworkResult:
         for name, r in {**self.bodies, **self.points}.items():
             lines.append(f"{'body' if name in self.bodies else 'point'} {name}: x = {r[0]:.3f}, y = {r[1]:.3f}, "
                          f"z = {r[2]:.3f} m")
+        for name in self.coupled_bodies:
+            K, F = np.diag(self.stiffness[name]), self.body_forces[name]
+            lines.append(f"coupled body {name}: line force ({', '.join(f'{f / 1e3:.3f}' for f in F)}) kN; "
+                         f"stiffness surge, sway, heave {', '.join(f'{k / 1e3:.4g}' for k in K[:3])} kN/m, "
+                         f"roll, pitch, yaw {', '.join(f'{k / 1e3:.4g}' for k in K[3:])} kN m/rad")
         lines += [f"note: {note}" for note in self.notes]
         return "\n".join(lines)
 
@@ -262,16 +276,17 @@ def _cable(problem: NetworkProblem, line, state) -> NetworkCable:
 
 
 def _check_seabed(problem: NetworkProblem, cables: dict) -> None:
-    """No node may lie below the seabed (a line touching down between two suspended ends)."""
+    """No node may lie below the seabed: a line touching down between two suspended ends, which
+    the catenary lines do not model, goes to the lumped model's equilibrium (:class:`NeedsLumped`)."""
     if problem.seabed is None:
         return
     for name, cable in cables.items():
         below = problem.seabed.height(cable.position[:, 0], cable.position[:, 1]) - cable.position[:, 2]
         worst = int(np.argmax(below))
         if below[worst] > SEABED_TOLERANCE * problem.seabed.depth:
-            raise SolverError(f"cable '{name}' passes {below[worst]:.4g} m below the seabed at s = "
+            raise NeedsLumped(f"cable '{name}' passes {below[worst]:.4g} m below the seabed at s = "
                               f"{cable.s[worst]:.6g} m: it touches down between two suspended ends, which "
-                              "the catenary network statics does not model yet")
+                              "the catenary lines do not model (the lumped model's equilibrium does)")
 
 
 def condensed_stiffness(solution: NetworkSolution) -> dict:
@@ -339,11 +354,21 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
                               "where its buoyancy is lost: its lines cannot hold it under water. Statics "
                               "takes submerged points and point bodies; give it more weight or shorter "
                               "lines, or make it a dof: 6 body with a waterplane")
-    return NetworkResult(case, method, cables, bodies, attitudes, points,
-                         {k: v for k, v in forces.items() if k in bodies},
-                         {k: v for k, v in moments.items() if k in bodies}, anchors,
-                         condensed_stiffness(solution), solution.iterations, solution.stages,
-                         float(np.max(np.abs(solution.residual), initial=0.0)), tuple(notes))
+    body_forces = {k: v for k, v in forces.items() if k in bodies}
+    body_moments = {k: v for k, v in moments.items() if k in bodies}
+    stiffness = condensed_stiffness(solution)
+    coupled_bodies, coupled_points = {}, {}
+    coupled = coupled_stiffness(solution)
+    if coupled is not None and VESSEL not in bodies and not set(coupled.points) & set(points):
+        coupled_bodies[VESSEL] = np.zeros(3)
+        body_forces[VESSEL], body_moments[VESSEL] = coupled.body_force, coupled.body_moment
+        stiffness[VESSEL] = coupled.body_stiffness
+        coupled_points = coupled.points
+        stiffness.update(coupled.point_stiffness)
+    return NetworkResult(case, method, cables, bodies, attitudes, points, body_forces, body_moments, anchors,
+                         stiffness, solution.iterations, solution.stages,
+                         float(np.max(np.abs(solution.residual), initial=0.0)), tuple(notes),
+                         coupled_bodies=coupled_bodies, coupled_points=coupled_points)
 
 
 # --------------------------------------------------------------------------- from node positions

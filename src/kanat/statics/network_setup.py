@@ -227,7 +227,7 @@ def _node(case, name: str) -> NetworkNode:
     return NetworkNode(name, "body", 6, _vector(body.position), np.radians(body.orientation_deg), force,
                        weight=body.mass * g, buoyancy=body.buoyancy(g),
                        cog=np.asarray(body.center_of_gravity, dtype=float),
-                       cob=np.asarray(body.center_of_buoyancy, dtype=float), hydrostatic=stiffness,
+                       cob=np.asarray(body.buoyancy_point, dtype=float), hydrostatic=stiffness,
                        fixed_levers=bool(np.any(stiffness[3:5, 3:5])))
 
 
