@@ -21,11 +21,15 @@ Conventions (vessel axes: x forward, y port, z up; angles right-handed about the
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
+from kanat.errors import KanatError
 from kanat.physics.ramp import ramp_factor, ramp_rate
+from kanat.physics.rao import rao_harmonics
+from kanat.physics.waves import sea_from_model
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 """Order of the degrees of freedom in every array of this module."""
@@ -107,20 +111,15 @@ def compile_motion(motion, environment=None) -> Harmonics | MotionTable | None:
 
 
 def _rao_motion(motion, environment) -> Harmonics:
-    import warnings
-
-    from kanat.errors import KanatError
-    from kanat.physics.rao import rao_harmonics
-    from kanat.physics.waves import sea_from_model
-
+    """:func:`kanat.physics.rao.rao_harmonics` in the sea of ``environment``, as Harmonics."""
     sea = sea_from_model(environment) if environment is not None else None
     if sea is None:
         raise KanatError("vessel.motion.rao moves the vessel with the sea: give environment.waves")
-    harmonics, outside = rao_harmonics(motion.rao_rows, sea, motion.ramp or sea.ramp)
+    *arrays, outside = rao_harmonics(motion.rao_rows, sea)
     if outside > 1e-3:
         warnings.warn(f"{100 * outside:.2g} % of the sea's variance lies at frequencies outside the RAO "
                       f"table ({motion.rao}); those components do not move the vessel", stacklevel=3)
-    return harmonics
+    return Harmonics(*arrays, motion.ramp or sea.ramp)
 
 
 def harmonic_motion(t: float, harmonics: Harmonics) -> tuple[np.ndarray, np.ndarray]:

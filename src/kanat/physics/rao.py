@@ -8,7 +8,7 @@ Each wave component ``eta_i = a_i cos(omega_i t - phi_i)`` at the vessel origin 
 ``Z_d = amplitude e^{i phase}`` the RAO (:mod:`kanat.io.raos`), interpolated linearly in
 frequency and in heading (``beta_i`` relative to the vessel, whose heading is 0 at t = 0) as a
 complex number, so that phases never wrap. That is a sum of harmonics
-(:class:`kanat.physics.motion.Harmonics`, ``A sin(omega t + pi/2 - phi - arg Z)``), so every
+(``A sin(omega t + pi/2 - phi - arg Z)``, :class:`kanat.physics.motion.Harmonics`), so every
 vessel point follows with its lever arm as for written harmonics. The motion is the one at zero
 forward speed (no encounter frequency) and about the heading at t = 0.
 
@@ -22,7 +22,9 @@ import math
 import numpy as np
 
 from kanat.errors import KanatError
-from kanat.physics.motion import DOFS, Harmonics
+
+DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+"""Order of the degrees of freedom (that of :data:`kanat.physics.motion.DOFS`)."""
 
 
 def _grid(rows, dof):
@@ -65,7 +67,7 @@ def _along_heading(headings, values, beta_deg, dof):
     return (1.0 - w) * cols[:, j] + w * cols[:, j + 1]
 
 
-def rao_harmonics(rows, sea, ramp: float = 0.0) -> tuple[Harmonics, float]:
+def rao_harmonics(rows, sea):
     """The harmonics of the vessel's motion in ``sea`` (module docstring).
 
     Parameters
@@ -73,12 +75,12 @@ def rao_harmonics(rows, sea, ramp: float = 0.0) -> tuple[Harmonics, float]:
     rows : sequence of (omega, heading_deg, dof, amplitude, phase_deg)
         ``vessel.motion.rao_rows``.
     sea : kanat.physics.waves.LinearSea
-    ramp : float
-        The motion's start-up ramp [s].
 
     Returns
     -------
-    harmonics : Harmonics
+    dof, amplitude, omega, phase : ndarray, shape (n,)
+        The harmonics ``amplitude sin(omega t + phase)`` of degree of freedom ``dof``
+        (index into :data:`DOFS`) [m or rad, rad/s, rad].
     outside : float
         Share of the sea's variance ``sum a_i^2 / 2`` at frequencies outside the RAO table.
     """
@@ -102,5 +104,5 @@ def rao_harmonics(rows, sea, ramp: float = 0.0) -> tuple[Harmonics, float]:
             phase.append(0.5 * math.pi - sea.phase[i] - np.angle(z))
     variance = float(np.sum(sea.amplitude**2))
     share = float(np.sum(sea.amplitude[outside] ** 2)) / variance if variance > 0 else 0.0
-    return Harmonics(np.array(dof, dtype=np.int64), np.array(amplitude, float), np.array(omega, float),
-                     np.array(phase, float), ramp), share
+    return (np.array(dof, dtype=np.int64), np.array(amplitude, float), np.array(omega, float),
+            np.array(phase, float), share)
