@@ -144,14 +144,26 @@ def _direction(case, x, clamp, where, fixity) -> np.ndarray:
 
 def _frame(case, where) -> np.ndarray:
     """The rotation (3, 3) from the end's axes to the global frame at ``t = 0``: the body's initial
-    orientation, the track's heading at ``t = 0`` for the vessel, none at an anchor."""
+    orientation, the vessel's (:func:`vessel_start`), none at an anchor."""
     if where.kind == "body":
         return rotation_matrix(*np.radians(case.bodies[where.name].orientation_deg))
-    if where.kind == "vessel" and case.vessel.track:
+    if where.kind == "vessel":
+        heading, q = vessel_start(case)
+        return rotation_matrix(0.0, 0.0, heading) @ rotation_matrix(*q[3:])
+    return np.eye(3)
+
+
+def vessel_start(case) -> tuple[float, np.ndarray]:
+    """The vessel at ``t = 0``: the track's heading [rad] (0 without a track) and the prescribed motion's
+    displacement (6,) (surge, sway, heave [m], roll, pitch, yaw [rad]; zeros without a motion)."""
+    from kanat.physics.motion import compile_motion
+    from kanat.physics.motion_samples import motion_series
+
+    heading = 0.0
+    if case.vessel.track:
         from kanat.vessel.track import VesselTrack
         heading = VesselTrack.from_model(case.vessel).state(0.0).heading
-        return rotation_matrix(0.0, 0.0, heading)
-    return np.eye(3)
+    return heading, motion_series(compile_motion(case.vessel.motion), [0.0])[0][0]
 
 
 def _local(case, direction, where) -> np.ndarray:

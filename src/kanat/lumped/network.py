@@ -34,7 +34,7 @@ import numpy as np
 
 from kanat.errors import CaseError, Problem
 from kanat.lumped.bending import bending_triples
-from kanat.lumped.clamps import clamped_ends, given_directions, place_guides
+from kanat.lumped.clamps import clamped_ends, given_directions, place_guides, vessel_start
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.model.paths import key_path
@@ -288,11 +288,16 @@ class _Builder:
 
 
 def _vessel_guess(case, arm) -> np.ndarray:
-    """A vessel point's place at t = 0 (the track's, or the arm itself without a track)."""
-    if not case.vessel.track:
-        return np.asarray(arm, float)
-    from kanat.vessel.track import VesselTrack
-    return VesselTrack.from_model(case.vessel).state(0.0, arm).position
+    """A vessel point's place at t = 0: the track's (or the arm itself without a track), moved by the
+    prescribed motion's displacement at t = 0 turned by the heading (as :class:`LumpedSystem` places it)."""
+    arm = np.asarray(arm, float)
+    place = arm
+    if case.vessel.track:
+        from kanat.vessel.track import VesselTrack
+        place = VesselTrack.from_model(case.vessel).state(0.0, arm).position
+    heading, q = vessel_start(case)
+    moved = q[:3] + rotation_matrix(*q[3:]) @ arm - arm
+    return place + rotation_matrix(0.0, 0.0, heading) @ moved
 
 
 def _buoyant(builder: _Builder, node: int) -> bool:
