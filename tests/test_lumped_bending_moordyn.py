@@ -135,13 +135,18 @@ def test_moordyn_holds_the_equilibrium_kanat_finds_for_a_line_with_bending(tmp_p
 
 
 def test_a_driven_line_with_bending_moves_as_moordyn_s(tmp_path):
-    """EI 2e7 N m^2, the fairlead surging 10 m in 27 s from rest, both codes from kanat's equilibrium,
+    """EI 2e6 N m^2, the fairlead surging 10 m in 27 s from rest, both codes from kanat's equilibrium,
     54 s; MoorDyn coupled every 2 ms (tests/test_lumped_driven.py's jumper). Top tension over the second
-    period: mean within 1 %, range and maximum within 3 %; the middle node's path within 2 % of its
-    excursion at every output (0.1 s)."""
+    period: mean within 1 %, range and maximum within 3 %; the middle node's path within 0.5 % of its
+    excursion at every output (0.1 s). Measured (the default scheme): mean -0.02 %, range +0.60 %,
+    maximum +0.04 % (42.1 kN, range 10.4 kN); every node within 1.0 cm of MoorDyn's all along, the
+    middle one's excursion 6.9 m. The line stays taut (8 kN at least); at EI 2e7 its sag goes slack
+    from 17 s (the beam would carry compression there, which neither code's elements take), the two
+    codes part there by up to 0.6 m, and kanat's run snaps (107 kN) at 31.6 s where MoorDyn's does not
+    (docs/lumped.md)."""
     moordyn = pytest.importorskip("moordyn")
     path = tmp_path / "jumper.dat"
-    path.write_text(JUMPER.format(ei=2e7, segments=SEGMENTS))
+    path.write_text(JUMPER.format(ei=2e6, segments=SEGMENTS))
     duration = 2 * PERIOD
     case = kanat_case(path, duration, motion=True)
     model = LumpedModel(case)
@@ -161,4 +166,19 @@ def test_a_driven_line_with_bending_moves_as_moordyn_s(tmp_path):
     path_theirs = shapes[:, MIDDLE]
     excursion = np.ptp(path_theirs, axis=0).max()
     assert excursion > 5.0
-    assert np.abs(path_ours - path_theirs).max() < 0.02 * excursion
+    assert np.abs(path_ours - path_theirs).max() < 0.005 * excursion
+
+
+def test_a_line_with_bending_whose_sag_goes_slack_says_so(tmp_path):
+    """The driven jumper at EI 2e7 N m^2 (20 s): its sag goes slack at 17 s, where the two codes part
+    (the driven test's docstring); the run says so in its notes, where the taut EI 2e6 line's does not."""
+    notes = {}
+    for stiffness in (2e6, 2e7):
+        path = tmp_path / f"jumper_{stiffness:g}.dat"
+        path.write_text(JUMPER.format(ei=stiffness, segments=SEGMENTS))
+        with quiet():
+            ds = api.run(kanat_case(path, 20.0, motion=True), scheme="rk4").dataset
+        slack = ds.segment_tension.values.min()
+        notes[stiffness] = ("went slack" in ds.attrs["notes"], slack)
+    assert notes[2e6][0] is False and notes[2e6][1] > 5e3
+    assert notes[2e7][0] is True and notes[2e7][1] == 0.0

@@ -134,7 +134,9 @@ def test_the_clamp_turns_with_the_vessel(tmp_path):
     """The cantilever clamped along the vessel's x axis at the vessel point (0, 0, -5), the vessel pitched
     10 deg at t = 0 (a harmonic pitch at its crest): the beam leaves along the pitched axis ``t = R e_x``,
     its tip at ``L t`` from the root plus the Euler-Bernoulli deflection of the weight's normal part
-    ``w cos(10 deg) L^4 / (8 EI)`` (0.6 % at 40 segments, ~1e-4 nonlinear)."""
+    ``w cos(10 deg) L^4 / (8 EI)``: measured -0.17 % (the weight's axial part pulls the beam taut, by
+    about ``w L sin(10 deg) L^2 / EI`` of the deflection, 0.2 %) and 0.9 mm short along ``t`` (the
+    deflection's foreshortening)."""
     motion = [{"dof": "pitch", "amplitude": 10.0, "period": 20.0, "phase_deg": 90.0}]
     net, x, _ = solved(cantilever(tmp_path, 40, top=[0.0, 0.0, -5.0], motion=motion))
     R = rotation_matrix(0.0, math.radians(10.0), 0.0)
@@ -145,7 +147,7 @@ def test_the_clamp_turns_with_the_vessel(tmp_path):
     line = x[net.node_index]
     np.testing.assert_allclose(line[0], root, atol=1e-12)
     tip = line[-1] - root
-    assert tip @ normal == pytest.approx(deflection, rel=2e-3)
+    assert tip @ normal == pytest.approx(deflection, rel=3e-3)
     assert tip @ t == pytest.approx(LENGTH, abs=2e-3)
 
 
