@@ -102,7 +102,8 @@ def tensioned_beam(x, weight, tension, stiffness, span, clamped_b):
 
     def row(at, order):
         c, s = math.cosh(lam * at), math.sinh(lam * at)
-        return [([1.0, at, c, s], weight * at**2 / (2 * tension)), ([0.0, 1.0, lam * s, lam * c], weight * at / tension),
+        return [([1.0, at, c, s], weight * at**2 / (2 * tension)),
+                ([0.0, 1.0, lam * s, lam * c], weight * at / tension),
                 ([0.0, 0.0, lam**2 * c, lam**2 * s], weight / tension)][order]
 
     rows = [row(0.0, 0), row(0.0, 1), row(span, 0), row(span, 1 if clamped_b else 2)]

@@ -74,7 +74,7 @@ def clamped_ends(case, rows) -> list[tuple[Clamp, object, object]]:
                 where.kind == "body" and case.bodies[where.name].dof == 6)
             if not holder:
                 raise CaseError([Problem(key_path(key), f"a clamped end needs something that holds a direction: "
-                                         f"an anchor, the vessel or a dof 6 body, not {_described(case, where)}; "
+                                         f"an anchor, the vessel or a dof 6 body, not {_described(where)}; "
                                          "drop clamped (a pinned end) or end the cable there")])
             element = 0 if end == 0 else len(grid.s) - 2
             section = cable.sections[grid.section[element]]
@@ -99,7 +99,7 @@ def given_directions(case, rows) -> dict:
     return out
 
 
-def _described(case, where) -> str:
+def _described(where) -> str:
     if where.kind == "body":
         return f"body '{where.name}' (dof 3)"
     return f"point '{where.name}'" if where.kind == "point" else "a free end"

@@ -32,8 +32,8 @@ from .vessel import (
 
 __all__ = [
     "Accelerate", "Attachment", "Body", "Cable", "CableEnd", "CableSection", "Case", "Current",
-    "ComponentWaves", "ElasticLaw", "EndFixity", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT", "LineType",
-    "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
+    "ComponentWaves", "ElasticLaw", "EndFixity", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT",
+    "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
     "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy", "Stabilizer",
     "Straight", "TrackSegment", "Turn", "Vessel", "VesselMotion", "VesselPitch", "Waves", "WinchStep",
 ]
