@@ -269,11 +269,14 @@ class LumpedModel:
                 "(stiffness x contact area)); raise environment.seabed.stiffness or damping, or reduce dt")
 
     def _slack_with_bending(self, elements) -> str | None:
-        """A note when elements of a line type with bending stiffness went slack: they carry no
-        compression, which the beam they model would (a steep jumper with EI 2e7 N m^2, driven, parts
-        from MoorDyn's run after its sag goes slack: docs/lumped.md)."""
-        types = sorted({self.net.el_type[k] for k in np.unique(elements)
-                        if self.case.line_types[self.net.el_type[k]].bending_stiffness > 0.0})
+        """A note when elements of a line type with bending stiffness went slack (but for those at a free
+        end, which carry next to nothing anyway): they carry no compression, which the beam they model
+        would (a steep jumper with EI 2e7 N m^2, driven, parts from MoorDyn's run after its sag goes
+        slack: docs/lumped.md)."""
+        net = self.net
+        at_free_end = (net.kinds[net.el_i] == "free") | (net.kinds[net.el_j] == "free")   # no pull there anyway
+        types = sorted({net.el_type[k] for k in np.unique(elements)
+                        if not at_free_end[k] and self.case.line_types[net.el_type[k]].bending_stiffness > 0.0})
         if not types:
             return None
         return (f"elements of line type '{types[0]}' (bending stiffness) went slack: the lumped model's elements "
