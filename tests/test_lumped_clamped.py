@@ -224,3 +224,26 @@ def test_the_clamp_holds_the_root_along_the_pitching_vessel(tmp_path):
     assert np.ptp(pitch) > 0.06
     assert angle.max() < 1.5e-3
     np.testing.assert_allclose(implicit.position.values, fused.position.values, atol=1e-4)
+
+
+def test_a_clamp_on_a_rigid_body_is_a_fairlead_of_the_body(tmp_path):
+    """At a ``dof: 6`` body (pitched 10 deg) a clamp along the body's x axis puts its guide node among the
+    body's fairleads at the end's offset less ``l0 e_x`` in body axes, so it turns with the body and the
+    clamp's moment reaches it; at t = 0 the guide lies ``l0 R e_x`` behind the end."""
+    body = {"dof": 6, "mass": 100.0, "net_buoyancy": 0.0, "position": [0.0, 0.0, -10.0], "inertia": [10.0, 10.0, 10.0],
+            "orientation_deg": [0.0, 10.0, 0.0]}
+    offset = [1.0, 0.0, 0.0]
+    case = case_of(tmp_path, {"length": 10.0, "segments": 10, "from": {"body": "b", "offset": offset},
+                              "to": {"anchor": [12.0, 0.0, -20.0]}, "end_a": {"clamped": True, "direction": [1.0, 0, 0]}},
+                   {"weight_in_water": 1.0, "axial_stiffness": 1e6, "bending_stiffness": 100.0}, bodies={"b": body})
+    net = build_network(case)
+    rigid = net.rigid
+    guide = int(np.flatnonzero(net.kinds == "clamp")[0])
+    row = int(np.flatnonzero(rigid.fairlead_node == guide)[0])
+    np.testing.assert_allclose(rigid.fairlead_offset[row], [0.0, 0.0, 0.0], atol=1e-12)     # offset - 1 m e_x
+    R = rotation_matrix(0.0, math.radians(10.0), 0.0)
+    end = net.node_index[0]
+    np.testing.assert_allclose(net.x_guess[end] - net.x_guess[guide], R @ [1.0, 0.0, 0.0], atol=1e-12)
+    before, node, after = (part[-1] for part in net.bend[:3])
+    assert (before, node, after) == (guide, end, net.node_index[1])
+    assert net.bend[3][-1] == pytest.approx(2 * 100.0 / 1.0)                                # 2 EI / l0
