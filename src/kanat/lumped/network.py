@@ -4,9 +4,10 @@ Each cable is cut into elements by :func:`kanat.lumped.grid.cable_grid` (every s
 and every inline attachment is a node). Cable ends attached to the same 3-DOF body or point
 share one node; the vessel's tow point is one prescribed node and each vessel fairlead
 (``{vessel: [x, y, z]}``) another, moved by the track and ``vessel.motion``; each anchor end
-is its own prescribed node; a free end is a free node. A 6-DOF body is two *pseudo-nodes*
-among the generalized coordinates — its reference point ``r`` and its Euler angles
-``(roll, pitch, yaw)`` — and each of its fairleads a node prescribed by them
+is its own prescribed node; a free end is a free node. A clamped end (``cables[].end_a/end_b``)
+adds a prescribed *guide* node one element behind it (:mod:`kanat.lumped.clamps`). A 6-DOF body is
+two *pseudo-nodes* among the generalized coordinates — its reference point ``r`` and its Euler
+angles ``(roll, pitch, yaw)`` — and each of its fairleads a node prescribed by them
 (:mod:`kanat.lumped.rigid`). Generalized coordinates are the positions of the free nodes.
 
 Element properties are stored per element as arrays, ready for the kernels
@@ -336,11 +337,10 @@ def _float_guess(builder: _Builder, node: int, known: np.ndarray, length: float)
 
 
 def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]], clamped: dict) -> None:
-    """Place unknown end nodes a cable length from a known one: along the known end's clamp
+    """Place unknown end nodes a cable length from a known one: up towards the surface and along
+    the current for a floating body or point (:func:`_float_guess`); along the known end's clamp
     direction where the case gives one (``clamped``: node to global unit direction; the cable then
-    lies straight, as a beam would start), up towards
-    the surface and along the current for a floating body or point (:func:`_float_guess`), else
-    astern and down."""
+    lies straight, as a beam would start); else astern and down."""
     pos = builder.positions
     for _ in range(len(ends) + 1):
         changed = False
