@@ -16,6 +16,7 @@ from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.integrators import RK4
 from kanat.lumped.mooring_outputs import anchor_forces
 from kanat.lumped.network import build_network
+from kanat.model import Case
 from kanat.physics.motion import rotation_matrix
 
 from helpers import quiet
@@ -172,14 +173,35 @@ def test_the_statics_front_door_takes_a_clamped_case(tmp_path):
     ("point", "point 'joint'"),
 ])
 def test_an_end_that_holds_no_direction_cannot_be_clamped(tmp_path, end, message):
+    """Refused where the case is validated, at its key, and by the network itself."""
     to = "free" if end == "free" else {"point": "joint"}
-    extra = {} if end == "free" else {"points": {"joint": {"mass": 1.0}}}
-    case = case_of(tmp_path, {"length": 10.0, "segments": 5, "from": {"anchor": [0.0, 0.0, -5.0]}, "to": to,
-                              "end_b": {"clamped": True}},
-                   {"weight_in_water": 1.0, "axial_stiffness": 1e6, "bending_stiffness": 10.0}, **extra)
-    with pytest.raises(CaseError, match=message) as caught:
-        build_network(case)
-    assert "cables[0].end_b.clamped" in str(caught.value)
+    data = {"name": "beam", "model": "lumped", "environment": {"depth": 200.0},
+            "line_types": {"beam": {"diameter": 0.05, "mass": 0.5, "weight_in_water": 1.0, "axial_stiffness": 1e6,
+                                    "bending_stiffness": 10.0}},
+            "points": {} if end == "free" else {"joint": {"mass": 1.0}},
+            "cables": [{"name": "beam", "line_type": "beam", "length": 10.0, "segments": 5,
+                        "from": {"anchor": [0.0, 0.0, -5.0]}, "to": to, "end_b": {"clamped": True}}],
+            "simulation": {"duration": 1.0, "output_dt": 0.1}}
+    path = tmp_path / "beam.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    for attempt in (lambda: load_case(path), lambda: build_network(Case.model_validate(data))):
+        with pytest.raises(CaseError, match=message) as caught:
+            attempt()
+        assert "cables[0].end_b.clamped" in str(caught.value)
+
+
+def test_a_clamp_without_bending_stiffness_is_a_warning(tmp_path):
+    path = tmp_path / "beam.yaml"
+    path.write_text(yaml.safe_dump({
+        "name": "beam", "model": "lumped", "environment": {"depth": 200.0},
+        "line_types": {"beam": {"diameter": 0.05, "mass": 0.5, "weight_in_water": 1.0, "axial_stiffness": 1e6}},
+        "cables": [{"name": "beam", "line_type": "beam", "length": 10.0, "segments": 5,
+                    "from": {"anchor": [0.0, 0.0, -5.0]}, "to": {"anchor": [9.0, 0.0, -5.0]},
+                    "end_a": {"clamped": True}}],
+        "simulation": {"duration": 1.0, "output_dt": 0.1}}, sort_keys=False))
+    with pytest.warns(UserWarning, match=r"cables\[0\]\.end_a\.clamped.*no bending_stiffness, so the clamp holds nothing"):
+        case = load_case(path)
+    assert len(build_network(case).bend[1]) == 0
 
 
 def test_a_direction_needs_a_clamp(tmp_path):
