@@ -276,6 +276,21 @@ class LumpedModel:
                 f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight / "
                 "(stiffness x contact area)); raise environment.seabed.stiffness or damping, or reduce dt")
 
+    def _slack_with_bending(self, elements) -> str | None:
+        """A note when elements of a line type with bending stiffness went slack (but for those at a free
+        end, which carry next to nothing anyway): they carry no compression, which the beam they model
+        would (a steep jumper with EI 2e7 N m^2, driven, parts from MoorDyn's run after its sag goes
+        slack: docs/lumped.md)."""
+        net = self.net
+        at_free_end = (net.kinds[net.el_i] == "free") | (net.kinds[net.el_j] == "free")   # no pull there anyway
+        types = sorted({net.el_type[k] for k in np.unique(elements)
+                        if not at_free_end[k] and self.case.line_types[net.el_type[k]].bending_stiffness > 0.0})
+        if not types:
+            return None
+        return (f"elements of line type '{types[0]}' (bending stiffness) went slack: the lumped model's elements "
+                "carry no compression, so a compressed part of a line with EI is no beam there (it shortens "
+                "freely); the snap events list them")
+
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state: LumpedState) -> tuple[dict, dict]:
         events = state.snaps.events()
@@ -283,6 +298,9 @@ class LumpedModel:
                      "event_segment": (("event",), events["element"]),
                      "event_peak_tension": (("event",), events["peak_tension"]),
                      "event_rise_rate": (("event",), events["rise_rate"])}
+        slack_bent = self._slack_with_bending(events["element"])
+        if slack_bent:
+            self.notes.append(slack_bent)
         explicit = int(state.scheme.get("explicit", 0))
         if explicit:
             self.notes.append(f"{explicit} rk4 steps at the explicit safe step where the implicit Newton iteration "

@@ -30,7 +30,7 @@ def contact_length(net, normal_force: np.ndarray, anchors_on_seabed=None) -> np.
     seabed (``anchors_on_seabed`` (n_anchor,)) count as touching."""
     touching = (normal_force > 0.0).astype(float)
     if anchors_on_seabed is not None:
-        touching[net.anchor_nodes[np.asarray(anchors_on_seabed, bool)]] = 1.0
+        touching[net.anchors[np.asarray(anchors_on_seabed, bool)]] = 1.0
     per_element = net.el_length * 0.5 * (touching[net.el_i] + touching[net.el_j])
     out = np.zeros(len(net.cable_names))
     for c, first in enumerate(net.cable_first_element):
@@ -75,9 +75,13 @@ def attitudes(net, x) -> np.ndarray:
 def anchor_forces(net, F, normal_force, on_seabed, friction: float = 0.0) -> np.ndarray:
     """Force of the lines on each anchor (n_anchor, 3) [N] (module docstring); ``on_seabed``
     (n_anchor,) whether each anchor lies on the seabed; ``friction`` the axial coefficient, which
-    on a resting half element also relieves the anchor of up to ``mu w L0 / 2`` of horizontal pull."""
-    out = F[net.anchor_nodes].reshape(-1, 3).copy()
-    for a, node in enumerate(net.anchor_nodes):
+    on a resting half element also relieves the anchor of up to ``mu w L0 / 2`` of horizontal pull. The
+    bending force on a clamped anchor's guide node (:mod:`kanat.lumped.clamps`) is the anchor's too."""
+    out = F[net.anchors].reshape(-1, 3).copy()
+    for guide in net.anchor_nodes[len(net.anchor_names):]:
+        owner = _clamped_node(net, guide)
+        out[np.flatnonzero(net.anchors == owner)] += F[guide]
+    for a, node in enumerate(net.anchors):
         if not on_seabed[a]:
             continue
         for ends, others in ((net.el_i, net.el_j), (net.el_j, net.el_i)):
@@ -91,14 +95,20 @@ def anchor_forces(net, F, normal_force, on_seabed, friction: float = 0.0) -> np.
     return out
 
 
+def _clamped_node(net, guide: int) -> int:
+    """The end node whose clamp ``guide`` is (the middle of the guide's bending triple)."""
+    before, node, after = net.bend[:3]
+    return int(node[np.flatnonzero((before == guide) | (after == guide))[0]])
+
+
 def anchors_on_seabed(net, environment) -> np.ndarray:
     """Whether each anchor (n_anchor,) lies on the seabed (within 1e-6 of the depth), none without one."""
     from kanat.physics.seabed import seabed_of
 
     seabed = seabed_of(environment)
     if seabed is None:
-        return np.zeros(len(net.anchor_nodes), bool)
-    return seabed.penetration(net.anchor_position) > -1e-6 * seabed.depth
+        return np.zeros(len(net.anchor_names), bool)
+    return seabed.penetration(net.anchor_position[:len(net.anchor_names)]) > -1e-6 * seabed.depth
 
 
 def allowed_penetration(net, environment) -> np.ndarray:

@@ -4,9 +4,10 @@ Each cable is cut into elements by :func:`kanat.lumped.grid.cable_grid` (every s
 and every inline attachment is a node). Cable ends attached to the same 3-DOF body or point
 share one node; the vessel's tow point is one prescribed node and each vessel fairlead
 (``{vessel: [x, y, z]}``) another, moved by the track and ``vessel.motion``; each anchor end
-is its own prescribed node; a free end is a free node. A 6-DOF body is two *pseudo-nodes*
-among the generalized coordinates — its reference point ``r`` and its Euler angles
-``(roll, pitch, yaw)`` — and each of its fairleads a node prescribed by them
+is its own prescribed node; a free end is a free node. A clamped end (``cables[].end_a/end_b``)
+adds a prescribed *guide* node one element behind it (:mod:`kanat.lumped.clamps`). A 6-DOF body is
+two *pseudo-nodes* among the generalized coordinates — its reference point ``r`` and its Euler
+angles ``(roll, pitch, yaw)`` — and each of its fairleads a node prescribed by them
 (:mod:`kanat.lumped.rigid`). Generalized coordinates are the positions of the free nodes.
 
 Element properties are stored per element as arrays, ready for the kernels
@@ -28,12 +29,13 @@ Nodal arrays for the seabed contact (:mod:`kanat.physics.contact`): the contact 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from kanat.errors import CaseError, Problem
 from kanat.lumped.bending import bending_triples
+from kanat.lumped.clamps import clamped_ends, given_directions, place_guides, vessel_start
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.model.paths import key_path
@@ -43,7 +45,7 @@ from kanat.physics.seabed import seabed_of
 POLYNOMIAL, TABLE = 0, 1
 GUESS_STRETCH = 1.0 + 1e-4   # the first guess stretches every cable by this factor
 VESSEL_GUESS_DIRECTION = np.array([-1.0, 0.0, -1.0]) / math.sqrt(2.0)  # astern and down
-PRESCRIBED = ("vessel", "anchor", "fairlead")
+PRESCRIBED = ("vessel", "anchor", "fairlead", "clamp")
 BUOY_GUESS_DEPTH = 0.02      # a submerged float's first guess is at least this fraction of the depth down
 
 
@@ -62,7 +64,9 @@ class Network:
         Prescribed vessel nodes (tow point and fairleads); ``vessel_offset`` (k, 3) their lever
         arms in vessel axes.
     anchor_nodes, anchor_position, anchor_names
-        Anchors, their positions (k, 3) and names ``cable.from`` / ``cable.to``.
+        Fixed nodes and their positions (k, 3): the anchors, named ``cable.from`` / ``cable.to`` in
+        ``anchor_names``, then the guide nodes of clamped anchor ends (:mod:`kanat.lumped.clamps`);
+        :attr:`anchors` are the anchors alone.
     x_guess : ndarray, shape (n, 3)
         Initial positions (cables sagging between guessed ends; Euler angles on ``body_rot``).
     node_mass, node_added_mass : ndarray, shape (n,)
@@ -97,7 +101,8 @@ class Network:
     names : dict
         Node of each named body, point and shared end.
     bend : tuple (before, node, after, k, l)
-        The interior nodes with bending stiffness (:func:`kanat.lumped.bending.bending_triples`).
+        The interior nodes with bending stiffness (:func:`kanat.lumped.bending.bending_triples`), then
+        the clamped ends' triples with their guide nodes (:mod:`kanat.lumped.clamps`).
     """
 
     free: np.ndarray
@@ -161,6 +166,11 @@ class Network:
     @property
     def n_elements(self) -> int:
         return len(self.el_i)
+
+    @property
+    def anchors(self) -> np.ndarray:
+        """The anchors' nodes (``anchor_nodes`` without the clamps' guides), in ``anchor_names``' order."""
+        return self.anchor_nodes[:len(self.anchor_names)]
 
     def where(self, node: int) -> str:
         """``cable 'x' node k`` for an internal node, for messages."""
@@ -284,11 +294,16 @@ class _Builder:
 
 
 def _vessel_guess(case, arm) -> np.ndarray:
-    """A vessel point's place at t = 0 (the track's, or the arm itself without a track)."""
-    if not case.vessel.track:
-        return np.asarray(arm, float)
-    from kanat.vessel.track import VesselTrack
-    return VesselTrack.from_model(case.vessel).state(0.0, arm).position
+    """A vessel point's place at t = 0: the track's (or the arm itself without a track), moved by the
+    prescribed motion's displacement at t = 0 turned by the heading (as :class:`LumpedSystem` places it)."""
+    arm = np.asarray(arm, float)
+    place = arm
+    if case.vessel.track:
+        from kanat.vessel.track import VesselTrack
+        place = VesselTrack.from_model(case.vessel).state(0.0, arm).position
+    heading, q = vessel_start(case)
+    moved = q[:3] + rotation_matrix(*q[3:]) @ arm - arm
+    return place + rotation_matrix(0.0, 0.0, heading) @ moved
 
 
 def _buoyant(builder: _Builder, node: int) -> bool:
@@ -326,9 +341,11 @@ def _float_guess(builder: _Builder, node: int, known: np.ndarray, length: float)
     return known + np.array([run * direction[0], run * direction[1], rise])
 
 
-def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> None:
-    """Place unknown end nodes a cable length from a known one: astern and down, or up towards
-    the surface and along the current for a floating body or point (:func:`_float_guess`)."""
+def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]], clamped: dict) -> None:
+    """Place unknown end nodes a cable length from a known one: up towards the surface and along
+    the current for a floating body or point (:func:`_float_guess`); along the known end's clamp
+    direction where the case gives one (``clamped``: node to global unit direction; the cable then
+    lies straight, as a beam would start); else astern and down."""
     pos = builder.positions
     for _ in range(len(ends) + 1):
         changed = False
@@ -337,6 +354,8 @@ def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]]) -> N
                 if pos[known] is not None and pos[unknown] is None:
                     if _buoyant(builder, unknown):
                         pos[unknown] = _float_guess(builder, unknown, pos[known], length)
+                    elif known in clamped:              # straight along the clamp's given direction
+                        pos[unknown] = pos[known] + GUESS_STRETCH * length * clamped[known]
                     else:
                         pos[unknown] = pos[known] + 0.9 * length * VESSEL_GUESS_DIRECTION
                     changed = True
@@ -401,7 +420,7 @@ def build_network(case) -> Network:
         cable_nodes.append(nodes)
         ends.append((first, last, cable.length))
         rows.append((nodes, cable, grid))
-    _guess_positions(b, ends)
+    _guess_positions(b, ends, given_directions(case, rows))
     x = np.zeros((len(b.kinds), 3))
     for nodes, cable, grid in rows:
         x[nodes] = sagged_line(b.positions[nodes[0]], b.positions[nodes[-1]], cable.length, len(grid.s) - 1,
@@ -410,9 +429,24 @@ def build_network(case) -> Network:
     if seabed is not None:                       # a sag that would dip below the seabed lies on it
         loose = ~np.isin(np.array(b.kinds), PRESCRIBED)
         x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
+    x, guides, clamp_triples = place_guides(b, x, clamped_ends(case, rows))
     rigid = rigid_bodies(case, b)
     x = np.vstack([x, rigid.guess]) if rigid.count else x
-    return _finish(case, b, laws, rows, cable_nodes, x, rigid, env.water_density, env.gravity)
+    net = _finish(case, b, laws, rows, cable_nodes, x, rigid, env.water_density, env.gravity)
+    return _with_clamps(net, guides, clamp_triples)
+
+
+def _with_clamps(net: Network, guides: list, triples: list) -> Network:
+    """``net`` with the clamps' guide nodes (:mod:`kanat.lumped.clamps`): anchor guides after the
+    anchors in ``anchor_nodes``, the clamps' triples after the interior nodes' in ``bend``."""
+    if not triples:
+        return net
+    columns = list(zip(*triples))
+    bend = tuple(np.concatenate([part, np.asarray(extra, dtype=part.dtype)]) for part, extra in zip(net.bend, columns))
+    nodes = np.array([node for node, _ in guides], dtype=np.int64)
+    positions = np.array([position for _, position in guides], dtype=float).reshape(-1, 3)
+    return replace(net, bend=bend, anchor_nodes=np.concatenate([net.anchor_nodes, nodes]),
+                   anchor_position=np.vstack([net.anchor_position, positions]))
 
 
 def _element_arrays(case, rows, laws, rho, g):

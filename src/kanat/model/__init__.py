@@ -4,7 +4,7 @@ Every class is a frozen pydantic model whose field names are the keys of the YAM
 case format (``docs/reference/case-format.md``); read case files with
 :func:`kanat.io.case_file.load_case`.
 """
-from .cable import Attachment, Cable, CableEnd, CableSection
+from .cable import Attachment, Cable, CableEnd, CableSection, EndFixity
 from .case import Case
 from .components import Body, ElasticLaw, LineType, Point, SurfaceBuoy
 from .environment import ComponentWaves, Current, Environment, JonswapWaves, RegularWaves, Seabed, Waves
@@ -32,8 +32,8 @@ from .vessel import (
 
 __all__ = [
     "Accelerate", "Attachment", "Body", "Cable", "CableEnd", "CableSection", "Case", "Current",
-    "ComponentWaves", "ElasticLaw", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT", "LineType",
-    "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
+    "ComponentWaves", "ElasticLaw", "EndFixity", "Environment", "HarmonicMotion", "Heading", "JonswapWaves", "KNOT",
+    "LineType", "PitchModel", "Point", "RegularWaves", "SEGMENT_TYPES", "Seabed", "Simulation", "SpeedStep",
     "SphereDimensional", "SphereDimensionless", "SphereTwoCables", "SurfaceBuoy", "Stabilizer",
     "Straight", "TrackSegment", "Turn", "Vessel", "VesselMotion", "VesselPitch", "Waves", "WinchStep",
 ]

@@ -9,6 +9,10 @@ offset: [x, y, z]}`` (a fairlead in the body's axes). All forms become a typed
 A cable is one line type (``line_type``, ``length``, ``segments``) or several
 ``sections`` from ``from`` to ``to``; either way it exposes the normalised ``sections``
 (one for a single-type cable), the total ``length`` and the total ``segments``.
+
+With bending stiffness an end is pinned (moment-free) unless ``end_a`` (the ``from`` end) or
+``end_b`` (the ``to`` end) says ``{clamped: true}``: the line then leaves its anchor, the vessel
+or a 6-DOF body along a direction held by it (:class:`EndFixity`, :mod:`kanat.lumped.clamps`).
 """
 from __future__ import annotations
 
@@ -89,6 +93,39 @@ class CableEnd(KanatModel):
         if self.kind in _NAMED_KINDS:
             return f"{self.name} at {xyz}" if xyz else self.name
         return self.kind
+
+
+class EndFixity(KanatModel):
+    """How a cable end holds the line's direction (with ``bending_stiffness``).
+
+    Attributes
+    ----------
+    clamped : bool
+        False: pinned, moment-free (the default). True: the line leaves the end along
+        ``direction``, which turns with the vessel or the 6-DOF body the end is on.
+    direction : tuple of 3 float or None
+        The clamp's direction, pointing from the end into the line: in the global frame at an
+        anchor, in vessel axes at a vessel end, in body axes at a body end. None: along the
+        line's end element in the network's first guess (the line laid straight or sagging
+        between its end positions, on the seabed where it would dip below it).
+    """
+
+    clamped: bool = Field(False, description="the line leaves this end clamped: the end holds its "
+                          "direction (with bending_stiffness; an anchor, the vessel or a dof 6 body); "
+                          "false: pinned, moment-free")
+    direction: Vector3 | None = Field(
+        None, description="clamp direction from the end into the line: global at an anchor, vessel "
+                          "axes at a vessel end, body axes at a body end; default: along the line's "
+                          "end element in the first guess")
+
+    @model_validator(mode="after")
+    def _direction(self) -> EndFixity:
+        if self.direction is not None:
+            if not self.clamped:
+                raise ValueError("a direction needs clamped: true (a pinned end holds no direction)")
+            if sum(c * c for c in self.direction) == 0.0:
+                raise ValueError("direction is the zero vector; give the direction the line leaves the end")
+        return self
 
 
 def _point_from_text(text: str) -> dict[str, Any]:
@@ -275,6 +312,8 @@ class Cable(KanatModel):
         First end (``s = 0``), written ``from`` in the case file.
     to : CableEnd
         Second end (``s = length``).
+    end_a, end_b : EndFixity
+        Whether the ``from`` and ``to`` ends are pinned (default) or clamped.
     """
 
     name: str
@@ -292,6 +331,10 @@ class Cable(KanatModel):
                         "unstretched arclength s from 'from', in order of s")
     from_: CableEnd = Field(alias="from", description="first end (s = 0)")
     to: CableEnd = Field(description="second end (s = length)")
+    end_a: EndFixity = Field(EndFixity(), description="bending at the 'from' end: {clamped: true} "
+                             "holds the line's direction there (default pinned)")
+    end_b: EndFixity = Field(EndFixity(), description="bending at the 'to' end: {clamped: true} "
+                             "holds the line's direction there (default pinned)")
 
     @field_validator("line_type")
     @classmethod

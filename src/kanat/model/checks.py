@@ -476,6 +476,23 @@ def check_attachments(case: Case, out: Findings) -> None:
                             "is ignored")
 
 
+def check_clamps(case: Case, out: Findings) -> None:
+    """A clamped end (``cables[].end_a/end_b``) needs something that holds a direction (an anchor, the
+    vessel or a dof 6 body) and bending stiffness at that end, without which it holds nothing."""
+    for i, cable in enumerate(case.cables):
+        for key, end, section in (("end_a", cable.from_, cable.sections[0]), ("end_b", cable.to, cable.sections[-1])):
+            if not getattr(cable, key).clamped:
+                continue
+            rigid = end.kind == "body" and end.name in case.bodies and case.bodies[end.name].dof == 6
+            if end.kind not in ("anchor", "vessel") and not rigid:
+                what = "a free end" if end.kind == "free" else f"{end.kind} '{end.name}'"
+                out.error(("cables", i, key, "clamped"), f"a clamped end needs something that holds a direction: "
+                          f"an anchor, the vessel or a dof 6 body, not {what}; drop clamped (a pinned end)")
+            elif section.line_type in case.line_types and case.line_types[section.line_type].bending_stiffness <= 0:
+                out.warning(("cables", i, key, "clamped"), f"line type '{section.line_type}' has no "
+                            "bending_stiffness, so the clamp holds nothing: the end bends freely")
+
+
 def check_ignored_sections(case: Case, out: Findings) -> None:
     """Sections that the chosen model does not use."""
     if case.sphere_two_cables is not None and case.model != "statics":
@@ -603,7 +620,7 @@ sanity checks of :data:`CHECKS` (which assume numbers in range) are skipped."""
 CHECKS: tuple[Callable[[Case, Findings], None], ...] = (
     check_line_types, check_bodies, check_anchors, check_positions_above_seabed, check_fixed_span, check_hanging_loads,
     check_mooring_buoys, check_time_steps, check_element_length, check_waves, check_towing,
-    check_dimensions, check_sphere, check_pitch, check_attachments, check_ignored_sections,
+    check_dimensions, check_sphere, check_pitch, check_attachments, check_clamps, check_ignored_sections,
     check_support, check_scheme, check_track, check_sea, check_continuum_cable, check_lumped_network,
     check_run_length,
 )

@@ -212,6 +212,11 @@ def _line_type_key(key: str, test) -> Callable[[Case], list[Use]]:
     return uses
 
 
+def _clamped_ends(case: Case) -> list[Use]:
+    return [(("cables", i, key, "clamped"), "") for i, cable in enumerate(case.cables)
+            for key in ("end_a", "end_b") if getattr(cable, key).clamped]
+
+
 def _dimensional_drag(case: Case) -> list[Use]:
     return [(("line_types", name, key), "") for name, line in case.line_types.items()
             for key in ("drag_normal_coefficient", "drag_tangential_coefficient")
@@ -413,6 +418,10 @@ FEATURES: tuple[Feature, ...] = (
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),
             statics=YES, continuum=YES, lumped=YES,
             note={"statics": "statics solves a case with bending by the lumped model's equilibrium"}),
+    Feature("clamped_end", "a clamped cable end", _clamped_ends,
+            statics=YES, continuum=NO, lumped=YES,
+            note={"statics": "statics solves a case with bending by the lumped model's equilibrium",
+                  "continuum": "the continuum model's cable ends are pinned"}),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
             statics=IGNORED, continuum=YES, lumped=YES,
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),
