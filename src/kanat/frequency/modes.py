@@ -1,0 +1,103 @@
+"""Natural modes of the lumped system about its equilibrium (docs/frequency.md).
+
+Undamped free motions ``u = phi cos(omega t)`` of the linearised system
+(:mod:`kanat.frequency.linearize` eq. 1) solve the generalized eigenproblem::
+
+    (1)  K phi = omega^2 M phi
+
+with ``M`` symmetric positive definite. For a symmetric ``K`` (conservative loads) the lowest
+modes come from :func:`scipy.linalg.eigh` (up to :data:`DENSE_LIMIT` degrees of freedom) or
+from :func:`scipy.sparse.linalg.eigsh` in shift-invert mode about ``sigma = 0`` (ARPACK; Ericsson
+& Ruhe 1980); a ``K`` whose asymmetry exceeds :data:`SYMMETRY_TOLERANCE` (drag in a current,
+a towed line) is solved as the non-symmetric problem by :func:`scipy.linalg.eig`, the complex
+eigenvalues' real parts kept. Mode shapes are scaled so that their largest displacement
+component is +1.
+"""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import scipy.linalg as la
+import scipy.sparse.linalg as spla
+import xarray as xr
+
+from kanat.errors import CaseWarning
+from kanat.frequency.linearize import Linearization, linearize
+
+DENSE_LIMIT = 1500           # degrees of freedom solved densely (eigh of 1500 x 1500: ~1 s)
+SYMMETRY_TOLERANCE = 1e-6    # ||K - K^T|| / ||K|| above which K is treated as non-symmetric
+DIRECTIONS = ("x", "y", "z")
+
+
+def eigenmodes(lin: Linearization, n: int = 10) -> tuple[np.ndarray, np.ndarray]:
+    """The ``n`` lowest modes of eq. (1): eigenvalues ``omega^2`` (n,) ascending [rad^2/s^2] and
+    mode shapes (n_dof, n), each scaled to a largest component of +1."""
+    K, M = lin.stiffness, lin.mass
+    size = K.shape[0]
+    n = min(int(n), size)
+    if n < 1:
+        raise ValueError(f"the number of modes must be at least 1 (got {n})")
+    symmetric = lin.asymmetry <= SYMMETRY_TOLERANCE
+    if symmetric:
+        K = 0.5 * (K + K.T)
+    if not symmetric:
+        values, vectors = la.eig(K.toarray(), M.toarray())
+        values, vectors = values.real, vectors.real
+    elif size <= DENSE_LIMIT or n >= size - 1:
+        values, vectors = la.eigh(K.toarray(), M.toarray(), subset_by_index=[0, n - 1])
+    else:
+        values, vectors = spla.eigsh(K.tocsc(), k=n, M=M.tocsc(), sigma=0.0, which="LM")
+    order = np.argsort(values)[:n]
+    values, vectors = values[order], vectors[:, order]
+    biggest = vectors[np.argmax(np.abs(vectors), axis=0), np.arange(n)]
+    return values, vectors / biggest
+
+
+def modes(case, n: int = 10) -> xr.Dataset:
+    """Natural frequencies and mode shapes of a case's lumped system about its equilibrium.
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+    n : int
+        How many modes, lowest first.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``natural_frequency(mode)`` [rad/s], ``period(mode)`` [s], ``eigenvalue(mode)``
+        (``omega^2`` [rad^2/s^2]; negative: a statically unstable direction, whose frequency is
+        NaN), ``direction(mode)`` (``x``, ``y`` or ``z``: the direction holding most of the
+        mode's kinetic energy ``phi^T M phi``), ``mode_shape(mode, node, xyz)`` (the cable
+        nodes of the result files, with coordinates ``cable`` and ``s``; zero at prescribed
+        nodes; largest component +1) and ``position(node, xyz)``, the equilibrium [m].
+    """
+    lin = linearize(case)
+    values, vectors = eigenmodes(lin, n)
+    if np.any(values < 0.0):
+        warnings.warn(f"{int(np.sum(values < 0.0))} mode(s) with a negative stiffness (omega^2 down to "
+                      f"{values.min():.3g} rad^2/s^2): the equilibrium is unstable in those directions",
+                      CaseWarning, stacklevel=2)
+    return _dataset(lin, values, vectors)
+
+
+def _dataset(lin: Linearization, values: np.ndarray, vectors: np.ndarray) -> xr.Dataset:
+    """The result of :func:`modes` (its docstring)."""
+    net, count = lin.net, len(values)
+    shapes = np.zeros((count, net.n_nodes, 3))
+    shapes[:, lin.node, lin.xyz] = vectors.T
+    omega = np.sqrt(np.where(values >= 0.0, values, np.nan))
+    energy = np.stack([np.einsum("ik,ik->k", vectors[lin.xyz == d], (lin.mass @ vectors)[lin.xyz == d])
+                       for d in range(3)])
+    idx = net.node_index
+    return xr.Dataset(
+        {"natural_frequency": ("mode", omega, {"units": "rad/s"}),
+         "period": ("mode", 2.0 * np.pi / omega, {"units": "s"}),
+         "eigenvalue": ("mode", values, {"units": "rad^2/s^2"}),
+         "direction": ("mode", np.array([DIRECTIONS[d] for d in np.argmax(energy, axis=0)])),
+         "mode_shape": (("mode", "node", "xyz"), shapes[:, idx], {"units": "1"}),
+         "position": (("node", "xyz"), lin.position[idx], {"units": "m"})},
+        coords={"mode": np.arange(1, count + 1), "xyz": list(DIRECTIONS),
+                "cable": ("node", net.node_cable.astype(str)), "s": ("node", net.node_s, {"units": "m"})},
+        attrs={"model": "modes", "stiffness_asymmetry": lin.asymmetry})
