@@ -1,0 +1,139 @@
+"""Natural modes of the linearised lumped system (kanat.modes, kanat.linearize; issue 26) against:
+
+* a taut string between two anchors: the lumped chain's exact discrete frequencies, transverse
+  ``2 sqrt(T / (mu_t l0 l)) sin(n pi / 2N)`` and axial ``2 sqrt(EA / (mu l0^2)) sin(n pi / 2N)``
+  (``l0`` the unstretched and ``l`` the stretched element, ``mu_t`` with the added mass), which
+  tend to ``n pi / L sqrt(T / mu_t)`` and ``n pi / L sqrt(EA / mu)``;
+* a heavy chain hanging from a fixed point: ``omega_n = j_0,n / 2 sqrt(g / L)`` (``j_0,n`` the
+  zeros of Bessel's J0; Rayleigh, Theory of Sound §331), converging as ``N^-2``;
+* a taut two-leg mooring of a buoy: the lowest mode's frequency against the period of the
+  nonlinear time domain's free oscillation (rk4) released from that mode at small amplitude.
+"""
+import math
+
+import numpy as np
+import pytest
+import scipy.special
+
+import kanat
+from kanat.frequency.modes import eigenmodes
+from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.stepping import step_info
+from kanat.lumped.system import LumpedSystem
+from kanat.model import Case
+from kanat.schemes import get_scheme
+from tests.helpers import zero_crossing_period
+
+G = 9.81
+
+
+def line_type(mass, weight, stiffness, added_mass=0.0, diameter=0.01):
+    return dict(diameter=diameter, mass=mass, weight_in_water=weight, axial_stiffness=stiffness,
+                added_mass=added_mass, drag_normal=0.0, drag_tangential=0.0)
+
+
+def make_case(cables, line, bodies=None, mass_matrix="lumped"):
+    return Case.model_validate(dict(model="lumped", line_types={"c": line}, bodies=bodies or {}, cables=cables,
+                                    simulation=dict(duration=1, dt=0.01, mass_matrix=mass_matrix)))
+
+
+def taut_string(segments, length=100.0, ea=1e5, tension=1000.0, mass=1.0, added=0.5):
+    span = length * (1 + tension / ea)
+    return make_case([dict(name="string", line_type="c", length=length, segments=segments,
+                           **{"from": "anchor:[0,0,-10]"}, to=f"anchor:[{span},0,-10]")],
+                     line_type(mass, 0.0, ea, added)), span
+
+
+def test_taut_string_frequencies_are_the_lumped_chains_exact_ones():
+    segments, length, ea, tension, mass, added = 20, 100.0, 1e5, 1000.0, 1.0, 0.5
+    case, span = taut_string(segments, length, ea, tension, mass, added)
+    lin = kanat.linearize(case)
+    values, vectors = eigenmodes(lin, n=3 * (segments - 1))
+    omega = np.sqrt(values)
+    n = np.arange(1, segments)
+    l0, l = length / segments, span / segments
+    transverse = 2 * np.sqrt(tension / ((mass + added) * l0 * l)) * np.sin(n * np.pi / (2 * segments))
+    axial = 2 * np.sqrt(ea / (mass * l0 * l0)) * np.sin(n * np.pi / (2 * segments))
+    exact = np.sort(np.r_[transverse, transverse, axial])
+    assert omega == pytest.approx(exact, rel=1e-6)
+    assert lin.asymmetry < 1e-6
+    assert abs(lin.damping).max() == 0.0                # no damping, and drag has no slope at rest
+
+
+def test_taut_string_tends_to_the_continuous_string():
+    case, span = taut_string(40)
+    ds = kanat.modes(case, n=4)
+    assert list(ds.direction.values) in (["y", "z", "y", "z"], ["z", "y", "z", "y"])
+    continuous = np.array([1, 1, 2, 2]) * math.pi * math.sqrt(1000.0 / (1.5 * 100.0 * span))   # mu_t per L0
+    assert ds.natural_frequency.values == pytest.approx(continuous, rel=1.1e-3)   # dispersion (n pi / 2N)^2 / 6
+    shape = ds.mode_shape.sel(mode=1).values
+    transverse = shape[:, 1] if ds.direction.values[0] == "y" else shape[:, 2]
+    xi = ds.s.values / 100.0
+    assert transverse == pytest.approx(np.sin(np.pi * xi), abs=1e-6)    # the discrete sine, exactly
+
+
+def hanging_chain(segments, length=10.0, mass_matrix="lumped"):
+    """A chain of 1 kg/m in vacuum fixed at the top with a 1 g weight at its foot (the weight's
+    ``position`` starts the equilibrium below the top)."""
+    bodies = {"foot": dict(mass=1e-3, net_buoyancy=-1e-3 * G, position=[0.0, 0.0, -1.0 - length])}
+    return make_case([dict(name="chain", line_type="c", length=length, segments=segments,
+                           **{"from": "anchor:[0,0,-1]"}, to="foot")], line_type(1.0, G, 1e6), bodies,
+                     mass_matrix)
+
+
+@pytest.mark.slow
+def test_hanging_chain_against_bessel_zeros_converges_at_second_order():
+    length = 10.0
+    exact = scipy.special.jn_zeros(0, 3) / 2 * math.sqrt(G / length)
+    errors = []
+    for segments in (20, 40):
+        ds = kanat.modes(hanging_chain(segments, length), n=6)
+        swing = ds.natural_frequency.values[ds.direction.values == "x"]
+        errors.append(np.abs(swing / exact - 1))
+    assert np.all(errors[1] < [0.001, 0.005, 0.015])
+    assert errors[0][1:] / errors[1][1:] == pytest.approx(4.0, rel=0.1)    # modes 2, 3: N^-2
+
+
+def test_consistent_mass_is_the_time_domains():
+    """The consistent mass matrix of a straight string: rows sum to each node's share of the line's
+    mass, ``mu_t l0`` across it and ``mu l0`` along it (eq. 9 conserves mass)."""
+    case, _ = taut_string(10)
+    lin = kanat.linearize(case.replace({"simulation.mass_matrix": "consistent"}))
+    rows = np.asarray(lin.mass.sum(axis=1)).ravel().reshape(-1, 3)
+    assert rows[1:-1] == pytest.approx(np.tile([1.0 * 10, 1.5 * 10, 1.5 * 10], (7, 1)), rel=1e-9)
+    assert (lin.mass - lin.mass.T).count_nonzero() == 0
+
+
+def buoy_mooring():
+    """A buoy of 2 kN net buoyancy on two taut legs to anchors 36 m apart, 24 m below it."""
+    leg = dict(line_type="c", length=30.0, segments=10)
+    return make_case([dict(name="west", **leg, **{"from": "anchor:[-18,0,-44]"}, to="buoy"),
+                      dict(name="east", **leg, **{"from": "anchor:[18,0,-44]"}, to="buoy")],
+                     line_type(5.0, 10.0, 1e5, added_mass=2.0, diameter=0.05),
+                     {"buoy": dict(mass=200.0, added_mass=100.0, net_buoyancy=2000.0, position=[0.0, 0.0, -20.0])})
+
+
+@pytest.mark.slow
+def test_mooring_lowest_mode_against_the_time_domains_free_oscillation():
+    case = buoy_mooring()
+    lin = kanat.linearize(case)
+    values, vectors = eigenmodes(lin, n=1)
+    omega = math.sqrt(values[0])
+    net = lin.net
+    system = LumpedSystem(net, case, waves=False)
+    shape = np.zeros_like(lin.position)
+    shape[lin.node, lin.xyz] = vectors[:, 0]
+    x = lin.position + 0.02 * shape                      # 2 cm at the largest component
+    scheme = get_scheme("rk4", SCHEMES)
+    h = step_info(net, x).safe_step(scheme)
+    body, direction = net.body_node[0], int(np.argmax(np.abs(shape[net.body_node[0]])))
+    free = system.free_index
+    state = scheme.start(system, 0.0, x[free], 0 * x[free], h)
+    times, values_ = [], []
+    for _ in range(int(2.5 * 2 * math.pi / omega / h)):
+        state = scheme.step(system, state, h)
+        times.append(state["t"])
+        values_.append(system.full(state["t"], *state_positions(state))[0][body, direction]
+                       - lin.position[body, direction])
+    measured = 2 * math.pi / zero_crossing_period(np.array(times), np.array(values_))
+    assert omega == pytest.approx(measured, rel=0.01)
