@@ -114,7 +114,8 @@ def linearize(case) -> Linearization:
     stiffness = -_jacobian(static_forces, free, xf, colour, step, neighbours)
     v0 = np.broadcast_to(velocity, xf.shape).copy()
     damping = -_jacobian(moving_forces, free, v0, colour, VELOCITY_STEP, neighbours)
-    mass = mass_matrix(steady, x, case.simulation.mass_matrix == "consistent")
+    consistent = case.simulation is not None and case.simulation.mass_matrix == "consistent"
+    mass = mass_matrix(steady, x, consistent)
     return Linearization(mass=mass.tocsr(), damping=damping.tocsr(), stiffness=stiffness.tocsr(),
                          node=np.repeat(free, 3), xyz=np.tile(np.arange(3), len(free)), position=x, net=net)
 

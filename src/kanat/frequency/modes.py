@@ -101,3 +101,12 @@ def _dataset(lin: Linearization, values: np.ndarray, vectors: np.ndarray) -> xr.
         coords={"mode": np.arange(1, count + 1), "xyz": list(DIRECTIONS),
                 "cable": ("node", net.node_cable.astype(str)), "s": ("node", net.node_s, {"units": "m"})},
         attrs={"model": "modes", "stiffness_asymmetry": lin.asymmetry})
+
+
+def modes_table(ds: xr.Dataset) -> str:
+    """The modes of :func:`modes` as a text table: mode, frequency, period and dominant direction."""
+    lines = [f"{'mode':>4}  {'omega [rad/s]':>13}  {'period [s]':>10}  direction"]
+    for k in range(ds.sizes["mode"]):
+        lines.append(f"{int(ds.mode[k]):>4}  {float(ds.natural_frequency[k]):>13.5g}  "
+                     f"{float(ds.period[k]):>10.5g}  {str(ds.direction.values[k])}")
+    return "\n".join(lines)
