@@ -82,7 +82,6 @@ def hanging_chain(segments, length=10.0, mass_matrix="lumped"):
                      mass_matrix)
 
 
-@pytest.mark.slow
 def test_hanging_chain_against_bessel_zeros_converges_at_second_order():
     length = 10.0
     exact = scipy.special.jn_zeros(0, 3) / 2 * math.sqrt(G / length)
@@ -114,7 +113,6 @@ def buoy_mooring():
                      {"buoy": dict(mass=200.0, added_mass=100.0, net_buoyancy=2000.0, position=[0.0, 0.0, -20.0])})
 
 
-@pytest.mark.slow
 def test_mooring_lowest_mode_against_the_time_domains_free_decay():
     """The buoy released at rest 1 m sideways (the legs' nodes moved in proportion to their distance
     from the anchor), integrated by the nonlinear time domain (rk4) over 4.5 periods: the period of
@@ -142,3 +140,28 @@ def test_mooring_lowest_mode_against_the_time_domains_free_decay():
         sway.append(system.full(state["t"], *state_positions(state))[0][body, 1] - lin.position[body, 1])
     measured = 2 * math.pi / zero_crossing_period(np.array(times), np.array(sway))
     assert omega == pytest.approx(measured, rel=0.01)
+
+
+def test_modes_command_prints_the_table_and_writes_the_modes(tmp_path):
+    """``kanat modes`` on a taut string file: the first row is the exact discrete fundamental."""
+    import xarray as xr
+    from typer.testing import CliRunner
+
+    from kanat.cli import app
+
+    case = tmp_path / "string.yaml"
+    case.write_text("model: lumped\nline_types:\n  c: {diameter: 0.01, mass: 1.0, weight_in_water: 0.0, "
+                    "axial_stiffness: 1.0e+5, added_mass: 0.5, drag_normal: 0.0, drag_tangential: 0.0}\n"
+                    "cables:\n  - {name: s, line_type: c, length: 100.0, segments: 10, "
+                    "from: 'anchor:[0,0,-10]', to: 'anchor:[101,0,-10]'}\n"
+                    "simulation: {duration: 1, dt: 0.01}\n")
+    out = tmp_path / "modes.nc"
+    result = CliRunner().invoke(app, ["modes", str(case), "-n", "2", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    exact = 2 * math.sqrt(1000.0 / (1.5 * 10.0 * 10.1)) * math.sin(math.pi / 20)
+    first = next(line.split() for line in result.output.splitlines() if line.split()[:1] == ["1"])
+    assert float(first[1]) == pytest.approx(exact, rel=1e-4)
+    assert float(first[2]) == pytest.approx(2 * math.pi / exact, rel=1e-4)
+    with xr.open_dataset(out) as ds:
+        assert ds.natural_frequency.values == pytest.approx([exact, exact], rel=1e-6)
+        assert ds.mode_shape.dims == ("mode", "node", "xyz")
