@@ -9,7 +9,7 @@ run starts), small motions ``u = q - q_e`` obey::
 
 ``F`` the free nodes' forces of :class:`kanat.lumped.system.LumpedSystem` (eqs. 1-2 there:
 elastic, geometric, bending, weight and buoyancy, seabed contact, point bodies' loads and
-waterplane buoyancy); ``M`` the lumped blocks (structural + added mass turned with each
+waterplane buoyancy; 6-DOF bodies' forces and moments, :mod:`kanat.frequency.rigid`); ``M`` the lumped blocks (structural + added mass turned with each
 element, :mod:`kanat.lumped.kernels` eq. 8) or the consistent matrix (eq. 9) as
 ``simulation.mass_matrix`` says. ``K`` and ``C`` are sparse Jacobians by central differences
 over a distance-2 colouring of the node graph (``3 x colours`` pairs of force evaluations,
@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from kanat.errors import CaseError, Problem
+from kanat.frequency.rigid import rigid_rows
 from kanat.lumped import kernels
 from kanat.lumped.equilibrium import _jacobian, distance2_colouring, equilibrium, node_graph
 from kanat.lumped.network import build_network
@@ -85,15 +85,10 @@ def linearize(case) -> Linearization:
 
     Raises
     ------
-    CaseError
-        For 6-DOF bodies (not linearised yet).
     SolverError
         If the equilibrium does not converge (:func:`kanat.lumped.equilibrium.equilibrium`).
     """
     net = build_network(case)
-    if net.rigid.count:
-        raise CaseError([Problem("bodies", f"6-DOF bodies ({', '.join(net.rigid.names)}) are not linearised "
-                                           "yet: give them dof: 3 for kanat.linearize and kanat.modes")])
     x, _ = equilibrium(net, case, friction=False)
     base = LumpedSystem(net, case, waves=False, friction=False)
     velocity = base.frame_velocity()
@@ -113,9 +108,14 @@ def linearize(case) -> Linearization:
     step = POSITION_STEP * float(np.min(net.el_length))
     stiffness = -_jacobian(static_forces, free, xf, colour, step, neighbours)
     v0 = np.broadcast_to(velocity, xf.shape).copy()
+    v0[np.searchsorted(free, net.rigid.rot_node)] = 0.0                 # Euler angle rates
     damping = -_jacobian(moving_forces, free, v0, colour, VELOCITY_STEP, neighbours)
     consistent = case.simulation is not None and case.simulation.mass_matrix == "consistent"
     mass = mass_matrix(steady, x, consistent)
+    if net.rigid.count:
+        full, v, _, heading = steady.full(0.0, xf, np.zeros_like(xf))
+        blocks = steady.loads(0.0, full, v, heading)[1].copy()
+        mass, damping, stiffness = rigid_rows(net.rigid, free, x, blocks, mass, damping, stiffness)
     return Linearization(mass=mass.tocsr(), damping=damping.tocsr(), stiffness=stiffness.tocsr(),
                          node=np.repeat(free, 3), xyz=np.tile(np.arange(3), len(free)), position=x, net=net)
 

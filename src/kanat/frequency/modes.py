@@ -27,7 +27,7 @@ from kanat.frequency.linearize import Linearization, linearize
 
 DENSE_LIMIT = 1500           # degrees of freedom solved densely (eigh of 1500 x 1500: ~1 s)
 SYMMETRY_TOLERANCE = 1e-6    # ||K - K^T|| / ||K|| above which K is treated as non-symmetric
-DIRECTIONS = ("x", "y", "z")
+DIRECTIONS = ("x", "y", "z", "roll", "pitch", "yaw")    # a 6-DOF body's Euler angles last
 
 
 def eigenmodes(lin: Linearization, n: int = 10) -> tuple[np.ndarray, np.ndarray]:
@@ -68,10 +68,12 @@ def modes(case, n: int = 10) -> xr.Dataset:
     xarray.Dataset
         ``natural_frequency(mode)`` [rad/s], ``period(mode)`` [s], ``eigenvalue(mode)``
         (``omega^2`` [rad^2/s^2]; negative: a statically unstable direction, whose frequency is
-        NaN), ``direction(mode)`` (``x``, ``y`` or ``z``: the direction holding most of the
-        mode's kinetic energy ``phi^T M phi``), ``mode_shape(mode, node, xyz)`` (the cable
-        nodes of the result files, with coordinates ``cable`` and ``s``; zero at prescribed
-        nodes; largest component +1) and ``position(node, xyz)``, the equilibrium [m].
+        NaN), ``direction(mode)`` (``x``, ``y``, ``z``, or a 6-DOF body's ``roll``, ``pitch``,
+        ``yaw``: the direction holding most of the mode's kinetic energy ``phi^T M phi``),
+        ``mode_shape(mode, node, xyz)`` (the cable nodes of the result files, with coordinates
+        ``cable`` and ``s``; zero at prescribed nodes; largest component +1),
+        ``body_mode_shape(mode, body, dof)`` (each body's translations, and a 6-DOF body's Euler
+        angles [rad]) and ``position(node, xyz)``, the equilibrium [m].
     """
     lin = linearize(case)
     values, vectors = eigenmodes(lin, n)
@@ -88,8 +90,13 @@ def _dataset(lin: Linearization, values: np.ndarray, vectors: np.ndarray) -> xr.
     shapes = np.zeros((count, net.n_nodes, 3))
     shapes[:, lin.node, lin.xyz] = vectors.T
     omega = np.sqrt(np.where(values >= 0.0, values, np.nan))
-    energy = np.stack([np.einsum("ik,ik->k", vectors[lin.xyz == d], (lin.mass @ vectors)[lin.xyz == d])
-                       for d in range(3)])
+    kind = lin.xyz + 3 * np.isin(lin.node, net.rigid.rot_node)
+    inertia = lin.mass @ vectors
+    energy = np.stack([np.einsum("ik,ik->k", vectors[kind == d], inertia[kind == d]) for d in range(6)])
+    body = np.zeros((count, len(net.body_names), 6))
+    body[:, :, :3] = shapes[:, net.body_node]
+    for b, name in enumerate(net.rigid.names):
+        body[:, net.body_names.index(name), 3:] = shapes[:, net.rigid.rot_node[b]]
     idx = net.node_index
     return xr.Dataset(
         {"natural_frequency": ("mode", omega, {"units": "rad/s"}),
@@ -97,9 +104,11 @@ def _dataset(lin: Linearization, values: np.ndarray, vectors: np.ndarray) -> xr.
          "eigenvalue": ("mode", values, {"units": "rad^2/s^2"}),
          "direction": ("mode", np.array([DIRECTIONS[d] for d in np.argmax(energy, axis=0)])),
          "mode_shape": (("mode", "node", "xyz"), shapes[:, idx], {"units": "1"}),
+         "body_mode_shape": (("mode", "body", "dof"), body, {"units": "1 (angles: rad per unit)"}),
          "position": (("node", "xyz"), lin.position[idx], {"units": "m"})},
-        coords={"mode": np.arange(1, count + 1), "xyz": list(DIRECTIONS),
-                "cable": ("node", net.node_cable.astype(str)), "s": ("node", net.node_s, {"units": "m"})},
+        coords={"mode": np.arange(1, count + 1), "xyz": list(DIRECTIONS[:3]), "dof": list(DIRECTIONS),
+                "body": list(net.body_names), "cable": ("node", net.node_cable.astype(str)),
+                "s": ("node", net.node_s, {"units": "m"})},
         attrs={"model": "modes", "stiffness_asymmetry": lin.asymmetry})
 
 
