@@ -211,3 +211,20 @@ def test_stiffness_is_the_implicit_schemes_analytic_tangent(bending):
     assert np.count_nonzero(system.normal_force) > 5     # some of the chain lies on the seabed
     difference = sp.linalg.norm(lin.stiffness - analytic) / sp.linalg.norm(analytic)
     assert difference < 1e-6
+
+
+def test_damping_is_the_axial_damping_and_no_drag_in_still_water():
+    """A straight taut string with axial damping ``c`` [N s] and drag: ``C`` is ``c / EA`` times the
+    axial (x) part of ``K`` (a linear law: ``T = EA e + c e_dot``), with nothing across the line (a
+    transverse velocity of a straight line stretches it at second order, and drag ``|u| u`` has no
+    slope at rest: its central difference is of the order of the step)."""
+    line = dict(line_type(1.0, 0.0, 1e5, 0.5), axial_damping=300.0, drag_normal=1.2, drag_tangential=0.5)
+    case = make_case([dict(name="string", line_type="c", length=100.0, segments=10,
+                           **{"from": "anchor:[0,0,-10]"}, to="anchor:[101,0,-10]")], line)
+    lin = kanat.linearize(case)
+    along = lin.xyz == 0
+    C, K = lin.damping.toarray(), lin.stiffness.toarray()
+    scale = np.abs(C).max()                              # 2 c / l0 = 60 N s/m
+    # drag's central difference at rest is 1/2 rho C_D d l0 x VELOCITY_STEP (6e-5 N s/m), not zero
+    assert C[np.ix_(along, along)] == pytest.approx(300.0 / 1e5 * K[np.ix_(along, along)], abs=2e-6 * scale)
+    assert np.abs(C[~along]).max() < 2e-6 * scale

@@ -33,7 +33,8 @@ from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem
 
 POSITION_STEP = 1e-7   # of the shortest element: the equilibrium's own finite-difference step
-VELOCITY_STEP = 1e-6   # m/s: F is linear in velocity but for drag, whose slope is O(step) at rest
+VELOCITY_STEP = 1e-6   # m/s: F is linear in velocity but for drag, whose central difference at rest
+                       # is 1/2 rho C_D d l x VELOCITY_STEP (~1e-6 of the axial damping) instead of 0
 
 
 @dataclass(frozen=True, eq=False)
