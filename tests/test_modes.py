@@ -228,3 +228,16 @@ def test_damping_is_the_axial_damping_and_no_drag_in_still_water():
     # drag's central difference at rest is 1/2 rho C_D d l0 x VELOCITY_STEP (6e-5 N s/m), not zero
     assert C[np.ix_(along, along)] == pytest.approx(300.0 / 1e5 * K[np.ix_(along, along)], abs=2e-6 * scale)
     assert np.abs(C[~along]).max() < 2e-6 * scale
+
+
+def test_sparse_shift_invert_finds_the_dense_modes(monkeypatch):
+    """Above DENSE_LIMIT degrees of freedom ARPACK's shift-invert about 0 takes over: the same lowest
+    frequencies as the dense solver on the taut string."""
+    import sys
+
+    lin = kanat.linearize(taut_string(20)[0])
+    dense, _ = eigenmodes(lin, n=6)
+    monkeypatch.setattr(sys.modules["kanat.frequency.modes"], "DENSE_LIMIT", 10)
+    sparse, shapes = eigenmodes(lin, n=6)
+    assert sparse == pytest.approx(dense, rel=1e-9)
+    assert np.abs(shapes).max(axis=0) == pytest.approx(np.ones(6))
