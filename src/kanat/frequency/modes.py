@@ -43,6 +43,7 @@ def eigenmodes(lin: Linearization, n: int = 10) -> tuple[np.ndarray, np.ndarray]
         K = 0.5 * (K + K.T)
     if not symmetric:
         values, vectors = la.eig(K.toarray(), M.toarray())
+        _warn_complex(values)
         values, vectors = values.real, vectors.real
     elif size <= DENSE_LIMIT or n >= size - 1:
         values, vectors = la.eigh(K.toarray(), M.toarray(), subset_by_index=[0, n - 1])
@@ -52,6 +53,16 @@ def eigenmodes(lin: Linearization, n: int = 10) -> tuple[np.ndarray, np.ndarray]
     values, vectors = values[order], vectors[:, order]
     biggest = vectors[np.argmax(np.abs(vectors), axis=0), np.arange(n)]
     return values, vectors / biggest
+
+
+def _warn_complex(values: np.ndarray) -> None:
+    """Warn when a non-symmetric ``K`` gives eigenvalues with imaginary parts beyond round-off."""
+    finite = values[np.isfinite(values)]
+    worst = np.max(np.abs(finite.imag) / np.maximum(np.abs(finite), 1e-300), initial=0.0)
+    if worst > SYMMETRY_TOLERANCE:
+        warnings.warn(f"the stiffness is not symmetric (drag in a flow) and some eigenvalues are complex "
+                      f"(imaginary part up to {worst:.2g} of the modulus): their real parts are reported; "
+                      "the undamped modes are an approximation there", CaseWarning, stacklevel=3)
 
 
 def modes(case, n: int = 10) -> xr.Dataset:
@@ -118,4 +129,7 @@ def modes_table(ds: xr.Dataset) -> str:
     for k in range(ds.sizes["mode"]):
         lines.append(f"{int(ds.mode[k]):>4}  {float(ds.natural_frequency[k]):>13.5g}  "
                      f"{float(ds.period[k]):>10.5g}  {str(ds.direction.values[k])}")
+    asymmetry = float(ds.attrs.get("stiffness_asymmetry", 0.0))
+    if asymmetry > SYMMETRY_TOLERANCE:
+        lines.append(f"(the stiffness is not symmetric: ||K - K^T|| / ||K|| = {asymmetry:.2g}; drag in a flow)")
     return "\n".join(lines)
