@@ -19,6 +19,10 @@ report(result | path | study_dir, html_path) -> Path
 Coupling(case)
     The lines driven by another program's time loop: ``initialize(positions)``,
     ``step(t, dt, positions, velocities) -> forces`` (:mod:`kanat.coupling`).
+linearize(case) -> Linearization
+    Mass, damping and stiffness (sparse) of the lumped system about its equilibrium.
+modes(case, n=10) -> xarray.Dataset
+    Natural frequencies and mode shapes (:mod:`kanat.frequency`).
 
 The names are loaded on first use, so ``import kanat`` stays light.
 """
@@ -26,6 +30,8 @@ from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "offsets", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
 __all__ = ["__version__", *_API, "report", "Coupling"]
+_FREQUENCY = ("linearize", "modes")     # the lumped system about its equilibrium (kanat.frequency)
+__all__ += list(_FREQUENCY)
 
 
 def __getattr__(name):
@@ -33,6 +39,10 @@ def __getattr__(name):
         from kanat import api
 
         return getattr(api, name)
+    if name in _FREQUENCY:
+        import kanat.frequency
+
+        return getattr(kanat.frequency, name)
     if name == "Coupling":
         from kanat.coupling import Coupling
 

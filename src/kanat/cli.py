@@ -216,6 +216,29 @@ def catalog(name: Optional[str] = typer.Argument(None, help="A catalogue line; o
         raise typer.Exit(2) from None
 
 
+@app.command()
+def modes(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn input)."),
+          count: int = typer.Option(10, "-n", "--modes", min=1, help="How many modes, lowest first."),
+          output: Optional[Path] = typer.Option(None, "-o", "--output", help="Also write them (netCDF)."),
+          debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+    """Natural frequencies and mode shapes of the lumped system about its equilibrium."""
+    from kanat.frequency import modes as natural_modes
+    from kanat.frequency.modes import modes_table
+
+    loaded = load(case, debug)
+    if output is not None:
+        _check_outputs(output, None, case, debug)
+    try:
+        with console.status(f"linearising {case.name} ..."):
+            ds = natural_modes(loaded, n=count)
+    except Exception as error:  # noqa: BLE001 - reported by fail
+        fail(error, debug, "modes failed")
+    show(modes_table(ds))
+    if output is not None:
+        ds.to_netcdf(output)
+        show(f"wrote {output}")
+
+
 def _check_outputs(output: Path, plot: Optional[Path], case: Path, debug: bool) -> None:
     """Refuse, before any work, an output that is an input, a directory or unwritable."""
     from kanat.io.outputs import check_output_file
