@@ -86,6 +86,9 @@ def modes(case, n: int = 10) -> xr.Dataset:
         ``body_mode_shape(mode, body, dof)`` (each body's translations, and a 6-DOF body's Euler
         angles [rad]) and ``position(node, xyz)``, the equilibrium [m].
     """
+    if case.model != "lumped":
+        warnings.warn(f"the modes are the lumped model's (the system discretized as in model: lumped), not "
+                      f"those of model: {case.model}", CaseWarning, stacklevel=2)
     lin = linearize(case)
     values, vectors = eigenmodes(lin, n)
     if np.any(values < 0.0):
@@ -120,7 +123,7 @@ def _dataset(lin: Linearization, values: np.ndarray, vectors: np.ndarray) -> xr.
         coords={"mode": np.arange(1, count + 1), "xyz": list(DIRECTIONS[:3]), "dof": list(DIRECTIONS),
                 "body": list(net.body_names), "cable": ("node", net.node_cable.astype(str)),
                 "s": ("node", net.node_s, {"units": "m"})},
-        attrs={"model": "modes", "stiffness_asymmetry": lin.asymmetry})
+        attrs={"model": "modes", "discretization": "lumped", "stiffness_asymmetry": lin.asymmetry})
 
 
 def modes_table(ds: xr.Dataset) -> str:
