@@ -1,0 +1,244 @@
+"""The design check: every condition x sea state x seed run, then the utilisation and fatigue tables.
+
+1. Each condition (:mod:`.conditions`) is solved for its statics first; a condition whose
+   statics fails (a body left with no restoring, say) is reported as failed, with the
+   solver's message, and its lines' rows say ``ok = False`` with no tension.
+2. Each sea state of each condition is run ``seeds`` times by :func:`kanat.api.run` (into
+   ``DIR/runs/<condition>/<sea_state>_seed<k>.nc`` when an output folder is given; a run
+   whose file is complete is read back, so an interrupted check resumes).
+3. Utilisation (API RP 2SK §6.3): per line, the most probable maximum of the fairlead
+   tension over ``storm_duration`` from the seeds' records (:func:`kanat.analysis.extremes.mpm`),
+   ``safety_factor = MBL / MPM`` against the required one (:mod:`.factors`).
+4. Fatigue (API RP 2SK §7.4), intact condition only: at every node of every line, Miner's
+   damage of each run's tension record on the T-N curve (:func:`kanat.analysis.fatigue.damage`),
+   averaged over the seeds, scaled to a year by ``probability x YEAR / record length`` and
+   summed over the sea states; ``life_years = 1 / damage_per_year``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from kanat import api
+from kanat.analysis.extremes import mpm
+from kanat.analysis.fatigue import damage
+from kanat.errors import KanatError
+from kanat.model import Case
+
+from . import records
+from .conditions import Condition, condition_case, conditions, sea_state_case, wave_seed
+from .factors import required_safety_factor
+
+UTILISATION_COLUMNS = ("condition", "sea_state", "line", "mpm_tension", "mbl", "safety_factor",
+                       "required_safety_factor", "ok")
+FATIGUE_COLUMNS = ("line", "s", "damage_per_year", "life_years")
+BUILT_ANALYSES = ("dynamic",)
+REFUSED_ANALYSES = {
+    "quasi-static": "a quasi-static check needs the vessel's mean and wave-frequency offsets from a "
+                    "motion analysis, which kanat does not make yet; use analysis: dynamic",
+    "frequency": "the frequency-domain design check is not built; use analysis: dynamic",
+}
+
+
+@dataclass
+class DesignResult:
+    """The tables of a design check and what they came from.
+
+    Attributes
+    ----------
+    utilisation : pandas.DataFrame
+        :data:`UTILISATION_COLUMNS`, one row per condition, sea state and line.
+    fatigue : pandas.DataFrame
+        :data:`FATIGUE_COLUMNS`, one row per node of every line (empty without ``fatigue``).
+    failures : dict of str to str
+        Conditions (or ``condition/sea state``) that could not be checked, and why.
+    statics : dict of str to xarray.Dataset
+        Each condition's statics.
+    runs : dict of (str, str, int) to xarray.Dataset or Path
+        Each run, by (condition, sea state, seed index): its result file, or the dataset.
+    case : kanat.model.Case
+    """
+
+    utilisation: object
+    fatigue: object
+    failures: dict = field(default_factory=dict)
+    statics: dict = field(default_factory=dict)
+    runs: dict = field(default_factory=dict)
+    case: Case | None = None
+
+    @property
+    def ok(self) -> bool:
+        """True when every line passes in every condition and no check failed."""
+        life = self.case.design.fatigue.design_life if self.case.design.fatigue else 0.0
+        return (not self.failures and bool(self.utilisation["ok"].all())
+                and bool((self.fatigue["life_years"] >= life).all()))
+
+
+def check_supported(case: Case) -> None:
+    """Refuse what the design check does not do, before any run."""
+    design = case.design
+    if design is None:
+        raise KanatError("the case has no 'design' block (standard, sea_states, conditions, ...); "
+                         "see docs/design.md")
+    if design.analysis in REFUSED_ANALYSES:
+        raise KanatError(f"design.analysis: {design.analysis}: {REFUSED_ANALYSES[design.analysis]}")
+    required_safety_factor(design.standard, design.analysis, "intact")
+    if case.model != "lumped":
+        raise KanatError(f"model: {case.model}: a dynamic design check runs the lumped model "
+                         "(model: lumped) of a mooring")
+
+
+def _run_file(output: Path | None, condition: str, sea_state: str, seed: int) -> Path | None:
+    if output is None:
+        return None
+    return output / "runs" / condition.replace(":", "_") / f"{sea_state}_seed{seed}.nc"
+
+
+def _run(case: Case, path: Path | None):
+    """The dataset of one run (a complete result file is read back, not run again)."""
+    if path is not None and path.exists():
+        ds = api.read_result(path)
+        if ds.attrs.get("status") == "ok" and ds.attrs.get("case_sha256") == _sha(case):
+            return ds
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    outcome = api.run(case, output=path)
+    if not outcome.ok:
+        raise KanatError(f"the run failed: {outcome.status}")
+    return outcome.dataset
+
+
+def _sha(case: Case) -> str:
+    from kanat.io.provenance import case_sha256
+
+    return case_sha256(case)
+
+
+def _condition_statics(case: Case, condition: Condition, result: DesignResult) -> Case | None:
+    """The condition's case once its statics is solved, or None (the failure recorded)."""
+    try:
+        variant = condition_case(case, condition)
+        ds = api.solve_statics(variant)
+    except KanatError as error:
+        result.failures[condition.name] = f"no steady state: {error}"
+        return None
+    if ds.attrs.get("status", "ok") != "ok":
+        result.failures[condition.name] = ds.attrs["status"]
+        return None
+    result.statics[condition.name] = ds
+    return variant
+
+
+def _utilisation_rows(variant: Case, condition: Condition, sea_state: str, runs: list) -> list[dict]:
+    design = variant.design
+    required = required_safety_factor(design.standard, design.analysis, condition.kind)
+    rows = []
+    for cable in variant.cables:
+        series = np.array([records.fairlead_tension(ds, cable.name) for ds in runs])
+        extreme = mpm(series, runs[0].time.values, design.storm_duration, design.extremes)
+        mbl = records.breaking_load(variant, cable.name)
+        factor = mbl / extreme.value
+        rows.append(dict(condition=condition.name, sea_state=sea_state, line=cable.name,
+                         mpm_tension=extreme.value, mbl=mbl, safety_factor=factor,
+                         required_safety_factor=required, ok=bool(factor >= required)))
+    return rows
+
+
+def _failed_rows(case: Case, condition: Condition, sea_state: str) -> list[dict]:
+    design = case.design
+    required = required_safety_factor(design.standard, design.analysis, condition.kind)
+    return [dict(condition=condition.name, sea_state=sea_state, line=c.name, mpm_tension=math.nan,
+                 mbl=records.breaking_load(case, c.name), safety_factor=math.nan,
+                 required_safety_factor=required, ok=False)
+            for c in case.cables if c.name != condition.removed]
+
+
+def annual_damage(variant: Case, sea_state, runs: list) -> dict[str, np.ndarray]:
+    """Per cable, the damage per year at each node that one sea state causes, shape (n_nodes,).
+
+    ``D_year = mean over seeds of D_record x probability x YEAR / record length``.
+    """
+    curve = variant.design.fatigue.curve
+    found = {}
+    for cable in variant.cables:
+        nodes = records.cable_nodes(runs[0], cable.name)
+        kinds = records.line_types_along(variant, cable.name, runs[0]["s"].values[nodes])
+        strength = [records.reference_strength(variant, kind, curve) for kind in kinds]
+        per_seed = [[damage(ds["tension"].isel(node=int(n)).values, ref, curve)
+                     for n, ref in zip(nodes, strength)] for ds in runs]
+        length = float(runs[0].time[-1] - runs[0].time[0])
+        found[cable.name] = np.mean(per_seed, axis=0) * sea_state.probability * records.YEAR / length
+    return found
+
+
+def _fatigue_table(case: Case, intact_runs: dict, pd):
+    """The fatigue rows from the intact runs of every sea state."""
+    rows = []
+    if case.design.fatigue is None or not intact_runs:
+        return pd.DataFrame(columns=FATIGUE_COLUMNS)
+    total: dict[str, np.ndarray] = {}
+    s_of: dict[str, np.ndarray] = {}
+    for sea_state, runs in intact_runs.values():
+        for cable, per_year in annual_damage(case, sea_state, runs).items():
+            total[cable] = total.get(cable, 0.0) + per_year
+            s_of[cable] = runs[0]["s"].values[records.cable_nodes(runs[0], cable)]
+    for cable, per_year in total.items():
+        for s, d in zip(s_of[cable], per_year):
+            rows.append(dict(line=cable, s=float(s), damage_per_year=float(d),
+                             life_years=1.0 / d if d > 0 else math.inf))
+    return pd.DataFrame(rows, columns=FATIGUE_COLUMNS)
+
+
+def design(case: Case, output: str | Path | None = None,
+           progress: Callable[[str], None] | None = None) -> DesignResult:
+    """Check a mooring against its design block (module docstring).
+
+    Parameters
+    ----------
+    case : kanat.model.Case
+        A lumped-model mooring case with a ``design`` block.
+    output : path-like, optional
+        Folder for the runs' result files (``runs/``); None keeps them in memory.
+    progress : callable, optional
+        ``progress(message)`` before each run.
+
+    Returns
+    -------
+    DesignResult
+        ``utilisation`` and ``fatigue`` DataFrames, the failures, statics and runs.
+    """
+    import pandas as pd
+
+    check_supported(case)
+    output = Path(output) if output is not None else None
+    result = DesignResult(None, None, case=case)
+    rows, intact_runs = [], {}
+    for condition in conditions(case):
+        variant = _condition_statics(case, condition, result)
+        for sea_state in case.design.sea_state_rows:
+            if variant is None:
+                rows += _failed_rows(case, condition, sea_state.name)
+                continue
+            runs = []
+            try:
+                for k in range(case.design.seeds):
+                    if progress is not None:
+                        progress(f"{condition.name}, {sea_state.name}, seed {k}")
+                    path = _run_file(output, condition.name, sea_state.name, k)
+                    run_case = sea_state_case(variant, sea_state, wave_seed(case, k))
+                    runs.append(records.analysed(_run(run_case, path), run_case))
+                    result.runs[(condition.name, sea_state.name, k)] = path or runs[-1]
+            except KanatError as error:
+                result.failures[f"{condition.name}/{sea_state.name}"] = str(error)
+                rows += _failed_rows(case, condition, sea_state.name)
+                continue
+            rows += _utilisation_rows(variant, condition, sea_state.name, runs)
+            if condition.kind == "intact":
+                intact_runs[sea_state.name] = (sea_state, runs)
+    result.utilisation = pd.DataFrame(rows, columns=UTILISATION_COLUMNS)
+    result.fatigue = _fatigue_table(case, intact_runs, pd)
+    return result
