@@ -8,6 +8,6 @@ line in intact and damaged conditions under API RP 2SK, and fatigue life (docs/d
 | :mod:`.records` | tension records of a run: fairlead, reference strengths |
 | :mod:`.check` | the runs and the tables |
 """
-from .check import FATIGUE_COLUMNS, UTILISATION_COLUMNS, DesignResult, design
+from .check import FATIGUE_COLUMNS, UTILISATION_COLUMNS, DesignResult, design, write_tables
 
-__all__ = ["DesignResult", "FATIGUE_COLUMNS", "UTILISATION_COLUMNS", "design"]
+__all__ = ["DesignResult", "FATIGUE_COLUMNS", "UTILISATION_COLUMNS", "design", "write_tables"]

@@ -242,3 +242,13 @@ def design(case: Case, output: str | Path | None = None,
     result.utilisation = pd.DataFrame(rows, columns=UTILISATION_COLUMNS)
     result.fatigue = _fatigue_table(case, intact_runs, pd)
     return result
+
+
+def write_tables(result: DesignResult, output: str | Path) -> list[Path]:
+    """``utilisation.csv`` and ``fatigue.csv`` in the folder ``output``; their paths."""
+    output = Path(output)
+    output.mkdir(parents=True, exist_ok=True)
+    paths = [output / "utilisation.csv", output / "fatigue.csv"]
+    result.utilisation.to_csv(paths[0], index=False)
+    result.fatigue.to_csv(paths[1], index=False)
+    return paths
