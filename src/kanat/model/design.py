@@ -35,13 +35,13 @@ class SeaState(KanatModel):
         Simulated duration of each of its runs [s].
     """
 
-    name: str = Field(min_length=1)
-    hs: float = quantity(unit="m", gt=0)
-    tp: float = quantity(unit="s", gt=0)
-    gamma: float = quantity(3.3, unit="-", ge=1)
-    heading_deg: float = quantity(0.0, unit="deg")
-    probability: float = quantity(unit="-", ge=0, le=1)
-    duration: float = quantity(unit="s", gt=0)
+    name: str = Field(min_length=1, description="the sea state's name in the tables")
+    hs: float = quantity(unit="m", gt=0, description="significant wave height of the JONSWAP sea")
+    tp: float = quantity(unit="s", gt=0, description="peak period")
+    gamma: float = quantity(3.3, unit="-", ge=1, description="peak enhancement factor")
+    heading_deg: float = quantity(0.0, unit="deg", description="direction the waves travel to, as environment.waves")
+    probability: float = quantity(unit="-", ge=0, le=1, description="fraction of the year the sea state lasts (fatigue)")
+    duration: float = quantity(unit="s", gt=0, description="simulated duration of each of its runs")
 
 
 class Fatigue(KanatModel):
@@ -76,8 +76,12 @@ class Design(KanatModel):
     fatigue : Fatigue or None
     """
 
-    standard: Literal[STANDARDS] = "api-rp-2sk"  # type: ignore[valid-type]
-    analysis: Literal[ANALYSES] = "dynamic"  # type: ignore[valid-type]
+    standard: Literal[STANDARDS] = Field(  # type: ignore[valid-type]
+        "api-rp-2sk", description="the required safety factors: API RP 2SK (dnv-os-e301 is refused: its "
+                                  "partial-factor check is not built)")
+    analysis: Literal[ANALYSES] = Field(  # type: ignore[valid-type]
+        "dynamic", description="dynamic: lumped-model runs in each sea state (quasi-static and frequency "
+                               "are refused: not built)")
     sea_states: str | None = Field(
         None, description="CSV file with columns name, hs [m], tp [s], gamma, heading_deg, "
                           "probability, duration [s], relative to the case file; read when the "
@@ -90,7 +94,8 @@ class Design(KanatModel):
     conditions: tuple[str, ...] = Field(
         ("intact", "damaged"), min_length=1,
         description="intact; damaged (each cable removed in turn); or names of the cables removed")
-    extremes: Literal[EXTREMES] = "rayleigh"  # type: ignore[valid-type]
+    extremes: Literal[EXTREMES] = Field(  # type: ignore[valid-type]
+        "rayleigh", description="estimator of the most probable maximum (kanat.analysis.extremes.mpm)")
     fatigue: Fatigue | None = Field(
         None, description="{curve, design_life}: fatigue life of every line from the intact runs")
 
