@@ -3,9 +3,10 @@
 1. Each condition (:mod:`.conditions`) is solved for its statics first; a condition whose
    statics fails (a body left with no restoring, say) is reported as failed, with the
    solver's message, and its lines' rows say ``ok = False`` with no tension.
-2. Each sea state of each condition is run ``seeds`` times by :func:`kanat.api.run` (into
-   ``DIR/runs/<condition>/<sea_state>_seed<k>.nc`` when an output folder is given; a run
-   whose file is complete is read back, so an interrupted check resumes).
+2. Each sea state of each condition is run ``seeds`` times on the study engine (:mod:`.runs`:
+   serially, on local workers or a Dask cluster), into
+   ``DIR/runs/<condition>/<sea_state>_seed<k>.nc``; a run whose file is complete is read back,
+   so an interrupted check resumes.
 3. Utilisation (API RP 2SK §6.3): per line, the most probable maximum of the fairlead
    tension over ``storm_duration`` from the seeds' records (:func:`kanat.analysis.extremes.mpm`),
    ``safety_factor = MBL / MPM`` against the required one (:mod:`.factors`).
@@ -32,6 +33,7 @@ from kanat.model import Case
 from . import records
 from .conditions import Condition, condition_case, conditions, sea_state_case, wave_seed
 from .factors import required_safety_factor
+from .runs import Job, run_file, run_jobs
 
 UTILISATION_COLUMNS = ("condition", "sea_state", "line", "mpm_tension", "mbl", "safety_factor",
                        "required_safety_factor", "ok")
@@ -58,9 +60,12 @@ class DesignResult:
         Conditions (or ``condition/sea state``) that could not be checked, and why.
     statics : dict of str to xarray.Dataset
         Each condition's statics.
-    runs : dict of (str, str, int) to xarray.Dataset or Path
-        Each run, by (condition, sea state, seed index): its result file, or the dataset.
+    runs : dict of (str, str, int) to Path
+        Each run's result file, by (condition, sea state, seed index) (empty when the runs went
+        to a temporary folder).
     case : kanat.model.Case
+    engine : str
+        What ran the runs.
     """
 
     utilisation: object
@@ -69,6 +74,7 @@ class DesignResult:
     statics: dict = field(default_factory=dict)
     runs: dict = field(default_factory=dict)
     case: Case | None = None
+    engine: str = ""
 
     @property
     def ok(self) -> bool:
@@ -90,32 +96,6 @@ def check_supported(case: Case) -> None:
     if case.model != "lumped":
         raise KanatError(f"model: {case.model}: a dynamic design check runs the lumped model "
                          "(model: lumped) of a mooring")
-
-
-def _run_file(output: Path | None, condition: str, sea_state: str, seed: int) -> Path | None:
-    if output is None:
-        return None
-    return output / "runs" / condition.replace(":", "_") / f"{sea_state}_seed{seed}.nc"
-
-
-def _run(case: Case, path: Path | None):
-    """The dataset of one run (a complete result file is read back, not run again)."""
-    if path is not None and path.exists():
-        ds = api.read_result(path)
-        if ds.attrs.get("status") == "ok" and ds.attrs.get("case_sha256") == _sha(case):
-            return ds
-    if path is not None:
-        path.parent.mkdir(parents=True, exist_ok=True)
-    outcome = api.run(case, output=path)
-    if not outcome.ok:
-        raise KanatError(f"the run failed: {outcome.status}")
-    return outcome.dataset
-
-
-def _sha(case: Case) -> str:
-    from kanat.io.provenance import case_sha256
-
-    return case_sha256(case)
 
 
 def _condition_statics(case: Case, condition: Condition, result: DesignResult) -> Case | None:
@@ -193,8 +173,53 @@ def _fatigue_table(case: Case, intact_runs: dict, pd):
     return pd.DataFrame(rows, columns=FATIGUE_COLUMNS)
 
 
-def design(case: Case, output: str | Path | None = None,
-           progress: Callable[[str], None] | None = None) -> DesignResult:
+def _jobs(case: Case, folder: Path, result: DesignResult) -> tuple[list[Job], list[Condition]]:
+    """Every run of the check, and the conditions whose statics failed (recorded in ``result``)."""
+    jobs, failed = [], []
+    for condition in conditions(case):
+        variant = _condition_statics(case, condition, result)
+        if variant is None:
+            failed.append(condition)
+            continue
+        for sea_state in case.design.sea_state_rows:
+            for k in range(case.design.seeds):
+                jobs.append(Job(condition, sea_state, k, sea_state_case(variant, sea_state, wave_seed(case, k)),
+                                run_file(folder, condition.name, sea_state.name, k)))
+    return jobs, failed
+
+
+def _tables(case: Case, jobs: list[Job], failed: list[Condition], failures: dict, result: DesignResult, pd):
+    """The utilisation and fatigue tables from the runs' files."""
+    rows, intact_runs = [], {}
+    groups: dict[tuple[str, str], list[Job]] = {}
+    for job in jobs:
+        groups.setdefault((job.condition.name, job.sea_state.name), []).append(job)
+    for condition in failed:
+        for sea_state in case.design.sea_state_rows:
+            rows += _failed_rows(case, condition, sea_state.name)
+    for (name, sea_state_name), group in groups.items():
+        condition, sea_state = group[0].condition, group[0].sea_state
+        bad = [failures[job.label] for job in group if job.label in failures]
+        if bad:
+            result.failures[f"{name}/{sea_state_name}"] = bad[0]
+            rows += _failed_rows(case, condition, sea_state_name)
+            continue
+        try:
+            runs = [records.analysed(api.read_result(job.path).load(), job.case) for job in group]
+        except KanatError as error:
+            result.failures[f"{name}/{sea_state_name}"] = str(error)
+            rows += _failed_rows(case, condition, sea_state_name)
+            continue
+        result.runs.update({(name, sea_state_name, job.seed): job.path for job in group})
+        rows += _utilisation_rows(group[0].case, condition, sea_state_name, runs)
+        if condition.kind == "intact":
+            intact_runs[sea_state_name] = (sea_state, runs)
+    result.utilisation = pd.DataFrame(rows, columns=UTILISATION_COLUMNS)
+    result.fatigue = _fatigue_table(case, intact_runs, pd)
+
+
+def design(case: Case, output: str | Path | None = None, progress: Callable[[str], None] | None = None,
+           scheduler=None, workers: int | None = None) -> DesignResult:
     """Check a mooring against its design block (module docstring).
 
     Parameters
@@ -202,45 +227,34 @@ def design(case: Case, output: str | Path | None = None,
     case : kanat.model.Case
         A lumped-model mooring case with a ``design`` block.
     output : path-like, optional
-        Folder for the runs' result files (``runs/``); None keeps them in memory.
+        Folder for the runs' result files (``runs/``, :mod:`.runs`); None: a temporary folder,
+        deleted once the tables are made.
     progress : callable, optional
-        ``progress(message)`` before each run.
+        ``progress(message)`` after each run.
+    scheduler : str or distributed.Client, optional
+        Where the runs go: None or ``serial`` in this process, a Dask scheduler address or
+        file, or a client (:func:`kanat.sweep.execution.execute`).
+    workers : int, optional
+        A local pool of this many worker processes.
 
     Returns
     -------
     DesignResult
-        ``utilisation`` and ``fatigue`` DataFrames, the failures, statics and runs.
+        ``utilisation`` and ``fatigue`` DataFrames, the failures, statics and run files.
     """
+    import tempfile
+
     import pandas as pd
 
     check_supported(case)
-    output = Path(output) if output is not None else None
     result = DesignResult(None, None, case=case)
-    rows, intact_runs = [], {}
-    for condition in conditions(case):
-        variant = _condition_statics(case, condition, result)
-        for sea_state in case.design.sea_state_rows:
-            if variant is None:
-                rows += _failed_rows(case, condition, sea_state.name)
-                continue
-            runs = []
-            try:
-                for k in range(case.design.seeds):
-                    if progress is not None:
-                        progress(f"{condition.name}, {sea_state.name}, seed {k}")
-                    path = _run_file(output, condition.name, sea_state.name, k)
-                    run_case = sea_state_case(variant, sea_state, wave_seed(case, k))
-                    runs.append(records.analysed(_run(run_case, path), run_case))
-                    result.runs[(condition.name, sea_state.name, k)] = path or runs[-1]
-            except KanatError as error:
-                result.failures[f"{condition.name}/{sea_state.name}"] = str(error)
-                rows += _failed_rows(case, condition, sea_state.name)
-                continue
-            rows += _utilisation_rows(variant, condition, sea_state.name, runs)
-            if condition.kind == "intact":
-                intact_runs[sea_state.name] = (sea_state, runs)
-    result.utilisation = pd.DataFrame(rows, columns=UTILISATION_COLUMNS)
-    result.fatigue = _fatigue_table(case, intact_runs, pd)
+    with tempfile.TemporaryDirectory(prefix="kanat-design-") as scratch:
+        folder = Path(output) if output is not None else Path(scratch)
+        jobs, failed = _jobs(case, folder, result)
+        failures, result.engine = run_jobs(jobs, scheduler, workers, progress)
+        _tables(case, jobs, failed, failures, result, pd)
+        if output is None:
+            result.runs = {}
     return result
 
 
