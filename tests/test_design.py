@@ -188,3 +188,34 @@ def test_unknown_condition_names_the_cables(tmp_path):
     with pytest.raises(KanatError, match="leg1, leg2, leg3"):
         design(case)
     assert math.isfinite(case.design.storm_duration)
+
+
+@pytest.mark.slow
+def test_the_tables_are_the_same_whatever_engine_ran_the_runs(checked, tmp_path):
+    """The intact runs again on a local pool of 2 worker processes: the same numbers."""
+    case, serial, _ = checked
+    intact = case.replace({"design.conditions": ["intact"]})
+    pooled = design(intact, tmp_path, workers=2)
+    assert "2 worker processes" in pooled.engine
+    rows = serial.utilisation[serial.utilisation.condition == "intact"].reset_index(drop=True)
+    pd.testing.assert_frame_equal(pooled.utilisation, rows)
+    pd.testing.assert_frame_equal(pooled.fatigue, serial.fatigue)
+
+
+@pytest.mark.slow
+def test_offsets_and_uplifts_are_the_largest_in_the_run_files(checked):
+    """Oracle: the run files' body positions against the intact statics, and their anchor forces."""
+    _, result, out = checked
+    neutral = result.statics["intact"].body_position.sel(body="buoy").values
+    table = result.excursions
+    assert len(table) == 2 * (1 + 3) + 2 * (1 + 2)     # (buoy + anchors) per condition and sea state
+    for row in table.itertuples():
+        files = sorted((out / "runs" / row.condition.replace(":", "_")).glob(f"{row.sea_state}_seed*.nc"))
+        sets = [kanat.read_result(f) for f in files]
+        sets = [ds.sel(time=ds.time[ds.time >= 10.0]) for ds in sets]
+        if row.quantity == "offset":
+            moved = [np.linalg.norm(ds.body_position.sel(body="buoy").values[:, :2] - neutral[:2], axis=1).max()
+                     for ds in sets]
+        else:
+            moved = [ds.anchor_force.sel(anchor=row.item).values[:, 2].max() for ds in sets]
+        assert row.largest == pytest.approx(max(moved), rel=1e-12)

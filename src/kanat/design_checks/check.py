@@ -38,6 +38,9 @@ from .runs import Job, run_file, run_jobs
 UTILISATION_COLUMNS = ("condition", "sea_state", "line", "mpm_tension", "mbl", "safety_factor",
                        "required_safety_factor", "ok")
 FATIGUE_COLUMNS = ("line", "s", "damage_per_year", "life_years")
+EXCURSION_COLUMNS = ("condition", "sea_state", "item", "quantity", "largest")
+"""Rows of the offsets and uplifts table: ``item`` a body (``quantity`` ``offset`` [m]) or an
+anchor (``uplift`` [N]); ``largest`` over the seeds' records (not an extreme-value estimate)."""
 BUILT_ANALYSES = ("dynamic",)
 REFUSED_ANALYSES = {
     "quasi-static": "a quasi-static check needs the vessel's mean and wave-frequency offsets from a "
@@ -56,6 +59,9 @@ class DesignResult:
         :data:`UTILISATION_COLUMNS`, one row per condition, sea state and line.
     fatigue : pandas.DataFrame
         :data:`FATIGUE_COLUMNS`, one row per node of every line (empty without ``fatigue``).
+    excursions : pandas.DataFrame
+        :data:`EXCURSION_COLUMNS`: each body's largest horizontal offset from its intact
+        statics position, each anchor's largest uplift, per condition and sea state.
     failures : dict of str to str
         Conditions (or ``condition/sea state``) that could not be checked, and why.
     statics : dict of str to xarray.Dataset
@@ -70,6 +76,7 @@ class DesignResult:
 
     utilisation: object
     fatigue: object
+    excursions: object = None
     failures: dict = field(default_factory=dict)
     statics: dict = field(default_factory=dict)
     runs: dict = field(default_factory=dict)
@@ -126,6 +133,16 @@ def _utilisation_rows(variant: Case, condition: Condition, sea_state: str, runs:
                          mpm_tension=extreme.value, mbl=mbl, safety_factor=factor,
                          required_safety_factor=required, ok=bool(factor >= required)))
     return rows
+
+
+def _excursion_rows(result: DesignResult, condition: str, sea_state: str, runs: list) -> list[dict]:
+    intact = result.statics.get("intact")
+    neutral = ({} if intact is None or "body_position" not in intact else
+               {str(b): intact["body_position"].sel(body=b).values for b in intact["body"].values})
+    rows = [dict(condition=condition, sea_state=sea_state, item=body, quantity="offset", largest=value)
+            for body, value in records.largest_offsets(runs, neutral).items()]
+    return rows + [dict(condition=condition, sea_state=sea_state, item=anchor, quantity="uplift", largest=value)
+                   for anchor, value in records.largest_uplift(runs).items()]
 
 
 def _failed_rows(case: Case, condition: Condition, sea_state: str) -> list[dict]:
@@ -190,7 +207,7 @@ def _jobs(case: Case, folder: Path, result: DesignResult) -> tuple[list[Job], li
 
 def _tables(case: Case, jobs: list[Job], failed: list[Condition], failures: dict, result: DesignResult, pd):
     """The utilisation and fatigue tables from the runs' files."""
-    rows, intact_runs = [], {}
+    rows, intact_runs, excursions = [], {}, []
     groups: dict[tuple[str, str], list[Job]] = {}
     for job in jobs:
         groups.setdefault((job.condition.name, job.sea_state.name), []).append(job)
@@ -212,10 +229,12 @@ def _tables(case: Case, jobs: list[Job], failed: list[Condition], failures: dict
             continue
         result.runs.update({(name, sea_state_name, job.seed): job.path for job in group})
         rows += _utilisation_rows(group[0].case, condition, sea_state_name, runs)
+        excursions += _excursion_rows(result, name, sea_state_name, runs)
         if condition.kind == "intact":
             intact_runs[sea_state_name] = (sea_state, runs)
     result.utilisation = pd.DataFrame(rows, columns=UTILISATION_COLUMNS)
     result.fatigue = _fatigue_table(case, intact_runs, pd)
+    result.excursions = pd.DataFrame(excursions, columns=EXCURSION_COLUMNS)
 
 
 def design(case: Case, output: str | Path | None = None, progress: Callable[[str], None] | None = None,

@@ -82,3 +82,26 @@ def reference_strength(case: Case, line_type: str, curve: str) -> float:
         raise KanatError(f"line_types.{line_type}.breaking_load: missing; the T-N curve '{curve}' "
                          "takes the line's MBL as its reference strength")
     return float(kind.breaking_load)
+
+
+def largest_offsets(runs: list, neutral: dict[str, np.ndarray]) -> dict[str, float]:
+    """Per body, the largest horizontal distance [m] of its reference point from ``neutral``
+    (body -> position, shape (3,): the intact statics) over the seeds' records."""
+    if "body" not in runs[0].dims:
+        return {}
+    found = {}
+    for k, body in enumerate(runs[0]["body"].values.astype(str)):
+        if body in neutral:
+            found[body] = max(float(np.hypot(*(ds["body_position"].values[:, k, :2] - neutral[body][:2]).T).max())
+                              for ds in runs)
+    return found
+
+
+def largest_uplift(runs: list) -> dict[str, float]:
+    """Per anchor, the largest upward (+z) force of the line on it [N] over the seeds' records
+    (negative: the line presses the anchor down throughout)."""
+    if "anchor_force" not in runs[0]:
+        return {}
+    names = runs[0]["anchor"].values.astype(str)
+    return {name: max(float(ds["anchor_force"].values[:, k, 2].max()) for ds in runs)
+            for k, name in enumerate(names)}

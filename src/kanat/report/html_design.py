@@ -53,6 +53,17 @@ def _fatigue(page: Page, frame) -> Markup:
                                          text_columns=("line",))])
 
 
+def _excursions(frame) -> Markup:
+    shown = frame.copy()
+    shown["unit"] = shown["quantity"].map({"offset": "m", "uplift": "kN"})
+    shown.loc[shown["quantity"] == "uplift", "largest"] *= 1e-3
+    note = _paragraph("The largest value in the runs (not an extreme-value estimate): a body's horizontal "
+                      "offset from its intact statics position, an anchor's upward line force (negative: "
+                      "pressed down throughout).")
+    return Markup("").join([note, table(list(shown.columns), shown.itertuples(index=False, name=None),
+                                        text_columns=("condition", "sea_state", "item", "quantity", "unit"))])
+
+
 def design_page(result, path) -> Path:
     """Write the page of a :class:`kanat.design_checks.DesignResult` to ``path``."""
     page = Page(f"Design check: {result.case.name}", "utilisation and fatigue of the mooring lines")
@@ -61,6 +72,8 @@ def design_page(result, path) -> Path:
         page.section("failures", "Not checked",
                      Markup("").join(_paragraph(f"{name}: {why}") for name, why in result.failures.items()))
     page.section("utilisation", "Utilisation", _utilisation(result.utilisation))
+    if result.excursions is not None and len(result.excursions):
+        page.section("excursions", "Offsets and anchor uplift", _excursions(result.excursions))
     if len(result.fatigue):
         page.section("fatigue", "Fatigue", _fatigue(page, result.fatigue))
     return page.write(path)
