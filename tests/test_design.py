@@ -153,7 +153,8 @@ def test_required_safety_factors_are_api_rp_2sk(condition, analysis, factor):
 
 @pytest.mark.parametrize("key, value, words", [
     ("analysis", "quasi-static", "motion analysis"), ("analysis", "frequency", "not built"),
-    ("standard", "dnv-os-e301", "partial factors")])
+    ("standard", "dnv-os-e301", "partial factors"),
+    ("fatigue", {"curve": "dnv-chain-studless"}, "not a T-N curve")])
 def test_what_is_not_built_is_refused_before_any_run(tmp_path, key, value, words):
     case = kanat.load_case(_write(tmp_path, _case_data(**{key: value})))
     with pytest.raises(KanatError, match=words):

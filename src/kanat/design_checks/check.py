@@ -26,7 +26,7 @@ import numpy as np
 
 from kanat import api
 from kanat.analysis.extremes import mpm
-from kanat.analysis.fatigue import damage
+from kanat.analysis.fatigue import TN_CURVES, damage
 from kanat.errors import KanatError
 from kanat.model import Case
 
@@ -100,6 +100,9 @@ def check_supported(case: Case) -> None:
     if design.analysis in REFUSED_ANALYSES:
         raise KanatError(f"design.analysis: {design.analysis}: {REFUSED_ANALYSES[design.analysis]}")
     required_safety_factor(design.standard, design.analysis, "intact")
+    if design.fatigue is not None and design.fatigue.curve not in TN_CURVES:
+        raise KanatError(f"design.fatigue.curve: '{design.fatigue.curve}' is not a T-N curve; known: "
+                         f"{', '.join(TN_CURVES)} (the S-N curves in stress are not used by the design check)")
     if case.model != "lumped":
         raise KanatError(f"model: {case.model}: a dynamic design check runs the lumped model "
                          "(model: lumped) of a mooring")
