@@ -199,8 +199,8 @@ def test_the_tables_are_the_same_whatever_engine_ran_the_runs(checked, tmp_path)
     pooled = design(intact, tmp_path, workers=2)
     assert "2 worker processes" in pooled.engine
     rows = serial.utilisation[serial.utilisation.condition == "intact"].reset_index(drop=True)
-    pd.testing.assert_frame_equal(pooled.utilisation, rows)
-    pd.testing.assert_frame_equal(pooled.fatigue, serial.fatigue)
+    pd.testing.assert_frame_equal(pooled.utilisation, rows, check_exact=True)
+    pd.testing.assert_frame_equal(pooled.fatigue, serial.fatigue, check_exact=True)
 
 
 @pytest.mark.slow
