@@ -220,3 +220,15 @@ def test_offsets_and_uplifts_are_the_largest_in_the_run_files(checked):
         else:
             moved = [ds.anchor_force.sel(anchor=row.item).values[:, 2].max() for ds in sets]
         assert row.largest == pytest.approx(max(moved), rel=1e-12)
+
+
+@pytest.mark.slow
+def test_mirror_damaged_conditions_give_mirror_tensions(tmp_path):
+    """Invariant: waves along x, the mooring symmetric about the x axis: removing leg2 or its
+    mirror leg3 gives leg1 the same MPM, and the remaining mirror legs swap their values."""
+    data = _case_data(conditions=["leg2", "leg3"], fatigue=None)
+    case = kanat.load_case(_write(tmp_path, data, "name,hs,tp,probability,duration\nhead,3.0,8.0,0.5,40\n"))
+    table = design(case).utilisation.set_index(["condition", "line"]).mpm_tension
+    assert table[("damaged:leg2", "leg1")] == pytest.approx(table[("damaged:leg3", "leg1")], rel=1e-9)
+    assert table[("damaged:leg2", "leg3")] == pytest.approx(table[("damaged:leg3", "leg2")], rel=1e-9)
+    assert table[("damaged:leg2", "leg1")] != pytest.approx(table[("damaged:leg2", "leg3")], rel=1e-4)
