@@ -7,8 +7,9 @@ from pathlib import Path
 from typing import Optional
 
 import typer
+from rich.text import Text
 
-from kanat.cli_common import fail, load, log, show
+from kanat.cli_common import console, fail, load, log, show
 from kanat.errors import KanatError
 
 
@@ -32,7 +33,7 @@ def register(app: typer.Typer) -> None:
 
         loaded = load(case, debug)
         try:
-            result = check(loaded, output, progress=lambda text: log.info(f"run {text}"), scheduler=scheduler,
+            result = check(loaded, output, progress=lambda text: console.print(Text(f"run {text}")), scheduler=scheduler,
                            workers=workers)
             paths = [*write_tables(result, output), design_page(result, output / "report.html")]
         except KanatError as error:
