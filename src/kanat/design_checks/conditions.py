@@ -71,7 +71,10 @@ def without_cable(case: Case, cable: str) -> Case:
     if not kept:
         raise KanatError(f"removing '{cable}' leaves no cable: the damaged condition needs a "
                          "mooring of two lines or more")
-    return case.replace({"cables": kept})
+    changes = {"cables": kept}
+    if case.design is not None:             # the variant is one condition; its own list would name the cable
+        changes["design.conditions"] = ["intact"]
+    return case.replace(changes)
 
 
 def condition_case(case: Case, condition: Condition) -> Case:

@@ -264,4 +264,15 @@ def reference_errors(case: Case) -> list[str]:
             if group is not None and end.name not in group:
                 messages.append(f"cables[{i}].{key}: '{end.name}' is not a {end.kind}; known: "
                                 f"{listing(group)}{suggest(end.name, list(group))}")
-    return messages
+    return messages + _condition_errors(case)
+
+
+def _condition_errors(case: Case) -> list[str]:
+    """Messages for design conditions that are neither intact, damaged nor a cable's name."""
+    if case.design is None:
+        return []
+    cables = [c.name for c in case.cables]
+    return [f"design.conditions[{j}]: '{entry}' is neither intact, damaged nor a cable; cables: "
+            f"{listing(cables)}{suggest(entry, cables)}"
+            for j, entry in enumerate(case.design.conditions)
+            if entry not in ("intact", "damaged") and entry not in cables]
