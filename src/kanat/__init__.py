@@ -16,6 +16,9 @@ read_result(path) -> xarray.Dataset
     A result file.
 report(result | path | study_dir, html_path) -> Path
     One self-contained HTML page (:mod:`kanat.report`, whose package is callable).
+design(case, output=None) -> DesignResult
+    The design checks of a mooring: ``utilisation`` and ``fatigue`` tables (pandas), intact and
+    damaged, under API RP 2SK (:mod:`kanat.design_checks`).
 Coupling(case)
     The lines driven by another program's time loop: ``initialize(positions)``,
     ``step(t, dt, positions, velocities) -> forces`` (:mod:`kanat.coupling`).
@@ -29,7 +32,7 @@ The names are loaded on first use, so ``import kanat`` stays light.
 from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "offsets", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
-__all__ = ["__version__", *_API, "report", "Coupling"]
+__all__ = ["__version__", *_API, "report", "Coupling", "design"]
 _FREQUENCY = ("linearize", "modes")     # the lumped system about its equilibrium (kanat.frequency)
 __all__ += list(_FREQUENCY)
 
@@ -51,6 +54,10 @@ def __getattr__(name):
         import kanat.catalog  # noqa: F401 - binds the module kanat.catalog
 
         return globals()["catalog"]
+    if name == "design":
+        from kanat.design_checks import design
+
+        return design
     if name == "report":
         import kanat.report  # noqa: F401 - binds the (callable) package kanat.report
 

@@ -306,11 +306,13 @@ def _draw(model: str, solution, plot: Path) -> None:
 
 
 from kanat.cli_docs import register as register_docs  # noqa: E402 - kanat schema, kanat export
+from kanat.cli_design import register as register_design  # noqa: E402 - kanat design
 from kanat.cli_import import register as register_import  # noqa: E402 - kanat import
 from kanat.cli_study import register  # noqa: E402 - the study verbs: study, sweep, report, validate-suite
 
 register(app)
 register_import(app)
+register_design(app)
 register_docs(app)
 
 

@@ -13,6 +13,7 @@ from pathlib import Path as FilePath
 from ..errors import Problem
 from ..model import Case
 from .moordyn_text import looks_like_moordyn
+from .sea_states import resolve_sea_states
 from .tables import resolve_tables
 from .yaml_loader import YamlDocument, load_yaml
 
@@ -55,4 +56,5 @@ def read_document(text: str, file: str | None = None) -> YamlDocument:
     if isinstance(doc.data, dict):
         base = FilePath(file).parent if file else FilePath(".")
         doc.problems.extend(resolve_tables(doc.data, base, file, doc.lines))
+        doc.problems.extend(resolve_sea_states(doc.data, base, file, doc.lines))
     return doc

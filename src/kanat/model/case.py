@@ -16,6 +16,7 @@ from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_
 from ._base import KanatModel, fmt, listing, suggest
 from .cable import Cable
 from .components import Body, LineType, Point
+from .design import Design
 from .environment import Environment
 from .operations import WinchStep
 from .problems import PitchModel, SphereTwoCables
@@ -71,6 +72,8 @@ class Case(KanatModel):
         Required by ``model: pitch``.
     winch : tuple of WinchStep
         Pay-out and haul-in of the first cable at its ``from`` end, in time order.
+    design : Design or None
+        The design checks ``kanat design`` runs (:mod:`kanat.design_checks`).
     """
 
     name: str = ""
@@ -88,6 +91,9 @@ class Case(KanatModel):
         (), description="pay-out (rate > 0) and haul-in (rate < 0) of the first cable at its "
                         "'from' end: steps {start, duration, rate} in time order, not "
                         "overlapping")
+    design: Design | None = Field(
+        None, description="design checks (kanat design): standard, analysis, sea_states, "
+                          "storm_duration, seeds, conditions, extremes, fatigue")
 
     @model_validator(mode="before")
     @classmethod
@@ -258,4 +264,15 @@ def reference_errors(case: Case) -> list[str]:
             if group is not None and end.name not in group:
                 messages.append(f"cables[{i}].{key}: '{end.name}' is not a {end.kind}; known: "
                                 f"{listing(group)}{suggest(end.name, list(group))}")
-    return messages
+    return messages + _condition_errors(case)
+
+
+def _condition_errors(case: Case) -> list[str]:
+    """Messages for design conditions that are neither intact, damaged nor a cable's name."""
+    if case.design is None:
+        return []
+    cables = [c.name for c in case.cables]
+    return [f"design.conditions[{j}]: '{entry}' is neither intact, damaged nor a cable; cables: "
+            f"{listing(cables)}{suggest(entry, cables)}"
+            for j, entry in enumerate(case.design.conditions)
+            if entry not in ("intact", "damaged") and entry not in cables]

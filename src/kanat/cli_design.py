@@ -1,0 +1,47 @@
+"""The ``design`` verb of the ``kanat`` command line: :func:`kanat.design_checks.design`, its
+tables written by :func:`kanat.design_checks.write_tables` and its page by
+:func:`kanat.report.html_design.design_page`."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+from rich.text import Text
+
+from kanat.cli_common import console, fail, load, log, show
+from kanat.errors import KanatError
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``design`` verb to ``app``."""
+
+    @app.command()
+    def design(case: Path = typer.Argument(..., help="Mooring case with a design block (YAML)."),
+               output: Path = typer.Option(..., "-o", "--output",
+                                           help="Folder for utilisation.csv, fatigue.csv, report.html and "
+                                                "the runs (resumed if it holds them)."),
+               scheduler: Optional[str] = typer.Option(None, "--scheduler",
+                                                       help="serial (default), a Dask scheduler address, or a "
+                                                            "scheduler .json file."),
+               workers: Optional[int] = typer.Option(None, "--workers",
+                                                     help="Run on a local pool of this many worker processes."),
+               debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
+        """Design checks: utilisation of every line intact and damaged, fatigue life (docs/design.md)."""
+        from kanat.design_checks import design as check, write_tables
+        from kanat.report.html_design import design_page
+
+        loaded = load(case, debug)
+        try:
+            result = check(loaded, output, progress=lambda text: console.print(Text(f"run {text}")), scheduler=scheduler,
+                           workers=workers)
+            paths = [*write_tables(result, output), design_page(result, output / "report.html")]
+        except KanatError as error:
+            fail(error, debug, "design check failed")
+        for name, why in result.failures.items():
+            log.warning(f"{name}: not checked: {why}")
+        failing = result.utilisation[~result.utilisation["ok"].astype(bool)]
+        log.info(f"runs on {result.engine}")
+        show(f"{len(result.utilisation)} line checks, {len(failing)} failing; wrote "
+             + ", ".join(str(p) for p in paths))
+        raise typer.Exit(0 if result.ok else 1)
