@@ -15,7 +15,7 @@ from ..errors import Problem
 from ..model._base import suggest
 from ..model.design import SEA_STATE_COLUMNS
 from ..model.paths import Path, key_path, line_of
-from .tables import TableError, _check_file
+from .tables import TableError, check_csv_file
 
 OPTIONAL = {"gamma": 3.3, "heading_deg": 0.0}
 """Columns a table may leave out, and their values."""
@@ -45,7 +45,7 @@ def read_sea_states(path: str | FilePath) -> list[dict[str, Any]]:
         With the file, the line and the column of the first bad entry.
     """
     path = FilePath(path)
-    _check_file(path)
+    check_csv_file(path, "sea-state table", SEA_STATE_COLUMNS)
     try:
         with path.open(newline="", encoding="utf-8") as handle:
             lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)

@@ -58,17 +58,18 @@ def _columns(header: list[str], source: str) -> list[int | None]:
     return [names.index(c) if c in names else None for c in TABLE_COLUMNS]
 
 
-def _check_file(path: FilePath) -> None:
-    """A ``.csv`` name, a regular file, at most :data:`MAX_TABLE_BYTES` (OSError when missing)."""
+def check_csv_file(path: FilePath, what: str = "motion table", columns=TABLE_COLUMNS) -> None:
+    """A ``.csv`` name, a regular file, at most :data:`MAX_TABLE_BYTES` (OSError when missing);
+    ``what`` and ``columns`` say in the messages what the file should be."""
     if path.suffix.lower() != ".csv":
-        raise TableError(f"'{path.name}' is not a .csv file; a motion table is a CSV file (motion.csv) "
-                         f"whose first row names its columns: {', '.join(TABLE_COLUMNS)}")
+        raise TableError(f"'{path.name}' is not a .csv file; a {what} is a CSV file "
+                         f"whose first row names its columns: {', '.join(columns)}")
     size = path.stat().st_size                    # OSError: missing, no permission
     if not path.is_file():
         raise TableError(f"{path.name}: not a regular file (a directory, a device or a pipe)")
     if size > MAX_TABLE_BYTES:
         raise TableError(f"{path.name}: {size / 1024**2:.0f} MiB, more than the "
-                         f"{MAX_TABLE_BYTES / 1024**2:.0f} MiB a motion table may hold")
+                         f"{MAX_TABLE_BYTES / 1024**2:.0f} MiB a {what} may hold")
 
 
 def read_motion_table(path: str | FilePath) -> list[list[float]]:
@@ -82,7 +83,7 @@ def read_motion_table(path: str | FilePath) -> list[list[float]]:
         With the file, the row and the column of the first bad entry.
     """
     path = FilePath(path)
-    _check_file(path)
+    check_csv_file(path)
     try:
         with path.open(newline="", encoding="utf-8") as handle:
             lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)
@@ -175,4 +176,5 @@ def _resolve_raos(motion: dict, base: FilePath, file: str | None, lines: dict[Pa
     return [Problem(key_path(where), message, file, line_of(lines, where))]
 
 
-__all__ = ["DOFS", "MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "TableError", "read_motion_table", "resolve_tables"]
+__all__ = ["DOFS", "MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "TableError", "check_csv_file", "read_motion_table",
+           "resolve_tables"]
