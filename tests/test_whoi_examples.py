@@ -313,7 +313,7 @@ def test_mpl_floats_above_the_water_fail_the_continuum_models_start():
     status = ds.attrs["status"]
     assert status.startswith("failed: bodies: body 'panther14' at ")
     assert "above the water surface (z = 0 m) in the initial state (t = 0)" in status
-    height = float(status.split(" m) is ")[1].split(" ")[0])
+    height = float(status.split(") m is ")[1].split(" ")[0])
     assert 146.98 * math.cos(math.radians(3.0)) - 100.0 < height < 146.98 - 100.0
 
 

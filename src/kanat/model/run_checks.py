@@ -97,10 +97,8 @@ def check_run_size(case: Case, out: Findings) -> None:
     except ValueError as exc:
         out.error(("simulation",), str(exc))
         return
-    outputs = math.floor(sim.duration / sim.output_interval * (1 + TIME_TOL)) + 1
-    per_output = (limits.OUTPUT_VALUES_PER_NODE * nodes + limits.OUTPUT_VALUES_PER_STEP
-                  + limits.OUTPUT_VALUES_PER_BODY * len(case.bodies))
-    size = 8.0 * outputs * per_output
+    outputs = _outputs(case)
+    size = 8.0 * outputs * _values_per_output(case)
     if size > limit:
         key = "output_dt" if sim.output_dt is not None else "duration"
         out.error(("simulation", key), f"the result would hold about {byte_size(size)} ({outputs:,} "
@@ -108,6 +106,39 @@ def check_run_size(case: Case, out: Findings) -> None:
                   f"more than the limit of {byte_size(limit)}; store less often (output_dt), shorten "
                   f"the duration or use fewer segments, or raise the limit "
                   f"(kanat --max-output 8G, {limits.OUTPUT_BYTES_ENV}=8G, or max_output_bytes=\"8G\" in Python)")
+
+
+def _outputs(case: Case) -> int:
+    """Outputs a dynamic run of ``case`` stores, t = 0 included (1 for a steady model)."""
+    sim = case.simulation
+    if sim is None or case.model not in ("continuum", "lumped"):
+        return 1
+    return math.floor(sim.duration / sim.output_interval * (1 + TIME_TOL)) + 1
+
+
+def _values_per_output(case: Case) -> int:
+    """Numbers a result stores per output: :data:`limits.OUTPUT_VALUES_PER_NODE` of every node,
+    :data:`limits.OUTPUT_VALUES_PER_BODY` of every body and :data:`limits.OUTPUT_VALUES_PER_STEP`."""
+    nodes = sum(cable.segments + 1 for cable in case.cables)
+    return (limits.OUTPUT_VALUES_PER_NODE * nodes + limits.OUTPUT_VALUES_PER_STEP
+            + limits.OUTPUT_VALUES_PER_BODY * len(case.bodies))
+
+
+RESULT_CHUNK_OUTPUTS = 64
+"""Outputs per HDF5 chunk of a run's result (:data:`kanat.io.stream.CHUNK_OUTPUTS`): the file holds
+whole chunks."""
+RESULT_FILE_BYTES = 64 * 1024
+"""A result file's HDF5 metadata, coordinates, attributes and embedded case [bytes]."""
+
+
+def result_bytes(case: Case) -> float:
+    """Estimated size of ``case``'s result file [bytes]: 8 bytes a number of every output, the outputs
+    rounded up to whole chunks of :data:`RESULT_CHUNK_OUTPUTS` (one output for a steady model),
+    and :data:`RESULT_FILE_BYTES`."""
+    outputs = _outputs(case)
+    if case.model in ("continuum", "lumped"):
+        outputs = -(-outputs // RESULT_CHUNK_OUTPUTS) * RESULT_CHUNK_OUTPUTS
+    return 8.0 * outputs * _values_per_output(case) + RESULT_FILE_BYTES
 
 
 def check_run_length(case: Case, out: Findings) -> None:
