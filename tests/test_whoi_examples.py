@@ -303,6 +303,7 @@ def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     initial_state(case_of(name), "lumped")
 
 
+@pytest.mark.slow
 def test_mpl_floats_above_the_water_fail_the_continuum_models_start():
     """The continuum model keeps the Panther floats' net buoyancy out of the water (a point body's
     buoyancy is a constant), so their 2800 N of lift beats the umbilical's 1456 N of weight and the
