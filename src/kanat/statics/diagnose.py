@@ -13,11 +13,12 @@ from __future__ import annotations
 import logging
 import warnings
 
-from kanat.statics.budget import budget
+from kanat.statics.budget import budget, seconds_limit
 from kanat.statics.driver import solve_statics
 
 DIAGNOSIS_SECONDS = 10.0
-"""Wall time the statics of a failed start may take [s] (the examples' take under 3 s)."""
+"""Wall time the statics of a failed start may take [s] (the examples' take under 3 s; less when
+``KANAT_STATICS_SECONDS`` says less)."""
 
 log = logging.getLogger(__name__)
 
@@ -40,7 +41,7 @@ def steady_failure(case) -> str | None:
             warnings.simplefilter("ignore")              # the case checks' notes on a statics variant
             statics = case.replace({"model": "statics", "winch": []})
             statics = statics.model_copy(update={"environment": statics.environment.at_start()})
-            with budget("the statics of a failed start", seconds=DIAGNOSIS_SECONDS):
+            with budget("the statics of a failed start", seconds=min(DIAGNOSIS_SECONDS, seconds_limit())):
                 return solve_statics(statics).verdict.failure
     except Exception as error:        # noqa: BLE001 - a diagnosis that fails explains nothing more
         log.debug(f"no statics to explain the failed start: {type(error).__name__}: {error}")
