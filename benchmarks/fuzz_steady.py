@@ -10,7 +10,8 @@ dynamic one (its run cut to one time step).
 Every case must end in one of (the contract of issue 22):
 
 * ``error``: a clear error (:class:`~kanat.errors.CaseError` whose errors name the file and the
-  key, or another :class:`~kanat.errors.KanatError` with its one message): no traceback;
+  key, or the line of a missing top-level key, or another :class:`~kanat.errors.KanatError` with
+  its one message): no traceback;
 * ``failed``: a steady state whose status is ``failed: ...`` (a check named);
 * ``ok``: a steady state whose status is ``ok`` and that passes the steady checks again, recomputed
   from the result as written (positions, tensions, bodies), all of them for statics and those a
@@ -140,7 +141,7 @@ def classify(text: str) -> tuple[str, str]:
             case = parse_case(text, FILE)
         except CaseError as error:
             errors = [p for p in error.problems if p.severity == "error"]
-            named = errors and all(p.file == FILE and p.key for p in errors)
+            named = errors and all(p.file == FILE and (p.key or p.line) for p in errors)   # a root key: its line
             first = errors[0] if errors else None
             where = "" if first is None else f"{first.file}:{first.line}: {first.key}: {first.message}"
             return ("error" if named else "unnamed"), where[:300]
@@ -201,8 +202,16 @@ def recheck(case, ds) -> str | None:
 
 # --- the round -----------------------------------------------------------------------------
 
+MEMORY_LIMIT = 6 * 1024**3
+"""Address space a worker may take [bytes]: a case that wants more ends in MemoryError (counted as
+``unexpected``) instead of crowding out the machine."""
+
+
 def _worker(connection) -> None:
+    import resource
+
     os.environ.setdefault("KANAT_STATICS_SECONDS", "30")
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
     import logging
 
     logging.disable(logging.WARNING)
