@@ -61,7 +61,7 @@ def test_a_tow_at_1999_kn_fails_on_strain_at_least_the_bodys_drag_needs():
 def test_a_towed_body_in_100_m_of_water_fails_on_the_seabed_by_its_deep_water_depth():
     deep = statics("towed_body.yaml").dataset                        # 2000 m: the same shape, no seabed met
     outcome = statics("towed_body.yaml", {"environment.depth": 100})
-    assert outcome.status.startswith("failed: seabed: cable 'tow' node 100 (s = 1000 m) is ")
+    assert outcome.status.startswith("failed: seabed: body 'sled' at cable 'tow' node 100 (s = 1000 m) is ")
     assert "environment.depth is the seabed" in outcome.status
     body_depth = -float(deep.position[-1, 2])
     assert number(outcome.status, "is") == pytest.approx(body_depth - 100.0, rel=1e-3)
@@ -84,7 +84,7 @@ def test_a_sinking_buoy_fails_on_the_seabed_a_line_length_below_it():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", api.RunFailedWarning)
         outcome = api.run(case, model="statics")
-    assert outcome.status.startswith("failed: seabed: cable 'riser' node 80 (s = 400 m) is ")
+    assert outcome.status.startswith("failed: seabed: body 'buoy' at cable 'riser' node 80 (s = 400 m) is ")
     # hanging straight down from the anchor at 500 m: the riser's stretched length below it
     w = 1.0 * 9.80665 - 1025 * 9.80665 * math.pi * 0.016**2 / 4
     stretch = (8500 * 400 + w * 400**2 / 2) / 1.3e7

@@ -12,6 +12,7 @@ WHOI Cable's example files give no results and its manuals no tables of them, so
 compares with WHOI's own numbers. Cases kanat cannot run yet are marked ``xfail(strict=True)``
 with the failure they show today: the mark fails the moment the failure is fixed.
 """
+import math
 from pathlib import Path
 import warnings
 
@@ -302,7 +303,23 @@ def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     initial_state(case_of(name), "lumped")
 
 
-@pytest.mark.xfail(strict=True, reason="the continuum model's steady state puts the float 44 m above the water")
+@pytest.mark.slow
+def test_mpl_floats_above_the_water_fail_the_continuum_models_start():
+    """The continuum model keeps the Panther floats' net buoyancy out of the water (a point body's
+    buoyancy is a constant), so their 2800 N of lift beats the umbilical's 1456 N of weight and the
+    line stands up from the anchor; the run says so at t = 0. Oracle: the line's 146.98 m to the top
+    Panther nearly vertical from the anchor 100 m down (the 0.12 m/s current tilts it by ~2 deg)."""
+    sim = {**case_of("mpl").simulation.model_dump(exclude_none=True), "duration": 0.05, "output_dt": 0.05}
+    ds = quietly(kanat.simulate, quietly(case_of("mpl").replace, {"simulation": sim}))
+    status = ds.attrs["status"]
+    assert status.startswith("failed: bodies: body 'panther14' at ")
+    assert "above the water surface (z = 0 m) in the initial state (t = 0)" in status
+    height = float(status.split(") m is ")[1].split(" ")[0])
+    assert 146.98 * math.cos(math.radians(3.0)) - 100.0 < height < 146.98 - 100.0
+
+
+@pytest.mark.xfail(strict=True, reason="the continuum model keeps inline floats' buoyancy out of the water: "
+                                       "its steady state lifts the float 44 m above it (and fails its checks)")
 def test_mpl_float_stays_in_the_water():
     ds = initial_state(case_of("mpl"), "continuum")
     assert float(ds["body_position"].sel(body="float").values[2]) <= 0.0

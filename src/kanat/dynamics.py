@@ -54,6 +54,7 @@ from kanat.errors import OutputWriteError, SolverError
 from kanat.statics.budget import BudgetExceeded
 from kanat.io.schema import Layout, to_dataset
 from kanat.io.stream import Checkpoint
+from kanat.statics.diagnose import steady_failure
 from kanat.statics.steady_checks import LEFT_BY_DYNAMIC_MODELS, check_steady, nodes_by_cable
 from kanat.schemes import label
 
@@ -519,7 +520,11 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
         return None
     nodes = nodes_by_cable(layout.static["cable"][1], layout.static["s"][1], values["position"], values["tension"])
-    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS)
+    names = [str(name) for name in layout.labels.get("body", ())]
+    bodies = dict(zip(names, np.reshape(values.get("body_position", np.zeros((0, 3))), (-1, 3))))
+    attitudes = dict(zip(names, np.reshape(values["body_attitude"], (-1, 3)))) if "body_attitude" in values else None
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS,
+                           bodies=bodies, attitudes=attitudes)
     for warning in verdict.warnings:
         log.warning(warning)
     return verdict.failure
@@ -558,6 +563,10 @@ def _failed_start(model, observers, error, start, compiling, output) -> RunSumma
     layout = model.layout()
     for observer in observers:
         observer.start(layout, None)
+    case = getattr(model, "case", None)
+    why = steady_failure(case) if case is not None and not isinstance(error, BudgetExceeded) else None
+    if why is not None:
+        error = f"the case's steady state fails its checks ({why}); the {model.name} model's own start: {error}"
     summary = _summary(model, f"failed: no initial state: {error}", Steps(), -1, start,
                        time.perf_counter() - start - compiling, 0.0, compiling, output)
     _finish(observers, summary, {})

@@ -20,19 +20,36 @@ written here.
 a column per dimension and coordinate, the value last; headers carry the units
 (``time [s]``, ``tension [N]``). The global attributes go to ``attributes.csv`` and the
 embedded case to ``case.yaml``.
+
+Both estimate what they will write (:func:`vtk_bytes`, :func:`csv_bytes`) and refuse before
+writing anything when the disk cannot hold it (:func:`kanat.io.space.require_room`). Each file is
+written atomically; a disk that fills up during the export all the same ends it with one
+:class:`~kanat.errors.OutputWriteError`, and the files this export had written are removed, so a
+directory never holds half a time series or half the tables.
 """
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from kanat.errors import KanatError
+from kanat.errors import KanatError, OutputWriteError
 from kanat.io.outputs import atomic_path, write_text_atomic
+from kanat.io.space import require_room
 
 FRAME_DIGITS = 5
 """Digits of the output index in the ``.vtu`` file names (100 000 outputs)."""
+VTU_BYTES_PER_VALUE = 8 * 4 / 3
+"""Bytes of one value in a ``.vtu`` file: 8 of a float64, base64-encoded (4 characters per 3 bytes);
+meshio also compresses them (zlib), so the estimate errs on the safe side."""
+VTU_FILE_BYTES = 2048
+"""The XML of one ``.vtu`` file around its data arrays [bytes]."""
+CSV_BYTES_PER_FIELD = 24
+"""Characters of one field of a tidy CSV row with its comma: a float as pandas writes it (up to
+17 significant digits, a sign, a point and an exponent)."""
+ADVICE = "free some space or export to another disk"
 
 
 def _meshio():
@@ -121,20 +138,57 @@ def export_vtk(ds, directory, stem: str | None = None) -> Path:
     names, cells, cell_cable = cable_cells(ds["cable"].values)
     node_cable = np.array([names.index(c) for c in np.asarray(ds["cable"].values).astype(str)])
     bodies = [str(b) for b in ds["body"].values] if "body" in ds.dims else []
+    frames = _frames(ds)
+    require_room(directory / f"{stem}.pvd", vtk_bytes(ds), f"the VTK export of {len(frames)} outputs to {directory}",
+                 ADVICE)
     entries = []
-    for i, (time, frame) in enumerate(_frames(ds)):
-        cable_file = f"{stem}_cables_{i:0{FRAME_DIGITS}d}.vtu"
-        _write_mesh(meshio, directory / cable_file,
-                    _cables_mesh(meshio, frame, cells, cell_cable, node_cable, ds["s"].values))
-        entries.append((time, 0, cable_file))
-        if bodies:
-            body_file = f"{stem}_bodies_{i:0{FRAME_DIGITS}d}.vtu"
-            mesh = meshio.Mesh(np.asarray(frame["body_position"], dtype=float),
-                               [("vertex", np.arange(len(bodies))[:, None])],
-                               point_data={"body": np.arange(len(bodies))})
-            _write_mesh(meshio, directory / body_file, mesh)
-            entries.append((time, 1, body_file))
-    return write_text_atomic(directory / f"{stem}.pvd", pvd_text(entries, names, bodies))
+    with _whole(directory, "the VTK export", entries, len(frames)):
+        for i, (time, frame) in enumerate(frames):
+            cable_file = f"{stem}_cables_{i:0{FRAME_DIGITS}d}.vtu"
+            _write_mesh(meshio, directory / cable_file,
+                        _cables_mesh(meshio, frame, cells, cell_cable, node_cable, ds["s"].values))
+            entries.append((time, 0, cable_file))
+            if bodies:
+                body_file = f"{stem}_bodies_{i:0{FRAME_DIGITS}d}.vtu"
+                mesh = meshio.Mesh(np.asarray(frame["body_position"], dtype=float),
+                                   [("vertex", np.arange(len(bodies))[:, None])],
+                                   point_data={"body": np.arange(len(bodies))})
+                _write_mesh(meshio, directory / body_file, mesh)
+                entries.append((time, 1, body_file))
+        return write_text_atomic(directory / f"{stem}.pvd", pvd_text(entries, names, bodies))
+
+
+def vtk_bytes(ds) -> float:
+    """Estimated size of :func:`export_vtk`'s files for ``ds`` [bytes]: per output, every node's
+    position, tension, s, cable and velocity, every segment's two nodes, cable and tension, every
+    body's position and index (:data:`VTU_BYTES_PER_VALUE` each), and the XML of two files."""
+    outputs = ds.sizes.get("time", 1)
+    nodes, bodies = ds.sizes.get("node", 0), ds.sizes.get("body", 0)
+    values = nodes * (3 + 1 + 1 + 1 + 3) + max(nodes - 1, 0) * (2 + 1 + 1) + bodies * 4
+    return outputs * (values * VTU_BYTES_PER_VALUE + 2 * VTU_FILE_BYTES)
+
+
+def csv_bytes(ds) -> float:
+    """Estimated size of :func:`export_csv`'s tables for ``ds`` [bytes]: a row per value of every
+    variable, with a field per dimension and coordinate (:data:`CSV_BYTES_PER_FIELD` each), and
+    the attributes and the case as they are."""
+    fields = sum(var.size * (1 + var.ndim + sum(1 for c in var.coords if c not in var.dims))
+                 for var in ds.data_vars.values())
+    return fields * CSV_BYTES_PER_FIELD + sum(len(str(v)) + len(k) + 4 for k, v in ds.attrs.items())
+
+
+@contextlib.contextmanager
+def _whole(directory: Path, what: str, written: list, total: int):
+    """Remove the files of ``written`` (paths, or entries ending with a file name in ``directory``)
+    when the block ends in an :class:`OutputWriteError` (a disk that filled up), and say so."""
+    try:
+        yield
+    except OutputWriteError as error:
+        files = [directory / (entry[-1] if isinstance(entry, tuple) else entry) for entry in written]
+        for path in files:
+            Path(path).unlink(missing_ok=True)
+        raise OutputWriteError(f"{what} to {directory} ({total} outputs or tables) stopped after writing "
+                               f"{len(files)} files, which were removed: {error}") from None
 
 
 def pvd_text(entries, cables, bodies) -> str:
@@ -180,22 +234,25 @@ def tidy_table(ds, name: str):
 
 def export_csv(ds, directory) -> list[Path]:
     """Write every variable of a result as a tidy CSV (module docstring); return the files."""
-    directory = Path(directory)
-    directory.mkdir(exist_ok=True)
-    written = []
-    for name in ds.data_vars:
-        path = directory / f"{name}.csv"
-        with atomic_path(path) as tmp:
-            tidy_table(ds, name).to_csv(tmp, index=False)
-        written.append(path)
     import csv
     import io
 
-    buffer = io.StringIO()
-    writer = csv.writer(buffer)
-    writer.writerow(["name", "value"])
-    writer.writerows([k, v] for k, v in ds.attrs.items() if k != "case_yaml")
-    written.append(write_text_atomic(directory / "attributes.csv", buffer.getvalue()))
-    if ds.attrs.get("case_yaml"):
-        written.append(write_text_atomic(directory / "case.yaml", str(ds.attrs["case_yaml"])))
+    directory = Path(directory)
+    directory.mkdir(exist_ok=True)
+    require_room(directory / "attributes.csv", csv_bytes(ds),
+                 f"the CSV export of {len(ds.data_vars)} variables to {directory}", ADVICE)
+    written = []
+    with _whole(directory, "the CSV export", written, len(ds.data_vars) + 2):
+        for name in ds.data_vars:
+            path = directory / f"{name}.csv"
+            with atomic_path(path) as tmp:
+                tidy_table(ds, name).to_csv(tmp, index=False)
+            written.append(path)
+        buffer = io.StringIO()
+        writer = csv.writer(buffer)
+        writer.writerow(["name", "value"])
+        writer.writerows([k, v] for k, v in ds.attrs.items() if k != "case_yaml")
+        written.append(write_text_atomic(directory / "attributes.csv", buffer.getvalue()))
+        if ds.attrs.get("case_yaml"):
+            written.append(write_text_atomic(directory / "case.yaml", str(ds.attrs["case_yaml"])))
     return written

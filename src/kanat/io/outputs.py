@@ -39,7 +39,8 @@ import sys
 import time
 from pathlib import Path
 
-from kanat.errors import KanatError
+from kanat.errors import KanatError, OutputWriteError
+from kanat.io.space import is_disk_full, not_written, require_room
 
 LOCK_SUFFIX = ".lock"
 """The sidecar lock of ``dir/NAME`` is ``dir/.NAME.lock``."""
@@ -334,14 +335,17 @@ def atomic_path(target):
         if not tmp.exists():
             raise KanatError(f"the writer of {target} did not create its file")
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as error:
         tmp.unlink(missing_ok=True)
+        if is_disk_full(error) and not isinstance(error, OutputWriteError):
+            raise not_written(target) from None
         raise
 
 
 def write_bytes_atomic(target, data: bytes) -> Path:
     """Write ``data`` to ``target`` atomically (temporary file, fsync, rename); return ``target``."""
     target = Path(target)
+    require_room(target, len(data), str(target), "free some space and write it again")
     with atomic_path(target) as tmp:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
         try:

@@ -22,6 +22,12 @@ reported, as ``<check>: ...``):
    ``seabed`` block, :data:`PENETRATION_FLOOR` without one (statics' seabed is rigid).
 6. ``grounded``: the length resting on the seabed (a statics result's ``grounded_length``)
    between 0 and the cable's length.
+7. ``bodies``: every body (given its positions) where its cables hold it, not above the water
+   surface when its loads are those of a submerged body, and not wholly under the seabed
+   (:mod:`kanat.statics.body_checks`).
+
+A node that holds a body (a cable end at a body, an attachment) is named with it in the messages
+(``body 'sled' at cable 'tow' node 100 (s = 1000 m)``).
 
 The checks read a case and node arrays only, so the statics (single cables and networks) and the
 lumped model's equilibrium use this one module; so does the initial state of a dynamic run
@@ -37,6 +43,7 @@ from typing import Mapping, Protocol
 import numpy as np
 
 from kanat.physics.seabed import PENETRATION_FLOOR, PENETRATION_MARGIN, seabed_of
+from kanat.statics.body_checks import check_bodies
 
 ABSURD_BREAKING_MULTIPLE = 10.0
 """A tension this many times the line's breaking load fails a steady state: safety factors on
@@ -47,7 +54,7 @@ PLACEMENT_TOLERANCE = 1e-3
 the cable's length)."""
 RELATIVE_TOLERANCE = 1e-6
 """Round-off allowed on strains and on distances, as a fraction of the quantity."""
-LEFT_BY_DYNAMIC_MODELS = ("tension", "reach")
+LEFT_BY_DYNAMIC_MODELS = ("tension", "reach", "bodies")
 """The checks a dynamic model's own ``check()`` does not make of its outputs (it checks strain and
 the seabed with its own contact model, the run loop finiteness): those :mod:`kanat.dynamics` adds
 at t = 0."""
@@ -96,7 +103,8 @@ class Verdict:
 
 
 def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady state",
-                 only: tuple[str, ...] | None = None) -> Verdict:
+                 only: tuple[str, ...] | None = None, bodies: Mapping | None = None,
+                 attitudes: Mapping | None = None) -> Verdict:
     """Run the checks of the module docstring on the nodes of every cable of ``case``.
 
     Parameters
@@ -109,6 +117,10 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
         Names the state in the messages (``the initial state`` for a dynamic run's).
     only : tuple of str, optional
         The names of the checks to make (e.g. :data:`LEFT_BY_DYNAMIC_MODELS`); None: all.
+    bodies : mapping of str to array_like, shape (3,), optional
+        Body positions (a rigid body's reference point) [m]; None: no ``bodies`` check.
+    attitudes : mapping of str to array_like, shape (3,), optional
+        Roll, pitch, yaw of the bodies [rad] where known (rigid bodies' fairleads).
 
     Returns
     -------
@@ -123,6 +135,10 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
                 failure = check(case, cable, nodes, when, warnings) if len(nodes.s) > 1 else None
                 if failure is not None:
                     return Verdict(f"{check.__name__[1:]}: {failure}", tuple(warnings))
+        if bodies is not None and (only is None or "bodies" in only):
+            failure = check_bodies(case, cables, bodies, attitudes, when, warnings)
+            if failure is not None:
+                return Verdict(f"bodies: {failure}", tuple(warnings))
     return Verdict(None, tuple(warnings))
 
 
@@ -150,6 +166,9 @@ class _Nodes:
         self.before = np.searchsorted(ends, self.s, side="left")     # the section ending at the node,
         self.after = np.searchsorted(ends, self.s, side="right")     # the one starting there (the same inside)
         self.element_type = np.searchsorted(ends, 0.5 * (self.s[:-1] + self.s[1:]), side="left")
+        held = [(0.0, cable.from_), (cable.length, cable.to)]
+        self.bodies = [(s_end, end.name) for s_end, end in held if end.kind == "body"]
+        self.bodies += [(attachment.s, attachment.body) for attachment in cable.attachments]
 
     def lenient(self, score) -> tuple[np.ndarray, np.ndarray]:
         """Per node, the smaller of ``score(line, nodes)`` (an array over the node indices ``nodes``)
@@ -167,7 +186,11 @@ class _Nodes:
         return best, kind
 
     def where(self, cable, k: int) -> str:
-        return f"cable '{cable.name}' node {self.index[k]} (s = {self.s[k]:.6g} m)"
+        """The node ``k`` in a message, with the body it holds if any."""
+        node = f"cable '{cable.name}' node {self.index[k]} (s = {self.s[k]:.6g} m)"
+        tolerance = PLACEMENT_TOLERANCE + RELATIVE_TOLERANCE * cable.length
+        held = [name for s, name in self.bodies if abs(s - self.s[k]) <= tolerance]
+        return f"body '{held[0]}' at {node}" if held else node
 
 
 def law_strain(line, tension) -> np.ndarray:
@@ -343,4 +366,4 @@ def check_result(result) -> Verdict:
     dimensionless groups with its own checks (``physical_warnings``), passes as it is."""
     if result.sphere is not None:
         return Verdict()
-    return check_steady(result.case, result.cables)
+    return check_steady(result.case, result.cables, bodies=result.bodies, attitudes=getattr(result, "attitudes", None))

@@ -14,6 +14,13 @@ parse_values(spec, key="") -> list
 read_summary(path) -> (Dataset, keys, statistics)
     A study's summary table (:mod:`.store` describes the directory).
 
+A study that the disk cannot hold is refused before its first case: the estimated results of
+the cases left to run (:func:`kanat.model.run_checks.result_bytes`) and their records must fit
+in the free space. A disk that fills up all the same stops the study with one
+:class:`~kanat.errors.OutputWriteError`: the finished cases stay recorded, the running case
+keeps its partial result and checkpoint, and the same study run again once space is freed
+continues from there.
+
 Example
 -------
 >>> from kanat.sweep import sweep
@@ -28,6 +35,9 @@ from dataclasses import dataclass
 from os import PathLike
 
 import xarray as xr
+
+from kanat.errors import OutputWriteError
+from kanat.io.space import require_room
 
 from kanat.sweep.engine import run_case
 from kanat.sweep.execution import cluster_pays, execute
@@ -115,23 +125,45 @@ def sweep(case, vary: dict, out_dir, scheduler=None, workers: int | None = None,
         return _run(plan, StudyStore(root), scheduler, workers, progress, window)
 
 
+RECORD_BYTES = 64 * 1024
+"""Room for one case's record, its case file and its row of the summary [bytes]."""
+
+
+def _stopped(store: StudyStore, name: str, state: StudyProgress, why: str) -> OutputWriteError:
+    """The error that stops a study whose disk is full, in one sentence."""
+    why = why.removesuffix("; free some space and continue with --resume")
+    return OutputWriteError(f"the study in {store.root} stopped at case {name} ({state.done} of {state.total} "
+                            f"cases finished and kept): {why}; free some space and run the same study again, "
+                            "it continues with the cases not finished")
+
+
 def _run(plan: StudyPlan, store: StudyStore, scheduler, workers, progress, window) -> StudyResult:
     """Prepare the study directory, run the unfinished cases, write the summary."""
-    store.prepare(plan)
     done = store.finished()
     todo = [c for c in plan.cases if c.name not in done]
+    require_room(store.root / "summary.nc", sum(c.result_bytes + RECORD_BYTES for c in todo),
+                 f"the study's {len(todo)} cases left to run (their results and records)",
+                 "free some space, store less often (output_dt) or write the study to another disk")
+    store.prepare(plan)
     state = StudyProgress(total=len(plan.cases), done=len(done),
                           failed=sum(r["status"] != "ok" for r in done.values()))
     specs = {c.name: c for c in plan.cases}
     reporter = rich_progress(state) if progress is True else None
     callback = reporter.update if reporter is not None else progress
 
+
     def on_done(name: str, outcome: dict) -> None:
         spec = specs[name]
+        if outcome.get("stop"):
+            raise _stopped(store, name, state, outcome["message"])
         record = {"index": spec.index, "name": name, "parameters": spec.parameters,
                   "result": str(store.result_file(name).relative_to(store.root)), **outcome}
-        store.record(record)
-        store.write_summary(plan)
+        try:
+            store.record(record)
+            store.write_summary(plan)
+        except OutputWriteError as error:
+            store.record_file(name).unlink(missing_ok=True)       # run again when the study continues
+            raise _stopped(store, name, state, str(error)) from None
         if record["status"] == "ok":                 # finished: its checkpoint is no longer needed
             store.checkpoint_file(name).unlink(missing_ok=True)
         state.finish(record)

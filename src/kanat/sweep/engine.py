@@ -1,7 +1,8 @@
 """One case of a study, run in a worker: :func:`run_case` (the engines are in :mod:`.execution`).
 
 :func:`run_case` runs one variant (any model) and returns its record; it never raises:
-a failure becomes ``status: failed`` with the message.
+a failure becomes ``status: failed`` with the message, and a result that could not be written
+(a full disk) a record with ``stop`` set, on which the study stops.
 """
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ import traceback
 import warnings
 from pathlib import Path
 
-from kanat.errors import KanatError
+from kanat.errors import KanatError, OutputWriteError
 
 def _run_model(case, output: Path) -> str:
     """Run a validated case to ``output`` with :func:`kanat.api.run`; return its status.
@@ -67,6 +68,9 @@ def run_case(text: str, label: str, output: str, window=None) -> dict:
             record["status"] = "ok"
         else:
             record["message"] = status.removeprefix("failed: ")
+    except OutputWriteError as error:     # a full disk: the study stops (the case is not recorded)
+        record["message"] = str(error)
+        record["stop"] = True
     except Exception as error:  # noqa: BLE001 - a failing case is recorded, never raised
         record["message"] = f"{type(error).__name__}: {error}"
         record["traceback"] = traceback.format_exc(limit=6)

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 from kanat.errors import KanatError
 from kanat.sweep.values import format_value, parse_values
+from kanat.model.run_checks import result_bytes
 from kanat.sweep.variants import base_data, parse_key, short_labels, validate_variant, variant_text
 
 MAX_CASES = 100_000
@@ -44,6 +45,8 @@ class CaseSpec:
         The variant's case file (YAML).
     error : str or None
         Why the variant is not a valid case (then it is recorded as failed, never run).
+    result_bytes : float
+        Estimated size of its result file [bytes] (:func:`kanat.model.run_checks.result_bytes`).
     """
 
     index: int
@@ -51,6 +54,7 @@ class CaseSpec:
     parameters: dict
     text: str
     error: str | None = None
+    result_bytes: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -129,8 +133,9 @@ def plan_study(case, vary: dict) -> StudyPlan:
         except KanatError as problem:                # a value that breaks the path of another key
             cases.append(CaseSpec(index, name, parameters, "", f"{base} [{name}]: {problem}"))
             continue
-        _, error = validate_variant(text, f"{base} [{name}]")
-        cases.append(CaseSpec(index, name, parameters, text, error))
+        variant, error = validate_variant(text, f"{base} [{name}]")
+        size = 0.0 if variant is None else result_bytes(variant)
+        cases.append(CaseSpec(index, name, parameters, text, error, size))
     if all(c.error for c in cases):
         raise KanatError(f"no case of the study is valid; the first one:\n{cases[0].error}")
     sha = hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
