@@ -33,12 +33,12 @@ family's seconds go, function by function.
 """
 from __future__ import annotations
 
-import hashlib
 import logging
 import time
 from dataclasses import dataclass
 
 from kanat import aot
+from kanat._private_api import disk_cached_signatures
 
 OPTIONS = {"kernel": {"cache": True, "error_model": "numpy", "no_cfunc_wrapper": True},
            "inner": {"cache": True, "error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
@@ -198,13 +198,8 @@ def is_cached(dispatcher, accept=None) -> bool:
     dispatcher = dispatcher_of(dispatcher)
     if any(accept(signature) for signature in dispatcher.signatures):
         return True
-    try:
-        index = dispatcher._cache._cache_file._load_index()
-        magic = dispatcher.targetctx.codegen().magic_tuple()
-        code = hashlib.sha256(dispatcher.py_func.__code__.co_code).hexdigest()
-    except (AttributeError, OSError, EOFError, ValueError):      # numba internals moved: assume not cached
-        return False
-    return any(key[1] == magic and key[2][0] == code and accept(key[0]) for key in index)
+    cached = disk_cached_signatures(dispatcher) or ()      # None: numba internals moved, assume not cached
+    return any(accept(signature) for signature in cached)
 
 
 def pending(family: Family) -> float | None:
