@@ -6,7 +6,7 @@ cached per machine (``kanat.aot_cache``, an empty cache at the start) and withou
 Each round clones the checkout's committed state into a temporary folder (no module built
 before), makes a venv with the machine's ``python3``, and times each ``pip install -v -e
 CLONE[extra]`` (wall, and CPU of pip and everything it started); it reads what the build did
-from its output (``kanat kernels: N copied from the cache ..., M compiled``) and measures the
+from pip's verbose output (``kanat kernels: N copied from the cache ..., M compiled``) and measures the
 venv's size after each. Wheels come from pip's cache or the index: the first round downloads
 what the later ones find in pip's cache.
 
@@ -19,11 +19,13 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import resource
 import subprocess
 import tempfile
+import time
 from pathlib import Path
 
-from bench_install import ROOT, size_mb, timed
+from bench_install import ROOT, size_mb
 
 
 def one_round(cached: bool, extras: list[str]) -> list[dict]:
@@ -40,9 +42,17 @@ def one_round(cached: bool, extras: list[str]) -> list[dict]:
                        capture_output=True)
         rows = []
         for extra in extras:
-            wall, cpu, output = timed([python, "-m", "pip", "install", "-v", "-e", f"{clone}[{extra}]"], env, folder)
-            found = re.search(r"kanat kernels: (\d+) copied from the cache \S+, (\d+) compiled", output)
-            copied, compiled = (int(found[1]), int(found[2])) if found else (0, 0)
+            log = folder / f"pip-{extra}.log"
+            with open(log, "w") as output:                  # pip -v shows the build's own output: what it did
+                start_cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
+                start = time.perf_counter()
+                subprocess.run([python, "-m", "pip", "install", "-v", "-e", f"{clone}[{extra}]"], env=env,
+                               cwd=folder, stdout=output, stderr=subprocess.STDOUT, check=True)
+                wall = time.perf_counter() - start
+                end_cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (end_cpu.ru_utime - start_cpu.ru_utime) + (end_cpu.ru_stime - start_cpu.ru_stime)
+            found = re.search(r"kanat kernels: (\d+) copied from the cache \S+, (\d+) compiled", log.read_text())
+            copied, compiled = (f"{found[1]}", f"{found[2]}") if found else ("?", "?")
             rows.append({"extra": extra, "wall": wall, "cpu": cpu, "copied": copied, "compiled": compiled,
                          "venv": size_mb(folder / "venv")})
         return rows
