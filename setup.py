@@ -2,7 +2,10 @@
 
 Everything else about the package is in ``pyproject.toml``. The extensions are optional: when
 they cannot be built (no C compiler, say), or with ``KANAT_AOT=0`` in the environment, the
-install goes on without them and runs compile their kernels with numba on first use.
+install goes on without them and runs compile their kernels with numba on first use. Compiled
+once per machine: a later install with the same kernel sources, numba, NumPy and Python copies
+them from a user cache directory (``kanat.aot_cache``; ``KANAT_KERNEL_CACHE`` names it, ``0``
+turns it off).
 """
 import multiprocessing
 import os
@@ -14,11 +17,14 @@ from setuptools.command.build_ext import build_ext
 
 sys.path.insert(0, str(Path(__file__).parent / "src"))
 
+from kanat._private_api import compile_object_files, object_file  # noqa: E402 - from the source tree
+from kanat.aot_cache import build_once  # noqa: E402
+
 
 def _compile(extension, build_temp) -> bool:
     """Compile one module's kernels to its object file; whether it was done."""
     try:
-        extension._cc._compile_object_files(build_temp)
+        compile_object_files(extension._cc, build_temp)
         return True
     except Exception as error:  # noqa: BLE001 - optional: the runs compile with numba instead
         print(f"warning: {extension.name} was not compiled ({type(error).__name__}: {error})", file=sys.stderr)
@@ -30,17 +36,29 @@ def _compile_and_exit(extension, build_temp) -> None:
     os._exit(0 if _compile(extension, build_temp) else 1)
 
 
-def _object_file(extension, build_temp) -> str:
-    """Where ``CC._compile_object_files`` writes ``extension``'s object file."""
-    return os.path.join(build_temp, os.path.splitext(extension._cc.output_file)[0] + ".o")
-
-
 class BuildKernels(build_ext):
-    """``build_ext`` that compiles numba's ``pycc`` modules side by side (numba compiles on one core),
-    then links them; a module that fails is skipped, not the install."""
+    """``build_ext`` that copies the kernel modules from the machine's cache when they were compiled
+    before from the same sources by the same numba (:mod:`kanat.aot_cache`), and otherwise compiles
+    numba's ``pycc`` modules side by side (numba compiles on one core), links them and caches them;
+    a module that fails is skipped, not the install."""
 
     def build_extensions(self):
-        kernels = [ext for ext in self.extensions if hasattr(ext, "_cc")]
+        self.check_extensions_list(self.extensions)
+        kernels = {Path(self.get_ext_fullpath(ext.name)): ext for ext in self.extensions if hasattr(ext, "_cc")}
+        for other in [ext for ext in self.extensions if ext not in kernels.values()]:
+            self.build_extension(other)
+        if not kernels:
+            return
+        outcome = build_once(kernels, lambda missing: self._build_kernels([kernels[path] for path in missing]))
+        made = outcome["copied"] + outcome["built"]
+        for path, extension in kernels.items():
+            if path not in made:
+                self.extensions.remove(extension)          # not built: the runs compile with numba instead
+        print(f"kanat kernels: {len(outcome['copied'])} copied from the cache {outcome['key']}, "
+              f"{len(outcome['built'])} compiled, in {outcome['seconds']:.1f} s", file=sys.stderr)
+
+    def _build_kernels(self, kernels) -> list:
+        """Compile and link the kernel modules ``kernels``; the paths of those built."""
         os.makedirs(self.build_temp, exist_ok=True)
         if "fork" in multiprocessing.get_all_start_methods():        # every module at once, forked: the
             fork = multiprocessing.get_context("fork")                # extensions hold functions, which do not pickle
@@ -52,12 +70,15 @@ class BuildKernels(build_ext):
             done = [worker.exitcode == 0 for worker in workers]
         else:
             done = [_compile(extension, self.build_temp) for extension in kernels]
+        built = []
         for extension, ok in zip(kernels, done):
             if ok:
-                extension.extra_objects = [_object_file(extension, self.build_temp)]
-            else:
-                self.extensions.remove(extension)
-        super().build_extensions()
+                extension.extra_objects = [object_file(extension._cc, self.build_temp)]
+                self.build_extension(extension)
+                path = Path(self.get_ext_fullpath(extension.name))
+                if path.is_file():
+                    built.append(path)
+        return built
 
     def build_extension(self, ext):
         try:

@@ -9,12 +9,7 @@ import pytest
 from numba import njit
 from numba.core import event
 
-from numba.core.registry import CPUDispatcher
-
 from kanat import aot, jit, warmup
-from kanat.continuum import bending3d, kernels2d, kernels3d
-from kanat.continuum.factorized import dense, sweeps_compiled, waves_compiled
-from kanat.lumped import entries, fast, fast_implicit, kernels
 from kanat.api import SCHEMES, load_case, simulate
 from kanat.jit import Family
 from kanat.model import Case
@@ -35,22 +30,11 @@ class Compiles(event.Listener):
 
 @pytest.fixture
 def numba_kernels(monkeypatch):
-    """This test's runs use numba's kernels, as an install without compiled ones does: entries
-    resolved earlier in the process are forgotten for the test and restored after it."""
+    """This test's runs use numba's kernels, as an install without compiled ones does; what the
+    process found before is restored after it."""
     monkeypatch.setenv("KANAT_AOT", "0")
-    monkeypatch.setattr(aot, "_loaded", {})
-    resolved = {(module, name): vars(module)[name] for module in (kernels2d, kernels3d, entries)
-                for name in aot.ENTRIES if name in vars(module)}
-    for module, name in resolved:
-        delattr(module, name)
-    aot.kernel.cache_clear()
-    yield
-    for module in (kernels2d, kernels3d, entries):
-        for name in aot.ENTRIES:
-            vars(module).pop(name, None)
-    for (module, name), value in resolved.items():
-        setattr(module, name, value)
-    aot.kernel.cache_clear()
+    with aot.LOOKUP.numba_only():
+        yield
 
 
 def run_quietly(case):
@@ -78,13 +62,9 @@ def test_every_registered_scheme_has_a_family(name):
         assert family in warmup.FAMILIES and family in warmup.CASES
 
 
-KERNEL_MODULES = (kernels2d, kernels3d, bending3d, sweeps_compiled, waves_compiled, dense, kernels, fast, fast_implicit)
-
-
 def versions() -> dict:
     """Every kernel's versions in this process (compiled or loaded from the disk cache)."""
-    return {(module.__name__, name): set(f.signatures) for module in KERNEL_MODULES
-            for name, f in vars(module).items() if isinstance(f, CPUDispatcher)}
+    return jit.compiled_versions()
 
 
 def _after_warmup_compiles_nothing(name, case):
@@ -158,3 +138,27 @@ def test_a_cold_run_says_it_compiles_and_kanat_warmup_finds_it_done(tmp_path):
     assert code == 0 and "compiling" not in err and "compiling 0.00 s" in out, out + err
     code, _, err = kanat("warmup", "lumped-rk5")
     assert code == 1 and "valid: continuum-2d" in err
+
+
+def test_a_run_rewrites_no_module_namespace(numba_kernels):
+    """A kernel's name is the same object before and after numba compiles it: the run's modules'
+    namespaces are as they were (no numba dispatcher put in place of a kernel)."""
+    import sys
+
+    from numba.core.dispatcher import Dispatcher
+
+    from kanat.continuum import kernels2d, rows2d
+
+    def namespaces():
+        return {name: dict(vars(module)) for name, module in list(sys.modules.items()) if name.startswith("kanat")}
+
+    run_quietly(warmup.CASES["continuum-2d"])                 # every module the run needs, imported
+    before = namespaces()
+    run_quietly(warmup.CASES["continuum-2d"])
+    after = namespaces()
+    assert isinstance(kernels2d.assemble, aot.EntryPoint) and isinstance(rows2d.assemble, jit.Deferred)
+    assert rows2d.assemble.dispatcher is not None and rows2d.assemble.dispatcher.signatures
+    for name, namespace in before.items():
+        assert all(after[name][key] is value for key, value in namespace.items()), name
+    assert not [f"{name}.{key}" for name, namespace in after.items() for key, value in namespace.items()
+                if isinstance(value, Dispatcher)]

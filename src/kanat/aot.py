@@ -21,10 +21,16 @@ Two guards keep it honest:
 When the module is stale or missing (no C compiler at install), or a call's arguments do not
 match, the run uses numba's just-in-time kernels, which give the same numbers bit for bit
 (tests/test_aot.py). ``KANAT_AOT=0`` in the environment makes a process use numba's kernels
-throughout (to compare, or to debug a kernel).
+throughout (to compare, or to debug a kernel); so does :meth:`Lookup.numba_only` within a block.
+
+Python code calls an entry through its :class:`EntryPoint` (``assemble = aot.register(...)``
+beside its callers), always the same object; :data:`LOOKUP`, the one :class:`Lookup` of the
+process, finds the compiled module or numba's kernel on the first call and keeps what it found
+itself: no module's namespace is written.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import hashlib
 import importlib
@@ -84,12 +90,26 @@ ENTRIES: dict[str, Entry] = {}
 
 
 def register(name: str, home: str, *versions, returns=None, function: str | None = None,
-             module: str = "_continuum") -> None:
-    """Declare the entry ``name`` (:class:`Entry`; ``function`` defaults to ``name``)."""
+             module: str = "_continuum") -> "EntryPoint":
+    """Declare the entry ``name`` (:class:`Entry`; ``function`` defaults to ``name``); the
+    :class:`EntryPoint` its callers call."""
     ENTRIES[name] = Entry(home, function or name, tuple(versions), returns, module)
+    return EntryPoint(name)
 
 
-_loaded: dict = {}
+class EntryPoint:
+    """What Python code calls for the entry ``name``: the same object whatever the process did
+    before, each call handed to :data:`LOOKUP`'s kernel for the name (the compiled versions, or
+    numba's kernel). Declared beside the callers: ``assemble = aot.register("assemble", ...)``."""
+
+    def __init__(self, name: str):
+        self.name = self.__name__ = self.__qualname__ = name
+
+    def __call__(self, *args):
+        return LOOKUP.kernel(self.name)(*args)
+
+    def __repr__(self) -> str:
+        return f"<kanat entry {self.name}>"
 
 
 def fingerprint(root: Path | None = None) -> int:
@@ -110,29 +130,6 @@ def fingerprint(root: Path | None = None) -> int:
 def _installed_fingerprint() -> int:
     """:func:`fingerprint` of this package, read once per process (every module is checked against it)."""
     return fingerprint(Path(__file__).parent)
-
-
-def current() -> bool:
-    """Whether every module of :data:`MODULES` was built and matches the sources."""
-    return all(load(name) is not None for name in MODULES)
-
-
-def load(name: str = "_continuum"):
-    """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None.
-
-    Imports no numba. The answer is kept for the process.
-    """
-    if name not in _loaded:
-        if os.environ.get("KANAT_AOT") == "0":
-            _loaded[name] = None
-            return None
-        try:
-            module = importlib.import_module(f"kanat.{name}")
-            fresh = module.fingerprint() == fingerprint()
-        except (ImportError, OSError, AttributeError):
-            module, fresh = None, False
-        _loaded[name] = module if fresh else None
-    return _loaded[name]
 
 
 def checker(spec) -> Callable[[object], bool]:
@@ -164,17 +161,80 @@ def matches(value, spec) -> bool:
     return checker(spec)(value)
 
 
-@functools.cache
+class Lookup:
+    """Where the entries' code comes from, for the process: the extension modules compiled at
+    install when current (:meth:`module`), else numba's kernels; ``KANAT_AOT=0`` or
+    :meth:`numba_only` chooses numba's throughout. :data:`LOOKUP` is the one instance; what it
+    finds is kept in it, never written into a module's namespace."""
+
+    def __init__(self):
+        self.modules: dict = {}
+        self.kernels: dict = {}
+        self.compiled_allowed = True
+
+    def module(self, name: str = "_continuum"):
+        """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None.
+
+        Imports no numba. The answer is kept for the process (until :meth:`numba_only`)."""
+        if name not in self.modules:
+            module = None
+            if self.compiled_allowed and os.environ.get("KANAT_AOT") != "0":
+                try:
+                    module = importlib.import_module(f"kanat.{name}")
+                    module = module if module.fingerprint() == fingerprint() else None
+                except (ImportError, OSError, AttributeError):
+                    module = None
+            self.modules[name] = module
+        return self.modules[name]
+
+    def kernel(self, name: str) -> Callable:
+        """The entry ``name`` of :data:`ENTRIES` (:func:`kernel`), made once and kept."""
+        found = self.kernels.get(name)
+        if found is None:
+            found = self.kernels[name] = _kernel(name, self.module(ENTRIES[name].module))
+        return found
+
+    @contextlib.contextmanager
+    def numba_only(self):
+        """Within the block, every entry runs numba's kernel (as an install without the compiled
+        modules, or ``KANAT_AOT=0``); what was found before is restored after it."""
+        saved = self.modules, self.kernels, self.compiled_allowed
+        self.modules, self.kernels, self.compiled_allowed = {}, {}, False
+        try:
+            yield self
+        finally:
+            self.modules, self.kernels, self.compiled_allowed = saved
+
+
+LOOKUP = Lookup()
+"""The process's :class:`Lookup`."""
+
+
+def current() -> bool:
+    """Whether every module of :data:`MODULES` was built and matches the sources."""
+    return all(load(name) is not None for name in MODULES)
+
+
+def load(name: str = "_continuum"):
+    """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None
+    (:meth:`Lookup.module`)."""
+    return LOOKUP.module(name)
+
+
 def kernel(name: str) -> Callable:
     """The entry ``name`` of :data:`ENTRIES`: its compiled versions when :func:`load` finds them
     current, each called only with arguments that match it (the one that matched last is tried
-    first), numba's kernel otherwise. Made once per process (``kernel.cache_clear()`` forgets it)."""
+    first), numba's kernel otherwise. Made once per process (:data:`LOOKUP` keeps it)."""
+    return LOOKUP.kernel(name)
+
+
+def _kernel(name: str, compiled) -> Callable:
+    """:func:`kernel` of the entry ``name``, with the extension module ``compiled`` or None."""
     entry = ENTRIES[name]
 
     def numba_kernel():
         return getattr(importlib.import_module(entry.home), entry.function)
 
-    compiled = load(entry.module)
     if compiled is None:
         return numba_kernel()
     candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(entry.versions)]
@@ -194,23 +254,6 @@ def kernel(name: str) -> Callable:
     run.__name__ = run.__qualname__ = name
     run.__doc__ = f"{entry.home}.{entry.function}, compiled at install (kanat.aot_build); other arguments go to numba's."
     return run
-
-
-def loader(namespace: dict, entries, numba: dict) -> Callable:
-    """A module ``__getattr__`` loading kernels on first use into ``namespace`` (the module's
-    globals): the ``entries`` by :func:`kernel`, and the names of ``numba`` (name -> module) as
-    numba's kernels, so that importing the module imports no numba."""
-    def __getattr__(name):
-        if name in entries:
-            value = kernel(name)
-        elif name in numba:
-            value = getattr(importlib.import_module(numba[name]), name)
-        else:
-            raise AttributeError(f"module {namespace['__name__']!r} has no attribute {name!r}")
-        namespace[name] = value
-        return value
-
-    return __getattr__
 
 
 _numba_used: set = set()

@@ -11,7 +11,8 @@ Both cache the machine code on disk (``__pycache__`` beside the source, or
 ``NUMBA_CACHE_DIR``), so a kernel compiles once per machine and source version. Neither imports
 numba: they return a :class:`Deferred` kernel, and numba loads when a kernel is first used
 (:func:`load_numba`), which a run with the kernels compiled at install (:mod:`kanat.aot`) never
-does. What a run
+does. No module's namespace is rewritten: a kernel's name is its :class:`Deferred` throughout.
+What a run
 compiles is grouped in families (:class:`Family`: the top-level kernels of one model and
 scheme, with the compile time measured on the reference machine); :func:`pending` tells,
 without compiling, whether a family still has to be compiled, so a run can say
@@ -33,12 +34,12 @@ family's seconds go, function by function.
 """
 from __future__ import annotations
 
-import hashlib
 import logging
 import time
 from dataclasses import dataclass
 
 from kanat import aot
+from kanat._private_api import disk_cached_signatures
 
 OPTIONS = {"kernel": {"cache": True, "error_model": "numpy", "no_cfunc_wrapper": True},
            "inner": {"cache": True, "error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
@@ -52,19 +53,21 @@ COMPILE_SECONDS = [0.0]
 """Seconds numba has spent compiling kernels in this process (outermost calls only;
 :class:`kanat.dynamics.CompileClock` reads it)."""
 
-_deferred: list = []
+KERNELS: list = []
+"""Every kernel declared in this process (:class:`Deferred`), in the order declared."""
 _numba = None                       # numba's njit, once imported (:func:`load_numba`)
 
 
 class Deferred:
-    """A kernel whose numba dispatcher is made when a kernel is first needed (:func:`load_numba`).
+    """A numba kernel: its dispatcher is made when it is first needed.
 
-    Importing a kernel module imports no numba: a run whose kernels were compiled at install
-    (:mod:`kanat.aot`) never needs it. Any use of a deferred kernel (a call, an attribute such as
-    ``signatures``) loads numba, makes every deferred kernel's dispatcher and puts it in place of
-    the deferred one in every kanat module's namespace, so numba's compiler only ever sees
-    dispatchers (:func:`load_numba`); a kernel module imported after that gets dispatchers
-    directly.
+    The name a kernel module gives a kernel is always this object, whatever the process did
+    before: importing a kernel module imports no numba (a run whose kernels were compiled at install,
+    :mod:`kanat.aot`, never needs it). A call, or any attribute of numba's dispatcher (such as
+    ``signatures``), loads numba (:func:`load_numba`) and makes this kernel's dispatcher. numba's
+    compiler, typing a kernel that calls another, reads the callee's type from it
+    (``_numba_type_``: numba's type of the callee's dispatcher), so kernels call each other by
+    their plain names.
     """
 
     def __init__(self, function, options: dict):
@@ -75,23 +78,31 @@ class Deferred:
     def _real(self):
         if self.dispatcher is None:
             load_numba()
+            self.dispatcher = _numba(**self.options)(self.py_func)
         return self.dispatcher
 
+    @property
+    def _numba_type_(self):
+        """numba's type of this kernel's dispatcher (what ``numba.typeof`` answers for the kernel)."""
+        return self._real()._numba_type_
+
     def __call__(self, *args):
-        return self._real()(*args)
+        dispatcher = self.dispatcher if self.dispatcher is not None else self._real()
+        return dispatcher(*args)
 
     def __getattr__(self, name):
         if name.startswith("__") or name in ("py_func", "options", "dispatcher"):     # copying, probing
             raise AttributeError(name)
         return getattr(self._real(), name)
 
+    def __repr__(self) -> str:
+        return f"<kanat kernel {self.__module__}.{self.__qualname__}>"
+
 
 def _decorator(kind: str):
     def decorate(function):
-        if _numba is not None:
-            return _numba(**OPTIONS[kind])(function)
         deferred = Deferred(function, OPTIONS[kind])
-        _deferred.append(deferred)
+        KERNELS.append(deferred)
         return deferred
     return decorate
 
@@ -107,27 +118,23 @@ def dispatcher_of(function):
     return function._real() if isinstance(function, Deferred) else function
 
 
+def compiled_versions() -> dict:
+    """``{"module.kernel": signatures}`` of every kernel numba has compiled or loaded a version of
+    in this process (none when the compiled-at-install modules ran everything)."""
+    return {f"{k.__module__}.{k.__qualname__}": tuple(k.dispatcher.signatures) for k in KERNELS
+            if k.dispatcher is not None and k.dispatcher.signatures}
+
+
 def load_numba():
-    """Import numba, make every deferred kernel's dispatcher and put it in place in the kanat
-    modules' namespaces (module attributes, including names imported from another module); listen
-    to numba's compile events (:data:`COMPILE_SECONDS`, and a warning where the user expects no
-    compiling). Done once per process."""
+    """Import numba and listen to its compile events (:data:`COMPILE_SECONDS`, and a warning where
+    the user expects no compiling). Done once per process; each kernel makes its own dispatcher
+    when first needed (:class:`Deferred`)."""
     global _numba
     if _numba is not None:
         return
-    import sys
-
     from numba import njit
     from numba.core import event
 
-    for deferred in _deferred:
-        deferred.dispatcher = njit(**deferred.options)(deferred.py_func)
-    for name, module in list(sys.modules.items()):
-        if name == "kanat" or name.startswith("kanat."):
-            namespace = vars(module)
-            for key, value in list(namespace.items()):
-                if isinstance(value, Deferred):
-                    namespace[key] = value.dispatcher
     _numba = njit
     event.register("numba:compile", _compile_listener(event.Listener))
 
@@ -198,13 +205,8 @@ def is_cached(dispatcher, accept=None) -> bool:
     dispatcher = dispatcher_of(dispatcher)
     if any(accept(signature) for signature in dispatcher.signatures):
         return True
-    try:
-        index = dispatcher._cache._cache_file._load_index()
-        magic = dispatcher.targetctx.codegen().magic_tuple()
-        code = hashlib.sha256(dispatcher.py_func.__code__.co_code).hexdigest()
-    except (AttributeError, OSError, EOFError, ValueError):      # numba internals moved: assume not cached
-        return False
-    return any(key[1] == magic and key[2][0] == code and accept(key[0]) for key in index)
+    cached = disk_cached_signatures(dispatcher) or ()      # None: numba internals moved, assume not cached
+    return any(accept(signature) for signature in cached)
 
 
 def pending(family: Family) -> float | None:

@@ -49,9 +49,9 @@ expressions, slice copies or ``@`` -- which keeps numba's compile short (:mod:`k
 
 The code is in :mod:`.layout2d` (data layout), :mod:`.loads2d` (loads, ends) and :mod:`.rows2d`
 (interval rows, :func:`assemble`), all below this module: import the kernels from here. The
-layout is plain constants; the kernels are loaded on first use (module ``__getattr__``), and
-:func:`assemble`, the one kernel a run calls, comes from the extension compiled at install
-(:mod:`kanat.aot`) when it is current, so such a run never imports numba.
+layout is plain constants; :func:`assemble`, the one kernel a run calls, is an entry point
+(:class:`kanat.aot.EntryPoint`): the extension compiled at install (:mod:`kanat.aot`) when it is
+current, so such a run never imports numba, else numba's kernel.
 """
 from __future__ import annotations
 
@@ -66,9 +66,8 @@ from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module i
 
 # the compiled entry's arguments x, y, d, env, P, b0, b1, res, band, then extras: None or the marker array
 _ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
-aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
+assemble = aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
 
-_NUMBA = {name: "kanat.continuum.loads2d" for name in (
-    "strain", "compliance", "transverse_tension", "node_load", "node_load_jacobian", "smooth_sign", "seabed_force",
-    "seabed_force_jacobian", "extra_load", "extra_load_jacobian", "weighted", "surface_buoyancy", "end_jacobian")}
-__getattr__ = aot.loader(globals(), ("assemble",), _NUMBA)       # the kernels, on first use (module docstring)
+from kanat.continuum.loads2d import (  # noqa: E402, F401  re-exported: numba's kernels (no numba imported)
+    strain, compliance, transverse_tension, node_load, node_load_jacobian, smooth_sign, seabed_force,
+    seabed_force_jacobian, extra_load, extra_load_jacobian, weighted, surface_buoyancy, end_jacobian)

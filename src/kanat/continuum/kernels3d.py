@@ -39,8 +39,9 @@ As in :mod:`kernels2d`, scalar loops only (no array expressions, slice copies or
 The code is in :mod:`.layout3d` (data layout), :mod:`.loads3d` (frame, matrices, loads, ends),
 :mod:`.rows3d` (interval rows, :func:`assemble3`) and :mod:`.bending3d` (with bending stiffness,
 :func:`assemble3_bending`), all below this module: import the kernels from here. As in
-:mod:`.kernels2d`, the layout is plain constants, the kernels are loaded on first use, and the
-two a run calls come from the extension compiled at install (:mod:`kanat.aot`) when it is current.
+:mod:`.kernels2d`, the layout is plain constants, and the
+two kernels a run calls are entry points: the extension compiled at install (:mod:`kanat.aot`) when
+it is current, else numba's kernels.
 """
 from __future__ import annotations
 
@@ -50,12 +51,13 @@ from kanat.continuum.layout3d import (  # noqa: F401  re-exported: this module i
     B3_HEIGHT, B3_ETA, B3_PAYOUT, NBPAR3, UX3, AX3, RX3, DX3, NENV3, NV_BENDING, WIDTH_BENDING, B3_CLAMP, B3_PHI0,
     B3_THETA0, NBPAR3_BENDING)
 
-_NUMBA = {name: "kanat.continuum.loads3d" for name in (
-    "frame", "node_load3", "node_load3_jacobian", "mass_times", "stiffness_times", "mass_matrix", "stiffness_matrix",
-    "d_mass_times", "d_stiffness_times", "seabed_force3", "seabed_force3_jacobian", "extra_load3",
-    "extra_load3_jacobian", "surface_buoyancy3", "end_jacobian3")}
+from kanat.continuum.loads3d import (  # noqa: F401  re-exported: numba's kernels (no numba imported)
+    frame, node_load3, node_load3_jacobian, mass_times, stiffness_times, mass_matrix, stiffness_matrix,
+    d_mass_times, d_stiffness_times, seabed_force3, seabed_force3_jacobian, extra_load3, extra_load3_jacobian,
+    surface_buoyancy3, end_jacobian3)
+
 # the compiled entries' arguments x, y, d, env, up, P, b0, b1, res, band, then extras: None or the marker array
 _ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
-for _name, _home in {"assemble3": "rows3d", "assemble3_bending": "bending3d"}.items():
-    aot.register(_name, f"kanat.continuum.{_home}", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
-__getattr__ = aot.loader(globals(), ("assemble3", "assemble3_bending"), _NUMBA)   # on first use (module docstring)
+assemble3 = aot.register("assemble3", "kanat.continuum.rows3d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
+assemble3_bending = aot.register("assemble3_bending", "kanat.continuum.bending3d", _ARGUMENTS + (None,),
+                                 _ARGUMENTS + (aot.F1,))

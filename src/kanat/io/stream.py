@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kanat._private_api import flush_hdf5
 from kanat.errors import KanatError, OutputWriteError
 from kanat.io.schema import TIME_COORD, Layout, attributes, netcdf_attr, time_dims
 from kanat.io.space import close_quietly, require_space
@@ -232,7 +233,7 @@ class ResultStream:
         must be flushed too, or a killed run leaves datasets of length 0 on disk.
         """
         self._file.flush()
-        self._file._h5file.flush()
+        flush_hdf5(self._file)
 
 
 @dataclass(frozen=True)

@@ -1,9 +1,9 @@
 """The lumped model's kernels that runs call from Python, compiled at install (:mod:`kanat.aot`).
 
-Python code calls them from here (``entries.element_forces(...)``): each name gives the version
-compiled at install when it is current and the arguments match it, numba's kernel otherwise
-(loaded on first use, so a run that needs none of numba's kernels compiles nothing). Compiled
-kernels call each other directly, in their own modules.
+Python code calls them from here (``entries.element_forces(...)``): each name is an entry point
+(:class:`kanat.aot.EntryPoint`) that runs the version compiled at install when it is current and
+the arguments match it, numba's kernel otherwise (made on first use, so a run that needs none of
+numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
 The argument specifications below are the layouts the Python side builds (``FusedArrays`` in
 :mod:`kanat.lumped.advance`, ``LumpedSystem`` in :mod:`kanat.lumped.system`); the stepping
@@ -54,5 +54,8 @@ register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F
 register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, CONTACT, F2, F2, F1))
 
 
-__getattr__ = aot.loader(globals(), [name for name, entry in aot.ENTRIES.items()
-                                     if entry.module.startswith("_lumped")], {})   # on first use (module docstring)
+# the entry points Python code calls (``entries.element_forces(...)``; kanat.aot.EntryPoint)
+(track_states, rk4_steps, abm4_steps, implicit_steps, elastic_row, element_forces, lumped_solve, tensions,
+ add_body_loads, place_fairleads, rigid_accelerations, contact_forces) = map(aot.EntryPoint, (
+    "track_states", "rk4_steps", "abm4_steps", "implicit_steps", "elastic_row", "element_forces", "lumped_solve",
+    "tensions", "add_body_loads", "place_fairleads", "rigid_accelerations", "contact_forces"))

@@ -1,0 +1,94 @@
+"""Every use kanat makes of another library's private API, in one place (docs/kernels.md).
+
+Three touch points, each tested on its own (tests/test_private_api.py), so that a release of
+numba or h5netcdf that changes one fails one test whose message names the library and version:
+
+* :func:`compile_object_files` — ``numba.pycc.CC._compile_object_files``: the install compiles
+  each module's kernels to an object file in a process of its own (numba compiles on one core)
+  and links them afterwards (``setup.py``). The public ``CC.compile()`` compiles and links in one
+  call, one module at a time.
+* :func:`disk_cached_signatures` — ``Dispatcher._cache._cache_file._load_index()`` and the layout
+  of its keys: whether a run would compile, read without compiling (:func:`kanat.jit.is_cached`).
+* :func:`flush_hdf5` — h5netcdf's ``File._h5file``: the HDF5 file beneath a netCDF file being
+  written, flushed so that a killed run leaves its outputs on disk (:mod:`kanat.io.stream`).
+
+The libraries are imported inside the functions: importing this module imports neither.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+
+
+class PrivateAPIChanged(RuntimeError):
+    """A library no longer has the private API kanat uses (the message names library and version)."""
+
+
+def _changed(library: str, what: str, error: Exception) -> PrivateAPIChanged:
+    version = getattr(__import__(library), "__version__", "?")
+    return PrivateAPIChanged(f"{library} {version} changed {what}, which kanat uses "
+                             f"({type(error).__name__}: {error}); see docs/kernels.md")
+
+
+def compile_object_files(cc, build_temp: str) -> list[str]:
+    """Compile the kernels of numba's ``CC`` ``cc`` to object files in ``build_temp``, unlinked.
+
+    Returns
+    -------
+    list of str
+        The object files written (one: :func:`object_file`).
+
+    Raises
+    ------
+    PrivateAPIChanged
+        numba's ``CC`` has no ``_compile_object_files`` taking a directory and returning
+        ``(objects, exports)``.
+    """
+    try:
+        compile_objects = cc._compile_object_files
+    except AttributeError as error:
+        raise _changed("numba", "numba.pycc.CC._compile_object_files", error) from None
+    objects, _ = compile_objects(build_temp)
+    return list(objects)
+
+
+def object_file(cc, build_temp: str) -> str:
+    """Where :func:`compile_object_files` writes ``cc``'s object file: named after the module's
+    output file, in ``build_temp`` (needed when it runs in another process)."""
+    return os.path.join(build_temp, os.path.splitext(cc.output_file)[0] + ".o")
+
+
+def disk_cached_signatures(dispatcher) -> list | None:
+    """The signatures numba's disk cache holds for ``dispatcher`` on this machine and for its
+    current source, or None when numba's cache is not laid out as expected.
+
+    The cache index maps ``(signature, codegen magic tuple, (sha256 of the bytecode, sha256 of
+    the closure))`` to a data file (numba's ``_CacheImpl``/``IndexDataCacheFile``); the index is
+    read and filtered, nothing is loaded or compiled.
+    """
+    try:
+        index = dispatcher._cache._cache_file._load_index()
+        magic = dispatcher.targetctx.codegen().magic_tuple()
+    except (AttributeError, OSError, EOFError, ValueError):
+        return None
+    code = hashlib.sha256(dispatcher.py_func.__code__.co_code).hexdigest()
+    try:
+        return [key[0] for key in index if key[1] == magic and key[2][0] == code]
+    except (TypeError, IndexError):
+        return None
+
+
+def flush_hdf5(file) -> None:
+    """Flush the HDF5 file beneath the h5netcdf ``File`` ``file`` (h5netcdf's own ``flush``
+    writes the netCDF attributes only).
+
+    Raises
+    ------
+    PrivateAPIChanged
+        h5netcdf's ``File`` has no ``_h5file`` with a ``flush()``.
+    """
+    try:
+        flush = file._h5file.flush
+    except AttributeError as error:
+        raise _changed("h5netcdf", "File._h5file", error) from None
+    flush()

@@ -1,0 +1,87 @@
+"""Every private API kanat uses (:mod:`kanat._private_api`), one test per touch point.
+
+A numba or h5netcdf release that changes one of them fails its test here, with a message naming
+the library and its version (docs/kernels.md says what each touch point is for and what replaces
+it). Oracles: the object file on disk, numba's own compile of a one-line function (its signature),
+and the HDF5 file read back by h5py in another process.
+"""
+import subprocess
+import sys
+
+import h5netcdf
+import numba
+import numpy as np
+import pytest
+
+from kanat import _private_api
+from kanat._private_api import PrivateAPIChanged
+
+NUMBA = f"numba {numba.__version__}"
+
+
+@pytest.mark.filterwarnings("ignore::numba.NumbaPendingDeprecationWarning")
+def test_numba_pycc_compiles_object_files_unlinked(tmp_path):
+    """``CC._compile_object_files(build_temp)``: what setup.py compiles, one module per process."""
+    from numba.pycc import CC
+
+    cc = CC("_private_api_probe")
+    cc.output_dir = str(tmp_path)
+    cc.verbose = False
+
+    @cc.export("twice", "f8(f8)")
+    def twice(x):
+        return 2.0 * x
+
+    try:
+        objects = _private_api.compile_object_files(cc, str(tmp_path))
+    except PrivateAPIChanged as error:
+        pytest.fail(str(error))
+    expected = _private_api.object_file(cc, str(tmp_path))
+    assert objects == [expected], f"{NUMBA}: CC._compile_object_files wrote {objects}, not {expected}"
+    with open(expected, "rb") as obj:
+        head = obj.read(4)
+    assert head == b"\x7fELF" or sys.platform != "linux", f"{NUMBA}: {expected} is no object file"
+
+
+def test_numba_disk_cache_index_lists_the_cached_signatures(tmp_path, monkeypatch):
+    """``Dispatcher._cache._cache_file._load_index()`` and its keys: what ``kanat.jit.is_cached``
+    reads to tell whether a run will compile."""
+    (tmp_path / "probe_cached.py").write_text(
+        "from numba import njit\n\n\n@njit(cache=True)\ndef thrice(x):\n    return 3.0 * x\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    from probe_cached import thrice
+
+    assert _private_api.disk_cached_signatures(thrice) == [], f"{NUMBA}: a cache index before any compile"
+    assert thrice(2.0) == 6.0
+    cached = _private_api.disk_cached_signatures(thrice)
+    assert cached is not None, (f"{NUMBA} changed Dispatcher._cache._cache_file._load_index() or its keys "
+                                "(signature, codegen magic tuple, (bytecode sha256, closure sha256))")
+    assert [tuple(signature) for signature in cached] == [(numba.float64,)], f"{NUMBA}: index keys {cached}"
+
+
+def test_h5netcdf_file_flushes_the_hdf5_file_beneath(tmp_path):
+    """h5netcdf's ``File._h5file``: flushed, a file still open for writing holds its data on disk."""
+    path = tmp_path / "open.nc"
+    with h5netcdf.File(path, "w") as f:
+        f.dimensions["time"] = None
+        var = f.create_variable("x", ("time",), dtype=float)
+        f.resize_dimension("time", 3)
+        var[:] = [1.0, 2.0, 3.0]
+        f.flush()
+        try:
+            _private_api.flush_hdf5(f)
+        except PrivateAPIChanged as error:
+            pytest.fail(str(error))
+        script = "import h5py, sys; print(h5py.File(sys.argv[1], 'r')['x'][:].tolist())"
+        read = subprocess.run([sys.executable, "-c", script, str(path)], capture_output=True, text=True,
+                              env={"HDF5_USE_FILE_LOCKING": "FALSE", "PATH": ""})
+        assert read.returncode == 0 and read.stdout.strip() == "[1.0, 2.0, 3.0]", (
+            f"h5netcdf {h5netcdf.__version__}: the file open for writing was not flushed: {read.stderr[-300:]}")
+
+
+def test_a_missing_private_api_is_named_with_its_library_version():
+    with pytest.raises(PrivateAPIChanged, match=f"h5netcdf {h5netcdf.__version__} changed File._h5file"):
+        _private_api.flush_hdf5(object())
+    with pytest.raises(PrivateAPIChanged, match=f"numba {numba.__version__} changed numba.pycc.CC"):
+        _private_api.compile_object_files(object(), "build")
+    assert _private_api.disk_cached_signatures(np.sin) is None
