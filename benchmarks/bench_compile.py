@@ -34,14 +34,14 @@ ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = {                       # family: (example, changes to keep it to a few steps)
     "continuum-2d": ("speed_step_2d.yaml", {"duration": 5.0}),
     "continuum-3d": ("turn_360_3d.yaml", {"duration": 10.0}),
-    "lumped-rk4": ("seed004_head_5.6s_1to4.yaml", {"duration": 1.0}),
-    "lumped-implicit": ("seed004_head_5.6s_1to4.yaml", {"duration": 1.0, "scheme": "generalized-alpha-lumped",
+    "lumped-rk4": ("trawl_head_5.6s_1to4.yaml", {"duration": 1.0}),
+    "lumped-implicit": ("trawl_head_5.6s_1to4.yaml", {"duration": 1.0, "scheme": "generalized-alpha-lumped",
                                                         "dt": 0.05}),
-    "factorized-2d": ("seed000_accel.yaml", {"duration": 0.02}),
-    "factorized-3d": ("seed000_spatial100.yaml", {"scheme": "factorized", "dt": 0.005, "duration": 0.02,
+    "factorized-2d": ("factorization_accel.yaml", {"duration": 0.02}),
+    "factorized-3d": ("factorization_spatial100.yaml", {"scheme": "factorized", "dt": 0.005, "duration": 0.02,
                                                   "output_dt": 0.005}),
-    "wave-factorized-2d": ("seed000_planar80.yaml", {"duration": 0.5}),
-    "wave-factorized-3d": ("seed000_spatial100.yaml", {"duration": 1.0}),
+    "wave-factorized-2d": ("factorization_planar80.yaml", {"duration": 0.5}),
+    "wave-factorized-3d": ("factorization_spatial100.yaml", {"duration": 1.0}),
 }
 
 

@@ -1,4 +1,4 @@
-"""Seed 000's schemes against the generalized-α box scheme: cost per step and time to accuracy.
+"""Kaliukh & Vusatiuk's schemes against the generalized-α box scheme: cost per step and time to accuracy.
 
 1. Per-step cost (median of repeats, ms) of every scheme on the planar 1000 m towed-body
    speed step (examples/speed_step_2d.yaml) at 10, 100 and 1000 segments, dt = 0.01 s, and of
@@ -6,8 +6,8 @@
 2. Time to the same accuracy: for each scheme, the cheapest (segments, dt) among a grid of
    choices whose answer is within the target of a converged reference (generalized-α, 160
    segments, small step):
-   - planar 80 m tow (examples/seed000_planar80.yaml): top tension at t = 24 s within 1 %;
-   - accelerating vehicle (examples/seed000_accel.yaml): body position at t = 3 s within 5 mm
+   - planar 80 m tow (examples/factorization_planar80.yaml): top tension at t = 24 s within 1 %;
+   - accelerating vehicle (examples/factorization_accel.yaml): body position at t = 3 s within 5 mm
      (0.4 % of the cable length).
 
 Run: ``python benchmarks/bench_factorized.py`` (after ``pip install -e .``); prints markdown.
@@ -30,7 +30,7 @@ from kanat.continuum.schemes import (
     WaveFactorized2,
     WaveFactorized3,
 )
-from kanat.studies.seed000 import body_relative
+from kanat.studies.factorization import body_relative
 from kanat.continuum.stepper import NewtonFailure
 from kanat.io import parse_case
 
@@ -110,10 +110,10 @@ def time_to_accuracy(label, text, until, measure, error, target, dts, reference_
 def main():
     print(f"machine: {platform.processor() or platform.machine()}, Python {platform.python_version()}\n")
     cost_table()
-    planar = (EXAMPLES / "seed000_planar80.yaml").read_text()
+    planar = (EXAMPLES / "factorization_planar80.yaml").read_text()
     time_to_accuracy("planar 80 m tow, top tension at t = 24 s", planar, 24.0, lambda s, m: s.y[0, 0],
                      lambda v, r: abs(v / r - 1), 0.01, (0.01, 0.1, 1.0, 4.0), 0.01)
-    accel = (EXAMPLES / "seed000_accel.yaml").read_text()
+    accel = (EXAMPLES / "factorization_accel.yaml").read_text()
     time_to_accuracy("accelerating vehicle, body position at t = 3 s", accel, 3.0, body_relative,
                      lambda v, r: float(np.max(np.abs(np.asarray(v) - r))), 0.005, (0.0005, 0.002, 0.01, 0.05),
                      0.0005)

@@ -4,7 +4,7 @@ explicit scheme — the constants of the default-scheme choice (``kanat.lumped.s
 Both through the fused compiled paths a run uses (:func:`kanat.lumped.advance.advance`): RK4 at
 its safe step (cost per force evaluation), generalized-α at 0.05 s (cost per Newton iteration,
 and iterations per step), after a first stretch that loads the kernels; lines of 20, 100 and 400
-segments (the towed cable of ``bench_lumped_towed.py``) and seed 004's towed network in waves.
+segments (the towed cable of ``bench_lumped_towed.py``) and Bezverkhyi's towed network in waves.
 
 Run: ``python benchmarks/bench_lumped_cost.py``.
 """
@@ -65,8 +65,8 @@ def main() -> None:
     print("|---|---|---|---|---|---|---|")
     cases = {f"towed line, {n} segments": load_case(towed.case_dict()).replace({"cables[0].segments": n})
              for n in (20, 100, 400)}
-    cases["seed 004 network in waves"] = load_case(Path(__file__).resolve().parents[1]
-                                                   / "examples/seed004_head_5.6s_1to4.yaml")
+    cases["Bezverkhyi 2006 network in waves"] = load_case(Path(__file__).resolve().parents[1]
+                                                   / "examples/trawl_head_5.6s_1to4.yaml")
     for label, case in cases.items():
         m = measure(case)
         eval_us, iter_us = 1e6 * m["rk4"], 1e6 * m["generalized-alpha-lumped"]

@@ -1,7 +1,7 @@
 """Statics timings: wall time of one complete solve, best and median of repeats (timeit).
 
 Targets (foundation issue): a 1000 m towed cable with a towed body solves in under
-50 ms; a full seed 001 solve in under 100 ms. Each solve is complete: from the case's
+50 ms; a full Naumov & Agievich solve in under 100 ms. Each solve is complete: from the case's
 typed problem to the solution at every node, including root finding.
 """
 from __future__ import annotations
@@ -45,8 +45,8 @@ def main():
     timed("chain mooring in sheared current, seabed contact, collocation", None,
           lambda: solve_statics(mooring, "collocation"))
     groups = SphereGroups(Psi=0.02, LoL=2.0, x_C=-1.732, QkL=0.45, RkL=0.4)
-    timed("seed 001 published case, shooting", 100, lambda: solve_sphere(groups, "published", "shooting"))
-    timed("seed 001 published case, collocation", 100, lambda: solve_sphere(groups, "published", "collocation"))
+    timed("Naumov & Agievich published case, shooting", 100, lambda: solve_sphere(groups, "published", "shooting"))
+    timed("Naumov & Agievich published case, collocation", 100, lambda: solve_sphere(groups, "published", "collocation"))
     still = mooring.model_copy(update={"environment": mooring.environment.model_copy(
         update={"current": type(mooring.environment.current)()})})
     timed("same mooring without current, catenary fast path", None, lambda: solve_statics(still))

@@ -5,7 +5,7 @@ sheared current and regular waves (4 m, 10 s), so the line moves all the time. M
 
 1. solver time (the time loop, compiling excluded: the run's own ``solver_time_s``), its cost per
    node-step and Newton iterations per step, against WHOI Cable's recorded figure per node-step
-   (PEERS.md: 0.19 s CPU stepping for 100 nodes x 600 steps, 2-D, built with -O2 = 3.17 us);
+   (docs/peers.md: 0.19 s CPU stepping for 100 nodes x 600 steps, 2-D, built with -O2 = 3.17 us);
 2. the whole process (``kanat run CASE -o OUT.nc``: start-up, case, statics, steady state, steps,
    file), wall and CPU, with a warm numba cache; and once with a cold cache (compiling);
 3. the same mooring in a current turning with depth (3-D).

@@ -51,7 +51,7 @@ COMMANDS = {
     "the lumped run with numba's kernels (KANAT_AOT=0)": (["run", str(EXAMPLES / "mooring_buoy_decay.yaml")],
                                                           "out.nc", "–", "–", NUMBA),
 }
-"""label: (arguments, output file name or None, target, WHOI Cable's whole process (PEERS), environment)."""
+"""label: (arguments, output file name or None, target, WHOI Cable's whole process (docs/peers.md), environment)."""
 
 
 ENVIRONMENT = dict(os.environ)
@@ -104,7 +104,7 @@ def main(repeats: int, bytecode: bool = True) -> None:
     load = os.getloadavg()
     print(f"{repeats} interleaved runs per command, medians; load average {load[0]:.2f} {load[1]:.2f}; bytecode "
           f"{'cached' if bytecode else 'compiled by every process (PYTHONDONTWRITEBYTECODE)'}\n")
-    print("| command | CPU [s] | wall [s] | solver [s] | peak RSS [MiB] | target | WHOI Cable (PEERS) |")
+    print("| command | CPU [s] | wall [s] | solver [s] | peak RSS [MiB] | target | WHOI Cable (docs/peers.md) |")
     print("|---|---|---|---|---|---|---|")
     for label, (_, _, target, peer, _) in COMMANDS.items():
         cpu, wall, rss = (statistics.median(x[i] for x in samples[label]) for i in range(3))

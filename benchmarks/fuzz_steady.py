@@ -48,7 +48,7 @@ import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
-BASES = ["mooring_3leg", "mooring_buoy_decay", "mooring_buoy_waves", "mooring_current", "seed002_turn",
+BASES = ["mooring_3leg", "mooring_buoy_decay", "mooring_buoy_waves", "mooring_current", "turn_375",
          "speed_step_2d", "subsurface_buoy", "subsurface_mooring", "surface_mooring_waves", "tow_payout_turn",
          "towed_array", "towed_body", "turn_360_3d", "whoi/bimoor", "whoi/cmo", "whoi/loops", "whoi/mine",
          "whoi/multi_leg", "whoi/multi_leg_3d", "whoi/mpl"]

@@ -25,9 +25,9 @@ EXAMPLES = ROOT / "examples"
 OUT = ROOT / "docs" / "gallery"
 PAGE = ROOT / "docs" / "gallery.md"
 SHORT = {
-    "seed004_following_4.5s_1to2.yaml": 360.0,
-    "seed004_head_5.6s_1to4.yaml": 360.0,
-    "seed004_head_8s_1to2.yaml": 360.0,
+    "trawl_following_4.5s_1to2.yaml": 360.0,
+    "trawl_head_5.6s_1to4.yaml": 360.0,
+    "trawl_head_8s_1to2.yaml": 360.0,
 }
 """Examples run for a shorter time [s] than their case says (the speed step at 300 s is kept;
 the explicit scheme needs about 10 s of wall time per 600 s of these runs)."""

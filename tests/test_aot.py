@@ -171,11 +171,11 @@ print(outcome.summary.status, outcome.summary.steps > 0, "numba" in sys.modules,
     ("mooring_buoy_decay.yaml", 5.0, {}),                                     # rk4, 6-DOF body, seabed
     ("lazy_wave.yaml", 10.0, {}),                                             # implicit, seabed
     ("mooring_buoy_waves.yaml", 3.0, {"simulation.scheme": "abm4"}),
-    ("seed004_head_8s_1to2.yaml", 2.0, {"simulation.scheme": "generalized-alpha-lumped"}),   # no seabed
-    ("seed000_planar80.yaml", 2.0, {}),                                       # wave-factorized, planar
-    ("seed000_spatial100.yaml", 1.0, {}),                                     # wave-factorized-2, spatial
-    ("seed000_accel.yaml", 1.0, {}),                                          # factorized, planar
-    ("seed000_spatial100.yaml", 1.0, {"simulation.scheme": "factorized"}),
+    ("trawl_head_8s_1to2.yaml", 2.0, {"simulation.scheme": "generalized-alpha-lumped"}),   # no seabed
+    ("factorization_planar80.yaml", 2.0, {}),                                       # wave-factorized, planar
+    ("factorization_spatial100.yaml", 1.0, {}),                                     # wave-factorized-2, spatial
+    ("factorization_accel.yaml", 1.0, {}),                                          # factorized, planar
+    ("factorization_spatial100.yaml", 1.0, {"simulation.scheme": "factorized"}),
 ])
 def test_runs_compile_nothing_and_write_what_numba_would(example, duration, changes, tmp_path):
     """Whole runs in fresh processes, with the install's kernels and with numba's (KANAT_AOT=0):

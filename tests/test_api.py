@@ -14,11 +14,11 @@ from kanat.errors import CaseError, KanatError
 
 from helpers import EXAMPLES, short_case
 
-LUMPED = (EXAMPLES / "seed004_head_8s_1to2.yaml").read_text().replace("duration: 600", "duration: 10")
+LUMPED = (EXAMPLES / "trawl_head_8s_1to2.yaml").read_text().replace("duration: 600", "duration: 10")
 
 
 @pytest.mark.parametrize("text", [short_case(duration=30), LUMPED, (EXAMPLES / "towed_body.yaml").read_text(),
-                                  (EXAMPLES / "pitch_seed003.yaml").read_text()],
+                                  (EXAMPLES / "pitch_stabilizer.yaml").read_text()],
                          ids=["continuum", "lumped", "statics", "pitch"])
 def test_in_memory_result_equals_the_command_lines_file(text, tmp_path, monkeypatch):
     case_path = tmp_path / "case.yaml"

@@ -193,7 +193,7 @@ def test_cli_lists_the_catalogue_and_prints_a_line():
 def test_continuum_case_says_how_to_use_a_catalogue_line():
     """The continuum model has no tangential added mass: the catalogue's is refused at its key
     with the way out, and writing it as 0 runs the line."""
-    data = yaml.safe_load((EXAMPLES / "seed000_accel.yaml").read_text())
+    data = yaml.safe_load((EXAMPLES / "factorization_accel.yaml").read_text())
     name = next(iter(data["line_types"]))
     data["line_types"][name] = {"catalog": "polyester", "nominal_diameter": 0.05}
     with pytest.raises(CaseError, match="write added_mass_tangential: 0"):

@@ -1,5 +1,5 @@
 """The spatial continuum model: planar equivalence, re-charting, rotation invariance and the
-tight low-speed turn through the pole singularity (SPEC §2.2, §7)."""
+tight low-speed turn through the pole singularity (theory/continuum.md §2, theory/validation-cases.md)."""
 from pathlib import Path
 
 import numpy as np

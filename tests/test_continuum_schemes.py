@@ -1,4 +1,4 @@
-"""The generalized-α family (SPEC §2.4, §7 case 2): amplification at infinite frequency, and the
+"""The generalized-α family (theory/time-schemes.md §1, theory/validation-cases.md case 2): amplification at infinite frequency, and the
 scheme registry (the order of accuracy of every scheme: test_scheme_order.py)."""
 import numpy as np
 import pytest

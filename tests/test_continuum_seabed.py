@@ -1,4 +1,4 @@
-"""Seabed contact in the continuum model (SPEC §4; MoorDyn's kbot/cbot law, as the lumped model's):
+"""Seabed contact in the continuum model (theory/moorings.md §3; MoorDyn's kbot/cbot law, as the lumped model's):
 the grounded catenary against its closed form, converging with the grid; the static sink
 w / (k_b d); friction holding a line; a node falling through stops the run and says so."""
 import re
@@ -67,7 +67,7 @@ def test_friction_holds_a_grounded_line_that_a_frictionless_seabed_lets_slide():
 
 
 def test_a_node_falling_through_the_seabed_stops_the_run_and_says_where():
-    """Seed 000's factorized schemes apply no seabed contact: the grounded chain falls through."""
+    """Kaliukh & Vusatiuk's factorized schemes apply no seabed contact: the grounded chain falls through."""
     text = grounded_chain().replace("simulation: {duration: 10, dt: 0.5, output_dt: 5}",
                                     "simulation: {scheme: factorized, duration: 1, dt: 0.005, output_dt: 0.5}")
     with warnings.catch_warnings():

@@ -1,4 +1,4 @@
-"""Cables of several sections with inline bodies in the continuum model (SPEC §4), against oracles:
+"""Cables of several sections with inline bodies in the continuum model (theory/moorings.md §4), against oracles:
 force balance at every junction, the piecewise closed-form catenary of a two-section line, the 3-D
 statics and the lumped model on a subsurface mooring, and the continuum and lumped models
 converging together with the grid on a tow with an inline float."""

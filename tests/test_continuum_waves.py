@@ -1,4 +1,4 @@
-"""Planar continuum model against analytic wave oracles (SPEC §7 case 3).
+"""Planar continuum model against analytic wave oracles (theory/validation-cases.md case 3).
 
 Straight weightless cables without drag: a longitudinal step in end velocity travels at
 ``sqrt(EA/m)`` with ``dT = sqrt(EA m) dV``; a transverse kink at ``sqrt(T/(m+m_a))``; a taut

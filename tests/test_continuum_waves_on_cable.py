@@ -1,4 +1,4 @@
-"""Waves on the continuum cable (SPEC §4, §5): Airy kinematics in the relative velocity and the fluid
+"""Waves on the continuum cable (theory/moorings.md, theory/lumped.md): Airy kinematics in the relative velocity and the fluid
 inertia (Morison with Froude–Krylov), a surface buoy riding the waves; against the linear analytic
 response of a taut tether, a buoy's heave on a line of known stiffness, and the lumped model."""
 import warnings

@@ -1,4 +1,4 @@
-"""Seed 000's schemes are refused, before a run, at a step beyond the transverse Courant number
+"""Kaliukh & Vusatiuk's schemes are refused, before a run, at a step beyond the transverse Courant number
 they are known to take, with the largest step to use; the generalized-α family never is."""
 import dataclasses
 

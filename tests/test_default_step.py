@@ -15,7 +15,7 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def test_lumped_case_without_scheme_or_dt_chooses_both(tmp_path):
-    text = (EXAMPLES / "seed004_head_8s_1to2.yaml").read_text()
+    text = (EXAMPLES / "trawl_head_8s_1to2.yaml").read_text()
     lines = [line for line in text.splitlines() if not line.strip().startswith(("scheme:", "dt:"))]
     text = "\n".join(lines).replace("duration: 600", "duration: 20")
     case = parse_case(text)

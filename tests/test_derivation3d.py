@@ -1,4 +1,4 @@
-"""The symbolic 3-D cable equations (SPEC §2.2): frame, planar reduction to §2.1, invariance
+"""The symbolic 3-D cable equations (theory/continuum.md §2): frame, planar reduction to §2.1, invariance
 under rotations and pole changes, characteristic speeds and the singular set of ``M``."""
 import numpy as np
 import pytest
@@ -31,7 +31,7 @@ def random_states(rng, n, phi_limit=1.2):
 
 
 def spec_planar(Y2, c, current_xz):
-    """SPEC §2.1's printed ``M, K, F`` for planar states (n, 4) = (T, u, v, phi)."""
+    """theory/continuum.md §1's printed ``M, K, F`` for planar states (n, 4) = (T, u, v, phi)."""
     T, u, v, phi = Y2.T
     m, mn, EA = c.mass, c.mass + c.added_mass, c.axial_stiffness
     z, one = np.zeros_like(T), np.ones_like(T)
@@ -100,7 +100,7 @@ def test_residual_is_quasilinear_and_matches_the_written_rows():
 
 
 def test_planar_reduction_vertical_pole_symbolic():
-    """Pole z, e1 x, theta = w = 0, no y current: rows 0,1,3,4 are SPEC §2.1; rows 2,5 vanish."""
+    """Pole z, e1 x, theta = w = 0, no y current: rows 0,1,3,4 are theory/continuum.md §1; rows 2,5 vanish."""
     d = d3.derive()
     T, u, v, w, phi, theta = d.state
     m, ma, EA, w0, rho, dia, Cn, Ct = d.constants
@@ -196,7 +196,7 @@ def central(f, x, h):
 
 
 def vector_residuals(s, tau, c, current, h):
-    """Momentum and compatibility vectors computed directly, with no chart (SPEC §2.2)."""
+    """Momentum and compatibility vectors computed directly, with no chart (theory/continuum.md §2)."""
     def d(f, x):
         return (f(x + h) - f(x - h)) / (2 * h)
 

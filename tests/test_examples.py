@@ -1,7 +1,7 @@
 """Every example in examples/ runs, and its numbers pass their oracles.
 
-Oracles: shooting and collocation agree to 1e-6 on every statics example (SPEC §7.1,
-§3.1); seed 001's published values; force balance at bodies; seabed contact.
+Oracles: shooting and collocation agree to 1e-6 on every statics example (theory/validation-cases.md §1,
+§3.1); Naumov & Agievich's published values; force balance at bodies; seabed contact.
 """
 from pathlib import Path
 
@@ -22,7 +22,7 @@ runner = CliRunner()
 
 
 def test_there_are_examples():
-    assert {"towed_body.yaml", "mooring_current.yaml", "seed001_sphere.yaml"} <= set(ALL)
+    assert {"towed_body.yaml", "mooring_current.yaml", "sphere_two_cables.yaml"} <= set(ALL)
 
 
 @pytest.mark.parametrize("name", ALL)
@@ -81,9 +81,9 @@ def test_subsurface_buoy_holds_its_line_up():
     assert result.cables["riser"].tension[-1] > 8500.0          # buoyancy plus drag
 
 
-def test_seed001_examples_reproduce_the_paper():
-    one = solve_statics(load_case(EXAMPLES / "seed001_sphere.yaml")).sphere
-    two = solve_statics(load_case(EXAMPLES / "seed001_sphere_case2.yaml")).sphere
+def test_sphere_examples_reproduce_the_paper():
+    one = solve_statics(load_case(EXAMPLES / "sphere_two_cables.yaml")).sphere
+    two = solve_statics(load_case(EXAMPLES / "sphere_two_cables_case2.yaml")).sphere
     assert np.degrees(one.alpha0) == pytest.approx(46.9, abs=0.1)
     assert one.tau0 == pytest.approx(0.6066, abs=5e-4)
     assert abs(one.eps1_percent) < 0.01 and abs(one.eps2_percent) < 0.01
@@ -91,8 +91,8 @@ def test_seed001_examples_reproduce_the_paper():
     assert two.alpha0 < one.alpha0 and two.alpha[-1] > one.alpha[-1]
 
 
-def test_seed001_dimensional_example_maps_to_the_published_groups():
-    sol = solve_statics(load_case(EXAMPLES / "seed001_sphere_dimensional.yaml")).sphere
+def test_sphere_dimensional_example_maps_to_the_published_groups():
+    sol = solve_statics(load_case(EXAMPLES / "sphere_two_cables_dimensional.yaml")).sphere
     g = sol.groups
     assert (g.Psi, g.LoL, g.x_C) == pytest.approx((0.02, 2.0, -1.732), rel=1e-3)
     assert (g.QkL, g.RkL) == pytest.approx((0.45, 0.4), rel=2e-3)

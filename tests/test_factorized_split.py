@@ -1,4 +1,4 @@
-"""The split of ``B = M^-1 K`` by wave and direction (seed 000 eqs. 3–7, 12–13; SPEC §2.5).
+"""The split of ``B = M^-1 K`` by wave and direction (Kaliukh & Vusatiuk 2018, eqs. 3–7, 12–13; theory/time-schemes.md §2).
 
 Property tests over random planar and spatial states: ``B+ + B- = B``, ``B+`` has only
 non-negative eigenvalues and ``B-`` only non-positive ones, the four wave parts add up to

@@ -1,4 +1,4 @@
-"""Seed 000's schemes against analytic wave oracles, the steady tow and the full scheme.
+"""Kaliukh & Vusatiuk's schemes against analytic wave oracles, the steady tow and the full scheme.
 
 - Linear constant-coefficient waves (small amplitude on a straight, weightless, undamped
   cable, whose linearization has constant coefficients and the exact solution
@@ -9,7 +9,7 @@
 - The steady tow of tests/test_continuum_run.py: the wave-factorized scheme keeps the full
   scheme's steady state to 1e-6 (its blocks are exact there); the factorized schemes settle
   on their own first-order steady state, whose error falls at first order with the grid.
-- A towed-body speed step (seed 000's accelerating vehicle): factorized and full runs
+- A towed-body speed step (Kaliukh & Vusatiuk's accelerating vehicle): factorized and full runs
   converge to each other as the grid is refined.
 """
 from pathlib import Path
@@ -20,7 +20,7 @@ from kanat.continuum.models import PlanarModel, model_for
 from kanat.continuum.schemes import Factorized, Factorized4, GeneralizedAlpha, WaveFactorized
 from kanat.io import parse_case
 from kanat.io.results import read_result
-from kanat.studies.seed000 import body_relative
+from kanat.studies.factorization import body_relative
 from kanat.validation.checks_dynamics import straight_cable
 
 from helpers import StepDrive, front, run
@@ -152,7 +152,7 @@ def test_wave_factorized_keeps_the_steady_tow(tmp_path):
 
 
 def steady_top_tension(segments, scheme):
-    text = (EXAMPLES / "seed000_planar80.yaml").read_text().replace("segments: 10,", f"segments: {segments},")
+    text = (EXAMPLES / "factorization_planar80.yaml").read_text().replace("segments: 10,", f"segments: {segments},")
     text = text.replace("accelerate: {to_speed_kn: 20, acceleration: 0.01}", "straight: {duration: 100}")
     model = model_for(parse_case(text))
     state = model.initial()
@@ -178,9 +178,9 @@ def test_factorized_steady_tow_is_first_order_in_the_grid():
 
 
 def test_factorized_and_full_converge_together_on_the_towed_body_speed_step():
-    """Seed 000's vehicle accelerated from rest: body distance and depth 3 s into the run, at
+    """Kaliukh & Vusatiuk's vehicle accelerated from rest: body distance and depth 3 s into the run, at
     sigma fixed (dt = 0.06 s / segments). Measured differences 0.11, 0.064, 0.034 m in distance."""
-    base = (EXAMPLES / "seed000_accel.yaml").read_text()
+    base = (EXAMPLES / "factorization_accel.yaml").read_text()
     differences = []
     for segments in (6, 12, 24):
         case = parse_case(base.replace("segments: 24,", f"segments: {segments},"))

@@ -92,11 +92,11 @@ def test_a_planar_run_after_warmup_compiles_nothing(numba_kernels):
     ("continuum-3d", "turn_360_3d.yaml", {"simulation.duration": 10.0}),
     ("continuum-3d-bending", "turn_360_3d.yaml",
      {"simulation.duration": 10.0, "line_types.towcable.bending_stiffness": 50.0}),
-    ("lumped-rk4", "seed004_head_5.6s_1to4.yaml", {"simulation.duration": 1.0}),
-    ("lumped-implicit", "seed004_head_5.6s_1to4.yaml",
+    ("lumped-rk4", "trawl_head_5.6s_1to4.yaml", {"simulation.duration": 1.0}),
+    ("lumped-implicit", "trawl_head_5.6s_1to4.yaml",
      {"simulation.duration": 1.0, "simulation.scheme": "generalized-alpha-lumped"}),
-    ("wave-factorized-2d", "seed000_planar80.yaml", {"simulation.duration": 0.1, "simulation.output_dt": 0.05}),
-    ("factorized-2d", "seed000_accel.yaml", {"simulation.duration": 0.02}),
+    ("wave-factorized-2d", "factorization_planar80.yaml", {"simulation.duration": 0.1, "simulation.output_dt": 0.05}),
+    ("factorized-2d", "factorization_accel.yaml", {"simulation.duration": 0.02}),
 ])
 def test_a_run_after_warmup_compiles_nothing(name, example, changes, numba_kernels):
     _after_warmup_compiles_nothing(name, load_case(f"examples/{example}").replace(changes))

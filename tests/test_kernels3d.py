@@ -1,4 +1,4 @@
-"""The compiled spatial kernels against the symbolic derivation (SPEC §2.2) and the complex-step
+"""The compiled spatial kernels against the symbolic derivation (theory/continuum.md §2) and the complex-step
 oracle of their own Jacobian."""
 import numpy as np
 import pytest

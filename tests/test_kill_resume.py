@@ -21,7 +21,7 @@ from helpers import EXAMPLES, short_case
 
 CASES = {
     "continuum": short_case(duration=400, segments=40, before=50).replace("dt: 1.0\n", "dt: 0.5\n"),
-    "lumped": (EXAMPLES / "seed004_head_8s_1to2.yaml").read_text().replace("duration: 600", "duration: 40"),
+    "lumped": (EXAMPLES / "trawl_head_8s_1to2.yaml").read_text().replace("duration: 600", "duration: 40"),
 }
 
 

@@ -1,4 +1,4 @@
-"""The package's layers point down only (STYLE rule 13) and no package's modules import each other in a
+"""The package's layers point down only (style rule 13) and no package's modules import each other in a
 cycle: import-linter's contracts in pyproject.toml."""
 import shutil
 import subprocess

@@ -1,4 +1,4 @@
-"""The lumped model against independent oracles (SPEC §5, §7.10; issue 5):
+"""The lumped model against independent oracles (theory/lumped.md, theory/validation-cases.md §10; issue 5):
 
 * energy conservation of a pendulum chain without drag or damping (0.5 % over 100 periods);
 * a hanging line against the closed-form elastic catenary (0.5 % on tension);

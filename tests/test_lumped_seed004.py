@@ -1,5 +1,5 @@
-"""Seed 004's three example cases: the paper's findings hold in the computed statistics
-(SPEC §5), the statistics are right on records whose answer is known, and the one command
+"""Bezverkhyi's three example cases: the paper's findings hold in the computed statistics
+(theory/lumped.md §7), the statistics are right on records whose answer is known, and the one command
 writes the figures and tables."""
 import math
 import re
@@ -13,20 +13,20 @@ from kanat.io import load_case
 from kanat.io.results import read_result
 from kanat.analysis import step_response
 from kanat.cli import app
-from kanat.studies import seed004
-from kanat.report.lumped_plot import plot_seed004
+from kanat.studies import trawl
+from kanat.report.lumped_plot import plot_trawl
 from typer.testing import CliRunner
 
 from helpers import run
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
-CASES = {1: "seed004_head_5.6s_1to4.yaml", 2: "seed004_following_4.5s_1to2.yaml", 3: "seed004_head_8s_1to2.yaml"}
+CASES = {1: "trawl_head_5.6s_1to4.yaml", 2: "trawl_following_4.5s_1to2.yaml", 3: "trawl_head_8s_1to2.yaml"}
 NOT_REPRODUCED = {2: {"buoy: range grows slightly"}, 3: {"buoy: mean falls slightly"}}   # docs/lumped.md
 
 
 @pytest.fixture(scope="module")
 def results(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("seed004")
+    folder = tmp_path_factory.mktemp("trawl")
     out = {}
     for figure, name in CASES.items():
         summary = run(load_case(EXAMPLES / name), folder / f"{figure}.nc")
@@ -37,8 +37,8 @@ def results(tmp_path_factory):
 
 def test_figure1_has_every_finding_of_spec_section_5(results):
     ds = results[1]
-    stats = step_response.step_statistics(ds, seed004.POINTS)
-    found = seed004.findings(stats, figure=1)
+    stats = step_response.step_statistics(ds, trawl.POINTS)
+    found = trawl.findings(stats, figure=1)
     assert all(found.values()), {k: v for k, v in found.items() if not v}
     tow, _, buoy = stats
     assert tow.settled.mean > 3 * tow.before.mean and tow.settled.range > 3 * tow.before.range   # 1 -> 4 m/s
@@ -51,14 +51,14 @@ def test_figure1_has_every_finding_of_spec_section_5(results):
 
 @pytest.mark.parametrize("figure", [2, 3])
 def test_figures_2_and_3_show_the_papers_trends(results, figure):
-    found = seed004.findings(step_response.step_statistics(results[figure], seed004.POINTS), figure=figure)
+    found = trawl.findings(step_response.step_statistics(results[figure], trawl.POINTS), figure=figure)
     missing = {k for k, ok in found.items() if not ok}
     assert missing == NOT_REPRODUCED[figure]       # the rest of the paper's statements hold
     assert len(found) - len(missing) >= 5
 
 
 def test_viscoelasticity_matters_in_the_step_not_in_steady_waves(tmp_path):
-    """SPEC §5: the Kelvin–Voigt damping changes the tensions at the speed step, hardly in
+    """theory/lumped.md §2: the Kelvin–Voigt damping changes the tensions at the speed step, hardly in
     steady towing in regular waves (case 1, step at 150 s to keep it short)."""
     case = load_case(EXAMPLES / CASES[1])
     track = [{"straight": {"speed": 1.0, "duration": 150.0}}, {"speed_step": {"to_speed": 4.0}}]
@@ -70,7 +70,7 @@ def test_viscoelasticity_matters_in_the_step_not_in_steady_waves(tmp_path):
         run(base.model_copy(update={"line_types": {"cable": line}}), tmp_path / f"{damping}.nc")
         records[damping] = read_result(tmp_path / f"{damping}.nc")
     t = records[0.0]["time"].values
-    for label, cable, end in seed004.POINTS:
+    for label, cable, end in trawl.POINTS:
         a, b = (step_response.point_tension(ds, cable, end) for ds in records.values())
         steady = np.max(np.abs(a - b)[(t > 50) & (t < 150)])
         step = np.max(np.abs(a - b)[(t >= 150) & (t < 160)])
@@ -96,7 +96,7 @@ def synthetic(step_at=100.0, end=300.0, dt=0.25):
 def test_statistics_on_a_record_with_known_answers():
     ds = synthetic()
     assert step_response.step_time(ds) == pytest.approx(100.0)
-    tow, board, buoy = step_response.step_statistics(ds, seed004.POINTS)
+    tow, board, buoy = step_response.step_statistics(ds, trawl.POINTS)
     assert tow.before.mean == pytest.approx(1000.0, abs=1e-6) and tow.before.range == pytest.approx(200.0, rel=1e-9)
     assert tow.settled.mean == pytest.approx(3000.0, abs=1e-6) and tow.settled.range == pytest.approx(800.0, rel=1e-9)
     assert board.before.mean == pytest.approx(500.0, abs=1e-6) and board.settled.range == pytest.approx(400.0)
@@ -122,7 +122,7 @@ def test_no_step_is_a_clear_error():
 def test_one_command_writes_figures_and_tables(results, tmp_path):
     for figure, ds in results.items():
         ds.to_netcdf(tmp_path / f"{Path(CASES[figure]).stem}.nc")
-    result = CliRunner().invoke(app, ["study", "seed004", *(str(EXAMPLES / CASES[f]) for f in CASES), "-o", str(tmp_path),
+    result = CliRunner().invoke(app, ["study", "trawl", *(str(EXAMPLES / CASES[f]) for f in CASES), "-o", str(tmp_path),
                                       "--reuse"])
     assert result.exit_code == 0, result.output
     for name in CASES.values():
@@ -130,6 +130,6 @@ def test_one_command_writes_figures_and_tables(results, tmp_path):
         assert (tmp_path / f"{stem}.png").stat().st_size > 30_000
         text = (tmp_path / f"{stem}.md").read_text()
         assert "| tow point |" in text and "| otter board |" in text and "| buoy |" in text
-    assert re.search(r"bridle_port 0 / [1-9]", (tmp_path / "seed004_head_5.6s_1to4.md").read_text())
-    fig = plot_seed004(results[1])
+    assert re.search(r"bridle_port 0 / [1-9]", (tmp_path / "trawl_head_5.6s_1to4.md").read_text())
+    fig = plot_trawl(results[1])
     assert len(fig.axes) == 3 and fig.axes[0].get_ylabel() == "tension [kN]"

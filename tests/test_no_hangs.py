@@ -95,7 +95,7 @@ def test_a_dynamic_run_whose_initial_statics_makes_no_progress_fails_within_the_
 def test_the_lumped_equilibrium_has_the_time_budget(monkeypatch):
     monkeypatch.setenv(budget.SECONDS_ENV, "0.01")
     with pytest.warns(api.RunFailedWarning):
-        outcome = api.run(kanat.load_case(EXAMPLES / "seed004_head_8s_1to2.yaml"))
+        outcome = api.run(kanat.load_case(EXAMPLES / "trawl_head_8s_1to2.yaml"))
     assert re.match(r"failed: no initial state: the equilibrium of the lumped network gave up after "
                     r"[0-9.]+ s \(the limit is 0.01 s\)", outcome.status), outcome.status
 

@@ -1,4 +1,4 @@
-"""Seed 003 pitch model (SPEC §6.2, §7.9): the Fourier steady state against its closed
+"""Gaisha pitch model (theory/vessel.md §2, theory/validation-cases.md §9): the Fourier steady state against its closed
 forms and against time integration, the stabilizer laws, the resonance guard.
 
 Oracles: each harmonic answered by ``A / (I_y (omega_0^2 - (n omega)^2))`` exactly; the
@@ -33,7 +33,7 @@ from kanat.studies.pitch import truncation_errors
 from kanat.vessel.pitch.periodic import periodic_orbit, transient
 
 I_Y, OMEGA, M_M, M0 = 2e7, 2 * math.pi / 10, 7e5, 1e6     # paper data (eqs. 2, 4, 5)
-OMEGA0 = 0.876                                             # examples/pitch_seed003.yaml
+OMEGA0 = 0.876                                             # examples/pitch_stabilizer.yaml
 PAPER = PitchSystem(I_Y, OMEGA0, M_M, OMEGA)
 DAMPED = PitchSystem(I_Y, OMEGA0, M_M, OMEGA, damping_ratio=0.1)
 TIMES = np.linspace(0.0, 10.0, 401)

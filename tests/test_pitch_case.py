@@ -28,7 +28,7 @@ def run_pitch_case(case, output, plot_dir=None):
         plot_pitch_case(outcome.solution, figure_data(outcome.solution), Path(plot_dir))
     return outcome.dataset, outcome.text
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_seed003.yaml"
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_stabilizer.yaml"
 
 
 @pytest.fixture(scope="module")
@@ -53,7 +53,7 @@ def test_result_file_has_the_case_format_names(ran):
     assert back["time"].attrs["units"] == "s"
     assert back["time"].values[0] == 0.0 and back["time"].values[-1] == pytest.approx(10.0)
     assert back.attrs["status"] == "ok" and back.attrs["model"] == "pitch"
-    assert back.attrs["case_name"] == "pitch-seed003" and back.attrs["harmonics"] == 50
+    assert back.attrs["case_name"] == "pitch-stabilizer" and back.attrs["harmonics"] == 50
     pitch = back["pitch"].values
     np.testing.assert_allclose(back["amplitude"].values, 0.5 * np.ptp(pitch, axis=1))
     np.testing.assert_allclose(back["max_abs"].values, np.abs(pitch).max(axis=1))
@@ -99,7 +99,7 @@ def test_resonance_is_refused_by_the_loader_and_the_solver_alike(tmp_path):
 
 
 def test_a_case_without_pitch_block_is_refused(tmp_path):
-    case = load_case(EXAMPLE.parent / "seed001_sphere.yaml")
+    case = load_case(EXAMPLE.parent / "sphere_two_cables.yaml")
     with pytest.raises(KanatError, match="has no 'pitch' block; the pitch model solves model: pitch"):
         run_pitch_case(case, tmp_path / "none.nc")
 

@@ -1,7 +1,7 @@
-"""Seed 003's claim, measured (SPEC §6.2, §7.9): with the paper's data the sinusoidal mode
+"""Gaisha's claim, measured (theory/vessel.md §2, theory/validation-cases.md §9): with the paper's data the sinusoidal mode
 cuts the pitch amplitude by about 2x or more and the rectangular mode more, for omega_0 in
 a band that the paper never states. The numbers asserted are the ones measured with
-``examples/pitch_seed003.yaml`` (omega_0 = 0.876 rad/s, chosen so that the unstabilized
+``examples/pitch_stabilizer.yaml`` (omega_0 = 0.876 rad/s, chosen so that the unstabilized
 amplitude is the paper's 0.094 rad); docs/pitch.md reports them.
 """
 import math
@@ -14,7 +14,7 @@ from kanat.io import load_case
 from kanat.vessel.pitch import PitchSystem, solve_pitch
 from kanat.studies.pitch import claim_band, claim_holds, natural_frequency_scan
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_seed003.yaml"
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pitch_stabilizer.yaml"
 I_Y, OMEGA, M_M, M0 = 2e7, 2 * math.pi / 10, 7e5, 1e6
 
 

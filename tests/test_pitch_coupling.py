@@ -1,4 +1,4 @@
-"""The tow vessel's pitch as a motion, and the tow point it moves (issue 6.5, SPEC §6.2).
+"""The tow vessel's pitch as a motion, and the tow point it moves (issue 6.5, theory/vessel.md §2).
 
 Oracles: a stern tow point's height follows ``x sin(phi) + z cos(phi)`` exactly; rate and
 acceleration are the finite differences of angle and rate; each mode's motion has the

@@ -1,4 +1,4 @@
-"""The stabilizer seen by the cable: coupled continuum runs (issue 6.5, SPEC §6.2).
+"""The stabilizer seen by the cable: coupled continuum runs (issue 6.5, theory/vessel.md §2).
 
 Oracles and measured findings on the 6 kn example, shortened to 200 s (transient 60 s,
 14 wave periods). Without a stabilizer, the top tension oscillates at the wave frequency.

@@ -125,7 +125,7 @@ def test_statics_picture_gives_the_tow_speed_in_the_unit_of_its_case(speed, titl
 def test_sphere_result_is_drawn_from_its_dataset():
     import kanat
 
-    ds = kanat.solve_statics(kanat.load_case(ROOT / "examples" / "seed001_sphere.yaml"))
+    ds = kanat.solve_statics(kanat.load_case(ROOT / "examples" / "sphere_two_cables.yaml"))
     fig = plot_statics(ds)
     cable = fig.axes[0].get_lines()[0]
     np.testing.assert_allclose(cable.get_xdata(), ds["x"].values)

@@ -18,9 +18,9 @@ from kanat.io.result_table import ResultTable
 from kanat.io.results import failed_dataset, write_result
 from kanat.io.statics_table import failed_table
 
-CASES = ["towed_body.yaml", "subsurface_mooring.yaml", "mooring_3leg.yaml", "seed001_sphere.yaml",
-         "seed001_sphere_dimensional.yaml", "moordyn/clump_and_float.dat"]
-"""A tow (a body, no anchor), a riser with inline floats, a network with stiffness, the seed 001
+CASES = ["towed_body.yaml", "subsurface_mooring.yaml", "mooring_3leg.yaml", "sphere_two_cables.yaml",
+         "sphere_two_cables_dimensional.yaml", "moordyn/clump_and_float.dat"]
+"""A tow (a body, no anchor), a riser with inline floats, a network with stiffness, the Naumov & Agievich
 problem without and with its scales, a MoorDyn network with points and no body."""
 
 

@@ -45,8 +45,8 @@ def test_case_hash_ignores_layout_and_comments_but_not_values():
     assert len(case_sha256(base)) == len(hashlib.sha256().hexdigest())
 
 
-def test_sphere_result_has_seed001_variables_and_attributes(tmp_path):
-    case = load_case(EXAMPLES / "seed001_sphere.yaml")
+def test_sphere_result_has_sphere_variables_and_attributes(tmp_path):
+    case = load_case(EXAMPLES / "sphere_two_cables.yaml")
     ds = read_result(write_result(statics_dataset(solve_statics(case)), tmp_path / "s.nc"))
     for name in ("alpha", "tau", "x", "y"):
         assert ds[name].dims == ("node",)

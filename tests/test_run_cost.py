@@ -34,7 +34,7 @@ def errors(text):
     return [p for p in check_text(text) if p.severity == "error"]
 
 
-@pytest.mark.parametrize("name", ["mooring_buoy_decay.yaml", "seed004_head_8s_1to2.yaml"])
+@pytest.mark.parametrize("name", ["mooring_buoy_decay.yaml", "trawl_head_8s_1to2.yaml"])
 def test_the_estimated_safe_step_is_the_models(name):
     """Seabed contact sets the first's step, the line's axial stiffness the second's."""
     case = kanat.load_case(EXAMPLES / name)

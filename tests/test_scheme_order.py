@@ -1,4 +1,4 @@
-"""Every registered time scheme has the order of accuracy it declares (STYLE rule 4).
+"""Every registered time scheme has the order of accuracy it declares (style rule 4).
 
 One test, parametrized over :data:`kanat.api.SCHEMES`: each scheme (with its default
 parameters) steps its model's smooth test problem with two or more steps, and the observed

@@ -1,4 +1,4 @@
-"""Seed 002's comparison (SPEC §7 case 8) on a shortened turn: the paper's qualitative ranking.
+"""Zhang, Zhang & Liu's comparison (theory/validation-cases.md case 8) on a shortened turn: the paper's qualitative ranking.
 
 The paper: generalized-α and the box method agree with the experiment, backward Euler and the
 generalized trapezoidal scheme deviate (first order); generalized-α, backward Euler and the
@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from kanat.studies.seed002 import compare_schemes, table
+from kanat.studies.scheme_comparison import compare_schemes, table
 from kanat.io import parse_case
 
-EXAMPLE = (Path(__file__).resolve().parents[1] / "examples" / "seed002_turn.yaml").read_text()
+EXAMPLE = (Path(__file__).resolve().parents[1] / "examples" / "turn_375.yaml").read_text()
 
 
 @pytest.fixture(scope="module")

@@ -129,15 +129,15 @@ def pitch_on_a_harmonic_beyond_the_series(data):
 
 
 CLASSES = {
-    "an unknown scheme": ("seed002_turn", at("simulation", "scheme")("rk9"), "simulation.scheme",
+    "an unknown scheme": ("turn_375", at("simulation", "scheme")("rk9"), "simulation.scheme",
                           ("unknown continuum scheme 'rk9'", "generalized-alpha")),
-    "a lumped scheme on the continuum model": ("seed002_turn", at("simulation", "scheme")("rk4"),
+    "a lumped scheme on the continuum model": ("turn_375", at("simulation", "scheme")("rk4"),
                                                "simulation.scheme", ("'rk4' is a lumped scheme",)),
     "a continuum scheme on the lumped model": ("lazy_wave", at("simulation", "scheme")("generalized-alpha"),
                                                "simulation.scheme", ("did you mean 'generalized-alpha-lumped'",)),
-    "a turn of given radius after a stop": ("seed002_turn", at("vessel", "track", 0, "straight", "speed_kn")(0),
+    "a turn of given radius after a stop": ("turn_375", at("vessel", "track", 0, "straight", "speed_kn")(0),
                                             "vessel.track[1]", ("needs a speed > 0", "track[0] ends at 0 m/s")),
-    "a turn at a speed too small to turn": ("seed002_turn",
+    "a turn at a speed too small to turn": ("turn_375",
                                             at("vessel", "track", 0, "straight", "speed_kn")(5e-324),
                                             "vessel.track[1]", ("turns at 0 rad/s",)),
     "a 6-DOF body without its position": ("mooring_buoy_decay", delete("bodies", "buoy", "position"),
@@ -168,7 +168,7 @@ CLASSES = {
     "a continuum attachment at a cable end": ("subsurface_mooring", at("cables", 0, "attachments", 0, "s")(0),
                                               "cables[0].attachments[0].s", ("is that end's body",)),
     "an elastic law the continuum model cannot invert": (
-        "seed002_turn", at("line_types", "towcable", "elastic_law")({"polynomial": [1e6, -3e6]}),
+        "turn_375", at("line_types", "towcable", "elastic_law")({"polynomial": [1e6, -3e6]}),
         "line_types.towcable.elastic_law", ("must increase with strain up to 0.5",)),
     "a JONSWAP gamma beyond DNV's normalization": (
         "mooring_buoy_waves", at("environment", "waves", "gamma")(1e6), "environment.waves.gamma",

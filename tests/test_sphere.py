@@ -1,4 +1,4 @@
-"""Seed 001: sphere on two cables in a uniform flow (SPEC §3.2, validation case 1).
+"""Naumov & Agievich: sphere on two cables in a uniform flow (theory/statics.md §3, validation case 1).
 
 Oracles: the paper's published numbers (Naumov & Agievich, eq. 21 and the text after
 fig. 3: tau(0) = 0.6066, alpha(0) = 46.9 deg, eps1 = -0.00798 %, eps2 = 0.00403 %), its

@@ -1,10 +1,10 @@
-"""The stability sweep (seed 000 section 4): Courant ranges in which a scheme stays bounded.
+"""The stability sweep (Kaliukh & Vusatiuk 2018, section 4): Courant ranges in which a scheme stays bounded.
 
-Seed 000 reports its wave-factorized Crank–Nicolson scheme stable for ``sigma_long`` in
+Kaliukh & Vusatiuk 2018 reports its wave-factorized Crank–Nicolson scheme stable for ``sigma_long`` in
 [2.65, 188.9] on the planar 80 m tow (and [2, 200] overall). Here, on the same tow
-(examples/seed000_planar80.yaml), the quasi-linear wave blocks stay bounded over the whole
+(examples/factorization_planar80.yaml), the quasi-linear wave blocks stay bounded over the whole
 swept range, which contains the paper's, and within it they stay within the paper's 2 % of
-the full scheme; the accelerating vehicle (examples/seed000_accel.yaml) shows the kind of
+the full scheme; the accelerating vehicle (examples/factorization_accel.yaml) shows the kind of
 limit the paper found: bounded only above a lower ``sigma_long``. docs/factorization.md
 discusses the difference.
 """
@@ -24,7 +24,7 @@ PAPER_RANGE = (2.65, 188.9)
 
 @pytest.fixture(scope="module")
 def planar80_sweep():
-    case = parse_case((EXAMPLES / "seed000_planar80.yaml").read_text())
+    case = parse_case((EXAMPLES / "factorization_planar80.yaml").read_text())
     return stability_sweep(case, WaveFactorized(gamma=0.5), [0.002, 0.01, 0.05, 0.2, 1.0, 2.0, 6.0, 12.0])
 
 
@@ -49,7 +49,7 @@ def test_accelerating_vehicle_is_stable_only_above_a_lower_courant_number():
     """Quasi-linear Crank–Nicolson blocks (gamma 0.6) on the vehicle accelerated from rest:
     unbounded at sigma_long 15 and below (the spurious box mode grows after the tow point stops
     accelerating), bounded from 30 up."""
-    case = parse_case((EXAMPLES / "seed000_accel.yaml").read_text())
+    case = parse_case((EXAMPLES / "factorization_accel.yaml").read_text())
     ds = stability_sweep(case, WaveFactorized(gamma=0.6), [0.001, 0.002, 0.005, 0.02])
     assert list(ds["bounded"].values) == [False, True, True, True]
     status = ds["status"].values[0]

@@ -61,7 +61,7 @@ def test_what_the_march_cannot_give_is_left_to_the_statics():
     assert march_from_body(no_load, np.linspace(0.0, 100.0, 11)) is None      # slack: the statics explain
 
 
-@pytest.mark.parametrize("example", ["speed_step_2d.yaml", "pitch_tow_10kn.yaml", "seed000_planar80.yaml"])
+@pytest.mark.parametrize("example", ["speed_step_2d.yaml", "pitch_tow_10kn.yaml", "factorization_planar80.yaml"])
 def test_the_continuum_start_is_the_steady_state_the_shooting_guess_gives(example, monkeypatch):
     case = api.load_case(EXAMPLES / example)
     marched = api.dynamic_model(case).initial()

@@ -1,4 +1,4 @@
-"""The 3-D single-cable statics (shooting and collocation; SPEC §3.1, §4): a current rotated about the
+"""The 3-D single-cable statics (shooting and collocation; theory/statics.md §1, theory/moorings.md): a current rotated about the
 vertical rotates the solution, an x-z current gives the planar solution, the two solvers agree, and
 the seabed's friction takes MoorPy's closed form."""
 import re

@@ -1,4 +1,4 @@
-"""Steady cable solvers against independent oracles (SPEC §3.1, §7 cases 4 and 5).
+"""Steady cable solvers against independent oracles (theory/statics.md §1, theory/validation-cases.md cases 4 and 5).
 
 Oracles: the closed-form elastic catenary (Irvine), the long-cable critical angle,
 global force balance, and agreement of two independent solvers.

@@ -1,4 +1,4 @@
-"""Vessel track kinematics (SPEC §6.1) against closed forms and finite differences."""
+"""Vessel track kinematics (theory/vessel.md §1) against closed forms and finite differences."""
 import math
 
 import numpy as np
@@ -39,7 +39,7 @@ def test_speed_step_is_instant():
     assert tr.state(350.0).position[0] == pytest.approx(300.0 + 200.0)
 
 
-def test_seed002_turn_stays_on_its_circle_and_ends_at_375_degrees():
+def test_turn_375_stays_on_its_circle_and_ends_at_375_degrees():
     radius, speed = 640.08, 18.5 * KN
     tr = track(f"    - {{straight: {{speed_kn: 18.5, duration: 1}}}}\n"
                f"    - {{turn: {{radius: {radius}, angle_deg: 375}}}}\n    - {{straight: {{duration: 300}}}}\n")

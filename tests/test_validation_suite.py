@@ -1,6 +1,6 @@
-"""The validation suite (SPEC §7, fast cases) and its report.
+"""The validation suite (theory/validation-cases.md, fast cases) and its report.
 
-Oracles: the analytic values written out here independently of kanat.validation (seed 001's
+Oracles: the analytic values written out here independently of kanat.validation (Naumov & Agievich's
 published numbers, sqrt(EA/m), sqrt(EA m) dV, sqrt(T/(m+m_a)), the pitch mean offset
 M0/(2 I_y omega_0^2)); a deliberately wrong check must fail and be shown as failing.
 """
@@ -14,9 +14,9 @@ from kanat.errors import KanatError
 from kanat.report.html_validation import validation_report as write_validation_report
 from kanat.validation import REGISTRY, Tolerance, check, run_suite
 
-EXPECTED = {                                   # independent oracles (SPEC §7)
-    "seed001-alpha0": (46.9, 0.1),
-    "seed001-tau0": (0.6066, 5e-4),
+EXPECTED = {                                   # independent oracles (theory/validation-cases.md)
+    "sphere-alpha0": (46.9, 0.1),
+    "sphere-tau0": (0.6066, 5e-4),
     "longitudinal-speed": (math.sqrt(1e6 / 1.0), 0.02 * 1000.0),
     "longitudinal-jump": (math.sqrt(1e6 * 1.0) * 0.1, 2.0),
     "transverse-speed": (math.sqrt(1000.0 / 1.6), 0.02 * 25.0),
@@ -57,7 +57,7 @@ def test_report_renders_each_check(results, tmp_path):
         assert ">pass<" in row and f"{r.measured:.5g}" in row
     assert html.count(">FAIL<") == 2 and "ZeroDivisionError" in html
     assert f"{len(results)} of {len(results) + 2} checks pass" in html
-    assert "Validation cases not in the fast suite" in html and "10 the lumped model and seed 004" in html
+    assert "Validation cases not in the fast suite" in html and "10 the lumped model and Bezverkhyi 2006" in html
     assert "SPEC §" not in html and "§7" not in html                # the documentation's groups, no outside references
 
 
@@ -69,7 +69,7 @@ def test_unknown_check_is_explained():
 def test_validate_suite_verb(tmp_path):
     from kanat.cli import app
 
-    out = CliRunner().invoke(app, ["validate-suite", "-o", str(tmp_path / "v.html"), "--only", "seed001-alpha0",
+    out = CliRunner().invoke(app, ["validate-suite", "-o", str(tmp_path / "v.html"), "--only", "sphere-alpha0",
                                      "--only", "longitudinal-jump"])
     assert out.exit_code == 0, out.output
     assert "2/2 checks pass" in out.output and (tmp_path / "v.html").exists()

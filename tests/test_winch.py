@@ -1,4 +1,4 @@
-"""The winch (SPEC §4; WHOI Cable's pay-out): the first interval grows from the winch and is split
+"""The winch (theory/moorings.md §9; WHOI Cable's pay-out): the first interval grows from the winch and is split
 every segment length, or shrinks and merges when hauling in. Oracles: the length (and mass) of cable in
 the water is the schedule's, a slow lowering follows the statics at each length within 0.5 %, a tow
 paying out settles on the statics of its final length, and a checkpoint restores the moving grid

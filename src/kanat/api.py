@@ -261,7 +261,7 @@ def solve_statics(case: Case, method: str = "auto"):
     Parameters
     ----------
     case : kanat.model.Case
-        Any case with cables (its vessel's initial speed sets the flow), or a seed 001
+        Any case with cables (its vessel's initial speed sets the flow), or a Naumov & Agievich
         ``sphere_two_cables`` problem.
     method : str
         ``auto``, ``shooting``, ``collocation`` or ``catenary``.

@@ -191,7 +191,7 @@ def pitch(case: Path = typer.Argument(..., help="Case file with a pitch block.")
           plot: Optional[Path] = typer.Option(None, "--plot",
                                               help="Directory for the figures (or a PNG for fig. 2)."),
           debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Ship pitch with the reactive stabilizer (seed 003): steady pitch per control mode."""
+    """Ship pitch with the reactive stabilizer (Gaisha): steady pitch per control mode."""
     _steady(load(case, debug), case, output, plot, debug, model="pitch")
 
 

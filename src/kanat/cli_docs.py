@@ -112,7 +112,7 @@ def schemes_page() -> str:
         lines.append(f"| `{name}` | [{cls.model}]({pages.get(cls.model, 'index.md')}) | {scheme.order} | "
                      f"{'yes' if cls.explicit else 'no'} | {params} | {summary} |")
     lines += ["", "The continuum schemes are described with their equations in [Continuum model](continuum.md) "
-              "(box method and the generalized-α family) and [Factorized schemes](factorization.md) (seed 000); "
+              "(box method and the generalized-α family) and [Factorized schemes](factorization.md) (Kaliukh & Vusatiuk 2018); "
               "the lumped ones in [Lumped network model](lumped.md).", ""]
     return "\n".join(lines)
 

@@ -17,7 +17,7 @@ from kanat.cli_common import CONTEXT, console, fail, load, log, show
 from kanat.errors import KanatError
 
 study = typer.Typer(no_args_is_help=True, rich_markup_mode=None, context_settings=CONTEXT,
-                    help="The source papers' studies: seed 000, 002 and 004 comparisons, stability, seed 003's "
+                    help="The source papers' studies: Kaliukh & Vusatiuk 2018, Zhang, Zhang & Liu 2012 and Bezverkhyi 2006 comparisons, stability, Gaisha's "
                          "pitch, pitch-tow.")
 def parse_window(text: Optional[str]):
     """``"100:600"`` -> (100.0, 600.0); either side may be empty (``"100:"``)."""
@@ -134,44 +134,44 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
         raise typer.Exit(1)
 
 
-@study.command("seed000")
-def seed000(comparison: str = typer.Argument(..., help="accel | planar80 | spatial100"),
+@study.command("factorization")
+def factorization(comparison: str = typer.Argument(..., help="accel | planar80 | spatial100"),
             output: Path = typer.Option(Path("."), "-o", "--output", help="Folder for the table and the figure."),
-            case: Optional[Path] = typer.Option(None, "--case", help="Case file (default examples/seed000_*)."),
+            case: Optional[Path] = typer.Option(None, "--case", help="Case file (default examples/factorization_*)."),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Seed 000's comparisons of the full and the factorized schemes (tables and figures)."""
+    """Kaliukh & Vusatiuk's comparisons of the full and the factorized schemes (tables and figures)."""
     import numpy as np
     import pandas as pd
 
     from kanat.report.stability_plot import plot_accel, plot_planar80, plot_spatial100
-    from kanat.studies import seed000 as study000
+    from kanat.studies import factorization as study000
 
     if comparison not in ("accel", "planar80", "spatial100"):
         fail(KanatError(f"unknown comparison '{comparison}'; choose accel, planar80 or spatial100"), debug,
-             "seed 000")
+             "Kaliukh & Vusatiuk 2018")
     output.mkdir(parents=True, exist_ok=True)
     pd.set_option("display.width", 200)
     pd.set_option("display.max_columns", 30)
     try:
-        with console.status(f"running seed 000's {comparison} comparison ..."):
+        with console.status(f"running Kaliukh & Vusatiuk's {comparison} comparison ..."):
             if comparison == "spatial100":
                 table, history = study000.spatial100(path=case)
             else:
                 table = getattr(study000, comparison)(path=case)
     except Exception as error:  # noqa: BLE001 - reported by fail
-        fail(error, debug, "seed 000 comparison failed")
-    table.to_csv(output / f"seed000_{comparison}.csv", index=False)
+        fail(error, debug, "Kaliukh & Vusatiuk 2018 comparison failed")
+    table.to_csv(output / f"factorization_{comparison}.csv", index=False)
     if comparison == "accel":
-        plot_accel(table, output / "seed000_accel.png")
+        plot_accel(table, output / "factorization_accel.png")
         show(table[np.isclose(table.time % 1.0, 0.0)].pivot(index="time", columns="scheme",
                                                             values=["distance", "depth"]).round(4).to_string())
     elif comparison == "planar80":
-        plot_planar80(table, output / "seed000_planar80.png")
+        plot_planar80(table, output / "factorization_planar80.png")
         show(table.round(4).to_string(index=False))
         show(f"speed-up of the wave-factorized scheme: {table.attrs['speedup']}")
     else:
-        history.to_csv(output / "seed000_spatial100_history.csv", index=False)
-        plot_spatial100(table, history, output / "seed000_spatial100.png")
+        history.to_csv(output / "factorization_spatial100_history.csv", index=False)
+        plot_spatial100(table, history, output / "factorization_spatial100.png")
         show(table.T.round(4).to_string())
         show(history[np.isclose(history.time % 10.0, 0.0)].round(5).to_string(index=False))
     if "wall_time_s" in table.attrs:
@@ -183,8 +183,8 @@ def seed000(comparison: str = typer.Argument(..., help="accel | planar80 | spati
 def compare_schemes(case: Path = typer.Argument(..., help="Continuum case file."),
                     output: Path = typer.Option(..., "-o", "--output", help="Directory for the result files."),
                     debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Seed 002: box, backward Euler, generalized trapezoidal and generalized-α against a fine reference."""
-    from kanat.studies.seed002 import compare_schemes as compare, table
+    """Zhang, Zhang & Liu 2012: box, backward Euler, generalized trapezoidal and generalized-α against a fine reference."""
+    from kanat.studies.scheme_comparison import compare_schemes as compare, table
 
     loaded = load(case, debug)
     try:
@@ -223,27 +223,27 @@ def stability(case: Path = typer.Argument(..., help="Continuum case file."),
     show(summary(ds))
 
 
-@study.command("seed004")
-def seed004(cases: List[Path] = typer.Argument(..., help="Seed 004 case files (examples/seed004_*.yaml)."),
+@study.command("trawl")
+def trawl(cases: List[Path] = typer.Argument(..., help="Bezverkhyi 2006 case files (examples/trawl_*.yaml)."),
             output: Path = typer.Option(..., "-o", "--output", help="Folder for .nc, .png and .md."),
             reuse: bool = typer.Option(False, "--reuse", help="Reuse DIR/<case>.nc when it exists."),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Seed 004's towing cases: tension figures, tables and the paper's findings."""
-    from kanat.report.lumped_plot import plot_seed004
-    from kanat.studies.seed004 import run_cases
+    """Bezverkhyi's towing cases: tension figures, tables and the paper's findings."""
+    from kanat.report.lumped_plot import plot_trawl
+    from kanat.studies.trawl import run_cases
 
     try:
-        with console.status(f"running {len(cases)} seed 004 case(s) ..."):
+        with console.status(f"running {len(cases)} Bezverkhyi 2006 case(s) ..."):
             done = run_cases(cases, output, reuse)
     except Exception as error:  # noqa: BLE001 - reported by fail
-        fail(error, debug, "seed 004 study failed")
+        fail(error, debug, "Bezverkhyi 2006 study failed")
     failed = False
     for path, ds, text in done:
         if ds.attrs.get("status") != "ok":
             console.print(f"{path}: {ds.attrs.get('status')}")
             failed = True
             continue
-        plot_seed004(ds, output / f"{path.stem}.png")
+        plot_trawl(ds, output / f"{path.stem}.png")
         (output / f"{path.stem}.md").write_text(text)
         show(text)
     if failed:
@@ -251,10 +251,10 @@ def seed004(cases: List[Path] = typer.Argument(..., help="Seed 004 case files (e
 
 
 @study.command("pitch")
-def pitch_scan(case: Path = typer.Argument(..., help="Case file with a pitch block (examples/pitch_seed003.yaml)."),
+def pitch_scan(case: Path = typer.Argument(..., help="Case file with a pitch block (examples/pitch_stabilizer.yaml)."),
                output: Path = typer.Option(..., "-o", "--output", help="Folder for scan.csv and the figures."),
                debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Seed 003's pitch studies: the steady pitch per mode, the (t, M0) surfaces, the omega_0 scan
+    """Gaisha's pitch studies: the steady pitch per mode, the (t, M0) surfaces, the omega_0 scan
     and the band where the stabilizer more than halves the amplitude."""
     import numpy as np
 

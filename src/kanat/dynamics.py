@@ -1,4 +1,4 @@
-"""One run loop for every dynamic model, and the observers of its results (STYLE rules 8, 11).
+"""One run loop for every dynamic model, and the observers of its results (style rules 8, 11).
 
 A *dynamic model* (the continuum model's :class:`kanat.continuum.adapter.ContinuumModel`,
 the lumped model's :class:`kanat.lumped.adapter.LumpedModel`, or a user's own) is any

@@ -1,4 +1,4 @@
-"""The time schemes' common ground: the base class, the registry builder and the lookup (STYLE rule 2).
+"""The time schemes' common ground: the base class, the registry builder and the lookup (style rule 2).
 
 Each dynamic model keeps its own registry, built by plain imports in its scheme module
 (:data:`kanat.continuum.schemes.SCHEMES`, :data:`kanat.lumped.integrators.SCHEMES`), and

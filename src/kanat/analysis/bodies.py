@@ -1,6 +1,6 @@
 """Body depth excursions: how far each body rises and dives from where the window starts.
 
-Depth is ``-z`` (``z = 0`` at the mean free surface, up positive; SPEC §1).
+Depth is ``-z`` (``z = 0`` at the mean free surface, up positive; theory/index.md §1).
 """
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Snap events (slack -> taut, SPEC §5) as tables.
+"""Snap events (slack -> taut, theory/lumped.md §7) as tables.
 
 A lumped run writes its events on the ``event`` dimension: ``event_time``,
 ``event_segment``, ``event_peak_tension``, ``event_rise_rate`` (:mod:`kanat.lumped.output`).

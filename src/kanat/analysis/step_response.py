@@ -1,5 +1,5 @@
 """Statistics of a tension record around a speed step: windows before and after it, the
-largest quick rise (a *jerk*), and snap events before and after (SPEC §5, seed 004).
+largest quick rise (a *jerk*), and snap events before and after (theory/lumped.md §7, Bezverkhyi 2006).
 
 With ``t_s`` the step time (found from the vessel's speed) and ``t_e`` the end of the run::
 
@@ -8,7 +8,7 @@ With ``t_s`` the step time (found from the vessel's speed) and ``t_e`` the end o
     after      [t_s, t_e]                everything after the step
     settled    (t_e - SETTLED, t_e]      steady towing at the new speed
 
-``mean`` and ``range = T_max - T_min`` (seed 004's ``T_a``) of each; a *jerk* is a rise of
+``mean`` and ``range = T_max - T_min`` (Bezverkhyi's ``T_a``) of each; a *jerk* is a rise of
 tension within ``JERK_WINDOW`` seconds.
 """
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The continuum cable model (SPEC §2): box method in space, generalized-α family in time.
+"""The continuum cable model (theory/continuum.md): box method in space, generalized-α family in time.
 
 A test-only oracle (an independent twin of compiled kernels that only the tests import) is a
 module ``oracle_<method><dim>.py`` in the package whose kernels it checks, ``<method>`` saying how

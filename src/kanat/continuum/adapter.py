@@ -1,7 +1,7 @@
 """The continuum model behind the run loop's contract (:mod:`kanat.dynamics`).
 
 :class:`ContinuumModel` wraps the planar or the spatial cable (:mod:`kanat.continuum.models`)
-and a scheme of the generalized-α family or seed 000's factorized schemes. It steps
+and a scheme of the generalized-α family or Kaliukh & Vusatiuk's factorized schemes. It steps
 ``dt`` at a time; a step whose Newton iteration fails is cut in halves (up to
 :data:`kanat.continuum.stepper.MAX_CUTS` levels) before the run stops with a message
 saying where and what to try. Its checks of every output:
@@ -111,7 +111,7 @@ class ContinuumModel:
                           "weight in water), released at t = 0, so the body drifts back slowly")
 
     def _refuse_for_factorized(self) -> None:
-        """Seed 000's schemes step the uniform flexible cable of SPEC §2.1–2.2 only."""
+        """Kaliukh & Vusatiuk's schemes step the uniform flexible cable of theory/continuum.md §1–2 only."""
         if isinstance(self.scheme, FamilyScheme):
             return
         case, cable = self.case, self.cable_model.cable
@@ -129,7 +129,7 @@ class ContinuumModel:
         if any(case.bodies[e.name].surface_buoy is not None for e in case.cables[0].ends if e.kind == "body"):
             used.append(("bodies", "a surface buoy"))
         if used:
-            raise CaseError([Problem(key, f"{what}: scheme '{self.scheme.name}' (seed 000's factorized schemes) "
+            raise CaseError([Problem(key, f"{what}: scheme '{self.scheme.name}' (Kaliukh & Vusatiuk's factorized schemes) "
                                      "steps a uniform flexible cable only; use scheme: generalized-alpha")
                              for key, what in used])
 
@@ -157,7 +157,7 @@ class ContinuumModel:
                 "to about the Euler load of one segment), so a slack line runs with model: lumped, whose "
                 "equilibrium carries slack line (with simulation.slack: continue, the default, a line lying slack "
                 "on the seabed under its body in still water starts from a small pull on the body)") from None
-        check_step(self.scheme, self.cable_model, state, self.dt)     # seed 000's schemes: their known range
+        check_step(self.scheme, self.cable_model, state, self.dt)     # Kaliukh & Vusatiuk's schemes: their known range
         return state
 
     def save(self, state) -> dict:

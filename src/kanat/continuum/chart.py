@@ -1,4 +1,4 @@
-"""Charts of the spatial angles (SPEC §2.2): choosing the pole and re-charting a state exactly.
+"""Charts of the spatial angles (theory/continuum.md §2): choosing the pole and re-charting a state exactly.
 
 The angles ``(phi, theta)`` are azimuth–elevation about a pole ``p``; the frame is singular
 where a tangent is parallel to the pole. No fixed pole is safe for a towed cable in a

@@ -1,8 +1,8 @@
 """Courant numbers of a continuum grid and step, and the step a scheme is known to take.
 
 ``sigma_long = c_l dt / ds`` and ``sigma_tr = c_t dt / ds`` with ``c_l = sqrt(EA/m)`` and
-``c_t = sqrt(T/((m + m_a)(1 + e)))`` at the largest tension of a state (seed 000 section 4).
-The generalized-α family is unconditionally stable; seed 000's factorized schemes are not,
+``c_t = sqrt(T/((m + m_a)(1 + e)))`` at the largest tension of a state (Kaliukh & Vusatiuk 2018, section 4).
+The generalized-α family is unconditionally stable; Kaliukh & Vusatiuk's factorized schemes are not,
 in general (docs/factorization.md, "Stability"). A scheme with ``max_sigma_tr(dimensions)``
 is refused, before the run starts, for a step whose ``sigma_tr`` exceeds it, with the largest
 step it is known to take on the case.

@@ -1,4 +1,4 @@
-"""The generalized-α family of time schemes for the box-discretized cable (SPEC §2.4).
+"""The generalized-α family of time schemes for the box-discretized cable (theory/time-schemes.md §1).
 
 With ``(.)^[a] = (1 - a)(.)^{n+1} + a (.)^n`` (the α weights sit on the *old* level),
 every scheme of the family solves at each step
@@ -7,7 +7,7 @@ every scheme of the family solves at each step
     Ydot^{n+1} = (Y^{n+1} - Y^n) / (gamma dt) - (1 - gamma) / gamma * Ydot^n
 
 and differs only in ``(am, ak, gamma)``. For the generalized-α scheme (Chung & Hulbert,
-as adapted by Gobat & Grosenbaugh 2001 and seed 002) ``lam = lambda_inf`` in [-1, 0] is
+as adapted by Gobat & Grosenbaugh 2001 and Zhang, Zhang & Liu 2012) ``lam = lambda_inf`` in [-1, 0] is
 the double eigenvalue of the amplification matrix at infinite frequency:
 
     ak = lam / (lam - 1),   am = (3 lam + 1) / (2 (lam - 1)),   gamma = 1/2 - am + ak.
@@ -56,7 +56,7 @@ class FamilyScheme(ContinuumScheme):
 
 @dataclass(frozen=True)
 class GeneralizedAlpha(FamilyScheme):
-    """Generalized-α, second order, numerical damping set by ``lambda_inf`` (seed 002)."""
+    """Generalized-α, second order, numerical damping set by ``lambda_inf`` (Zhang, Zhang & Liu 2012)."""
 
     name: ClassVar[str] = "generalized-alpha"
     order: ClassVar[int] = 2

@@ -1,4 +1,4 @@
-"""Compiled kernels of the planar continuum cable (SPEC §2.1, §2.3, §2.4, §4): loads and end rows.
+"""Compiled kernels of the planar continuum cable (theory/continuum.md §1, §3, theory/time-schemes.md §1, theory/moorings.md): loads and end rows.
 
 The unknowns of a step are the nodal states ``X = Y^{n+1}``: ``Y = (T, u, v, phi)`` for a
 perfectly flexible cable, ``Y = (T, u, v, phi, S, Mb)`` (shear and bending moment) when a line
@@ -16,7 +16,7 @@ attachment): its rows are the body's equations, not the cable's.
 Nodal loads per unstretched length (f_t, f_n), at the ``[ak]``-weighted state:
 
 * :func:`node_load` -- weight in water and quadratic drag of the velocity relative to the water
-  (current plus wave orbital velocity), with the ``sqrt(1 + e)`` factor (SPEC §2.1);
+  (current plus wave orbital velocity), with the ``sqrt(1 + e)`` factor (theory/continuum.md §1);
 * :func:`extra_load` -- the fluid inertia of waves (Morison): Froude–Krylov ``rho A a_w`` on the
   whole water acceleration plus ``m_a (a_w . n)`` on its normal part, ``rho A = m - w0/g`` the
   displaced mass; and seabed contact, the lumped model's law (:mod:`kanat.physics.contact`,
@@ -32,7 +32,7 @@ velocity: ``r^[ak] = r^n + dt ((1 - ak)(1 - gamma) - gamma ak) V^n + dt gamma V^
 for a velocity following the scheme's own update), written ``r = R + PRED V`` with ``R`` in the
 nodal data and ``PRED = gamma dt``. So contact is implicit and the Jacobian keeps its band.
 
-Ends (SPEC §2.3), ``side`` = -1 at ``s = 0`` and +1 at ``s = L``:
+Ends (theory/continuum.md §3), ``side`` = -1 at ``s = 0`` and +1 at ``s = L``:
 
 * prescribed velocity (tow point, anchor): ``u = V.t + c_w``, ``v = V.n`` (``c_w`` a winch's
   pay-out speed); with bending, ``Mb = 0`` (pinned) or ``phi = phi0`` (clamped);

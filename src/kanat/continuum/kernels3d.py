@@ -1,7 +1,7 @@
-"""Compiled kernels of the spatial continuum cable (SPEC §2.2–2.4, §4): loads and end rows.
+"""Compiled kernels of the spatial continuum cable (theory/continuum.md §2–3, theory/time-schemes.md §1, theory/moorings.md): loads and end rows.
 
 Unknowns per node ``Y = (T, u, v, w, phi, theta)``; ``V = u t + v n + w b`` with the frame of
-SPEC §2.2 about the pole ``p`` of the current chart, and every vector (weight direction,
+theory/continuum.md §2 about the pole ``p`` of the current chart, and every vector (weight direction,
 current, prescribed velocities) given in chart coordinates ``(e1, e2, p)``. Projecting
 momentum and compatibility on ``(t, n, b)`` gives ``M(Y) Y_t + K(Y) Y_s = F(Y)`` with
 
@@ -14,7 +14,7 @@ momentum and compatibility on ``(t, n, b)`` gives ``M(Y) Y_t + K(Y) Y_s = F(Y)``
 
 (``mn = m + m_a``; frame identities ``t_phi = n``, ``t_theta = -cos(phi) b``, ``n_phi = -t``,
 ``n_theta = sin(phi) b``, ``b_theta = cos(phi) t - sin(phi) n``). For ``w = 0`` and constant
-``theta`` rows 0, 1, 3, 4 are the planar equations of SPEC §2.1; :mod:`.oracle_sympy3d` derives
+``theta`` rows 0, 1, 3, 4 are the planar equations of theory/continuum.md §1; :mod:`.oracle_sympy3d` derives
 the same system symbolically and the tests compare. ``M`` is singular where ``cos(phi) = 0``
 (the tangent along the pole): the driver re-charts the pole before that happens.
 

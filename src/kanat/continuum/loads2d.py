@@ -66,7 +66,7 @@ def compliance(T, p):
 
 @kernel
 def node_load(T, u, v, phi, ucx, ucz, p):
-    """``(f_t, f_n)``: weight in water and drag per unit unstretched length (SPEC §2.1)."""
+    """``(f_t, f_n)``: weight in water and drag per unit unstretched length (theory/continuum.md §1)."""
     c, s = np.cos(phi), np.sin(phi)
     root = np.sqrt(1.0 + strain(T, p))
     ur = u - (ucx * c + ucz * s)

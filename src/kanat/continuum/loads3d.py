@@ -348,7 +348,7 @@ def surface_buoyancy3(z, b):
 
 @inner
 def end_jacobian3(x, y, d, env, up, p, b, side, out, jac, extras):
-    """The three rows of one end (SPEC §2.3; :mod:`kernels2d` docstring) into ``out`` (3,) and
+    """The three rows of one end (theory/continuum.md §3; :mod:`kernels2d` docstring) into ``out`` (3,) and
     their derivatives by ``x`` into ``jac`` (3, 6), real.
 
     Weighted states as in :func:`kernels2d.end_jacobian`, frame derivatives as in

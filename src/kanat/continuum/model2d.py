@@ -1,4 +1,4 @@
-"""The planar continuum cable as typed data: parameters, end conditions, state (SPEC §2.1, §2.3).
+"""The planar continuum cable as typed data: parameters, end conditions, state (theory/continuum.md §1, §3).
 
 Kernels take flat arrays; this module builds them from a case, once. A continuum case here is
 one cable (of one or several sections, with inline bodies) whose first end is the vessel's tow

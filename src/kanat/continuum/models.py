@@ -6,7 +6,7 @@ Both adapters have the same methods, so nothing above them asks which one it hol
   ``save(state)`` / ``restore(t, saved)``;
 * ``velocities(t)`` (both ends, global frame) and ``origin(t)`` (the first end's position);
 * ``tangents(state)`` (global unit tangents) and ``tension(state)``;
-* ``world(state, dt)`` and ``advanced(state, start, y, chart, dt)`` for seed 000's schemes
+* ``world(state, dt)`` and ``advanced(state, start, y, chart, dt)`` for Kaliukh & Vusatiuk's schemes
   (:mod:`kanat.continuum.factorized.system`).
 
 ``dimensions: auto`` picks the planar model when the case stays in the x–z plane
@@ -105,7 +105,7 @@ class PlanarModel:
         return np.column_stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
 
     def world(self, state, dt):
-        """``(World, y, None)`` of a step of ``dt`` from ``state`` (seed 000's schemes)."""
+        """``(World, y, None)`` of a step of ``dt`` from ``state`` (Kaliukh & Vusatiuk's schemes)."""
         from kanat.continuum.factorized.system import CableSystem, World, end_data
 
         cable, rho = self.cable, self.cable.params[k.RHO]

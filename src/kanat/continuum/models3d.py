@@ -82,7 +82,7 @@ class SpatialModel:
 
     def world(self, state, dt):
         """``(World, y, chart)`` of a step of ``dt`` from ``state``, re-charted first when a tangent
-        nears the pole (seed 000's schemes)."""
+        nears the pole (Kaliukh & Vusatiuk's schemes)."""
         from kanat.continuum.factorized.system import CableSystem, World, end_data
 
         cable, rho = self.cable, self.cable.params[k.RHO]

@@ -1,8 +1,8 @@
 """Plain-NumPy twin of :mod:`kanat.continuum.kernels2d`'s residual, written independently.
 
 Readable and vectorized over intervals, not fast: the tests check the compiled kernels
-against it (SPEC §2.1 in matrix form ``M Y_t + K Y_s = F``, box method and the
-generalized-α weights of SPEC §2.4).
+against it (theory/continuum.md §1 in matrix form ``M Y_t + K Y_s = F``, box method and the
+generalized-α weights of theory/time-schemes.md §1).
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ def law(T, p):
 
 
 def mass_matrix(Y, p):
-    """``M(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (SPEC §2.1; ``1/EA -> de/dT`` for a nonlinear law)."""
+    """``M(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (theory/continuum.md §1; ``1/EA -> de/dT`` for a nonlinear law)."""
     T, u, v = Y[:, 0], Y[:, 1], Y[:, 2]
     e, flex = law(T, p)
     n = len(Y)
@@ -34,7 +34,7 @@ def mass_matrix(Y, p):
 
 
 def stiffness_matrix(Y):
-    """``K(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (SPEC §2.1)."""
+    """``K(Y)`` for states ``Y`` (n, 4) -> (n, 4, 4) (theory/continuum.md §1)."""
     T, u, v = Y[:, 0], Y[:, 1], Y[:, 2]
     K = np.zeros((len(Y), 4, 4))
     K[:, 0, 0] = -1.0
@@ -45,7 +45,7 @@ def stiffness_matrix(Y):
 
 
 def loads(Y, current, p):
-    """``F(Y)`` (n, 4): weight in water and drag of the relative flow (SPEC §2.1)."""
+    """``F(Y)`` (n, 4): weight in water and drag of the relative flow (theory/continuum.md §1)."""
     T, u, v, phi = Y.T
     t = np.column_stack([np.cos(phi), np.sin(phi)])
     n = np.column_stack([-np.sin(phi), np.cos(phi)])

@@ -1,4 +1,4 @@
-"""Symbolic derivation of the spatial (3-D) continuum cable equations (SPEC §2.2).
+"""Symbolic derivation of the spatial (3-D) continuum cable equations (theory/continuum.md §2).
 
 The source of truth for the 3-D model and a test oracle for its numeric kernels. It
 needs ``sympy`` (a test dependency, ``pip install kanat[test]``); nothing in the runtime
@@ -24,7 +24,7 @@ The frame is orthonormal and right-handed with ``t x n = b`` (also ``n x b = t``
 
 so for ``x`` = ``s`` or ``t`` the frame turns with ``d(.)/dx = omega_x x (.)``,
 ``omega_x = theta_x p + phi_x b = sin(phi) theta_x t + cos(phi) theta_x n + phi_x b``.
-The vector equations (SPEC §2.2), with ``e = T/EA``,
+The vector equations (theory/continuum.md §2), with ``e = T/EA``,
 
     m dV/dt + m_a (dV/dt - (dV/dt . t) t) - d(T t)/ds - f = 0      (momentum)
     d/dt[(1 + e) t] - dV/ds                                  = 0      (compatibility)
@@ -40,7 +40,7 @@ projected on ``(t, n, b)`` give the six rows of ``M(Y) Y_t + K(Y) Y_s = F(Y)``:
 
 Rows 0-2 are momentum along ``t, n, b``, rows 3-5 compatibility along ``t, n, b``; the
 sign of every row is "projection of the left-hand sides above". For planar motion
-(pole ``p = z``, ``e1 = x``, so ``e2 = y``; ``theta = w = 0``) rows 0, 1, 3, 4 are SPEC §2.1's
+(pole ``p = z``, ``e1 = x``, so ``e2 = y``; ``theta = w = 0``) rows 0, 1, 3, 4 are theory/continuum.md §1's
 four rows in its order (momentum t, momentum n, stretch, rotation) and rows 2, 5 vanish
 identically when the current has no ``y`` component. With a horizontal pole ``p = -y``,
 ``e1 = x`` (``e2 = z``) planar motion is instead ``phi = v = 0`` with ``theta`` the §2.1 angle

@@ -1,4 +1,4 @@
-"""The planar interval rows, inline bodies and the banded Newton system (SPEC §2.1, §2.4, §4).
+"""The planar interval rows, inline bodies and the banded Newton system (theory/continuum.md §1, theory/time-schemes.md §1, theory/moorings.md).
 
 Interval ``j`` (nodes ``j, j+1``) carries the box-method equations at its midpoint with its own
 parameter row ``p = P[j]`` (:mod:`kanat.continuum.kernels2d` has the layout). ``M`` and ``K`` are

@@ -1,4 +1,4 @@
-"""The spatial interval rows, inline bodies and the banded Newton system (SPEC §2.2, §2.4, §4).
+"""The spatial interval rows, inline bodies and the banded Newton system (theory/continuum.md §2, theory/time-schemes.md §1, theory/moorings.md).
 
 As :mod:`kanat.continuum.rows2d` in 3-D (no bending stiffness): interval ``j`` carries the six
 rows ``avg(M) r + avg(K) g - avg(F)`` of :mod:`kanat.continuum.kernels3d` with its own parameter

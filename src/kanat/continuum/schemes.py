@@ -1,6 +1,6 @@
-"""Every continuum time scheme, registered by import (STYLE rule 2).
+"""Every continuum time scheme, registered by import (style rule 2).
 
-The generalized-α family is in :mod:`kanat.continuum.family`, seed 000's factorized and
+The generalized-α family is in :mod:`kanat.continuum.family`, Kaliukh & Vusatiuk's factorized and
 wave-factorized schemes in :mod:`kanat.continuum.factorized.schemes`; both step the planar
 or spatial model of :mod:`kanat.continuum.models` through ``scheme.step(model, state, dt)``.
 """

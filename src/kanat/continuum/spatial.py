@@ -1,4 +1,4 @@
-"""The spatial continuum cable: its data, its state and one Newton step (SPEC §2.2–2.4).
+"""The spatial continuum cable: its data, its state and one Newton step (theory/continuum.md §2–3, theory/time-schemes.md §1).
 
 Same structure as the planar model (:mod:`model2d`, :mod:`stepper`) with six unknowns per
 node (ten with bending stiffness: :mod:`bending3d`) and the angles in a chart (:mod:`chart`)

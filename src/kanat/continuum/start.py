@@ -66,7 +66,7 @@ def static_shape(case, name, s) -> CableSolution:
 def free_tail_guess(case, s) -> CableSolution:
     """A straight cable trailing from the tow point at the critical angle of the relative flow.
 
-    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (SPEC §7.4); the
+    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (theory/continuum.md eq. (C15)); the
     tension grows from 0 at the tail with the tangential weight and drag. Vertical in still water.
     """
     env, cable = case.environment, case.cables[0]

@@ -1,4 +1,4 @@
-"""One time step of the planar continuum model: Newton's method on the banded system (SPEC §2.4).
+"""One time step of the planar continuum model: Newton's method on the banded system (theory/time-schemes.md §1).
 
 Newton starts from the previous state advanced with its rate, tests convergence on
 increments scaled by the problem's own sizes (tension, speed, 1 rad; shear and moment with

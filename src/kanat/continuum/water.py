@@ -1,5 +1,5 @@
 """What the kernels need of the water at every node for one step: its velocity, its acceleration
-and each node's predicted position (SPEC §2.1, §4; :mod:`kanat.continuum.kernels2d`).
+and each node's predicted position (theory/continuum.md §1, theory/moorings.md; :mod:`kanat.continuum.kernels2d`).
 
 The water velocity is the current (a depth profile) plus the waves' orbital velocity (Airy or
 JONSWAP, :mod:`kanat.physics.waves`), its acceleration the waves' (the current is steady, or ramped

@@ -1,4 +1,4 @@
-"""A winch at the first cable's 'from' end: pay-out and haul-in with an adapting grid (SPEC §4).
+"""A winch at the first cable's 'from' end: pay-out and haul-in with an adapting grid (theory/moorings.md §9).
 
 Node 0 is the winch point, fixed to the vessel; every other node is a material point of the
 cable. Paying out at ``c`` [m/s of unstretched length] (``winch`` steps, positive out), new cable

@@ -131,7 +131,7 @@ def export_vtk(ds, directory, stem: str | None = None) -> Path:
     meshio = _meshio()
     if "position" not in ds or "tension" not in ds:
         raise KanatError("this result has no cable positions and tensions to export (a pitch or "
-                         "seed 001 result? export those with --csv)")
+                         "Naumov & Agievich result? export those with --csv)")
     directory = Path(directory)
     directory.mkdir(exist_ok=True)
     stem = _stem(stem or ds.attrs.get("case_name") or "kanat")

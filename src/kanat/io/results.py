@@ -97,7 +97,7 @@ def failed_dataset(case, message: str, model: str = "statics", scheme: str = "",
 
 
 def pitch_dataset(result, case, wall_time_s: float = 0.0) -> xr.Dataset:
-    """The result file of a pitch run (case-format.md; SPEC §6.2, seed 003).
+    """The result file of a pitch run (case-format.md; theory/vessel.md §2, Gaisha).
 
     Variables ``pitch(mode, time)``, ``stabilizer_moment(mode, time)``, ``amplitude(mode)``,
     ``max_abs(mode)`` of the case format, and ``wave_moment(time)``, ``mean_pitch(mode)``,

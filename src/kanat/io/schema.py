@@ -91,13 +91,13 @@ VARIABLES: dict[str, Variable] = {
     "event_segment": Variable(("event",), "1", "segment index of the snap event"),
     "event_peak_tension": Variable(("event",), "N", "peak tension of the snap event"),
     "event_rise_rate": Variable(("event",), "N/s", "largest rate of rise of tension during the snap event"),
-    # seed 001 (dimensionless statics)
-    "alpha": Variable(("node",), "rad", "local cable angle of seed 001 (dX/ds = cos alpha)"),
+    # Naumov & Agievich (dimensionless statics)
+    "alpha": Variable(("node",), "rad", "local cable angle of Naumov & Agievich (dX/ds = cos alpha)"),
     "tau": Variable(("node",), "1", "dimensionless tension T / (k1 L)"),
     "x": Variable(("node",), "1", "dimensionless abscissa X / L"),
     "y": Variable(("node",), "1", "dimensionless height Y / L"),
     "sigma": Variable(("node",), "1", "dimensionless arclength S / L from A"),
-    # seed 003 (pitch)
+    # Gaisha (pitch)
     "pitch": Variable(("mode", "time"), "rad", "steady pitch angle over one period, bow up positive"),
     "stabilizer_moment": Variable(("mode", "time"), "N m", "stabilizer moment, 0 <= f <= M0"),
     "wave_moment": Variable(("time",), "N m", "wave moment M_m sin(omega t + pi)"),

@@ -130,7 +130,7 @@ def _mooring_variables(result, bodies: list) -> dict:
 
 
 def _sphere_table(sol, attrs: dict) -> ResultTable:
-    """The seed 001 problem (SPEC §3.2): dimensionless shape and tension, and with its scales the
+    """The Naumov & Agievich problem (theory/statics.md §3): dimensionless shape and tension, and with its scales the
     dimensional ones."""
     attrs.update(alpha0_deg=float(np.degrees(sol.alpha0)), tau0=float(sol.tau0),
                  eps1_percent=float(sol.eps1_percent), eps2_percent=float(sol.eps2_percent),

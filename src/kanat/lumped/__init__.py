@@ -1,4 +1,4 @@
-"""The lumped Lagrangian network model (SPEC §5, seed 004).
+"""The lumped Lagrangian network model (theory/lumped.md, Bezverkhyi 2006).
 
 Public API
 ----------

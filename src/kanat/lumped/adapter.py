@@ -1,6 +1,6 @@
 """The lumped model behind the run loop's contract (:mod:`kanat.dynamics`).
 
-:class:`LumpedModel` starts from the network equilibrium (SPEC §4) with every node moving
+:class:`LumpedModel` starts from the network equilibrium (theory/moorings.md §1) with every node moving
 at the vessel's initial velocity, steps with the chosen scheme — between two outputs in
 one compiled call where :mod:`kanat.lumped.advance` can — and tracks every snap event.
 A case that names no scheme gets the fastest safe one, and a case without ``dt`` a

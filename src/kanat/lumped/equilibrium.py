@@ -1,4 +1,4 @@
-"""Initial equilibrium of the network (SPEC §4): the static state for the initial tow
+"""Initial equilibrium of the network (theory/moorings.md §1): the static state for the initial tow
 speed, current and the mean (wave-free) surface.
 
 In the frame moving with the vessel's initial velocity ``U`` every node moves at ``U``;
@@ -365,7 +365,7 @@ def _finish(net, system, xf, iterations, extra):
 
 def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
     """A dynamic run's first state: positions and velocities (n, 3) of every node, at rest in the
-    equations of motion the run integrates (SPEC §4, the consistent start).
+    equations of motion the run integrates (theory/moorings.md, the consistent start).
 
     * The positions are the equilibrium at the prescribed motion's place at ``t = 0``, in the frame
       moving with the track (:meth:`LumpedSystem.frame_velocity`), **without seabed friction**: the

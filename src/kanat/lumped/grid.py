@@ -1,5 +1,5 @@
 """Nodes along one cable: section joints, even spacing within each section, and a node at
-every inline attachment (SPEC §4 "Sections and attachments").
+every inline attachment (theory/moorings.md §4 "Sections and attachments").
 
 A cable of sections ``(L_1, n_1), (L_2, n_2), ...`` gets ``n_k`` equal elements per section,
 so every section joint is a node and each element lies in one section. An attachment at

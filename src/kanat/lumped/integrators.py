@@ -1,4 +1,4 @@
-"""Time schemes of the lumped model, registered in :mod:`kanat.schemes` (SPEC §5).
+"""Time schemes of the lumped model, registered in :mod:`kanat.schemes` (theory/lumped.md §6).
 
 Every scheme is a frozen dataclass (its fields are its parameters) with the contract:
 
@@ -14,7 +14,7 @@ Schemes:
 
 * ``rk4`` — classical Runge–Kutta, 4 evaluations per step;
 * ``abm4`` — Adams–Bashforth–Moulton 4 in PECE mode, started by three RK4 steps (the
-  seed's multistep predictor–corrector, seed 004 refs. [1, 4]), 2 evaluations per step;
+  Bezverkhyi's multistep predictor–corrector, Bezverkhyi 2006, refs. [1, 4]), 2 evaluations per step;
 * ``generalized-alpha-lumped`` — Chung & Hulbert's (1993, J. Appl. Mech. 60, 371)
   generalized-α family for ``M a = F(x, v)`` in its WBZ-α member (``alpha_f = 0``: the force
   balance at the step's end), unconditionally stable, second order, its

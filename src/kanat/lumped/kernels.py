@@ -1,7 +1,7 @@
 """Compiled kernels of the lumped model (numba), one loop over elements or nodes each.
 
 Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - x_i``,
-``l = |d|``, ``t = d / l`` (SPEC §5; seed 004 eqs. 3-4)::
+``l = |d|``, ``t = d / l`` (theory/lumped.md; Bezverkhyi 2006, eqs. 3-4)::
 
     (1)  e = l / L0 - 1,   e_dot = t . (v_j - v_i) / L0                    strain, rate
     (2)  T = max(0, f(e) + C_E2 e_dot) H(e)                                tension-only law

@@ -1,4 +1,4 @@
-"""Assembly of a case into the lumped network: nodes, elements, bodies (SPEC §4-5).
+"""Assembly of a case into the lumped network: nodes, elements, bodies (theory/moorings.md, theory/lumped.md).
 
 Each cable is cut into elements by :func:`kanat.lumped.grid.cable_grid` (every section joint
 and every inline attachment is a node). Cable ends attached to the same 3-DOF body or point
@@ -14,9 +14,9 @@ Element properties are stored per element as arrays, ready for the kernels
 (:mod:`kanat.lumped.kernels`):
 
 * drag as per-length coefficients ``c_n, c_t`` [kg/m^2] of the force per unstretched
-  length ``c |v| v``: the seed's dimensional ``C_n, C_t`` as given (seed 004 eq. 4,
+  length ``c |v| v``: Bezverkhyi's dimensional ``C_n, C_t`` as given (Bezverkhyi 2006, eq. 4,
   ``stretch_drag = 0``), or from the ``Cd`` form ``c_n = rho d C_n / 2``,
-  ``c_t = rho pi d C_t / 2`` with the factor ``sqrt(1 + e)`` (SPEC §2.1, ``stretch_drag = 1``);
+  ``c_t = rho pi d C_t / 2`` with the factor ``sqrt(1 + e)`` (theory/continuum.md §1, ``stretch_drag = 1``);
 * weight in water per unstretched length ``w0`` [N/m] and the buoyancy ``rho g A`` it
   includes (lost above the surface);
 * displaced mass per length ``rho A`` [kg/m] (Froude–Krylov), added mass normal ``m_a`` and

@@ -1,4 +1,4 @@
-"""Rigid bodies with 6 degrees of freedom in the lumped model (SPEC §4 "Rigid bodies").
+"""Rigid bodies with 6 degrees of freedom in the lumped model (theory/moorings.md §7 "Rigid bodies").
 
 A ``dof: 6`` body is two pseudo-nodes among the generalized coordinates: its reference point
 ``r`` and its Euler angles ``Theta = (roll, pitch, yaw)`` (``R = Rz(yaw) Ry(pitch) Rx(roll)``,

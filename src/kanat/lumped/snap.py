@@ -1,4 +1,4 @@
-"""Snap loads: every slack -> taut event of every element (SPEC §5, seed 004 "ривки").
+"""Snap loads: every slack -> taut event of every element (theory/lumped.md §7, Bezverkhyi 2006 "ривки").
 
 An element is slack while its tension is zero (the tension-only law, kernels eq. 2).
 An event starts at the first step at which a slack element carries tension, and ends

@@ -1,5 +1,5 @@
 """Step sizes: the explicit schemes' safe step from the shortest axial nodal period, and the
-automatic choice of scheme (SPEC §5).
+automatic choice of scheme (theory/lumped.md).
 
 For element ``k`` between nodes of masses ``m_i, m_j`` (lumped: half of each adjacent
 element's mass plus bodies; a prescribed node counts as infinitely heavy), with tangent
@@ -41,7 +41,7 @@ SAFETY = EXPLICIT_SAFETY     # margin below the stability limit (0.8)
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
 IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
-                             # band LU) is worth: 8-10 on 20-100 element lines and seed 004's network,
+                             # band LU) is worth: 8-10 on 20-100 element lines and Bezverkhyi's network,
                              # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
 STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's WD0050
                              # chain driven at 9 and 12 s (friction 0.5, a chain slapping the seabed) is as accurate
@@ -49,7 +49,7 @@ STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitat
                              # CPU there (9 Newton iterations a step, 9741 steps retaken by rk4), 4.4 at 0.05 s,
                              # 4.2 at 0.025 s
 IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
-                             # 0.05-0.1 s, 5.5 on seed 004's network in waves
+                             # 0.05-0.1 s, 5.5 on Bezverkhyi's network in waves
 
 
 @dataclass(frozen=True)

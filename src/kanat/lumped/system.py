@@ -1,7 +1,7 @@
-"""The lumped model's equations of motion: Lagrange's equations of the network (SPEC §5)
+"""The lumped model's equations of motion: Lagrange's equations of the network (theory/lumped.md §1)
 with the vessel, anchors, bodies, seabed, current and waves.
 
-With ``q`` the free node positions, Lagrange's equations (seed 004 eqs. 3-4) read::
+With ``q`` the free node positions, Lagrange's equations (Bezverkhyi 2006, eqs. 3-4) read::
 
     (1)  M(q) q_ddot = F(t, q, q_dot) - M_qp a_p(t)
 
@@ -52,7 +52,7 @@ class LumpedSystem:
         False: the mean, wave-free surface (initial equilibrium).
     steady_velocity : ndarray, shape (3,), optional
         If given, every free node moves at this velocity and the vessel is frozen at
-        ``t = 0`` (the steady frame of the initial equilibrium, SPEC §4); seabed friction then
+        ``t = 0`` (the steady frame of the initial equilibrium, theory/moorings.md §1); seabed friction then
         takes its equilibrium form (:mod:`kanat.physics.contact`), and the vessel's points sit
         where the prescribed motion has them at ``t = 0`` (a motion that starts at rest then
         starts the run smoothly: a harmonic with ``phase_deg: -90``).

@@ -35,7 +35,7 @@ SIX_DOF_ONLY = ("inertia", "center_of_gravity", "center_of_buoyancy", "orientati
 
 
 class SurfaceBuoy(KanatModel):
-    """Hydrostatics of a surface-piercing buoy (vertical cylinder, SPEC §5) at cable ends: in the
+    """Hydrostatics of a surface-piercing buoy (vertical cylinder, theory/lumped.md §4) at cable ends: in the
     lumped model, and in the continuum model at the cable's far end (never inside a cable).
 
     The body's node is the buoy's keel. Its immersion ``d = clip(eta(x, y, t) - z, 0,
@@ -89,7 +89,7 @@ class Body(KanatModel):
         Constant external force in the global frame [N].
     spreading_force : float
         Otter-board force ``F0`` [N], horizontal, perpendicular to the vessel heading,
-        positive to port (lumped model, SPEC §5).
+        positive to port (lumped model, theory/lumped.md §4).
     surface_buoy : SurfaceBuoy or None
         Waterplane hydrostatics of a surface buoy (lumped model, 3-DOF bodies).
     position : tuple of 3 float or None

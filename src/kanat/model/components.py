@@ -28,7 +28,7 @@ working range of synthetic ropes, five times the breaking strain of steel)."""
 
 class ElasticLaw(KanatModel):
     """A nonlinear elastic part ``f(e)`` of the tension law ``T = (f(e) + C_E2 de/dt) H(e)``
-    (SPEC §5), in the lumped and continuum models. Give exactly one form.
+    (theory/lumped.md), in the lumped and continuum models. Give exactly one form.
 
     Attributes
     ----------
@@ -108,11 +108,11 @@ class LineType(KanatModel):
     breaking_load: float | None = quantity(None, unit="N", gt=0)
     drag_normal_coefficient: float | None = quantity(
         None, unit="kg/m^2", ge=0,
-        description="seed 004 dimensional normal drag C_n: force per length C_n |v_n| v_n; "
+        description="Bezverkhyi 2006 dimensional normal drag C_n: force per length C_n |v_n| v_n; "
                     "replaces drag_normal in the lumped model")
     drag_tangential_coefficient: float | None = quantity(
         None, unit="kg/m^2", ge=0,
-        description="seed 004 dimensional tangential drag C_t: force per length C_t |v_t| v_t")
+        description="Bezverkhyi 2006 dimensional tangential drag C_t: force per length C_t |v_t| v_t")
     elastic_law: ElasticLaw | None = Field(
         None, description="nonlinear elastic part of the tension (lumped and continuum models; "
                           "statics uses axial_stiffness); default: linear axial_stiffness * strain")

@@ -1,5 +1,5 @@
 """Checks of the special problems of a case (part of :data:`kanat.model.checks.CHECKS`): the
-sphere on two cables (seed 001), pitch resonance and stabilizer, and sections a model ignores."""
+sphere on two cables (Naumov & Agievich), pitch resonance and stabilizer, and sections a model ignores."""
 from __future__ import annotations
 
 import math

@@ -1,5 +1,5 @@
-"""Self-contained problem blocks: the sphere on two cables (seed 001, SPEC §3.2) and
-ship pitch with a reactive stabilizer (seed 003, SPEC §6.2)."""
+"""Self-contained problem blocks: the sphere on two cables (Naumov & Agievich, theory/statics.md §3) and
+ship pitch with a reactive stabilizer (Gaisha, theory/vessel.md §2)."""
 from __future__ import annotations
 
 import math
@@ -11,7 +11,7 @@ from ._base import KanatModel, quantity
 
 
 class SphereDimensionless(KanatModel):
-    """The seed 001 groups (SPEC §3.2): ``Psi = q/k1``, ``LoL = L0/L``, ``x_C = X_C/L``,
+    """The Naumov & Agievich groups (theory/statics.md §3): ``Psi = q/k1``, ``LoL = L0/L``, ``x_C = X_C/L``,
     ``QkL = Q/(k1 L)``, ``RkL = R0/(k1 L)``, ``chi = C_0/C_90``."""
 
     Psi: float = quantity(unit="-", ge=0)
@@ -23,7 +23,7 @@ class SphereDimensionless(KanatModel):
 
 
 class SphereDimensional(KanatModel):
-    """Dimensional input of the seed 001 problem, mapped to the groups by the solver."""
+    """Dimensional input of the Naumov & Agievich problem, mapped to the groups by the solver."""
 
     flow_speed: float = quantity(unit="m/s", gt=0)
     sphere_diameter: float = quantity(unit="m", gt=0)
@@ -56,7 +56,7 @@ class SphereTwoCables(KanatModel):
 
 
 STABILIZER_MODES = ("off", "sinusoidal", "rectangular", "feedback", "optimal")
-"""Control modes of the reactive stabilizer (SPEC §6.2, :mod:`kanat.vessel.pitch.laws`)."""
+"""Control modes of the reactive stabilizer (theory/vessel.md §2, :mod:`kanat.vessel.pitch.laws`)."""
 RESONANCE_RTOL = 1e-3
 """Relative detuning ``|n omega - omega_0| / omega_0`` below which an undamped pitch case is
 refused (the case checks and the pitch solver share it). Within 0.1 % of resonance the undamped

@@ -45,7 +45,7 @@ DESCRIPTIONS = {
     "Case.points": "network junction points by name (lumped model)",
     "Case.vessel": "the towing vessel: tow point, track, pitch, prescribed motion",
     "Case.cables": "the cables, each between two ends",
-    "Case.sphere_two_cables": "seed 001's problem: a sphere held by two cables in a uniform flow (model: statics)",
+    "Case.sphere_two_cables": "Naumov & Agievich's problem: a sphere held by two cables in a uniform flow (model: statics)",
     "Body.mass": "mass of the body in air",
     "Cable.name": "name of the cable, unique in the case (results label its nodes with it)",
     "SurfaceBuoy.waterplane_area": "waterplane area of the buoy",
@@ -161,7 +161,7 @@ def _summary(doc: str | None) -> str:
 def plain_text(text: str) -> str:
     """A docstring's text as plain Markdown: Sphinx roles and references to the specification out."""
     text = re.sub(r":(?:func|class|mod|data|meth|attr):`~?([^`]+)`", r"`\1`", text.replace("``", "`"))
-    text = re.sub(r"\s*\((?:SPEC )?§[\d.–, §]+\)|,? ?SPEC §[\d.–]+,?", "", text)
+    text = re.sub(r"\s*\(theory/[\w-]+\.md(?: (?:§[\d–]+|eqs?\. \([A-Z]\d+\)))*(?:, theory/[\w-]+\.md(?: (?:§[\d–]+|eqs?\. \([A-Z]\d+\)))*)*\)|,? ?theory/[\w-]+\.md(?: (?:§[\d–]+|eqs?\. \([A-Z]\d+\)))*,?", "", text)
     return " ".join(text.split()).replace("( ", "(").replace(" )", ")")
 
 

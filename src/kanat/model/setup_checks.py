@@ -6,7 +6,7 @@ that passed validation; whatever they would refuse there is checked here first, 
 line and key:
 
 * the scheme: a name of the case's model's registry (:data:`~kanat.model.simulation.KNOWN_SCHEMES`),
-  and what that scheme can step (seed 000's factorized schemes a uniform flexible cable, the
+  and what that scheme can step (Kaliukh & Vusatiuk's factorized schemes a uniform flexible cable, the
   lumped model's implicit scheme no 6-DOF body);
 * the sea: a JONSWAP spectrum that is positive, a seabed that holds the lines;
 * the track: a turn of given radius needs a speed to turn at;
@@ -73,7 +73,7 @@ def check_scheme(case: Case, out) -> None:
 
 
 def _uniform_cable(case: Case, scheme: str, out) -> None:
-    """Seed 000's factorized schemes step a uniform, perfectly flexible cable without waves, winch
+    """Kaliukh & Vusatiuk's factorized schemes step a uniform, perfectly flexible cable without waves, winch
     or surface buoy (what :class:`kanat.continuum.adapter.ContinuumModel` refuses for them)."""
     if not case.cables:
         return
@@ -93,7 +93,7 @@ def _uniform_cable(case: Case, scheme: str, out) -> None:
     used += [(("bodies", e.name, "surface_buoy"), "a surface buoy") for e in cable.ends
              if e.kind == "body" and e.name in case.bodies and case.bodies[e.name].surface_buoy is not None]
     for path, what in used:
-        out.error(path, f"{what}: scheme '{scheme}' (seed 000's factorized schemes) steps a uniform "
+        out.error(path, f"{what}: scheme '{scheme}' (Kaliukh & Vusatiuk's factorized schemes) steps a uniform "
                   "flexible cable only; use scheme: generalized-alpha")
 
 

@@ -25,7 +25,7 @@ class KnownScheme:
         Its step is bounded by a stability limit (the lumped model's explicit schemes are the
         ones that take 6-DOF bodies).
     uniform_cable_only : bool
-        It steps a uniform, perfectly flexible cable only (seed 000's factorized schemes,
+        It steps a uniform, perfectly flexible cable only (Kaliukh & Vusatiuk's factorized schemes,
         outside the generalized-alpha family).
     """
 
@@ -66,7 +66,7 @@ class Simulation(KanatModel):
     Attributes
     ----------
     scheme : str or None
-        Scheme name from the model's scheme registry (SPEC §2.4–2.6, §5; checked against
+        Scheme name from the model's scheme registry (theory/time-schemes.md §1–3, theory/lumped.md; checked against
         :data:`KNOWN_SCHEMES`); None: the model's default.
     lambda_inf : float
         Spectral radius at infinite frequency of the generalized-alpha family, in [-1, 0].
@@ -90,7 +90,7 @@ class Simulation(KanatModel):
         Lumped model: element mass ``mL/2`` at each node or consistent ``mL/6 [[2,1],[1,2]]``.
     initial_state : {"equilibrium", "as_given"}
         Lumped model: start from the network's equilibrium at the initial tow speed
-        (SPEC §4), or from straight cables between the given end positions at rest.
+        (theory/moorings.md §1), or from straight cables between the given end positions at rest.
     slack : {"continue", "stop"}
         Continuum model: what a run does when the cable goes slack (compression beyond what
         its bending stiffness carries): ``continue`` carries the small compression the box

@@ -221,7 +221,7 @@ def start_speeds(track) -> list[float]:
 
 
 class VesselPitch(PitchModel):
-    """The tow vessel's pitch in regular head seas (SPEC §6.2), coupled to the tow.
+    """The tow vessel's pitch in regular head seas (theory/vessel.md §2), coupled to the tow.
 
     The fields of :class:`~kanat.model.PitchModel` (``inertia``, ``natural_frequency`` or
     ``restoring``, ``wave_moment_amplitude``, ``wave_period``, ``damping_ratio``,
@@ -256,7 +256,7 @@ class Vessel(KanatModel):
     track : tuple of TrackSegment
         Segments in execution order.
     pitch : VesselPitch or None
-        The vessel's own pitch (SPEC §6.2): the steady periodic pitch of its stabilizer
+        The vessel's own pitch (theory/vessel.md §2): the steady periodic pitch of its stabilizer
         mode turns the tow point's lever arm about the pitch centre
         (:func:`kanat.vessel.pitch.motion.pitch_motion`). ``None``: no pitch.
     motion : VesselMotion

@@ -1,4 +1,4 @@
-"""Seabed contact of line nodes (SPEC §4 "Seabed contact"; MoorDyn's kbot/cbot convention).
+"""Seabed contact of line nodes (theory/moorings.md §3 "Seabed contact"; MoorDyn's kbot/cbot convention).
 
 Node ``n`` carries the contact area ``A_n = sum d L0 / 2`` of its elements. With the seabed's
 upward unit normal ``nu`` and the node's penetration ``delta = (h(x, y) - z) nu_z`` (the

@@ -9,7 +9,7 @@ import numpy as np
 
 
 def cable_drag(tangent, water_velocity, strain, diameter, drag_normal, drag_tangential, density):
-    """Drag force per unit unstretched length on a cable element (SPEC §2.1).
+    """Drag force per unit unstretched length on a cable element (theory/continuum.md §1).
 
     ``f = 0.5 rho d C_n sqrt(1+e) |U_n| U_n + 0.5 rho pi d C_t sqrt(1+e) |U_t| U_t``
     with ``U_t = (U.t) t`` and ``U_n = U - U_t``. The factor ``sqrt(1+e)`` is the
@@ -40,7 +40,7 @@ def cable_drag(tangent, water_velocity, strain, diameter, drag_normal, drag_tang
 
 
 def body_drag(water_velocity, drag_area, density):
-    """Quadratic drag of a body, ``0.5 rho (C_D S) |U| U`` [N] (SPEC §2.3, seed 000 eq. 26).
+    """Quadratic drag of a body, ``0.5 rho (C_D S) |U| U`` [N] (theory/continuum.md §3, Kaliukh & Vusatiuk 2018, eq. 26).
 
     Parameters
     ----------

@@ -1,5 +1,5 @@
 """Linear (Airy) wave kinematics: regular waves, JONSWAP seas and seas given component by
-component (SPEC §5).
+component (theory/lumped.md §5).
 
 A sea is a sum of linear components ``j`` with amplitude ``a_j``, angular frequency
 ``omega_j``, wavenumber ``k_j`` (finite-depth dispersion), direction ``beta_j`` (the

@@ -12,10 +12,10 @@ import numpy as np
 from kanat.report.html import Page, macros, table
 
 
-GROUPS = {1: "seed 001's sphere", 2: "the time schemes", 3: "wave speeds and natural frequencies",
+GROUPS = {1: "Naumov & Agievich's sphere", 2: "the time schemes", 3: "wave speeds and natural frequencies",
           4: "the steady tow", 5: "the elastic catenary", 6: "model against model",
-          7: "seed 000's factorized schemes", 8: "seed 002's turn", 9: "seed 003's pitch",
-          10: "the lumped model and seed 004"}
+          7: "Kaliukh & Vusatiuk's factorized schemes", 8: "Zhang, Zhang & Liu's turn", 9: "Gaisha's pitch",
+          10: "the lumped model and Bezverkhyi 2006"}
 """The groups of ``docs/validation.md`` by number; a check's case ``7.N`` is in group ``N``."""
 
 

@@ -1,4 +1,4 @@
-"""Figures of lumped-model results: seed 004's tension records around the speed step."""
+"""Figures of lumped-model results: Bezverkhyi's tension records around the speed step."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -7,12 +7,12 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from kanat.analysis.step_response import BEFORE, SETTLED, TRANSIENT, point_tension, step_statistics, step_time
-from kanat.studies.seed004 import POINTS
+from kanat.studies.trawl import POINTS
 
 
-def plot_seed004(ds, path=None, points=POINTS) -> Figure:
+def plot_trawl(ds, path=None, points=POINTS) -> Figure:
     """Tension against time at the tow point, the otter-board attachment and the buoy
-    attachment (seed 004, figures 1-3: curves 1, 2, 3), one panel each, with the speed
+    attachment (Bezverkhyi 2006, figures 1-3: curves 1, 2, 3), one panel each, with the speed
     step and the statistics windows marked and the mean and range of each window written
     in. Saved to ``path`` when given.
 
@@ -22,7 +22,7 @@ def plot_seed004(ds, path=None, points=POINTS) -> Figure:
         A lumped result (case-format.md names) with a speed step.
     path : path-like, optional
     points : sequence of (label, cable, end)
-        See :data:`kanat.studies.seed004.POINTS`.
+        See :data:`kanat.studies.trawl.POINTS`.
     """
     t = ds["time"].values
     ts, te = step_time(ds), float(t[-1])

@@ -1,4 +1,4 @@
-"""Figures of the stabilized pitch (seed 003): the paper's figs. 2–4, all modes, the
+"""Figures of the stabilized pitch (Gaisha): the paper's figs. 2–4, all modes, the
 ``omega_0`` band. Every function draws on a new :class:`matplotlib.figure.Figure` (no
 pyplot state) and saves a PNG when given a path.
 """

@@ -1,4 +1,4 @@
-"""Figures of the seed-001 sphere equilibrium (the paper's figs. 4 and 5).
+"""Figures of the Naumov & Agievich sphere equilibrium (the paper's figs. 4 and 5).
 
 Built on :class:`matplotlib.figure.Figure` directly (no pyplot state), so it works
 under any backend, ``Agg`` included.

@@ -1,4 +1,4 @@
-"""Figures of seed 000's studies: the stability map of a scheme and the three comparisons.
+"""Figures of Kaliukh & Vusatiuk's studies: the stability map of a scheme and the three comparisons.
 
 Plain functions from result tables to matplotlib Figures (saved when a path is given); no
 computation beyond what a picture needs.
@@ -29,7 +29,7 @@ def plot_stability_map(ds, path=None) -> Figure:
     sl, st = ds["sigma_long"].values.astype(float), ds["sigma_tr"].values.astype(float)
     ok = ds["bounded"].values.astype(bool)
     error = ds["tension_error"].values.astype(float)
-    left.axvspan(2.0, 200.0, color="0.9", label="seed 000: stable sigma_long")
+    left.axvspan(2.0, 200.0, color="0.9", label="Kaliukh & Vusatiuk 2018: stable sigma_long")
     if ok.any():
         shade = np.log10(np.maximum(error[ok], 1e-12))
         points = left.scatter(sl[ok], st[ok], c=shade, cmap="viridis", s=50, label="bounded")
@@ -51,7 +51,7 @@ def plot_stability_map(ds, path=None) -> Figure:
 
 
 def plot_accel(table, path=None) -> Figure:
-    """Seed 000 figs. 1–2: the towed vehicle's depth and distance astern against time, per scheme."""
+    """Kaliukh & Vusatiuk 2018, figs. 1–2: the towed vehicle's depth and distance astern against time, per scheme."""
     fig = Figure(figsize=(11, 4.2), layout="constrained")
     depth, distance = fig.subplots(1, 2)
     for name, group in table.groupby("scheme", sort=False):
@@ -67,7 +67,7 @@ def plot_accel(table, path=None) -> Figure:
 
 
 def plot_planar80(table, path=None) -> Figure:
-    """Seed 000 table 1: tension and inclination along the cable at each time, full vs factorized."""
+    """Kaliukh & Vusatiuk 2018, table 1: tension and inclination along the cable at each time, full vs factorized."""
     fig = Figure(figsize=(11, 4.2), layout="constrained")
     tension, angle = fig.subplots(1, 2)
     factorized = next(c for c in table.columns if c.startswith("tension_") and c not in ("tension_full",
@@ -89,7 +89,7 @@ def plot_planar80(table, path=None) -> Figure:
 
 
 def plot_spatial100(table, history, path=None) -> Figure:
-    """Seed 000 table 2 and its claim: deviation of each wave split from the full scheme in time."""
+    """Kaliukh & Vusatiuk 2018, table 2 and its claim: deviation of each wave split from the full scheme in time."""
     fig = Figure(figsize=(12, 4.2), layout="constrained")
     axes = fig.subplots(1, 3)
     for (name, group), colour in zip(history.groupby("scheme", sort=False), ("C1", "C2", "C3")):

@@ -3,7 +3,7 @@
 Left: the cables in elevation (x–z) with the bodies, the tow point, the anchors, the mean
 surface and the seabed, equal scales on both axes; below it the plan (x–y) when the system
 leaves the x–z plane. Right: the tension along the unstretched arclength of every cable.
-A seed 001 result (a sphere on two cables) is drawn as the paper's figures 4 and 5
+A Naumov & Agievich result (a sphere on two cables) is drawn as the paper's figures 4 and 5
 (:func:`kanat.report.sphere_plot.plot_sphere`).
 
 Draws from a result dataset (what ``kanat statics`` writes, or reads back), or from a
@@ -34,7 +34,7 @@ def as_dataset(result):
 
 
 def _sphere_solution(ds) -> SimpleNamespace:
-    """What :func:`kanat.report.sphere_plot.plot_sphere` reads, from a seed 001 dataset."""
+    """What :func:`kanat.report.sphere_plot.plot_sphere` reads, from a Naumov & Agievich dataset."""
     attrs = ds.attrs
     groups = SimpleNamespace(**{k[len("group_"):]: float(v) for k, v in attrs.items() if k.startswith("group_")})
     x, y = ds["x"].values, ds["y"].values

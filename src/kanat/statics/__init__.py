@@ -1,5 +1,5 @@
-"""Statics (SPEC §3): steady cables by shooting, collocation and the closed-form catenary;
-networks of catenary lines in 3-D; the seed 001 sphere on two cables.
+"""Statics (theory/statics.md): steady cables by shooting, collocation and the closed-form catenary;
+networks of catenary lines in 3-D; the Naumov & Agievich sphere on two cables.
 
 The solvers (:mod:`kanat.statics.driver`) are imported on first use of their names: they
 bring SciPy's ``integrate`` and ``optimize``, which a dynamic run starting from

@@ -1,4 +1,4 @@
-"""Collocation solver for the steady 2-D cable (SPEC §3.1): ``scipy.integrate.solve_bvp``.
+"""Collocation solver for the steady 2-D cable (theory/statics.md §1): ``scipy.integrate.solve_bvp``.
 
 Independent of shooting: the whole profile is the unknown, the equations are
 collocated on an adaptive mesh (4th-order Lobatto IIIA) and both ends' conditions

@@ -1,4 +1,4 @@
-"""Statics of a case: one registry of methods, one entry point (SPEC §3)."""
+"""Statics of a case: one registry of methods, one entry point (theory/statics.md)."""
 from __future__ import annotations
 
 import logging
@@ -74,7 +74,7 @@ class StaticsResult:
     vessel_velocity : ndarray, shape (3,)
         Velocity of the steadily moving frame (the vessel) [m/s]; every node moves with it.
     sphere : SphereSolution or None
-        The seed 001 problem's solution, for a ``sphere_two_cables`` case.
+        The Naumov & Agievich problem's solution, for a ``sphere_two_cables`` case.
     """
 
     case: object
@@ -139,13 +139,13 @@ class StaticsResult:
 
 
 def solve_statics(case, method: str = "auto") -> StaticsResult:
-    """Steady state of a case: its cables (SPEC §3.1) or its seed 001 problem (SPEC §3.2).
+    """Steady state of a case: its cables (theory/statics.md §1) or its Naumov & Agievich problem (theory/statics.md §3).
 
     Parameters
     ----------
     case : kanat.model.Case
     method : str
-        ``auto`` or a name of :data:`METHODS` (the seed 001 problem takes
+        ``auto`` or a name of :data:`METHODS` (the Naumov & Agievich problem takes
         ``shooting`` or ``collocation``; ``auto`` means shooting).
 
     Returns

@@ -1,4 +1,4 @@
-"""The 2-D steady cable problem as typed data, and its equations (SPEC §3.1).
+"""The 2-D steady cable problem as typed data, and its equations (theory/statics.md §1).
 
 A single cable in the x–z plane, unstretched arclength ``s`` from its first end
 (``s = 0``) to its second (``s = L``). The state along the cable is
@@ -19,7 +19,7 @@ Ends: each supplies two conditions. A :class:`FixedEnd` fixes the position (anch
 fixed point, or the tow point in the steady frame); a :class:`BodyEnd` balances the
 tension against a body's net buoyancy, its drag in the local flow and a constant
 force (buoy, towed body, depressor). Force balance of a body at ``s = L`` is
-``T t(L) = F_body``; at ``s = 0`` it is ``T t(0) = -F_body`` (SPEC §2.3).
+``T t(L) = F_body``; at ``s = 0`` it is ``T t(0) = -F_body`` (theory/continuum.md §3).
 
 A frictionless horizontal seabed at ``z = seabed_z`` may carry part of a line whose
 fixed end lies on it; the grounded part is straight, carries the touchdown tension
@@ -130,7 +130,7 @@ class BodyEnd:
 
 @dataclass(frozen=True)
 class CableBVP:
-    """A steady 2-D cable between two ends (SPEC §3.1).
+    """A steady 2-D cable between two ends (theory/statics.md §1).
 
     Attributes
     ----------

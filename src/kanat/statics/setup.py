@@ -1,9 +1,9 @@
 """From a validated case to the typed steady-cable problems (the only case-aware code of statics).
 
-Statics is planar (SPEC §3.1): the steady tow runs along ``+x`` with the vessel at
+Statics is planar (theory/statics.md §1): the steady tow runs along ``+x`` with the vessel at
 the origin and heading 0 (its tow point at ``vessel.tow_point``), so every load must
 lie in the x–z plane. Each cable is solved on its own, so a body may end one cable
-only; networks of cables sharing points are the lumped model's equilibrium (SPEC §4).
+only; networks of cables sharing points are the lumped model's equilibrium (theory/moorings.md §1).
 """
 from __future__ import annotations
 

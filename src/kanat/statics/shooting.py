@@ -1,4 +1,4 @@
-"""Shooting solver for the steady 2-D cable (SPEC §3.1; seed 001's method).
+"""Shooting solver for the steady 2-D cable (theory/statics.md §1; Naumov & Agievich's method).
 
 The state ``(x, z, F_x, F_z)`` is integrated along ``s`` with ``solve_ivp``
 (DOP853) from one end, the unknown initial values being found by root finding

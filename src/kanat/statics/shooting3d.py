@@ -1,4 +1,4 @@
-"""Shooting solver for the 3-D steady cable (:mod:`kanat.statics.spatial`; SPEC §3.1, seed 001's method).
+"""Shooting solver for the 3-D steady cable (:mod:`kanat.statics.spatial`; theory/statics.md §1, Naumov & Agievich's method).
 
 The state ``(x, y, z, F_x, F_y, F_z)`` is integrated along ``s`` with ``solve_ivp`` (DOP853), piece by
 piece, jumping across inline bodies; the unknown initial values are found by root finding

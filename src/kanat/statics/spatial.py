@@ -1,5 +1,5 @@
 """The 3-D steady cable problem: sections, inline bodies, bodies or fixed points at the ends, a
-current with x and y components, a rigid seabed (SPEC §3.1, §4).
+current with x and y components, a rigid seabed (theory/statics.md §1, theory/moorings.md).
 
 One cable, unstretched arclength ``s`` from its first end (0) to its second (``L``), made of
 *pieces* (a section, or the part of a section between attachments) each with its own line

@@ -1,7 +1,7 @@
-"""Seed 001: a sphere held by two cables in a uniform flow (SPEC §3.2).
+"""Naumov & Agievich: a sphere held by two cables in a uniform flow (theory/statics.md §3).
 
 Naumov & Agievich, "Numerical solution of the boundary-value problem of the
-equilibrium of a spherical body on cables in a uniform stream" (seed 001).
+equilibrium of a spherical body on cables in a uniform stream" (Naumov & Agievich).
 
 The problem
 -----------
@@ -13,7 +13,7 @@ weight ``q`` per metre in water, diameter ``delta``) anchored at B, the origin.
 
     t = (cos alpha, -sin alpha),     n = (sin alpha, cos alpha).
 
-Dimensionless equations (paper eqs. 10, 11, 14, 15 as corrected in SPEC §3.2)::
+Dimensionless equations (paper eqs. 10, 11, 14, 15 as corrected in theory/statics.md §3)::
 
     tau dalpha/dsigma + Psi cos(alpha) - r_n = 0
     dtau/dsigma + Psi sin(alpha) + r_t = 0
@@ -43,7 +43,7 @@ degrees, ``|p| = |AC|``) the line drops out and, with ``F`` the sum of the first
 
 ``convention="published"`` takes ``s_R = -1``: the sphere's drag acts in -x, against
 the flow that acts on the cable. This is what reproduces the paper (its eq. 19 as
-corrected in SPEC §3.2) but is not physically consistent. ``convention="physical"``
+corrected in theory/statics.md §3) but is not physically consistent. ``convention="physical"``
 takes ``s_R = +1``: cable and sphere feel the same flow. The projection along ``u``
 gives the line tension ``tau_AC = -F . u`` (:func:`forces_on_sphere`).
 
@@ -51,7 +51,7 @@ Residuals (paper eqs. 18, 19), both in percent; the paper accepts ``|eps| < 0.01
 
     eps1 = 100 (1 - sqrt(y_A^2 + (x_C - x_A)^2) / LoL)
 
-``eps2`` as above. Note: SPEC §3.2 prints the numerator of ``eps2`` with the opposite
+``eps2`` as above. Note: theory/statics.md §3 prints the numerator of ``eps2`` with the opposite
 overall sign; the root is the same, and the sign used here is the one that gives the
 paper's reported residuals (``eps2 = +0.00403 %`` at ``alpha0 = 46.9 deg``,
 ``tau0 = 0.6066``) and its statement that ``eps2`` grows with ``alpha(0)`` and ``tau(0)``.

@@ -1,4 +1,4 @@
-"""Solvers of seed 001's sphere on two cables (SPEC §3.2): shooting and collocation.
+"""Solvers of Naumov & Agievich's sphere on two cables (theory/statics.md §3): shooting and collocation.
 
 The problem, its equations and the solution type are in :mod:`kanat.statics.sphere`.
 Shooting integrates eqs. (10)-(11) from the sphere A with ``solve_ivp`` and finds
@@ -218,7 +218,7 @@ def _candidate_guesses(groups, convention, initial_guess):
 
 def solve_sphere(groups, convention="published", method="shooting", n_nodes=101,
                  initial_guess=None, scales=None) -> SphereSolution:
-    """Equilibrium of the sphere on two cables (SPEC §3.2, paper eqs. 10-19).
+    """Equilibrium of the sphere on two cables (theory/statics.md §3, paper eqs. 10-19).
 
     Parameters
     ----------

@@ -362,7 +362,7 @@ CHECKS = (_finite, _strain, _tension, _reach, _seabed, _grounded)
 
 def check_result(result) -> Verdict:
     """:func:`check_steady` on a statics result (:class:`kanat.statics.StaticsResult` or
-    :class:`kanat.statics.network_result.NetworkResult`); seed 001's sphere problem, in
+    :class:`kanat.statics.network_result.NetworkResult`); Naumov & Agievich's sphere problem, in
     dimensionless groups with its own checks (``physical_warnings``), passes as it is."""
     if result.sphere is not None:
         return Verdict()

@@ -1,4 +1,4 @@
-"""Does a pitch stabilizer on the tow vessel calm the cable? (seed 003's ship coupled to the tow)
+"""Does a pitch stabilizer on the tow vessel calm the cable? (Gaisha's ship coupled to the tow)
 
 :func:`compare_modes` runs one continuum case, whose ``vessel.pitch`` block sets the ship,
 the sea and the stabilizer, once per stabilizer mode (:func:`kanat.api.run`). The

@@ -1,6 +1,6 @@
-"""Stability sweep of a continuum scheme over time steps (seed 000 section 4; SPEC §2.6).
+"""Stability sweep of a continuum scheme over time steps (Kaliukh & Vusatiuk 2018, section 4; theory/time-schemes.md §3).
 
-Seed 000 reports the Courant numbers within which its quasi-linearized wave-factorized
+Kaliukh & Vusatiuk 2018 reports the Courant numbers within which its quasi-linearized wave-factorized
 Crank–Nicolson scheme stays stable: ``sigma_long = c_l dt / ds`` in about [2, 200] and
 ``sigma_tr = c_t dt / ds`` in [1, 1000]. :func:`stability_sweep` measures this for any
 scheme on any case: it runs the case once per time step, in memory, and reports for each
@@ -179,6 +179,6 @@ def summary(ds: xr.Dataset) -> str:
                      f"{bool(run.bounded)!s:>8} {float(run.tension_error):9.2e} {float(run.position_error):9.2e}  "
                      f"{run.status.item()}")
     low, high = ds.attrs["stable_sigma_long_min"], ds.attrs["stable_sigma_long_max"]
-    lines.append(f"bounded for sigma_long in [{low:.4g}, {high:.4g}] (seed 000: about [2, 200])" if np.isfinite(low)
+    lines.append(f"bounded for sigma_long in [{low:.4g}, {high:.4g}] (Kaliukh & Vusatiuk 2018: about [2, 200])" if np.isfinite(low)
                  else "no run stayed bounded")
     return "\n".join(lines)

@@ -1,4 +1,4 @@
-"""The validation suite: the fast cases of SPEC §7, each with its oracle, tolerance and measured value.
+"""The validation suite: the fast cases of theory/validation-cases.md, each with its oracle, tolerance and measured value.
 
 Public API
 ----------
@@ -7,7 +7,7 @@ run_suite(only=None) -> list of CheckResult
 REGISTRY
     The checks by id (:mod:`.checks_statics`, :mod:`.checks_dynamics`).
 NOT_IN_SUITE
-    The SPEC §7 cases too slow for the suite, and where they are checked instead.
+    The theory/validation-cases.md cases too slow for the suite, and where they are checked instead.
 """
 from kanat.validation import checks_dynamics, checks_statics  # noqa: F401 - registers the checks
 from kanat.validation.core import NOT_IN_SUITE, REGISTRY, Check, CheckResult, Tolerance, check, run_suite

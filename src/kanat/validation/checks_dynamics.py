@@ -1,5 +1,5 @@
-"""Dynamics checks (SPEC §7 cases 2, 3, 4, 9): the generalized-α family, wave speeds and natural
-frequencies of the continuum model, a steady tow, and seed 003's Fourier steady state.
+"""Dynamics checks (theory/validation-cases.md cases 2, 3, 4, 9): the generalized-α family, wave speeds and natural
+frequencies of the continuum model, a steady tow, and Gaisha's Fourier steady state.
 
 Straight weightless cables without drag (as in the continuum tests): a longitudinal step in
 end velocity travels at ``sqrt(EA/m)`` with ``dT = sqrt(EA m) dV``; a transverse kink at
@@ -207,7 +207,7 @@ def steady_tow():
     return max(drift, tension), 0.0
 
 
-@check("pitch-fourier-vs-time", "7.9", "seed 003: Fourier steady state against time integration",
+@check("pitch-fourier-vs-time", "7.9", "Gaisha: Fourier steady state against time integration",
        "periodic orbit by shooting (time integration); worst max|difference| / amplitude over the modes "
        "off, sinusoidal, rectangular (50 harmonics)", Tolerance(abs=0.01))
 def pitch_fourier_vs_time():
@@ -222,7 +222,7 @@ def pitch_fourier_vs_time():
     return worst, 0.0
 
 
-@check("pitch-rectangular-mean", "7.9", "seed 003: mean pitch offset of the rectangular mode",
+@check("pitch-rectangular-mean", "7.9", "Gaisha: mean pitch offset of the rectangular mode",
        "M0 / (2 I_y omega_0^2) (the mean of f_2 = M0/2)", Tolerance(rel=1e-3), "rad")
 def pitch_rectangular_mean():
     from kanat.vessel.pitch import PitchSystem, Rectangular, solve_mode

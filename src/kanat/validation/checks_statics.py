@@ -1,4 +1,4 @@
-"""Statics checks (SPEC §7 cases 1, 4, 5): seed 001, the critical angle, the elastic catenary.
+"""Statics checks (theory/validation-cases.md cases 1, 4, 5): Naumov & Agievich, the critical angle, the elastic catenary.
 
 The same comparisons as the statics tests, each reduced to one number against its oracle.
 """
@@ -8,7 +8,7 @@ import numpy as np
 
 from kanat.validation.core import Tolerance, check
 
-SEED001 = (0.02, 2.0, -1.732, 0.45, 0.4)          # Psi, L/L, x_C, Q/kL, R/kL (seed 001's control example)
+SEED001 = (0.02, 2.0, -1.732, 0.45, 0.4)          # Psi, L/L, x_C, Q/kL, R/kL (Naumov & Agievich's control example)
 SEED001_CASE2 = (0.01, 2.0, -1.732, 0.225, 0.4)    # flow speed squared doubled
 
 
@@ -19,27 +19,27 @@ def _sphere(groups=SEED001, method="shooting"):
     return solve_sphere(SphereGroups(*groups), "published", method)
 
 
-@check("seed001-alpha0", "7.1", "seed 001 published case: cable angle at the anchor",
-       "alpha(0) = 46.9 deg (seed 001's control example)", Tolerance(abs=0.1), "deg")
-def seed001_alpha0():
+@check("sphere-alpha0", "7.1", "Naumov & Agievich published case: cable angle at the anchor",
+       "alpha(0) = 46.9 deg (Naumov & Agievich's control example)", Tolerance(abs=0.1), "deg")
+def sphere_alpha0():
     return np.degrees(_sphere().alpha0), 46.9
 
 
-@check("seed001-tau0", "7.1", "seed 001 published case: dimensionless tension at the anchor",
-       "tau(0) = 0.6066 (seed 001's control example)", Tolerance(abs=5e-4))
-def seed001_tau0():
+@check("sphere-tau0", "7.1", "Naumov & Agievich published case: dimensionless tension at the anchor",
+       "tau(0) = 0.6066 (Naumov & Agievich's control example)", Tolerance(abs=5e-4))
+def sphere_tau0():
     return _sphere().tau0, 0.6066
 
 
-@check("seed001-methods", "7.1", "seed 001: shooting and collocation agree",
+@check("sphere-methods", "7.1", "Naumov & Agievich: shooting and collocation agree",
        "the two methods solve the same problem: |alpha0 difference| = 0", Tolerance(abs=1e-6), "rad")
-def seed001_methods():
+def sphere_methods():
     return abs(_sphere(method="shooting").alpha0 - _sphere(method="collocation").alpha0), 0.0
 
 
-@check("seed001-case2", "7.1", "seed 001 second case, qualitatively",
-       "deeper sphere, top angle down, bottom angle up (3 of 3 relations hold; seed 001)", Tolerance(), "relations")
-def seed001_case2():
+@check("sphere-case2", "7.1", "Naumov & Agievich second case, qualitatively",
+       "deeper sphere, top angle down, bottom angle up (3 of 3 relations hold; Naumov & Agievich)", Tolerance(), "relations")
+def sphere_case2():
     one, two = _sphere(), _sphere(SEED001_CASE2)
     held = (two.y_A < one.y_A) + (two.alpha0 < one.alpha0) + (two.alpha[-1] > one.alpha[-1])
     return held, 3

@@ -1,7 +1,7 @@
 """Validation checks: a registry of small functions, each with its oracle and tolerance.
 
 A check is a function returning ``(measured, expected)`` (numbers) or a
-:class:`CheckResult`; it is registered with :func:`check`, which records its SPEC §7 case,
+:class:`CheckResult`; it is registered with :func:`check`, which records its theory/validation-cases.md case,
 what it measures, the oracle (with its source) and the tolerance. :func:`run_suite` runs
 them and turns every outcome, exceptions included, into a :class:`CheckResult`.
 """
@@ -38,7 +38,7 @@ class CheckResult:
     Attributes
     ----------
     check_id, spec, title, oracle, units : str
-        What was checked, its SPEC §7 case, the oracle (and source) and the units.
+        What was checked, its theory/validation-cases.md case, the oracle (and source) and the units.
     tolerance : Tolerance
     measured, expected : float
     passed : bool
@@ -123,11 +123,11 @@ def run_suite(only=None) -> list[CheckResult]:
 NOT_IN_SUITE = [
     ("7.6", "cross-model towed-body speed step by every continuum scheme and the lumped model, converging together",
      "minutes of runs on refined grids"),
-    ("7.7", "seed 000: full vs factorized algorithms, 2- vs 3-block wave factorization, CFL ranges, speed-ups",
+    ("7.7", "Kaliukh & Vusatiuk 2018: full vs factorized algorithms, 2- vs 3-block wave factorization, CFL ranges, speed-ups",
      "long runs (benchmarks)"),
-    ("7.8", "seed 002: the 375° turn with the four time schemes (kanat study compare-schemes)", "a 740 s 3-D run per scheme"),
-    ("7.9", "seed 003: the M0 surfaces", "a scan over M0 (kanat pitch --plot)"),
-    ("7.10", "seed 004: the branched trawl findings; energy conservation of the lumped model over 100 periods",
-     "tests/test_lumped_oracles.py (slow marker), examples/seed004_*"),
+    ("7.8", "Zhang, Zhang & Liu 2012: the 375° turn with the four time schemes (kanat study compare-schemes)", "a 740 s 3-D run per scheme"),
+    ("7.9", "Gaisha: the M0 surfaces", "a scan over M0 (kanat pitch --plot)"),
+    ("7.10", "Bezverkhyi 2006: the branched trawl findings; energy conservation of the lumped model over 100 periods",
+     "tests/test_lumped_oracles.py (slow marker), examples/trawl_*"),
 ]
-"""SPEC §7 cases too slow for the suite: (case, what, where it is checked instead)."""
+"""theory/validation-cases.md cases too slow for the suite: (case, what, where it is checked instead)."""

@@ -1,4 +1,4 @@
-"""Vessel manoeuvres (SPEC §6.1): the track as phases of constant acceleration and turn rate.
+"""Vessel manoeuvres (theory/vessel.md §1): the track as phases of constant acceleration and turn rate.
 
 A track is compiled once into :class:`Phase` records, each with a start time, its initial
 state (position, heading, speed), a constant longitudinal acceleration ``a`` and a
@@ -82,7 +82,7 @@ class VesselTrack:
         Lever arm of the tow point in vessel axes [m], from the pitch centre.
     pitch : callable, optional
         ``t -> (angle, rate, acceleration)`` of the pitch [rad, rad/s, rad/s^2], bow up
-        positive (SPEC §6.2). The lever arm turns with it about the vessel's y axis, so a
+        positive (theory/vessel.md §2). The lever arm turns with it about the vessel's y axis, so a
         stern tow point rises and falls with the pitch.
     """
 

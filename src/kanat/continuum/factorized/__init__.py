@@ -1,4 +1,4 @@
-"""Seed 000's factorized and wave-factorized schemes for the continuum cable (SPEC §2.5, §2.6).
+"""Kaliukh & Vusatiuk's factorized and wave-factorized schemes for the continuum cable (theory/time-schemes.md §2–3).
 
 | module | what |
 |---|---|

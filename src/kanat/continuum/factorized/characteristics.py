@@ -1,6 +1,6 @@
 """Characteristics of the cable equations: the split of ``B`` by wave and direction, and the ends.
 
-Splitting ``B`` (seed 000 eqs. 3–7, 12–13; SPEC §2.5)
+Splitting ``B`` (Kaliukh & Vusatiuk 2018, eqs. 3–7, 12–13; theory/time-schemes.md §2)
 ----------------------------------------------------
 With ``Y_t + B Y_s = D``, ``B = M^-1 K``, the planar ``B`` is block upper triangular in
 ``((T, u), (v, phi))`` and its eigenvalues are, exactly,
@@ -22,7 +22,7 @@ polynomial in ``B`` and the eigen-decomposition ``B = N K N^-1`` never has to be
 ``c_l != c_t`` and ``T >= 0``; :func:`split_numerical` does the same with
 ``numpy.linalg.eig`` (the tests' oracle, and the fallback for a matrix of another structure).
 
-Ends through characteristics (SPEC §2.3, §2.5)
+Ends through characteristics (theory/continuum.md §3, theory/time-schemes.md §2)
 ----------------------------------------------
 At an end, the characteristics with speeds pointing *into* the cable carry what the end
 imposes; the others leave the cable and carry the interior's information out. At ``s = 0``
@@ -40,7 +40,7 @@ lets the relation be written with ``B``. The physical conditions
 
     tow point, anchor     u = V.t,  v = V.n  (, w = V.b)                     (incoming: +-c_l, +-c_t)
     towed body            M_b dV/dt = -side T t + B_b z + 0.5 rho C_D S |U_r| U_r + F_ext
-                          in its t, n (, b) components (seed 000 eq. 26 with its depressor force)
+                          in its t, n (, b) components (Kaliukh & Vusatiuk 2018, eq. 26 with its depressor force)
     free end              T = 0 for the incoming longitudinal wave, and, since ``c_t = 0`` where
                           ``T = 0`` (the transverse characteristics stand still), the transverse
                           momentum ``(m + m_a) a.n = f.n`` (, ``a.b = f.b``) and the rotation
@@ -76,7 +76,7 @@ def group_split(B, c_l, c_t2):
     Returns
     -------
     dict
-        ``{"l+", "l-", "t+", "t-"}`` -> (n, d, d): ``B_1+, B_1-, B_2+, B_2-`` of seed 000 eq. 13.
+        ``{"l+", "l-", "t+", "t-"}`` -> (n, d, d): ``B_1+, B_1-, B_2+, B_2-`` of Kaliukh & Vusatiuk 2018, eq. 13.
     """
     n, d, _ = B.shape
     c_l = np.broadcast_to(np.asarray(c_l, dtype=float), (n,))
@@ -96,7 +96,7 @@ def group_split(B, c_l, c_t2):
 
 
 def direction_split(B, c_l, c_t2):
-    """``(B+, B-)`` (each (n, d, d)): seed 000 eq. 7, closed form."""
+    """``(B+, B-)`` (each (n, d, d)): Kaliukh & Vusatiuk 2018, eq. 7, closed form."""
     parts = group_split(B, c_l, c_t2)
     return parts["l+"] + parts["t+"], parts["l-"] + parts["t-"]
 

@@ -1,4 +1,4 @@
-"""The "running count" sweep of the factorized schemes (seed 000 eqs. 9–11, 15): compiled and NumPy.
+"""The "running count" sweep of the factorized schemes (Kaliukh & Vusatiuk 2018, eqs. 9–11, 15): compiled and NumPy.
 
 One sweep solves a block-bidiagonal system node after node: going forward,
 

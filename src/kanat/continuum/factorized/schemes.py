@@ -1,13 +1,13 @@
-"""Seed 000's factorized and wave-factorized schemes as registered continuum schemes.
+"""Kaliukh & Vusatiuk's factorized and wave-factorized schemes as registered continuum schemes.
 
 Five names, each a :class:`~kanat.continuum.schemes.ContinuumScheme` whose ``step`` takes
 the planar or the spatial model:
 
 | name | what one step does | order |
 |---|---|---|
-| ``factorized`` | two upwind sweeps, ``B+`` forward and ``B-`` backward (SPEC §2.5, eqs. 9–11) | 1 |
+| ``factorized`` | two upwind sweeps, ``B+`` forward and ``B-`` backward (theory/time-schemes.md §2, eqs. 9–11) | 1 |
 | ``factorized-4`` | four sweeps, one per wave and direction (eqs. 12–15) | 1 |
-| ``wave-factorized`` | planar: longitudinal then transverse block, gamma-weighted box (SPEC §2.6) | 2 at gamma 1/2 |
+| ``wave-factorized`` | planar: longitudinal then transverse block, gamma-weighted box (theory/time-schemes.md §3) | 2 at gamma 1/2 |
 | ``wave-factorized-2`` | spatial: longitudinal \\| both transverse waves (paper section 4.2) | 2 at gamma 1/2 |
 | ``wave-factorized-3`` | spatial: longitudinal \\| normal \\| binormal | 2 at gamma 1/2 |
 
@@ -38,7 +38,7 @@ planar wave split stayed bounded on every example swept, so it has no entry."""
 
 @dataclass(frozen=True)
 class Factorized(ContinuumScheme):
-    """Factorization by propagation direction: two implicit upwind sweeps per step (seed 000 eq. 11).
+    """Factorization by propagation direction: two implicit upwind sweeps per step (Kaliukh & Vusatiuk 2018, eq. 11).
 
     Parameters
     ----------
@@ -84,7 +84,7 @@ class Factorized4(Factorized):
 
 @dataclass(frozen=True)
 class WaveFactorized(ContinuumScheme):
-    """Wave factorization: one gamma-weighted box sub-step per wave block (seed 000 eqs. 23–24, 29).
+    """Wave factorization: one gamma-weighted box sub-step per wave block (Kaliukh & Vusatiuk 2018, eqs. 23–24, 29).
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Factorization by propagation direction (seed 000 section 1; SPEC §2.5): one step.
+"""Factorization by propagation direction (Kaliukh & Vusatiuk 2018, section 1; theory/time-schemes.md §2): one step.
 
 Quasi-linearized on each step (``B = B(Y^n)``, ``D = D(Y^n)``), split by direction
 (:mod:`kanat.continuum.factorized.characteristics`), and advanced with implicit upwind sweeps — the

@@ -34,7 +34,7 @@ OK, COMPRESSION, SINGULAR, DIVERGED, NONFINITE = 0, 1, 2, 3, 4
 
 @inner
 def mass_stiffness(y, p, up, M, K):
-    """``M(y)``, ``K(y)`` (d, d) of one node (SPEC §2.1, §2.2); ``up`` None for a planar cable."""
+    """``M(y)``, ``K(y)`` (d, d) of one node (theory/continuum.md §1–2); ``up`` None for a planar cable."""
     if up is not None:
         k3.mass_matrix(y, p, M)
         k3.stiffness_matrix(y, K)

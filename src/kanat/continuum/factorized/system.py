@@ -1,7 +1,7 @@
 """The cable equations in the form the factorized schemes work on: ``Y_t + B(Y) Y_s = D(Y)``.
 
-Seed 000 (eq. 1) writes the continuum cable as ``E W_t + B W_s = D`` with ``E`` the identity:
-``B = M^-1 K`` and ``D = M^-1 F`` from the matrix form ``M Y_t + K Y_s = F`` of SPEC §2.1
+Kaliukh & Vusatiuk 2018 (eq. 1) writes the continuum cable as ``E W_t + B W_s = D`` with ``E`` the identity:
+``B = M^-1 K`` and ``D = M^-1 F`` from the matrix form ``M Y_t + K Y_s = F`` of theory/continuum.md §1
 (planar, ``Y = (T, u, v, phi)``) and §2.2 (spatial, ``Y = (T, u, v, w, phi, theta)``). Rows of
 ``B`` belong to unknowns, so the rows of one wave type are the rows of its unknowns:
 
@@ -112,7 +112,7 @@ class CableSystem:
 
     # -- the matrix form ----------------------------------------------------------------------
     def mass(self, Y):
-        """``M(Y)`` (n, d, d) (SPEC §2.1, §2.2)."""
+        """``M(Y)`` (n, d, d) (theory/continuum.md §1–2)."""
         m, mn, ea = self.mass_per_length, self.normal_mass, self.stiffness_axial
         n = len(Y)
         M = np.zeros((n, self.nvar, self.nvar), dtype=Y.dtype)
@@ -157,7 +157,7 @@ class CableSystem:
     def load_vector(self, Y, current, up):
         """Components ``[f_t, f_n (, f_b)]`` (each (n,)) of the distributed load per unstretched length.
 
-        Weight in water and drag of the relative flow (SPEC §2.1, §2.2): the tangential drag
+        Weight in water and drag of the relative flow (theory/continuum.md §1–2): the tangential drag
         on ``pi d C_t``, the normal one from the normal relative speed ``sqrt(v_r^2 + w_r^2)``.
         """
         p = self.p
@@ -199,7 +199,7 @@ class CableSystem:
 
     # -- ends ---------------------------------------------------------------------------------
     def end_residual(self, end: EndData, side: float, Y, Yold, dt: float, gamma: float, current, up):
-        """The ``dim`` physical conditions of one end (SPEC §2.3) for a batch of candidate states.
+        """The ``dim`` physical conditions of one end (theory/continuum.md §3) for a batch of candidate states.
 
         ``Y`` (b, d) candidate new states of the end node (complex allowed), ``Yold`` (d,) its
         old state; ``side`` -1 at ``s = 0``, +1 at ``s = L``; the body and free-end momentum

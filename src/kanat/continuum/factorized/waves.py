@@ -1,4 +1,4 @@
-"""Wave factorization (seed 000 sections 2 and 4; SPEC §2.6): one step, block by block.
+"""Wave factorization (Kaliukh & Vusatiuk 2018, sections 2 and 4; theory/time-schemes.md §3): one step, block by block.
 
 The rows of ``Y_t + B Y_s = D`` are split by wave type (:meth:`CableSystem.blocks`): planar
 longitudinal ``(T, u)`` | transverse ``(v, phi)``; spatial longitudinal | normal ``(v, phi)`` |

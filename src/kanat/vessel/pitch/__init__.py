@@ -1,4 +1,4 @@
-"""Ship pitch with the reactive stabilizer (seed 003, SPEC §6.2) and its effect on the tow point.
+"""Ship pitch with the reactive stabilizer (Gaisha, theory/vessel.md §2) and its effect on the tow point.
 
 :func:`solve_pitch` solves a pitch block for several stabilizer modes by the Fourier steady
 state (:mod:`.fourier`) and by periodic shooting (:mod:`.periodic`); the control laws are in

@@ -1,4 +1,4 @@
-"""Fourier steady state of the pitch oscillator (paper eqs. 8–12, SPEC §6.2).
+"""Fourier steady state of the pitch oscillator (paper eqs. 8–12, theory/vessel.md §2).
 
 By superposition each term of the forcing's series is answered on its own:
 
@@ -77,7 +77,7 @@ def fourier_pitch(system: PitchSystem, law: OpenLoopLaw, max_moment: float,
     """Steady pitch under the waves and an open-loop law, truncated at ``N`` harmonics.
 
     With :class:`~.pitch_laws.Sinusoidal` this is paper eq. 10, with
-    :class:`~.pitch_laws.Rectangular` eq. 12 (both as corrected in SPEC §6.2), with
+    :class:`~.pitch_laws.Rectangular` eq. 12 (both as corrected in theory/vessel.md §2), with
     :class:`~.pitch_laws.Off` the wave term alone (eq. 3).
 
     Parameters

@@ -1,4 +1,4 @@
-"""Stabilizer control laws of seed 003 (SPEC §6.2) and their Fourier series.
+"""Stabilizer control laws of Gaisha (theory/vessel.md §2) and their Fourier series.
 
 Every law keeps the stabilizer moment within ``0 <= f <= M0``: the reactive stabilizer
 pushes one way only (bow up, a positive moment). Open-loop laws are functions of time
@@ -137,7 +137,7 @@ class Sinusoidal(OpenLoopLaw):
                 Piece(half, 2.0 * half, _zero)]
 
     def fourier(self, max_moment, omega, harmonics):
-        """Paper eq. 7 (SPEC §6.2): ``M0 (1/pi + sum_n (1 - (-1)^(1-n)) / (pi (1 - n^2))
+        """Paper eq. 7 (theory/vessel.md §2): ``M0 (1/pi + sum_n (1 - (-1)^(1-n)) / (pi (1 - n^2))
         cos(n omega t) + sin(omega t) / 2)``; the ``n = 1`` cosine coefficient is 0."""
         n = np.arange(1, harmonics + 1)
         cos = np.zeros(harmonics)

@@ -1,4 +1,4 @@
-"""The tow vessel's pitch as a smooth periodic motion of time (SPEC §6.2, coupled to the tow).
+"""The tow vessel's pitch as a smooth periodic motion of time (theory/vessel.md §2, coupled to the tow).
 
 :func:`pitch_motion` turns a ``vessel.pitch`` block into ``t -> (angle, rate, acceleration)``,
 the callable :class:`kanat.vessel.track.VesselTrack` takes: the steady periodic pitch of

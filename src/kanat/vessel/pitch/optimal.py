@@ -1,4 +1,4 @@
-"""The open-loop stabilizer shape that minimises the steady pitch (beyond seed 003).
+"""The open-loop stabilizer shape that minimises the steady pitch (beyond Gaisha).
 
 The shape is piecewise linear over the active window (the paper's first half period),
 ``f(t) = M0 sum_k v_k h_k(t)`` with hat functions ``h_k`` on ``K + 1`` equally spaced nodes

@@ -1,7 +1,7 @@
 """Direct time integration of the pitch oscillator to its periodic steady state.
 
 The state ``x = (phi, phi')`` obeys ``I_y phi'' = M_m sin(omega t + pi) + f - c phi' - k phi``
-(SPEC §6.2). The periodic orbit is found by shooting on the initial state over one
+(theory/vessel.md §2). The periodic orbit is found by shooting on the initial state over one
 period: ``F(x0) = x(T; x0) - x0 = 0`` by Newton's method with a finite-difference
 Jacobian. For the open-loop laws ``F`` is affine, so one Newton step solves it up to the
 integration error, damped or not (the undamped case needs ``omega_0 != n omega``, which

@@ -1,11 +1,11 @@
-"""Ship pitch with a reactive stabilizer (seed 003, SPEC §6.2): modes, both solution
+"""Ship pitch with a reactive stabilizer (Gaisha, theory/vessel.md §2): modes, both solution
 paths and the comparison table.
 
 ``I_y phi'' + c phi' + k phi = M_m sin(omega t + pi) + f(t)``, ``0 <= f <= M0``.
 
 Two paths to the periodic steady state, which must agree:
 
-* ``"fourier"``: the series of paper eqs. 7, 10, 11, 12 (SPEC §6.2) with ``N`` harmonics,
+* ``"fourier"``: the series of paper eqs. 7, 10, 11, 12 (theory/vessel.md §2) with ``N`` harmonics,
   each answered by ``A / (I_y (omega_0^2 - (n omega)^2))`` or, damped, the complex transfer
   function (:mod:`.fourier`); open-loop modes only;
 * ``"shooting"``: DOP853 time integration with Newton shooting on the initial state for

@@ -1,8 +1,8 @@
-"""The pitch oscillator of seed 003 (SPEC §6.2) as typed data, and its resonance guard.
+"""The pitch oscillator of Gaisha (theory/vessel.md §2) as typed data, and its resonance guard.
 
 ``I_y phi'' + c phi' + k phi = M_m sin(omega t + pi) + f(t)`` with ``k = I_y omega_0^2``
 and ``c = 2 zeta I_y omega_0`` (paper eq. 1/1a, with the optional linear damping of
-SPEC §6.2). ``phi > 0`` is bow up; a positive moment raises the bow.
+theory/vessel.md §2). ``phi > 0`` is bow up; a positive moment raises the bow.
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ class ResonanceError(SolverError):
 
 @dataclass(frozen=True)
 class PitchSystem:
-    """Linear pitch oscillator driven by a regular wave moment (paper eq. 1, SPEC §6.2).
+    """Linear pitch oscillator driven by a regular wave moment (paper eq. 1, theory/vessel.md §2).
 
     Attributes
     ----------

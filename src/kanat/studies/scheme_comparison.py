@@ -1,4 +1,4 @@
-"""Seed 002's comparison of the generalized-α family on one case (its tables 3 and 4).
+"""Zhang, Zhang & Liu's comparison of the generalized-α family on one case (its tables 3 and 4).
 
 Each scheme runs the same case; a generalized-α run with a step ``REFERENCE_REFINE`` times
 smaller is the reference. For each scheme the table gives the towed body's depth at the

@@ -1,13 +1,13 @@
-"""Seed 000's three comparisons (Kaliukh & Vusatiuk 2018), one function and one command each.
+"""Kaliukh & Vusatiuk's three comparisons (Kaliukh & Vusatiuk 2018), one function and one command each.
 
-    kanat study seed000 accel      -o DIR    # towed vehicle from rest (section 3)
-    kanat study seed000 planar80   -o DIR    # 80 m tow 15 -> 20 kn (section 4.1, table 1)
-    kanat study seed000 spatial100 -o DIR    # 100 m tow, 45 deg turn (section 4.2, table 2)
+    kanat study factorization accel      -o DIR    # towed vehicle from rest (section 3)
+    kanat study factorization planar80   -o DIR    # 80 m tow 15 -> 20 kn (section 4.1, table 1)
+    kanat study factorization spatial100 -o DIR    # 100 m tow, 45 deg turn (section 4.2, table 2)
 
 Each writes a CSV table and a PNG figure into ``DIR`` and prints the table. The cases are
-``examples/seed000_*.yaml``; their comments list the published data and the unpublished
-data chosen here. "Full" is the generalized-α box scheme (SPEC §2.4) at the same grid and
-step; the other columns are seed 000's schemes (:mod:`kanat.continuum.factorized.schemes`).
+``examples/factorization_*.yaml``; their comments list the published data and the unpublished
+data chosen here. "Full" is the generalized-α box scheme (theory/time-schemes.md §1) at the same grid and
+step; the other columns are Kaliukh & Vusatiuk's schemes (:mod:`kanat.continuum.factorized.schemes`).
 
 Angles are chart-free: ``inclination`` is the tangent's angle below the horizontal (the
 paper's ``phi`` for a cable trailing astern), ``azimuth`` the heading of its horizontal part
@@ -58,8 +58,8 @@ class Trace:
 
 
 def case_text(name: str, path=None) -> str:
-    """The YAML text of ``examples/seed000_<name>.yaml`` (or of ``path``)."""
-    path = Path(path) if path else EXAMPLES / f"seed000_{name}.yaml"
+    """The YAML text of ``examples/factorization_<name>.yaml`` (or of ``path``)."""
+    path = Path(path) if path else EXAMPLES / f"factorization_{name}.yaml"
     if not path.exists():
         raise FileNotFoundError(f"{path} not found; pass the case file with --case (the examples folder of "
                                 "the kanat source tree holds it)")

@@ -1,8 +1,8 @@
-"""Seed 004's towed spread: tension statistics before and after the speed step
+"""Bezverkhyi's towed spread: tension statistics before and after the speed step
 (:mod:`kanat.analysis.step_response`), the paper's findings as computed checks, and the
-study that runs the cases (``kanat study seed004 examples/seed004_*.yaml -o DIR``).
+study that runs the cases (``kanat study trawl examples/trawl_*.yaml -o DIR``).
 
-The three points of the paper's figures 1-3 (seed 004, "Чисельні результати") are the tow
+The three points of the paper's figures 1-3 (Bezverkhyi 2006, "Чисельні результати") are the tow
 point (``tow`` cable, s = 0), the otter-board attachment (``bridle_port`` at the board) and
 the buoy attachment (``buoy_line`` at the buoy). ``jerk_ratio`` compares the largest rise of
 tension within a second after the step with the largest in steady waves before it.
@@ -25,7 +25,7 @@ def _grows(s: PointStatistics) -> dict[str, bool]:
 
 
 def _figure1(tow, board, buoy) -> dict[str, bool]:
-    """SPEC §5 (the paper's figure 1, and its general statement)."""
+    """theory/lumped.md §7 (the paper's figure 1, and its general statement)."""
     out = {f"tow point: {k}": v for k, v in _grows(tow).items()}
     out.update({f"otter board: {k}": v for k, v in _grows(board).items()})
     rise, settle = buoy.transient.mean - buoy.before.mean, buoy.settled.mean - buoy.before.mean
@@ -53,13 +53,13 @@ def _figures23(tow, board, buoy, figure: int) -> dict[str, bool]:
     return out
 
 
-FIGURES = {"seed004-head-waves-5.6s-speed-1-to-4": 1, "seed004-following-waves-4.5s-speed-1-to-2": 2,
-           "seed004-head-waves-8s-speed-1-to-2": 3}
+FIGURES = {"trawl-head-waves-5.6s-speed-1-to-4": 1, "trawl-following-waves-4.5s-speed-1-to-2": 2,
+           "trawl-head-waves-8s-speed-1-to-2": 3}
 
 
 def findings(stats: list[PointStatistics], figure: int = 1) -> dict[str, bool]:
     """The paper's findings on its ``figure`` (1, 2 or 3) as computed checks of ``stats``
-    (tow point, otter board, buoy). Figure 1's are SPEC §5's: at the tow point and the otter
+    (tow point, otter board, buoy). Figure 1's are theory/lumped.md §7's: at the tow point and the otter
     board the mean tension and its range grow after the step, with jerks; at the buoy the
     mean first rises strongly, then settles slightly above its old value, while the range
     grows. Figures 2 and 3 (1 -> 2 m/s) state other trends at the otter board and the buoy."""
@@ -82,7 +82,7 @@ def report(ds) -> str:
 
 
 def run_cases(paths, out_dir, reuse: bool = False):
-    """Run seed 004's cases (or reuse ``out_dir/<case>.nc``): ``[(path, result dataset, report text)]``."""
+    """Run Bezverkhyi's cases (or reuse ``out_dir/<case>.nc``): ``[(path, result dataset, report text)]``."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     done = []
