@@ -18,6 +18,7 @@ statics; still water 60+30 / 120+60 segments: buoy depth off 1.4 / 0.11 mm, top 
 import math
 
 import numpy as np
+import pytest
 
 import kanat
 from kanat.lumped.equilibrium import equilibrium
