@@ -23,6 +23,11 @@ def plain(output: str) -> str:
     return " ".join(re.sub("[│╭╮╰╯─]", " ", output).split())
 
 
+def kanat_command(*args) -> list[str]:
+    """The command line ``kanat ARGS`` for :mod:`subprocess`, run by this interpreter."""
+    return [sys.executable, "-m", "kanat.cli", *map(str, args)]
+
+
 def run(case, output=None, **options):
     """Run ``case`` through :func:`kanat.api.run` (to ``output`` if given) and return its
     :class:`kanat.dynamics.RunSummary`."""

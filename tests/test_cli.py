@@ -1,5 +1,4 @@
 """The command line: exit codes, one-paragraph failures, --version, --debug."""
-import re
 from pathlib import Path
 
 import pytest
@@ -9,13 +8,10 @@ import kanat
 from kanat.cli import app
 from kanat.io.results import read_result
 
+from helpers import plain
+
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 runner = CliRunner()
-
-
-def plain(output: str) -> str:
-    """Output as one line of words: panel borders removed, wrapped lines joined."""
-    return " ".join(re.sub("[│╭╮╰╯─]", " ", output).split())
 
 
 def test_version():

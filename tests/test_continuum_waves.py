@@ -15,7 +15,7 @@ from kanat.continuum.schemes import Box, GeneralizedAlpha
 from kanat.continuum.stepper import step
 from kanat.validation.checks_dynamics import straight_cable
 
-from helpers import StepDrive, front, march, run
+from helpers import StepDrive, front, march, run, zero_crossing_period
 
 
 def test_longitudinal_step_speed_and_jump():
@@ -35,13 +35,6 @@ def test_transverse_kink_speed():
     state = march(cable, state, StepDrive((0.0, dv)), 0.05, 200, GeneralizedAlpha(-0.3))
     speed = front(cable.s, state.y[:, 2], 0.5 * dv) / state.t
     assert speed == pytest.approx(np.sqrt(t0 / (m + ma)), rel=0.02)
-
-
-def zero_crossing_period(t, signal):
-    sign = np.signbit(signal)
-    idx = np.nonzero(sign[1:] != sign[:-1])[0]
-    times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
-    return 2.0 * np.mean(np.diff(times))
 
 
 def test_taut_string_fundamental_frequency():

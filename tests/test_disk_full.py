@@ -8,7 +8,6 @@ process, a disk whose free space runs out after a few blocks.
 import os
 import shutil
 import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -20,14 +19,10 @@ from kanat.io import space
 from kanat.io.results import read_result
 from kanat.io.stream import Checkpoint, part_path
 
-from helpers import short_case
+from helpers import kanat_command, short_case
 
 CASE = short_case(duration=1500, segments=40, before=50).replace("dt: 1.0\n", "dt: 0.5\n").replace(
     "output_dt: 1.0", "output_dt: 0.5")                  # 3001 outputs of 41 nodes: 7 MB
-
-
-def kanat_command(*args):
-    return [sys.executable, "-m", "kanat.cli", *map(str, args)]
 
 
 def same_result(path, reference) -> None:

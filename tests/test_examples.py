@@ -18,6 +18,7 @@ from kanat.statics import solve_statics
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 ALL = sorted(p.name for p in EXAMPLES.glob("*.yaml"))
+SLOW_RUNS = {"seed004_head_5.6s_1to4.yaml", "seed004_following_4.5s_1to2.yaml", "seed004_head_8s_1to2.yaml"}  # 600 s each
 runner = CliRunner()
 
 
@@ -25,7 +26,8 @@ def test_there_are_examples():
     assert {"towed_body.yaml", "mooring_current.yaml", "sphere_two_cables.yaml"} <= set(ALL)
 
 
-@pytest.mark.parametrize("name", ALL)
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name in SLOW_RUNS else name
+                                  for name in ALL])
 def test_example_validates_and_runs_from_the_command_line(name, tmp_path):
     assert runner.invoke(app, ["validate", str(EXAMPLES / name)]).exit_code == 0
     out, png = tmp_path / "out.nc", tmp_path / "out.png"

@@ -225,6 +225,7 @@ def dump(tree) -> str:
     return yaml.safe_dump(tree, sort_keys=False, allow_unicode=True, width=100)
 
 
+@pytest.mark.slow
 @settings(max_examples=DATA_EXAMPLES, **FUZZ)
 @given(st.sampled_from(sorted(BASES)), st.integers(1, 3), st.data())
 def test_mutated_case_data_is_an_error_or_a_case(name, count, data):
@@ -234,6 +235,7 @@ def test_mutated_case_data_is_an_error_or_a_case(name, count, data):
     assert_contract(dump(tree))
 
 
+@pytest.mark.slow
 @settings(max_examples=TEXT_EXAMPLES, **FUZZ)
 @given(st.sampled_from(sorted(TEXTS)), st.integers(1, 3), st.data())
 def test_mutated_case_text_is_an_error_or_a_case(name, count, data):
@@ -261,6 +263,7 @@ def assert_set_up(text: str) -> None:
                     f"{error}\n--- the case ---\n{text}")
 
 
+@pytest.mark.slow
 @settings(max_examples=SETUP_EXAMPLES, **FUZZ)
 @given(st.sampled_from(DYNAMIC), st.integers(1, 3), st.data())
 def test_a_mutant_that_validates_is_set_up_by_its_model(name, count, data):

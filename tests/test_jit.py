@@ -110,6 +110,7 @@ def test_the_warmup_cases_are_tiny_and_valid():
         assert sum(c.segments for c in parsed.cables) <= 5
 
 
+@pytest.mark.slow
 def test_a_cold_run_says_it_compiles_and_kanat_warmup_finds_it_done(tmp_path):
     """In fresh processes with an empty kernel cache and numba's kernels (``KANAT_AOT=0``, as
     without a C compiler at install): ``kanat run`` says it compiles (before it does), ``kanat

@@ -53,8 +53,9 @@ def kills(model, count, seed):
     pytest.param("lumped", 2, id="2-kills-lumped"),
     # six kills of the continuum run only: a lumped process is mostly its equilibrium (3 s of 3.5),
     # so more kills there land before the first checkpoint again, at 3.5 s a process
-    pytest.param("continuum", 6, id="6-kills-continuum", marks=pytest.mark.slow),
+    pytest.param("continuum", 6, id="6-kills-continuum"),
 ])
+@pytest.mark.slow
 def test_killed_runs_resume_bit_for_bit(model, count, tmp_path):
     case = tmp_path / f"{model}.yaml"
     case.write_text(CASES[model])

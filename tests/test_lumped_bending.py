@@ -170,6 +170,7 @@ def tether(tmp_path, bending_stiffness):
     return load_case(path)
 
 
+@pytest.mark.slow
 def test_statics_gives_the_shape_a_run_with_bending_settles_to(tmp_path):
     """``kanat statics`` of a tether with EI 100 N m^2 (the lumped equilibrium, which includes the
     bending) against the continuum model's run settled to rest: within 2 mm, where the flexible

@@ -187,6 +187,7 @@ def scatter_of_mean_square(b, omega, t):
     return math.sqrt(var)
 
 
+@pytest.mark.slow
 def test_jonswap_run_is_reproducible_and_a_wave_rider_measures_its_hs(tmp_path):
     """A light buoy on a stiff waterplane (w0 = 31.7 rad/s, 5x the highest sea component)
     rides the surface: its heave is the elevation times ``R_j = 1 / (1 - (w_j / w0)^2)`` per

@@ -153,14 +153,12 @@ def test_the_default_scheme_runs_the_driven_chain_as_rk4_does():
 
 
 @pytest.mark.slow
-def test_the_driven_chain_agrees_with_moordyn_side_by_side(tmp_path):
+def test_the_driven_chain_agrees_with_moordyn_side_by_side(moordyn, moordyn_folder):
     """WD0050 driven for 100 s, default kanat scheme against MoorDyn RK2 at 1 ms: fairlead tension mean
     within 1 %, range and maximum within 3 % over 50-100 s (measured at 200 s: -0.03 %, +0.22 %,
     -0.46 %; docs/lumped.md)."""
-    moordyn = pytest.importorskip("moordyn")
     duration = 100.0
-    copy = tmp_path / WD0050.name                       # MoorDyn writes its outputs beside its input
-    copy.write_text(WD0050.read_text())
+    copy = moordyn_folder(WD0050)
     theirs = moordyn_fairlead_tension(moordyn, copy, displacement, duration, coupling=0.05, dt=0.001)
     with quiet():
         ds = api.run(driven(duration)).dataset
@@ -246,16 +244,14 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 
 
 @pytest.mark.slow
-def test_a_steep_jumper_surged_agrees_with_moordyn_side_by_side(tmp_path):
+def test_a_steep_jumper_surged_agrees_with_moordyn_side_by_side(moordyn, case_file):
     """The steep jumper whose fairlead surges 10 m in 27 s (it stopped the default scheme at t = 0.03 s):
     the default scheme and the implicit one at its default step start and finish, and their fairlead
     tension agrees with MoorDyn (RK2, 0.5 ms) over 54-81 s: mean within 1 %, range and maximum within
     3 %. MoorDyn is coupled every 2 ms: at the 0.05 s of the chain tests its piecewise-linear fairlead
     (a constant velocity per coupling step) rings the stiff line, and its own range comes out 35 %
     lower than with 1-5 ms (measured)."""
-    moordyn = pytest.importorskip("moordyn")
-    path = tmp_path / "jumper.dat"
-    path.write_text(JUMPER)
+    path = case_file(JUMPER, "jumper.dat")
     duration = 81.0
 
     def surge(t):

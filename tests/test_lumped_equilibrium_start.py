@@ -18,6 +18,7 @@ statics; still water 60+30 / 120+60 segments: buoy depth off 1.4 / 0.11 mm, top 
 import math
 
 import numpy as np
+import pytest
 
 import kanat
 from kanat.lumped.equilibrium import equilibrium
@@ -87,6 +88,7 @@ def test_the_surface_mooring_in_still_water_matches_the_hanging_column():
     assert math.isclose(exact_top, 3092.93, rel_tol=1e-5)                   # the closed form itself
 
 
+@pytest.mark.slow
 def test_a_floating_end_is_guessed_near_the_surface_and_down_the_current():
     """Without statics (the network's own guess): the buoy on the surface, its keel half its
     height down, downstream of the anchor; and from there the equilibrium still converges."""

@@ -80,6 +80,7 @@ def test_elastic_law_kernel_matches_twin(law):
         np.testing.assert_allclose(got[:, 1], df, rtol=1e-12)
 
 
+@pytest.mark.slow
 def test_mass_solves_match_twins():
     net = build_network(network_case())
     x, v, uw, aw = random_state(net, 1)

@@ -46,6 +46,7 @@ def test_steady_tow_stays_steady_then_responds_to_the_step(scheme, tmp_path):
         assert summary.dt < 0.05 and "safe step" in summary.summary()   # explicit: says so
 
 
+@pytest.mark.slow
 def test_schemes_agree_on_the_speed_step(tmp_path):
     tops = {}
     for scheme in ("rk4", "abm4", "generalized-alpha-lumped"):
@@ -56,6 +57,7 @@ def test_schemes_agree_on_the_speed_step(tmp_path):
     assert tops["generalized-alpha-lumped"] == pytest.approx(tops["rk4"], rel=5e-3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scheme", ["abm4", "generalized-alpha-lumped"])
 def test_resume_gives_the_same_answer_as_an_uninterrupted_run(scheme, tmp_path):
     case = tow_case(scheme)

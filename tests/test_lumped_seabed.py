@@ -79,18 +79,18 @@ def test_grounded_chain_matches_the_catenary_with_seabed_and_converges():
     assert -DEPTH - x[net.node_index, 2].min() < 1.01 * sink
 
 
-def moorpy_catenary(friction):
-    catenary = pytest.importorskip("moorpy.Catenary").catenary
-    fx_a, fz_a, fx_b, fz_b, info = catenary(SPAN, RISE, LENGTH, CHAIN["axial_stiffness"], CHAIN["weight_in_water"],
-                                            CB=friction, Tol=1e-12, MaxIter=500)
+def moorpy_catenary(moorpy, friction):
+    fx_a, fz_a, fx_b, fz_b, info = moorpy.Catenary.catenary(SPAN, RISE, LENGTH, CHAIN["axial_stiffness"],
+                                                            CHAIN["weight_in_water"], CB=friction, Tol=1e-12,
+                                                            MaxIter=500)
     return math.hypot(fx_a, fz_a), math.hypot(fx_b, fz_b), info["LBot"]
 
 
 @pytest.mark.parametrize("friction", [0.3, 1.0, 2.0])
-def test_friction_catenary_matches_moorpy_side_by_side(friction):
+def test_friction_catenary_matches_moorpy_side_by_side(friction, moorpy):
     """MoorPy 1.3.0, ``catenary(375, 90, 400, EA=8e8, W=1300, CB)``: the grounded part's tension
     falls by ``CB W`` per metre from the touchdown towards the anchor (to zero, with CB = 2)."""
-    anchor_moorpy, fairlead_moorpy, grounded = moorpy_catenary(friction)
+    anchor_moorpy, fairlead_moorpy, grounded = moorpy_catenary(moorpy, friction)
     net, x, F, N = settle(grounded_case(100, friction=friction))
     anchor, fairlead = F[net.anchor_nodes]
     horizontal = math.hypot(anchor[0], anchor[1])

@@ -365,7 +365,6 @@ def test_kanat_import_refuses_other_files_and_bad_rows(tmp_path):
 
 # --- MoorDyn itself reading the same files (optional) ----------------------------------------------
 
-moordyn = pytest.importorskip("moordyn", reason="the moordyn package reads the files for comparison")
 MOORDYN_V2 = ["buoy_spread_mooring.dat", "clump_and_float.dat"]        # MoorDyn-C reads v2 files
 
 
@@ -386,7 +385,7 @@ class Captured:
         self.file.close()
 
 
-def moordyn_system(name: str, case, folder: Path):
+def moordyn_system(moordyn, name: str, case, folder: Path):
     """MoorDyn's system of a file (a copy in ``folder``: MoorDyn writes its output files
     beside its input), initialised without its equilibrium search; its log."""
     coupled = [e.offset for c in case.cables for e in c.ends if e.kind == "vessel"]
@@ -399,7 +398,7 @@ def moordyn_system(name: str, case, folder: Path):
     return system, log.text, x
 
 
-def step(system, x) -> None:
+def step(moordyn, system, x) -> None:
     """One tiny step, after which MoorDyn has computed weights and masses."""
     with Captured():
         moordyn.Step(system, x, np.zeros_like(x), 0.0, 1e-4)
@@ -417,10 +416,10 @@ def end_position(case, end):
 
 
 @pytest.mark.parametrize("name", MOORDYN_V2)
-def test_moordyn_reads_the_same_lines(name, tmp_path):
+def test_moordyn_reads_the_same_lines(name, tmp_path, moordyn):
     """Node counts, lengths, end positions, weights per node and converted dampings."""
     case, _ = case_of((FOLDER / name).read_text(), name)
-    system, log, x = moordyn_system(name, case, tmp_path)
+    system, log, x = moordyn_system(moordyn, name, case, tmp_path)
     try:
         env = case.environment
         assert moordyn.GetNumberLines(system) == len(case.cables)
@@ -432,7 +431,7 @@ def test_moordyn_reads_the_same_lines(name, tmp_path):
             for node, end in ((0, cable.from_), (n, cable.to)):
                 got = np.array(moordyn.GetLineNodePos(line, node))
                 assert np.abs(got - end_position(case, end)).max() < 1e-9, (number, node)
-        step(system, x)
+        step(moordyn, system, x)
         compared = 0
         for number, cable in enumerate(case.cables, 1):
             line, n = moordyn.GetLine(system, number), cable.segments
@@ -448,10 +447,10 @@ def test_moordyn_reads_the_same_lines(name, tmp_path):
         moordyn.Close(system)
 
 
-def test_moordyn_masses_of_points_and_bodies(tmp_path):
+def test_moordyn_masses_of_points_and_bodies(tmp_path, moordyn):
     case, _ = case_of((FOLDER / "clump_and_float.dat").read_text())
-    system, _, x = moordyn_system("clump_and_float.dat", case, tmp_path)
-    step(system, x)
+    system, _, x = moordyn_system(moordyn, "clump_and_float.dat", case, tmp_path)
+    step(moordyn, system, x)
     try:
         lines = [moordyn.GetLine(system, i) for i in (1, 2, 3)]
         for number, (a, b) in ((2, (0, 1)), (3, (1, 2))):
@@ -463,8 +462,8 @@ def test_moordyn_masses_of_points_and_bodies(tmp_path):
     finally:
         moordyn.Close(system)
     case, _ = case_of((FOLDER / "buoy_spread_mooring.dat").read_text())
-    system, _, x = moordyn_system("buoy_spread_mooring.dat", case, tmp_path)
-    step(system, x)
+    system, _, x = moordyn_system(moordyn, "buoy_spread_mooring.dat", case, tmp_path)
+    step(moordyn, system, x)
     try:
         total = np.array(moordyn.GetBodyM(moordyn.GetBody(system, 1)))[:3, :3]
         for i in (1, 2, 3):

@@ -180,6 +180,7 @@ def test_jumper_in_waves_agrees_with_moordyn(tmp_path, heading_deg):
     assert_agree(ours, theirs)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["taut", "catenary"])
 @pytest.mark.parametrize("top_depth, height", MATRIX)
 def test_lines_over_depths_and_heights_agree_with_moordyn(tmp_path, name, top_depth, height, request):

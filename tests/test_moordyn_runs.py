@@ -52,14 +52,8 @@ def test_kanat_run_takes_a_moordyn_file(name, tmp_path, monkeypatch):
     assert np.all(ds.seabed_contact_length.values > 100.0)          # the chains rest on the seabed
 
 
-def moordyn_or_skip():
-    return pytest.importorskip("moordyn")
-
-
-def test_the_static_state_agrees_with_moordyns_initial_condition(tmp_path):
-    moordyn = moordyn_or_skip()
-    copy = tmp_path / CHAIN.name                   # MoorDyn writes its outputs beside its input
-    copy.write_text(CHAIN.read_text())
+def test_the_static_state_agrees_with_moordyns_initial_condition(moordyn, moordyn_folder):
+    copy = moordyn_folder(CHAIN)
     with quiet():
         system = moordyn.Create(str(copy))
         moordyn.Init(system, list((BASE + displacement(0.0)).ravel()), [0.0] * 9)
@@ -77,11 +71,9 @@ def test_the_static_state_agrees_with_moordyns_initial_condition(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_moored_vessel_in_waves_agrees_with_moordyn_side_by_side(tmp_path):
-    moordyn = moordyn_or_skip()
+def test_a_moored_vessel_in_waves_agrees_with_moordyn_side_by_side(moordyn, moordyn_folder):
     duration, coupling = 120.0, 0.05
-    copy = tmp_path / CHAIN.name
-    copy.write_text(CHAIN.read_text())
+    copy = moordyn_folder(CHAIN)
     with quiet():
         system = moordyn.Create(str(copy))
         moordyn.SetTimeScheme(system, "RK2")

@@ -115,9 +115,8 @@ def imported_sea(path: Path):
 
 
 @pytest.mark.parametrize("mode", sorted(MODES))
-def test_the_imported_sea_is_moordyns(mode, tmp_path):
+def test_the_imported_sea_is_moordyns(mode, tmp_path, moordyn):
     """kanat's stretched components against MoorDyn's GetWavesKin (module docstring)."""
-    moordyn = pytest.importorskip("moordyn")
     options, files, step = MODES[mode]
     path = write(tmp_path, options, files)
     sea = imported_sea(path)

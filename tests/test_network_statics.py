@@ -347,6 +347,7 @@ def test_the_lumped_equilibrium_on_the_seabed_converges_to_network_statics():
         assert 3.5 < coarse / fine < 4.5
 
 
+@pytest.mark.slow
 def test_a_network_in_a_current_goes_to_the_lumped_equilibrium():
     """The catenary carries no drag: for a network in a current the front door solves the
     lumped model's equilibrium. A buoy written as a network point on a riser in a current

@@ -11,7 +11,6 @@ import os
 import re
 import signal
 import subprocess
-import sys
 import time
 
 import numpy as np
@@ -25,7 +24,7 @@ from kanat.io.results import read_result
 from kanat.io.stream import part_path
 from kanat.statics import budget
 
-from helpers import EXAMPLES, short_case
+from helpers import EXAMPLES, kanat_command, short_case
 
 
 def example(name: str, **changes) -> dict:
@@ -43,10 +42,6 @@ def example(name: str, **changes) -> dict:
 SAME_ANCHOR = example("subsurface_buoy.yaml", **{"cables.0.to": "anchor:[0, 0, -500]"})
 VERTICAL_CURRENT = example("mooring_current.yaml", **{
     "environment.current.profile": [[0, 1.0, 0, 0], [-50, 0.7, 0, 1000], [-150, 0.2, 0, 0]]})
-
-
-def kanat_command(*args):
-    return [sys.executable, "-m", "kanat.cli", *map(str, args)]
 
 
 def test_a_cable_from_an_anchor_back_to_it_is_refused_at_once():

@@ -13,6 +13,7 @@ import pytest
 NOTEBOOK = Path(__file__).resolve().parents[1] / "examples" / "notebook" / "getting_started.ipynb"
 
 
+@pytest.mark.slow
 def test_getting_started_notebook_executes(tmp_path):
     nbformat = pytest.importorskip("nbformat", reason="the test extra installs nbformat")
     nbclient = pytest.importorskip("nbclient", reason="the test extra installs nbclient")

@@ -42,6 +42,7 @@ def test_example_is_valid_without_warnings():
     assert check_case(EXAMPLE) == []
 
 
+@pytest.mark.slow
 def test_result_file_has_the_case_format_names(ran):
     out, _, _ = ran
     back = read_result(out / "pitch.nc")
@@ -63,6 +64,7 @@ def test_result_file_has_the_case_format_names(ran):
     assert back.attrs["method_feedback"] == "shooting"
 
 
+@pytest.mark.slow
 def test_nan_for_not_applicable_says_so_in_the_attributes(ran, tmp_path):
     out, _, _ = ran
     back = read_result(out / "pitch.nc")
@@ -78,6 +80,7 @@ def test_nan_for_not_applicable_says_so_in_the_attributes(ran, tmp_path):
         assert "'off', which was not among the modes solved" in ds[name].attrs["comment"]
 
 
+@pytest.mark.slow
 def test_figures_and_table(ran):
     out, _, table = ran
     for name in FILES.values():
@@ -119,6 +122,7 @@ def test_plot_to_a_png_file_puts_fig2_there_and_the_rest_beside(tmp_path):
     assert figure_paths(tmp_path)["band"] == tmp_path / "pitch_omega0_band.png"
 
 
+@pytest.mark.slow
 def test_kanat_study_pitch_writes_the_scan_that_passes_through_the_solved_modes(ran, tmp_path):
     """``kanat study pitch``: the omega_0 scan, read back from scan.csv and interpolated at the
     case's omega_0 = 0.876 rad/s, gives the amplitudes of the modes solved on their own (the

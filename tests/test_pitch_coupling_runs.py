@@ -46,6 +46,7 @@ def of(summary, name, mode):
     return float(summary[name].sel(mode=mode))
 
 
+@pytest.mark.slow
 def test_compare_modes_writes_a_result_per_mode_a_summary_a_figure_and_a_table(coupled):
     table, summary, out = coupled
     assert [str(m) for m in summary["mode"].values] == list(MODES)
@@ -58,6 +59,7 @@ def test_compare_modes_writes_a_result_per_mode_a_summary_a_figure_and_a_table(c
     assert "below 5 % of its mean" in table
 
 
+@pytest.mark.slow
 def test_without_stabilizer_the_top_tension_oscillates_at_the_wave_period(coupled):
     _, summary, _ = coupled
     time = summary["time"].values
@@ -95,6 +97,7 @@ def test_the_tow_point_vertical_velocity_follows_the_pitch_kinematically(mode):
 MEASURED_RANGE_REDUCTION = {"sinusoidal": (1.5, 1.9), "rectangular": (2.1, 2.7)}   # 6 kn: 1.69, 2.39
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("mode", ["sinusoidal", "rectangular"])
 def test_a_stabilizer_that_cuts_the_pitch_cuts_the_top_tension_range(coupled, mode):
     _, summary, _ = coupled
@@ -129,6 +132,7 @@ def test_kanat_run_writes_the_pitch_solvers_response_as_vessel_pitch(tmp_path):
         -60 * math.sin(response.pitch[index[0]]) + 5 * math.cos(response.pitch[index[0]]))
 
 
+@pytest.mark.slow
 def test_the_study_runs_as_a_command(tmp_path):
     result = CliRunner().invoke(app, ["study", "pitch-tow", str(EXAMPLE_PATH), "-o", str(tmp_path), "--mode", "off",
                                       "--transient", "0"])

@@ -38,6 +38,7 @@ PRINTED = {"subsurface_current_step.py": current_step_settles_on_the_statics,
 """What a script prints, checked beside its run (the other scripts' numbers are checked below)."""
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("script", SCRIPTS, ids=lambda p: p.name)
 def test_python_example_runs(script, tmp_path):
     done = subprocess.run([sys.executable, str(script), str(tmp_path / "picture.png")], cwd=tmp_path,
@@ -48,6 +49,7 @@ def test_python_example_runs(script, tmp_path):
     PRINTED.get(script.name, lambda printed: None)(done.stdout)
 
 
+@pytest.mark.slow
 def test_vary_and_plot_prints_the_apis_numbers(tmp_path):
     done = subprocess.run([sys.executable, str(EXAMPLES / "python" / "vary_and_plot.py"), str(tmp_path / "p.png")],
                           capture_output=True, text=True, timeout=600)

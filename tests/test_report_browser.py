@@ -66,6 +66,7 @@ def result(tmp_path_factory):
     return path
 
 
+@pytest.mark.slow
 def test_result_report_in_chromium(browser, result, tmp_path):
     html = write_report(result, tmp_path / "report.html")
     page, errors = open_page(browser, html)
@@ -102,6 +103,7 @@ def test_result_report_in_chromium(browser, result, tmp_path):
     assert errors == []
 
 
+@pytest.mark.slow
 def test_study_report_in_chromium(browser, tmp_path):
     base = tmp_path / "base.yaml"
     base.write_text(short_case(duration=30))

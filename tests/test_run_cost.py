@@ -96,7 +96,8 @@ def test_a_bad_limit_in_the_environment_is_named(monkeypatch):
     assert any(f"{limits.NODE_STEPS_ENV}='lots'" in p.message for p in errors(decay()))
 
 
-@pytest.mark.parametrize("name, tolerance", [("mooring_buoy_decay.yaml", 0.0), ("lazy_wave.yaml", 1e-5)])
+@pytest.mark.parametrize("name, tolerance", [("mooring_buoy_decay.yaml", 0.0),
+                                             pytest.param("lazy_wave.yaml", 1e-5, marks=pytest.mark.slow)])
 def test_compiled_calls_in_batches_give_the_same_run(monkeypatch, name, tolerance):
     """Steps are taken in compiled calls of at most ``CALL_STEPS`` (Ctrl-C is handled between two,
     and the vessel's samples stay small): rk4 in batches of 7 is the same run bit for bit; the

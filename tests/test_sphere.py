@@ -199,6 +199,7 @@ def test_slack_cable_is_guarded():
         shoot_sphere(PAPER_CASE_1, np.radians(46.9), -0.1)
 
 
+@pytest.mark.slow
 def test_no_equilibrium_raises_with_advice():
     heavy = SphereGroups(Psi=0.5, LoL=2.0, x_C=-1.7, QkL=0.1, RkL=0.1)   # cable too heavy
     with pytest.raises(SolverError, match="initial_guess") as info:

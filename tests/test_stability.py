@@ -28,6 +28,7 @@ def planar80_sweep():
     return stability_sweep(case, WaveFactorized(gamma=0.5), [0.002, 0.01, 0.05, 0.2, 1.0, 2.0, 6.0, 12.0])
 
 
+@pytest.mark.slow
 def test_planar80_stable_range_contains_the_papers(planar80_sweep):
     ds = planar80_sweep
     low, high = ds.attrs["stable_sigma_long_min"], ds.attrs["stable_sigma_long_max"]
@@ -36,6 +37,7 @@ def test_planar80_stable_range_contains_the_papers(planar80_sweep):
     assert ds.attrs["reference"] == "generalized-alpha" and ds.attrs["segments"] == 10
 
 
+@pytest.mark.slow
 def test_planar80_within_two_percent_of_the_full_scheme_in_the_papers_range(planar80_sweep):
     ds = planar80_sweep
     inside = (ds["sigma_long"] >= PAPER_RANGE[0]) & (ds["sigma_long"] <= PAPER_RANGE[1])
@@ -45,6 +47,7 @@ def test_planar80_within_two_percent_of_the_full_scheme_in_the_papers_range(plan
     np.testing.assert_allclose(ds["sigma_long"] / ds["dt"], ds["sigma_long"][0] / ds["dt"][0])   # c_l / ds
 
 
+@pytest.mark.slow
 def test_accelerating_vehicle_is_stable_only_above_a_lower_courant_number():
     """Quasi-linear Crank–Nicolson blocks (gamma 0.6) on the vehicle accelerated from rest:
     unbounded at sigma_long 15 and below (the spurious box mode grows after the tow point stops
@@ -58,6 +61,7 @@ def test_accelerating_vehicle_is_stable_only_above_a_lower_courant_number():
     assert low == pytest.approx(29.7, rel=0.01) and high == pytest.approx(297.1, rel=0.01)
 
 
+@pytest.mark.slow
 def test_stability_map_draws(planar80_sweep, tmp_path):
     fig = plot_stability_map(planar80_sweep, tmp_path / "map.png")
     assert len(fig.axes) >= 2 and (tmp_path / "map.png").stat().st_size > 10_000

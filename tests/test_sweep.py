@@ -54,6 +54,7 @@ def table(summary):
     return {name: summary[name].values for name in STATS}
 
 
+@pytest.mark.slow
 def test_cluster_study_gives_the_serial_summary(base, serial, client, tmp_path):
     assert len(client.scheduler_info()["workers"]) == 2
     result = sweep(base, VARY, tmp_path, scheduler=client)
@@ -86,6 +87,7 @@ def test_each_variant_is_the_case_edited_by_hand(serial, tmp_path):
 TIMING = ("wall_time_s", "setup_time_s", "solver_time_s", "compile_time_s")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("after", [0, 3], ids=["while-the-first-cases-run", "after-3-records"])
 def test_killed_study_resumes_with_every_case_once_bit_for_bit(after, base, serial, tmp_path):
     """kill -9 of the study and its workers while the first cases run (no record yet) or after
@@ -131,6 +133,7 @@ def test_killed_study_resumes_with_every_case_once_bit_for_bit(after, base, seri
         np.testing.assert_array_equal(result.summary[name].values, values, err_msg=name)
 
 
+@pytest.mark.slow
 def test_failing_cases_are_recorded_and_the_others_complete(base, client, tmp_path):
     vary = {"simulation.scheme": ["generalized-alpha", "rk9"], "line_types.towcable.diameter": [0.0173, -1.0]}
     seen = []

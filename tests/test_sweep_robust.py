@@ -85,6 +85,7 @@ def test_failures_are_recorded_and_the_others_finish(base, tmp_path, monkeypatch
     assert str(os.getpid()) not in pids and len(pids) == 2     # one child, then a new one after the crash
 
 
+@pytest.mark.slow
 def test_a_crash_on_a_local_or_dask_cluster_is_recorded(base, tmp_path, monkeypatch):
     from kanat.sweep.cluster import local_cluster
 
@@ -104,6 +105,7 @@ def test_a_crash_on_a_local_or_dask_cluster_is_recorded(base, tmp_path, monkeypa
 HOSTILE = ["../../x", "/etc/passwd", "a/../../b", "..", "<img src=x onerror=alert(1)>", "x" * 400, "name"]
 
 
+@pytest.mark.slow
 def test_names_and_values_never_steer_paths(base, tmp_path):
     before = set(tmp_path.parent.rglob("*"))
     result = sweep(base, {"name": HOSTILE, "cables[0].name": ["../tow"]}, tmp_path / "study", scheduler="serial")

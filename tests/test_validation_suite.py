@@ -31,6 +31,7 @@ def results():
     return run_suite()
 
 
+@pytest.mark.slow
 def test_every_fast_check_passes_against_its_oracle(results):
     assert len(results) == len(REGISTRY) >= 15
     failed = [r.measured_text for r in results if not r.passed]
@@ -42,6 +43,7 @@ def test_every_fast_check_passes_against_its_oracle(results):
     assert {r.spec for r in results} >= {"7.1", "7.2", "7.3", "7.4", "7.5", "7.9"}
 
 
+@pytest.mark.slow
 def test_report_renders_each_check(results, tmp_path):
     try:
         check("deliberately-wrong", "7.5", "a check that must fail", "1 = 2", Tolerance(abs=0.1))(lambda: (1.0, 2.0))

@@ -2,7 +2,6 @@
 against its definition and against MoorDyn-C's own summed components (``WaveKin 7``), which
 stretch the kinematics so; and its way into both models' water."""
 import math
-import shutil
 import warnings
 from dataclasses import replace
 from pathlib import Path
@@ -50,13 +49,10 @@ def test_the_column_under_the_surface_is_stretched_onto_the_still_one(depth, t):
             np.testing.assert_allclose(ours, want, rtol=1e-12, atol=1e-12)
 
 
-def test_wheeler_stretching_is_moordyns_summed_components(tmp_path):
+def test_wheeler_stretching_is_moordyns_summed_components(moordyn, moordyn_folder):
     """kanat's import of a WaveKin 7 file (``stretching: wheeler``) against MoorDyn's own
     kinematics (``GetWavesKin``) at points under crests and troughs, at several times."""
-    moordyn = pytest.importorskip("moordyn")
-    for name in ("taut_line_in_waves.dat", "wave_frequencies.txt"):
-        shutil.copy(WAVES_FOLDER / name, tmp_path / name)
-    path = tmp_path / "taut_line_in_waves.dat"
+    path = moordyn_folder(*(WAVES_FOLDER / name for name in ("taut_line_in_waves.dat", "wave_frequencies.txt")))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")                   # a taut line between fixed points must stretch
         case = load_case(path)

@@ -96,13 +96,13 @@ def test_whoi_case_validates(name):
 
 # Steady state, the model that runs the case against the lumped model's equilibrium ---------------
 
-STATICS_VS_LUMPED = ["mine", "towing", "tow3d", "rov"]
+STATICS_VS_LUMPED = ["mine", "towing", "tow3d", "rov"]                 # rov last (slow)
 NETWORKS_IN_STILL_WATER = ["multi_leg", "multi_leg_3d", "loops"]   # network statics takes no current
 NETWORKS = ["bimoor", "multi_leg", "multi_leg_3d", "branch", "loops", "horiz"]
 CONTINUUM_VS_LUMPED = ["taut", "bottom"]
 
 
-@pytest.mark.parametrize("name", STATICS_VS_LUMPED)
+@pytest.mark.parametrize("name", [*STATICS_VS_LUMPED[:-1], pytest.param("rov", marks=pytest.mark.slow)])
 def test_statics_and_the_lumped_equilibrium_agree(name, variant=lambda case: case):
     case = variant(case_of(name))
     a, b = statics(case), initial_state(case, "lumped")
@@ -134,7 +134,8 @@ def test_network_statics_of_an_array_with_inline_floats(name):
     statics(still(case_of(name)))
 
 
-@pytest.mark.parametrize("name", NETWORKS)
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name == "horiz" else name
+                                  for name in NETWORKS])
 def test_each_body_of_a_network_is_in_balance(name):
     """The line force on each body balances its net buoyancy, its drag in the (uniform) current
     and its own force, to 3 N: the lumped node also takes part of its elements' drag."""
@@ -296,8 +297,8 @@ def test_bottom_mooring_in_waves_runs_in_the_lumped_model():
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
 
 
-@pytest.mark.parametrize("name", [pytest.param("deep_s", marks=pytest.mark.slow),
-                                  pytest.param("surface", marks=pytest.mark.slow), "seatex", "shallow_s"])
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["deep_s", "surface", "seatex", "shallow_s"])
 @pytest.mark.xfail(strict=True, reason="no initial state: the lumped equilibrium does not converge")
 def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     initial_state(case_of(name), "lumped")

@@ -35,6 +35,7 @@ def results(tmp_path_factory):
     return out
 
 
+@pytest.mark.slow
 def test_figure1_has_every_finding_of_spec_section_5(results):
     ds = results[1]
     stats = step_response.step_statistics(ds, trawl.POINTS)
@@ -49,6 +50,7 @@ def test_figure1_has_every_finding_of_spec_section_5(results):
     assert snaps["bridle_port"] == snaps["bridle_stbd"]                 # the spread is symmetric
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("figure", [2, 3])
 def test_figures_2_and_3_show_the_papers_trends(results, figure):
     found = trawl.findings(step_response.step_statistics(results[figure], trawl.POINTS), figure=figure)
@@ -57,6 +59,7 @@ def test_figures_2_and_3_show_the_papers_trends(results, figure):
     assert len(found) - len(missing) >= 5
 
 
+@pytest.mark.slow
 def test_viscoelasticity_matters_in_the_step_not_in_steady_waves(tmp_path):
     """theory/lumped.md §2: the Kelvin–Voigt damping changes the tensions at the speed step, hardly in
     steady towing in regular waves (case 1, step at 150 s to keep it short)."""
@@ -119,6 +122,7 @@ def test_no_step_is_a_clear_error():
         step_response.point_tension(synthetic(), "trawl", 0)
 
 
+@pytest.mark.slow
 def test_one_command_writes_figures_and_tables(results, tmp_path):
     for figure, ds in results.items():
         ds.to_netcdf(tmp_path / f"{Path(CASES[figure]).stem}.nc")
