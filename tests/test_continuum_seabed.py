@@ -76,3 +76,15 @@ def test_a_node_falling_through_the_seabed_stops_the_run_and_says_where():
     status = ds.attrs["status"]
     assert status.startswith("failed") and "below the seabed" in status and "static penetration" in status
     assert "applies no seabed contact" in status
+
+
+def test_a_steady_state_too_large_for_its_dense_matrices_is_refused_before_allocating_them(monkeypatch):
+    """The steady Newton on the seabed holds two dense ``n nv x n dim`` matrices (6,000 segments: 7 GB,
+    which once crowded the machine out in a fuzz round); above MAX_DENSE_BYTES it says so and what to
+    do instead of allocating them. The bound is lowered here to what 70 segments need."""
+    from kanat.continuum import steady
+
+    monkeypatch.setattr(steady, "MAX_DENSE_BYTES", 2 * (71 * 4) * (71 * 2) * 8 - 1)    # nv 4, dim 2
+    with pytest.raises(Exception, match=r"steady state on the seabed of 70 segments needs 1 MiB of dense "
+                                        r"matrices .*fewer segments on the seabed part, or model: lumped"):
+        model_for(kanat.load_case(grounded_chain())).initial()

@@ -28,6 +28,10 @@ from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 
 POSITION_STEP = 1e-7      # m: finite-difference step on node positions (contact is linear in them)
 MAX_ANGLE_STEP = 0.3      # rad: a Newton step turning any angle further is scaled down
+MAX_DENSE_BYTES = 2 * 1024**3
+"""Largest dense matrices (``dR/dr`` and ``dr/dx``) one steady iteration may hold [bytes]: both are
+``n nv x n dim``, so a cable of 6,000 segments on the seabed would need 7 GB; it is refused
+before they are allocated (the lumped model, or fewer segments, solves it)."""
 
 
 def _pinning_rows(band: np.ndarray, width: int, rows: np.ndarray, columns: np.ndarray) -> np.ndarray:
@@ -100,6 +104,11 @@ def steady_with_positions(guess, layout, columns, residual, derivative, scale, a
     """
     x = guess.copy()
     n, nv = x.shape
+    need = 2 * x.size * n * len(columns) * 8
+    if need > MAX_DENSE_BYTES:
+        raise NewtonFailure(f"the steady state on the seabed of {n - 1:,} segments needs {need / 1024**2:,.0f} MiB "
+                            f"of dense matrices (more than {MAX_DENSE_BYTES / 1024**2:,.0f} MiB): use fewer "
+                            "segments on the seabed part, or model: lumped", 0)
     angles = list(angles)
     scales = np.tile(scale, n)
     for iteration in range(1, 3 * MAX_ITERATIONS + 1):
