@@ -45,7 +45,7 @@ def read_sea_states(path: str | FilePath) -> list[dict[str, Any]]:
         With the file, the line and the column of the first bad entry.
     """
     path = FilePath(path)
-    check_csv_file(path, "sea-state table", SEA_STATE_COLUMNS)
+    check_csv_file(path, "sea-state table", SEA_STATE_COLUMNS, "sea_states.csv")
     try:
         with path.open(newline="", encoding="utf-8") as handle:
             lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)

@@ -58,11 +58,12 @@ def _columns(header: list[str], source: str) -> list[int | None]:
     return [names.index(c) if c in names else None for c in TABLE_COLUMNS]
 
 
-def check_csv_file(path: FilePath, what: str = "motion table", columns=TABLE_COLUMNS) -> None:
+def check_csv_file(path: FilePath, what: str = "motion table", columns=TABLE_COLUMNS,
+                   example: str = "motion.csv") -> None:
     """A ``.csv`` name, a regular file, at most :data:`MAX_TABLE_BYTES` (OSError when missing);
     ``what`` and ``columns`` say in the messages what the file should be."""
     if path.suffix.lower() != ".csv":
-        raise TableError(f"'{path.name}' is not a .csv file; a {what} is a CSV file "
+        raise TableError(f"'{path.name}' is not a .csv file; a {what} is a CSV file ({example}) "
                          f"whose first row names its columns: {', '.join(columns)}")
     size = path.stat().st_size                    # OSError: missing, no permission
     if not path.is_file():

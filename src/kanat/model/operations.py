@@ -141,7 +141,7 @@ class VesselMotion(KanatModel):
         given = [name for name, used in (("harmonics", bool(self.harmonics)), ("a table", self.rows is not None),
                                           ("RAOs", self.rao_rows is not None)) if used]
         if len(given) > 1:
-            raise ValueError(f"give one of harmonics (a list), a table or RAOs, not {' and '.join(given)}")
+            raise ValueError(f"give either harmonics (a list), a table or RAOs, not {' and '.join(given)}")
         if self.rao is not None and self.rao_rows is None:
             raise ValueError(f"the RAO file '{self.rao}' was not read; load the case with "
                              "kanat.io.load_case, which reads it next to the case file")

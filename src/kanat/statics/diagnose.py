@@ -14,7 +14,6 @@ import logging
 import warnings
 
 from kanat.statics.budget import budget, seconds_limit
-from kanat.statics.driver import solve_statics
 
 DIAGNOSIS_SECONDS = 10.0
 """Wall time the statics of a failed start may take [s] (the examples' take under 3 s; less when
@@ -36,6 +35,8 @@ def steady_failure(case) -> str | None:
     str or None
         ``<check>: <message>`` (:attr:`kanat.statics.steady_checks.Verdict.failure`).
     """
+    from kanat.statics.driver import solve_statics        # only on a failed start: SciPy's solvers cost 0.3 s
+
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")              # the case checks' notes on a statics variant
