@@ -4,6 +4,7 @@ Test modules import from here, never from each other.
 """
 import os
 import re
+import signal
 import sys
 from pathlib import Path
 
@@ -21,6 +22,15 @@ STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
 def plain(output: str) -> str:
     """Command output as one line of words: panel borders removed, wrapped lines joined."""
     return " ".join(re.sub("[│╭╮╰╯─]", " ", output).split())
+
+
+def _ctrl_c_as_in_a_terminal() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
+CTRL_C = {"preexec_fn": _ctrl_c_as_in_a_terminal}
+"""Popen keywords giving the child Ctrl-C as a terminal would: a pytest-xdist worker ignores SIGINT,
+and a child inherits that (Python then installs no KeyboardInterrupt handler)."""
 
 
 def kanat_command(*args) -> list[str]:

@@ -24,7 +24,7 @@ from kanat.io.results import read_result
 from kanat.io.stream import part_path
 from kanat.statics import budget
 
-from helpers import EXAMPLES, kanat_command, short_case
+from helpers import CTRL_C, EXAMPLES, kanat_command, short_case
 
 
 def example(name: str, **changes) -> dict:
@@ -139,7 +139,7 @@ def test_ctrl_c_ends_a_hopeless_statics_and_says_so_in_its_file(tmp_path):
     case.write_text(yaml.safe_dump(VERTICAL_CURRENT))
     out = tmp_path / "steady.nc"
     env = {**os.environ, budget.SECONDS_ENV: "600"}
-    proc = subprocess.Popen(kanat_command("statics", case, "-o", out), env=env,
+    proc = subprocess.Popen(kanat_command("statics", case, "-o", out), env=env, **CTRL_C,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     _interrupt_when(proc, lambda: True, 6.0)               # imports, then well into the search
     sent = time.monotonic()
@@ -156,7 +156,7 @@ def test_ctrl_c_ends_a_run_keeping_its_file_and_resume_is_bit_identical(tmp_path
     case.write_text(short_case(duration=3000, segments=40, before=50).replace("dt: 1.0\n", "dt: 0.5\n"))
     whole, out = tmp_path / "whole.nc", tmp_path / "interrupted.nc"
     subprocess.run(kanat_command("run", case, "-o", whole), check=True, capture_output=True, timeout=600)
-    proc = subprocess.Popen(kanat_command("run", case, "-o", out, "--checkpoint-every", 50),
+    proc = subprocess.Popen(kanat_command("run", case, "-o", out, "--checkpoint-every", 50), **CTRL_C,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     _interrupt_when(proc, part_path(out).exists, 1.0)
     text, _ = proc.communicate(timeout=60)

@@ -26,7 +26,7 @@ from kanat.report.html_report import write_report
 from kanat.sweep import cluster_pays, sweep
 from kanat.sweep import engine, execution
 
-from helpers import short_case
+from helpers import CTRL_C, short_case
 
 CRASH = "crash-me"
 _original_run_case = engine.run_case
@@ -181,7 +181,7 @@ def test_second_study_on_the_same_directory_is_refused(base, tmp_path):
     script = ("import sys; from kanat.sweep import sweep; "
               "sweep(sys.argv[1], {'vessel.track[1].to_speed_kn': [7, 8, 9, 10, 11, 12]}, sys.argv[2], "
               "scheduler='serial')")
-    proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path / "study")],
+    proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path / "study")], **CTRL_C,
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         deadline = time.monotonic() + 120
@@ -212,7 +212,7 @@ def test_bad_study_outputs_are_refused(base, tmp_path):
 def test_ctrl_c_stops_the_workers_and_records_no_false_failure(base, tmp_path):
     script = ("import sys; from kanat.sweep import sweep; "
               "sweep(sys.argv[1], {'vessel.track[1].to_speed_kn': [7, 8, 9, 10, 11, 12]}, sys.argv[2], workers=2)")
-    proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path / "study")],
+    proc = subprocess.Popen([sys.executable, "-c", script, str(base), str(tmp_path / "study")], **CTRL_C,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     records = tmp_path / "study" / "records"
     deadline = time.monotonic() + 120

@@ -163,7 +163,7 @@ def vessel_start(case) -> tuple[float, np.ndarray]:
     if case.vessel.track:
         from kanat.vessel.track import VesselTrack
         heading = VesselTrack.from_model(case.vessel).state(0.0).heading
-    return heading, motion_series(compile_motion(case.vessel.motion), [0.0])[0][0]
+    return heading, motion_series(compile_motion(case.vessel.motion, case.environment), [0.0])[0][0]
 
 
 def _local(case, direction, where) -> np.ndarray:

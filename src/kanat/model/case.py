@@ -110,8 +110,9 @@ class Case(KanatModel):
                                      "bodies": bodies, "points": points}
             density = (data.get("environment") or {}).get("water_density") \
                 if isinstance(data.get("environment"), dict) else None
-            if isinstance(density, (int, float)) and not isinstance(density, bool) and density > 0:
-                info.context["water_density"] = float(density)  # catalogue added masses
+            if isinstance(density, (int, float)) and not isinstance(density, bool) and 0 < density < 1e300:
+                info.context["water_density"] = float(density)  # catalogue added masses (a huge int: the
+                # field's own check refuses it)
         return data
 
     @field_validator("points")
