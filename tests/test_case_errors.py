@@ -247,3 +247,19 @@ def test_problems_found_after_reading_name_the_file(tmp_path):
         assert error.problems and all(p.file == str(path) for p in error.problems)
         assert "<case>" not in str(error) and f"{path}: error:" in str(error)
     assert parse_case(BASE).source is None and parse_case(BASE, file="<text>").source == "<text>"
+
+
+def test_a_vector_written_as_a_mapping_with_a_negative_key_is_a_clear_error():
+    """``offset: {-4: 1.0}`` (found by the fuzz test): the error's location holds -4, which once
+    indexed the vector's item types from the end and raised IndexError instead of the message."""
+    import yaml
+
+    from kanat.errors import CaseError
+    from kanat.io.case_file import parse_case
+
+    from helpers import EXAMPLES
+
+    data = yaml.safe_load((EXAMPLES / "mooring_buoy_waves.yaml").read_text())
+    data["cables"][-1]["to"] = {**data["cables"][-1]["to"], "offset": {-4: 1.0}}
+    with pytest.raises(CaseError, match=r"x.yaml:\d+: error: cables\[2\]\.to\.offset: must be a list of 3 numbers"):
+        parse_case(yaml.safe_dump(data), "x.yaml")

@@ -69,7 +69,7 @@ def _step(tp: Any, elem: Any) -> Any:
         args = get_args(tp)
         if len(args) == 1 or (len(args) == 2 and args[1] is Ellipsis):
             return args[0]
-        return args[elem] if isinstance(elem, int) and elem < len(args) else None
+        return args[elem] if isinstance(elem, int) and 0 <= elem < len(args) else None
     if origin in (Union, types.UnionType):
         members = [_unwrap(a) for a in get_args(tp)]
         return next((m for m in members if _is_model(m) and elem in _tags(m)), None)
