@@ -87,6 +87,23 @@ def test_each_variant_is_the_case_edited_by_hand(serial, tmp_path):
 TIMING = ("wall_time_s", "setup_time_s", "solver_time_s", "compile_time_s")
 
 
+def _wait_for_the_lock(study, seconds=60.0):
+    """Until the killed study's lock on ``study`` is free: the kernel releases it when the last process
+    holding it has exited, and a worker the kill reached only through its parent may outlive it briefly."""
+    from kanat.errors import KanatError
+    from kanat.io.outputs import OutputLock
+
+    deadline = time.monotonic() + seconds
+    while True:
+        try:
+            OutputLock(study).acquire().release()
+            return
+        except KanatError:
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.1)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("after", [0, 3], ids=["while-the-first-cases-run", "after-3-records"])
 def test_killed_study_resumes_with_every_case_once_bit_for_bit(after, base, serial, tmp_path):
@@ -110,6 +127,7 @@ def test_killed_study_resumes_with_every_case_once_bit_for_bit(after, base, seri
     os.killpg(proc.pid, signal.SIGKILL)                    # the study and its worker processes
     proc.wait()
     log.close()
+    _wait_for_the_lock(tmp_path)
     finished = len(list(records.glob("*.json")))
     assert after <= finished < 8
     if finished:
