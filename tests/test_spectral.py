@@ -4,7 +4,7 @@ same spectra.
 
 The records are random-phase superpositions (``x(t) = sum a_k cos(omega_k t + phi_k)``,
 ``a_k = sqrt(2 S(omega_k) d omega)``, uniform phases, summed by an inverse FFT) of two spectra:
-a JONSWAP sea (Tp 10 s, gamma 7) cut at 1.6 rad/s, narrow (bandwidth 0.47), and a bimodal swell +
+a JONSWAP sea (Tp 10 s, gamma 7) cut at 1.6 rad/s, narrow (bandwidth 0.51), and a bimodal swell +
 wind sea, broad (bandwidth 0.85). Four seeds of 3 hours each are counted by
 :func:`kanat.analysis.fatigue.rainflow`; the seeds' damage rates scatter by about 1 % (m = 3)
 to 3 % (m = 5), and the tolerances below are the measured method errors plus that scatter.
@@ -94,8 +94,9 @@ def test_dirlik_density_is_a_density_and_its_closed_form_its_moment(name):
         assert spectral.dirlik_damage_rate(moments, m, 1.0) == pytest.approx(moments.peak_rate * moment, rel=1e-7)
 
 
-# measured (4 seeds x 3 h): narrow: Dirlik / rainflow 0.98-1.00, narrow-band 1.02-1.04;
-# bimodal: Dirlik 0.92-0.95, narrow-band 1.13-1.15 (conservative, as it should be for a broad band)
+# measured (4 seeds x 3 h): narrow: Dirlik / rainflow 0.990 (m = 3) and 1.009 (m = 5), narrow-band
+# 1.022 and 1.043; bimodal: Dirlik 0.949 and 0.918, narrow-band 1.147 and 1.128 (conservative, as
+# it should be for a broad band)
 @pytest.mark.parametrize("name, exponent, dirlik_tol, narrow_band_range", [
     ("narrow", 3.0, 0.04, (1.0, 1.08)),
     ("narrow", 5.0, 0.06, (1.0, 1.10)),
@@ -146,7 +147,8 @@ def test_clh_maxima_distribution_limits():
 
 
 # measured (400 records of 30 min, dt 0.05 s): the mode of a Gumbel fitted to the records'
-# maxima is 0.8 % (narrow) and 1.0 % (bimodal) below the CLH MPM
+# maxima is 2.1 % (narrow) and 1.4 % (bimodal) below the CLH MPM, 1.2 % and 0.6 % below the
+# Rayleigh one (both assume independent maxima, so they err on the safe side)
 @pytest.mark.parametrize("name", list(SPECTRA))
 def test_mpm_against_the_maxima_of_synthetic_records(name):
     moments = spectral.spectral_moments(OMEGA, SPECTRA[name])
@@ -155,8 +157,8 @@ def test_mpm_against_the_maxima_of_synthetic_records(name):
     mode = stats.gumbel_r.fit(maxima)[0]
     clh = spectral.most_probable_maximum(moments, duration)
     rayleigh = spectral.most_probable_maximum(moments, duration, method="rayleigh")
-    assert mode == pytest.approx(clh, rel=0.025)
-    assert mode == pytest.approx(rayleigh, rel=0.025)
+    assert mode == pytest.approx(clh, rel=0.03)
+    assert mode == pytest.approx(rayleigh, rel=0.03)
     assert spectral.most_probable_maximum(moments, duration, mean=5.0) == pytest.approx(5.0 + clh)
 
 
