@@ -154,3 +154,39 @@ def test_rao_table_too_narrow_for_the_sea_is_refused(tmp_path):
     assert case.vessel.motion.rao_rows != narrow.vessel.motion.rao_rows
     with pytest.raises(KanatError, match="% of its variance outside"):
         design(narrow)
+
+
+def test_the_example_runs_from_the_command_line_and_its_offsets_are_the_hand_ones(tmp_path):
+    from pathlib import Path
+
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from kanat.cli import app
+    from kanat.design_checks.quasi_static import design_offset
+
+    example = Path(__file__).resolve().parents[1] / "examples" / "design" / "quasi_static.yaml"
+    out = tmp_path / "out"
+    outcome = CliRunner().invoke(app, ["design", str(example), "-o", str(out)])
+    assert outcome.exit_code == 0, outcome.output
+    table = pd.read_csv(out / "utilisation.csv")
+    assert len(table) == 2 * (3 + 3 * 2) and table.ok.all()
+    case = kanat.load_case(example)
+    head = next(s for s in case.design.sea_state_rows if s.name == "head")
+    # head seas (0 deg): surge alone, |Z| tabulated; the offset is 5 m plus the Rayleigh MPM
+    # the RAOs interpolate linearly in frequency as complex numbers
+    omega = np.linspace(0.1, 3.0, 400)
+    table_omega = [0.1, 0.4, 0.6, 0.8, 1.2, 3.0]
+    table_z = [a * np.exp(1j * np.radians(p)) for a, p in [(1.0, 0), (0.9, 5), (0.6, 15), (0.3, 30), (0.08, 60), (0.0, 90)]]
+    z = np.interp(omega, table_omega, np.real(table_z)) + 1j * np.interp(omega, table_omega, np.imag(table_z))
+    sea = np.array([jonswap_at(w, head.hs, head.tp, head.gamma) for w in omega])
+    m0, m2 = (np.trapezoid(omega**n * np.abs(z) ** 2 * sea, omega) for n in (0, 2))
+    largest = math.sqrt(m0) * math.sqrt(2 * math.log(STORM * math.sqrt(m2 / m0) / (2 * math.pi)))
+    assert design_offset(case, head).total == pytest.approx(5.0 + largest, rel=1e-6)
+
+
+def jonswap_at(omega, hs, tp, gamma):
+    wp = 2 * math.pi / tp
+    sigma = 0.07 if omega <= wp else 0.09
+    return (5 / 16 * hs**2 * wp**4 * omega**-5 * math.exp(-1.25 * (wp / omega) ** 4)
+            * gamma ** math.exp(-((omega - wp) ** 2) / (2 * sigma**2 * wp**2)) * (1 - 0.287 * math.log(gamma)))
