@@ -102,8 +102,8 @@ def test_the_design_offset_is_the_mean_plus_the_rayleigh_mpm_of_the_rao_motion(c
     expected = wave_frequency_offset()
     for kind, mean in (("intact", 5.0), ("damaged", 9.0)):
         offset = result.offsets[(kind, "storm")]
-        assert offset.wave_frequency_max == pytest.approx(expected, rel=2e-3)
-        assert offset.total == pytest.approx(mean + expected, rel=2e-3)
+        assert offset.wave_frequency_max == pytest.approx(expected, rel=1e-5)
+        assert offset.total == pytest.approx(mean + expected, rel=1e-5)
 
 
 def test_tensions_are_the_statics_solved_afresh_at_the_design_offset(checked, tmp_path):
