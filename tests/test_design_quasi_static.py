@@ -190,3 +190,18 @@ def jonswap_at(omega, hs, tp, gamma):
     sigma = 0.07 if omega <= wp else 0.09
     return (5 / 16 * hs**2 * wp**4 * omega**-5 * math.exp(-1.25 * (wp / omega) ** 4)
             * gamma ** math.exp(-((omega - wp) ** 2) / (2 * sigma**2 * wp**2)) * (1 - 0.287 * math.log(gamma)))
+
+
+def test_bad_design_keys_are_reported_at_file_line_and_key(tmp_path):
+    from kanat.errors import CaseError
+
+    text = _case(design_block=DESIGN.replace("{intact: 5.0, damaged: 9.0}", "{intact: 5.0, broken: 9.0}")
+                 + "  consequence_class: 3\n")
+    with pytest.raises(CaseError) as error:
+        _load(tmp_path, text)
+    message = str(error.value)
+    assert "case.yaml" in message and "design.mean_offset: 'broken' is not a kind of condition" in message
+    assert "design.consequence_class: 3 is not one of: 1, 2" in message
+    lines = text.splitlines()
+    number = next(k for k, line in enumerate(lines, 1) if "broken" in line)
+    assert f":{number}:" in message

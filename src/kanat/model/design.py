@@ -94,7 +94,7 @@ class Design(KanatModel):
         "dynamic", description="dynamic: lumped-model runs in each sea state; quasi-static: the statics "
                                "at the vessel's mean offset plus its most probable maximum wave-frequency "
                                "motion from the RAOs (vessel.motion.rao); frequency: refused (not wired yet)")
-    mean_offset: float | dict[Literal[CONDITION_KINDS], float] | None = quantity(  # type: ignore[valid-type]
+    mean_offset: float | dict[str, float] | None = quantity(
         None, unit="m", description="quasi-static analysis: the vessel's mean offset along each sea state's "
                                     "heading (from the mean wind, current and wave-drift loads), to which the "
                                     "most probable maximum wave-frequency motion is added: one value for every "
@@ -115,6 +115,16 @@ class Design(KanatModel):
         "rayleigh", description="estimator of the most probable maximum (kanat.analysis.extremes.mpm)")
     fatigue: Fatigue | None = Field(
         None, description="{curve, design_life}: fatigue life of every line from the intact runs")
+
+    @field_validator("mean_offset")
+    @classmethod
+    def _kinds(cls, value: Any) -> Any:
+        if isinstance(value, dict):
+            unknown = [k for k in value if k not in CONDITION_KINDS]
+            if unknown:
+                raise ValueError(f"'{unknown[0]}' is not a kind of condition; the keys are "
+                                 f"{', '.join(CONDITION_KINDS)}")
+        return value
 
     @field_validator("sea_state_rows")
     @classmethod
