@@ -132,3 +132,15 @@ def test_frequency_analysis_needs_the_rayleigh_estimator(checked):
     case, _ = checked
     with pytest.raises(KanatError, match="extremes: rayleigh"):
         design(case.replace({"design.extremes": "gumbel"}), spectral_analysis=stand_in_analysis)
+
+
+def test_a_spectral_analysis_missing_a_cable_is_a_clear_error(checked):
+    case, _ = checked
+
+    def partial(variant):
+        found = stand_in_analysis(variant)
+        found.pop("leg1", None)
+        return found
+
+    with pytest.raises(KanatError, match="no tension spectra for cable 'leg1'"):
+        design(case.replace({"design.conditions": ["intact"]}), spectral_analysis=partial)

@@ -323,6 +323,10 @@ def _spectral_tables(case: Case, result: DesignResult, analysis: SpectralAnalysi
                 result.failures[f"{condition.name}/{sea_state.name}"] = str(error)
                 rows += _failed_rows(case, condition, sea_state.name)
                 continue
+            missing = [c.name for c in variant.cables if c.name not in spectra]
+            if missing:
+                raise KanatError(f"the spectral analysis gave no tension spectra for cable '{missing[0]}' "
+                                 f"({condition.name}, sea state {sea_state.name})")
             for cable in variant.cables:
                 mean, largest = spectral_check.fairlead_extreme(spectra[cable.name], design.storm_duration,
                                                                 design.extremes)
