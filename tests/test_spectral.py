@@ -174,3 +174,14 @@ def test_bad_spectra_are_refused_with_the_reason():
         spectral.damage_rate(moments, 3.0, 1.0, "wirsching")
     with pytest.raises(KanatError, match="not a fatigue curve"):
         spectral.tension_damage_rate(moments, 1.0e6, "api-rope")
+
+
+def test_a_welch_spectrum_in_hertz_gives_the_records_variance_and_damage(records):
+    from scipy.signal import welch
+
+    x = records["narrow"][0]
+    frequency, psd = welch(x, fs=1 / 0.05, nperseg=8192)
+    moments = spectral.spectral_moments(*spectral.from_hertz(frequency, psd))
+    assert moments.m0 == pytest.approx(np.var(x), rel=0.03)   # measured 1.4 % (Welch estimate)
+    counted = rainflow_rate(x, 3.0, 1.0, 3 * 3600.0)
+    assert spectral.dirlik_damage_rate(moments, 3.0, 1.0) == pytest.approx(counted, rel=0.05)   # measured 0.994

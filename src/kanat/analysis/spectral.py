@@ -150,6 +150,22 @@ def spectral_moments(omega, spectrum) -> SpectralMoments:
     return SpectralMoments(m0, m1, m2, m4)
 
 
+def from_hertz(frequency, psd) -> tuple[np.ndarray, np.ndarray]:
+    """A one-sided spectrum in hertz (``psd`` [units^2/Hz] at ``frequency`` [Hz], as
+    :func:`kanat.analysis.tension_spectrum` gives it) in angular frequency:
+    ``omega = 2 pi f``, ``S(omega) = S(f) / (2 pi)``, the same variance.
+
+    Returns
+    -------
+    omega : ndarray
+        [rad/s].
+    spectrum : ndarray
+        [units^2 s/rad].
+    """
+    f = np.asarray(frequency, dtype=float)
+    return 2.0 * math.pi * f, np.asarray(psd, dtype=float) / (2.0 * math.pi)
+
+
 def narrow_band_damage_rate(moments: SpectralMoments, exponent: float, intercept: float) -> float:
     """Narrow-band damage per second on ``N = K S^-m`` (module docstring, DNV-RP-C203 D.2.6).
 
