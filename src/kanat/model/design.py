@@ -17,6 +17,8 @@ SEA_STATE_COLUMNS = ("name", "hs", "tp", "gamma", "heading_deg", "probability", 
 probability of occurrence [-] and the simulated duration [s] of each run."""
 
 STANDARDS = ("api-rp-2sk", "dnv-os-e301")
+CONSEQUENCE_CLASSES = (1, 2)
+CONDITION_KINDS = ("intact", "damaged")
 ANALYSES = ("dynamic", "quasi-static", "frequency")
 EXTREMES = ("rayleigh", "weibull", "gumbel")
 
@@ -61,7 +63,12 @@ class Design(KanatModel):
     Attributes
     ----------
     standard : {"api-rp-2sk", "dnv-os-e301"}
+    consequence_class : {1, 2} or None
+        DNV-OS-E301's consequence class.
     analysis : {"dynamic", "quasi-static", "frequency"}
+    mean_offset : float, dict or None
+        Quasi-static analysis: the vessel's mean offset along the waves' heading [m], for every
+        condition or per condition kind (``intact``, ``damaged``).
     sea_states : str or None
         CSV file of the sea states (:data:`SEA_STATE_COLUMNS`), relative to the case file.
     sea_state_rows : tuple of SeaState or None
@@ -77,11 +84,21 @@ class Design(KanatModel):
     """
 
     standard: Literal[STANDARDS] = Field(  # type: ignore[valid-type]
-        "api-rp-2sk", description="the required safety factors: API RP 2SK (dnv-os-e301 is refused: its "
-                                  "partial-factor check is not built)")
+        "api-rp-2sk", description="api-rp-2sk: safety factors on the most probable maximum tension; "
+                                  "dnv-os-e301: partial factors on the mean and dynamic tension against "
+                                  "0.95 MBL (needs consequence_class; dynamic analysis only)")
+    consequence_class: Literal[CONSEQUENCE_CLASSES] | None = Field(  # type: ignore[valid-type]
+        None, description="DNV-OS-E301 consequence class: 1 (a line failure is unlikely to lead to "
+                          "unacceptable consequences) or 2 (it may); required by dnv-os-e301")
     analysis: Literal[ANALYSES] = Field(  # type: ignore[valid-type]
-        "dynamic", description="dynamic: lumped-model runs in each sea state (quasi-static and frequency "
-                               "are refused: not built)")
+        "dynamic", description="dynamic: lumped-model runs in each sea state; quasi-static: the statics "
+                               "at the vessel's mean offset plus its most probable maximum wave-frequency "
+                               "motion from the RAOs (vessel.motion.rao); frequency: refused (not wired yet)")
+    mean_offset: float | dict[str, float] | None = quantity(
+        None, unit="m", description="quasi-static analysis: the vessel's mean offset along each sea state's "
+                                    "heading (from the mean wind, current and wave-drift loads), to which the "
+                                    "most probable maximum wave-frequency motion is added: one value for every "
+                                    "condition, or {intact: S, damaged: S} (a broken line moves the vessel further)")
     sea_states: str | None = Field(
         None, description="CSV file with columns name, hs [m], tp [s], gamma, heading_deg, "
                           "probability, duration [s], relative to the case file; read when the "
@@ -98,6 +115,16 @@ class Design(KanatModel):
         "rayleigh", description="estimator of the most probable maximum (kanat.analysis.extremes.mpm)")
     fatigue: Fatigue | None = Field(
         None, description="{curve, design_life}: fatigue life of every line from the intact runs")
+
+    @field_validator("mean_offset")
+    @classmethod
+    def _kinds(cls, value: Any) -> Any:
+        if isinstance(value, dict):
+            unknown = [k for k in value if k not in CONDITION_KINDS]
+            if unknown:
+                raise ValueError(f"'{unknown[0]}' is not a kind of condition; the keys are "
+                                 f"{', '.join(CONDITION_KINDS)}")
+        return value
 
     @field_validator("sea_state_rows")
     @classmethod

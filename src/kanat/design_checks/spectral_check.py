@@ -1,0 +1,98 @@
+"""The design check from tension spectra (``design.analysis: frequency``): the seam between
+:func:`kanat.design_checks.design` and a frequency-domain analysis.
+
+A *spectral analysis* is any function ``analysis(case) -> dict[str, LineSpectra]`` that takes the
+case of one condition in one sea state (its waves the sea state's JONSWAP sea, as the dynamic
+runs take it) and returns, per cable, the mean tension and the one-sided tension spectrum at
+its nodes. From it, per line and sea state:
+
+* the MPM of the fairlead tension (the end with the larger mean) over ``storm_duration`` from the
+  spectrum's moments (:func:`kanat.analysis.spectral.most_probable_maximum`; ``extremes:
+  rayleigh`` gives the Rayleigh MPM, the other estimators fit records and do not apply);
+* at every node, Dirlik's fatigue damage per second on the design's T-N curve
+  (:func:`kanat.analysis.spectral.tension_damage_rate`), times ``probability x YEAR``.
+
+``kanat.design(case, spectral_analysis=...)`` takes one; ``kanat design`` refuses
+``analysis: frequency`` until the frequency-domain solver is wired in as the default.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from kanat.analysis.spectral import most_probable_maximum, spectral_moments, tension_damage_rate
+from kanat.errors import KanatError
+from kanat.model import Case
+
+from . import records
+
+SPECTRAL_EXTREMES = {"rayleigh": "rayleigh"}
+"""``design.extremes`` -> the spectral MPM method it stands for."""
+
+
+@dataclass(frozen=True)
+class LineSpectra:
+    """Tension spectra along one cable.
+
+    Attributes
+    ----------
+    s : ndarray, shape (n_nodes,)
+        Unstretched arclength of the nodes from the cable's ``from`` end [m].
+    mean : ndarray, shape (n_nodes,)
+        Mean tension [N].
+    omega : ndarray, shape (n_freq,)
+        Angular frequencies [rad/s], increasing.
+    density : ndarray, shape (n_freq, n_nodes)
+        One-sided spectral density of the tension [N^2 s/rad].
+    """
+
+    s: np.ndarray
+    mean: np.ndarray
+    omega: np.ndarray
+    density: np.ndarray
+
+    def __post_init__(self):
+        n = np.shape(self.s)[0]
+        if np.shape(self.mean) != (n,) or np.shape(self.density) != (np.shape(self.omega)[0], n):
+            raise KanatError(f"line spectra of {n} nodes need mean (n_nodes,) and density (n_freq, n_nodes); "
+                             f"got {np.shape(self.mean)} and {np.shape(self.density)}")
+
+    @property
+    def fairlead(self) -> int:
+        """Index of the end node with the larger mean tension."""
+        return 0 if self.mean[0] >= self.mean[-1] else len(self.mean) - 1
+
+    def moments(self, node: int):
+        """:class:`kanat.analysis.spectral.SpectralMoments` at ``node``."""
+        return spectral_moments(self.omega, self.density[:, node])
+
+
+SpectralAnalysis = Callable[[Case], "dict[str, LineSpectra]"]
+"""``analysis(case) -> {cable: LineSpectra}`` for the case of one condition in one sea state."""
+
+
+def spectral_method(extremes: str) -> str:
+    """The spectral MPM method of ``design.extremes``; raises for the record-fitting estimators."""
+    if extremes not in SPECTRAL_EXTREMES:
+        raise KanatError(f"design.extremes: {extremes}: a frequency-domain check takes the MPM from the "
+                         f"tension spectrum; use extremes: {', '.join(SPECTRAL_EXTREMES)}")
+    return SPECTRAL_EXTREMES[extremes]
+
+
+def fairlead_extreme(spectra: LineSpectra, duration: float, extremes: str) -> tuple[float, float]:
+    """Mean and most probable maximum [N] of the fairlead tension over ``duration``."""
+    node = spectra.fairlead
+    mean = float(spectra.mean[node])
+    return mean, most_probable_maximum(spectra.moments(node), duration, mean, spectral_method(extremes))
+
+
+def annual_damage(variant: Case, cable: str, spectra: LineSpectra, probability: float) -> np.ndarray:
+    """Dirlik's damage per year at every node of ``cable`` in one sea state, shape (n_nodes,)."""
+    curve = variant.design.fatigue.curve
+    kinds = records.line_types_along(variant, cable, spectra.s)
+    strength = [records.reference_strength(variant, kind, curve) for kind in kinds]
+    rates = [tension_damage_rate(spectra.moments(k), ref, curve, float(spectra.mean[k]))
+             for k, ref in enumerate(strength)]
+    return np.array(rates) * probability * records.YEAR
