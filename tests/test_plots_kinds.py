@@ -166,3 +166,27 @@ def test_towed_picture_draws_top_tension_depth_and_shape():
     last = ds.sizes["time"] - 1
     shape = lines[f"elevation/{cable}/{last}"]
     np.testing.assert_allclose(shape.get_ydata(), ds["position"].values[last, nodes[cable], 2])
+
+
+def _array(value) -> np.ndarray:
+    """A plotly JSON array: a list, or base64 typed data (``{"dtype": ..., "bdata": ...}``)."""
+    if isinstance(value, dict):
+        import base64
+
+        return np.frombuffer(base64.b64decode(value["bdata"]), dtype=np.dtype(value["dtype"]))
+    return np.asarray(value, dtype=float)
+
+
+def test_report_shows_what_the_picture_shows():
+    from kanat.report.html_result import dynamic_page
+
+    ds = network_result()
+    ds.attrs["case_yaml"] = NETWORK_CASE
+    figure = dynamic_page(ds, "network.nc").figures["plot-body-history"]
+    titles = [note["text"] for note in figure["layout"]["annotations"]]
+    assert titles[:2] == ["top tension (at the vessel) [kN]", "body depth [m]"]
+    traces = {trace["name"]: trace for trace in figure["data"]}
+    np.testing.assert_allclose(_array(traces["tow at vessel"]["y"]), ds["tension"].values[:, 0] / 1e3)
+    for k, body in enumerate(ds["body"].values):
+        np.testing.assert_allclose(_array(traces[f"{body} depth"]["y"]), -ds["body_position"].values[:, k, 2])
+    np.testing.assert_allclose(_array(traces["vessel speed"]["y"]), 2.0)       # the helper's vessel: 2 m/s
