@@ -110,3 +110,14 @@ def test_kanat_report_writes_a_page(tmp_path):
     page = kanat.report(network_result(), tmp_path / "network.html")
     assert page == tmp_path / "network.html"
     assert "tension at the chosen nodes" in page.read_text()
+
+
+def test_a_check_that_reads_a_stand_in_is_left_out(tmp_path):
+    """A diameter of 0 is set aside with two stand-ins far apart: the strain check, which reads
+    the drag of the stand-in diameter, says something else each time and is not reported; the
+    bad scheme, which reads no diameter, is."""
+    from kanat.io import check_case
+
+    path = _case(tmp_path, ("diameter: 0.137", "diameter: 0"), ("scheme: rk4", "scheme: bogus"))
+    keys = sorted(p.key for p in check_case(path) if p.severity == "error")
+    assert keys == ["line_types.chain76.diameter", "simulation.scheme"]
