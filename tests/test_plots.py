@@ -78,8 +78,8 @@ def test_network_in_a_turn_draws_each_cable_in_true_projection():
 def test_still_body_is_flat_not_blown_up_to_fill_the_axis():
     ds = network_result(turn=False, still_body_noise=1e-9)
     fig = plot_run(ds)
-    height = _axes(fig, "body height")
-    low, high = height.get_ylim()
+    depth = _axes(fig, "body depth")                             # drawn down: its y axis inverted
+    low, high = sorted(depth.get_ylim())
     assert high - low >= MIN_HEIGHT_SPAN
     tension = _axes(fig, "tension")
     low, high = tension.get_ylim()

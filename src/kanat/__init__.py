@@ -15,7 +15,7 @@ offsets(case, direction, to, steps=20) -> xarray.Dataset
 read_result(path) -> xarray.Dataset
     A result file.
 report(result | path | study_dir, html_path) -> Path
-    One self-contained HTML page (:mod:`kanat.report`, whose package is callable).
+    One self-contained HTML page (:func:`kanat.report.report`).
 design(case, output=None) -> DesignResult
     The design checks of a mooring: ``utilisation`` and ``fatigue`` tables (pandas), intact and
     damaged, under API RP 2SK (:mod:`kanat.design_checks`).
@@ -35,6 +35,11 @@ _API = ("load_case", "solve_statics", "offsets", "simulate", "run", "read_result
 __all__ = ["__version__", *_API, "report", "Coupling", "design"]
 _FREQUENCY = ("linearize", "modes")     # the lumped system about its equilibrium (kanat.frequency)
 __all__ += list(_FREQUENCY)
+
+
+import kanat.report as _report_package  # noqa: E402 - binds the package first (it imports nothing) ...
+
+report = _report_package.report          # ... then the name to the plain function, for good
 
 
 def __getattr__(name):
@@ -58,8 +63,4 @@ def __getattr__(name):
         from kanat.design_checks import design
 
         return design
-    if name == "report":
-        import kanat.report  # noqa: F401 - binds the (callable) package kanat.report
-
-        return globals()["report"]
     raise AttributeError(f"module 'kanat' has no attribute {name!r}")

@@ -1,16 +1,18 @@
 """kanat's front door: load a case, solve its statics, simulate it, read a result.
 
->>> import kanat
->>> case = kanat.load_case("examples/speed_step_2d.yaml")
->>> longer = case.replace({"cables[0].length": 1200})          # a validated new case
->>> ds = kanat.simulate(longer)                                  # in memory, no file
->>> ds.tension.sel(time=600).plot(x="s")                         # doctest: +SKIP
-
 Every model runs through one table, :data:`MODELS`: the steady models (``statics``,
 ``pitch``) return their dataset at once; the dynamic ones (``continuum``, ``lumped``) are
 built here and driven by the one run loop of :mod:`kanat.dynamics`, their outputs going
 to an in-memory recorder or streamed to a netCDF file with checkpoints. The command line
 and the parameter studies call these functions and nothing below them.
+
+Examples
+--------
+>>> import kanat
+>>> case = kanat.load_case("examples/speed_step_2d.yaml")
+>>> longer = case.replace({"cables[0].length": 1200})          # a validated new case
+>>> ds = kanat.simulate(longer)                                  # in memory, no file
+>>> ds.tension.sel(time=600).plot(x="s")                         # doctest: +SKIP
 """
 from __future__ import annotations
 

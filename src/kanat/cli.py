@@ -23,6 +23,7 @@ from pathlib import Path  # noqa: E402
 from typing import Optional  # noqa: E402
 
 import typer  # noqa: E402
+from typer.core import TyperCommand  # noqa: E402
 
 from kanat.cli_common import (LOG_FILE_HELP, MAX_NODE_STEPS_HELP, MAX_OUTPUT_HELP, QUIET_HELP, VERBOSE_HELP,  # noqa: E402
                               CONTEXT, console, describe, fail, load, print_problems, set_max_node_steps,
@@ -112,13 +113,40 @@ def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
     show(f"wrote {output}")
 
 
-@app.command()
-def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or MoorDyn input)."),
-        output: Path = typer.Option(..., "-o", "--output", help="Result file (netCDF)."),
+SCHEME_HELP = "Override simulation.scheme"
+
+
+def scheme_help() -> str:
+    """``--scheme``'s help: the schemes of each dynamic model, from their registries
+    (:func:`kanat.api.schemes`)."""
+    from kanat.api import schemes
+
+    by_model: dict[str, list[str]] = {}
+    for name, cls in schemes().items():
+        by_model.setdefault(cls.model, []).append(name)
+    listed = "; ".join(f"{model}: {', '.join(sorted(names))}" for model, names in sorted(by_model.items()))
+    return f"{SCHEME_HELP} ({listed})."
+
+
+class _RunCommand(TyperCommand):
+    """``kanat run``: its ``--scheme`` help lists the schemes when the help is shown (the
+    registries import the models' kernels, too slow for every start of the command line)."""
+
+    def format_help(self, ctx, formatter):
+        for param in self.params:
+            if param.name == "scheme":
+                param.help = scheme_help()
+        super().format_help(ctx, formatter)
+
+
+@app.command(cls=_RunCommand)
+def run(ctx: typer.Context,
+        case: Optional[Path] = typer.Argument(None, help="Case file (YAML or MoorDyn input)."),
+        output: Optional[Path] = typer.Option(None, "-o", "--output", help="Result file (netCDF); required."),
         from_result: Optional[Path] = typer.Option(None, "--from-result",
                                                    help="Run again the case embedded in this result file."),
         plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the result to this PNG."),
-        scheme: Optional[str] = typer.Option(None, "--scheme", help="Override simulation.scheme."),
+        scheme: Optional[str] = typer.Option(None, "--scheme", help=SCHEME_HELP + " (kanat run -h lists them)."),
         resume: bool = typer.Option(False, "--resume", help="Continue a killed run from its checkpoint."),
         checkpoint_every: Optional[int] = typer.Option(None, "--checkpoint-every", min=1,
                                                        help="Checkpoint every N output steps (N >= 1; "
@@ -130,8 +158,12 @@ def run(case: Optional[Path] = typer.Argument(None, help="Case file (YAML or Moo
     """Run any case with the model its file names, writing the result to OUTPUT as it goes."""
     from kanat import api
 
+    if case is None and from_result is None:               # named before any missing option
+        ctx.fail("Missing argument 'CASE': give a case file (YAML or MoorDyn input), or --from-result RESULT.nc.")
+    if output is None:
+        ctx.fail("Missing option '-o' / '--output': the result file (netCDF) to write.")
     set_max_node_steps(max_node_steps)
-    if (case is None) == (from_result is None):
+    if case is not None and from_result is not None:
         fail(KanatError("give a case file, or --from-result RESULT.nc (not both)"), debug, "nothing to run")
     if from_result is not None:
         try:

@@ -30,6 +30,7 @@ from ..model import Case
 from ..model.checks import physical_checks
 from ..model.support import unsupported
 from ..model.validation import number_problems, validate_data
+from .case_partial import checks_past_errors
 from .case_source import read_document
 from .case_read import read_case_text
 
@@ -47,6 +48,8 @@ def _check(text: str, file: str | None, max_output_bytes: float | str | None = N
     if case is not None:
         problems += _for_solver(physical_checks(case, file, doc.lines, max_output_bytes), case, solver,
                                 file, doc.lines)
+    elif not any(p.severity == "error" for p in problems if p not in found):
+        problems += checks_past_errors(doc.data, file, doc.lines, max_output_bytes)  # every problem at once
     return case, sorted(problems, key=lambda p: p.line or 0)
 
 

@@ -1,21 +1,19 @@
 """Pictures and HTML pages of results and studies.
 
-The package is itself the public API's ``report`` function::
+The public API's ``report`` is the function :func:`report` here::
 
     import kanat
     ds = kanat.simulate(kanat.load_case("examples/speed_step_2d.yaml"))
     kanat.report(ds, "speed_step.html")          # or a result file, or a study directory
 
-``kanat.report(source, html_path, ...)`` is :func:`kanat.report.html_report.write_report`.
-A package cannot also be a plain function of its parent (``import kanat.report`` binds the
-name ``kanat.report`` to the package), so the package's module object is made callable
-(Python allows a module's ``__class__`` to be a subclass of ``ModuleType``); everything in
-its modules stays importable as usual.
+``kanat.report`` is that plain function, not this package: ``import kanat`` imports the
+package (which imports nothing else) and then binds the name ``report`` to the function, so a
+later ``import kanat.report.run_plot`` finds the package already loaded and leaves the name
+alone. The package's modules are imported with ``from``
+(``from kanat.report.run_plot import plot_run``, ``from kanat.report import html_report``);
+``import kanat.report.html_report as h`` does not work, since its name lookup meets the function.
 """
 from __future__ import annotations
-
-import sys
-import types
 
 
 def report(source, output, nodes=None, window=None, bodies=None):
@@ -38,13 +36,3 @@ def report(source, output, nodes=None, window=None, bodies=None):
     from kanat.report.html_report import write_report
 
     return write_report(source, output, nodes, window, bodies)
-
-
-class _CallableModule(types.ModuleType):
-    """This package's module type: calling the package calls :func:`report`."""
-
-    def __call__(self, source, output, nodes=None, window=None, bodies=None):
-        return report(source, output, nodes, window, bodies)
-
-
-sys.modules[__name__].__class__ = _CallableModule

@@ -19,6 +19,7 @@ from kanat.errors import KanatError
 from kanat.report.geometry import embedded_case
 from kanat.report.html import Page, frame_table, header, macros, plot_text, shown, table, with_units
 from kanat.report.html_animation import animation_section, thin
+from kanat.report.kinds import body_histories, choose
 
 STATISTICS = ("min", "max", "mean", "std", "mpm")
 """Columns of the node and body statistics tables (``mpm`` shown as MPM)."""
@@ -75,6 +76,9 @@ def _statistics(ds: xr.Dataset, chosen: xr.Dataset, nodes, window):
 
 
 def _histories(page: Page, ds: xr.Dataset, nodes):
+    """The tensions at the chosen nodes; then what matters for the kind of system
+    (:mod:`kanat.report.kinds`, as ``kanat run --plot``): its key tensions, the bodies'
+    depth or surge, heave and pitch, and the vessel's speed."""
     import plotly.graph_objects as go
     from plotly.subplots import make_subplots
 
@@ -87,18 +91,25 @@ def _histories(page: Page, ds: xr.Dataset, nodes):
     tension.update_layout(title={"text": "tension at the chosen nodes"}, xaxis_title="time [s]",
                           yaxis_title="tension [kN]", height=400)
     first = page.figure(tension, "plot-tension-history")
+    choice = choose(ds)
+    histories = body_histories(ds, choice.kind)
     case = embedded_case(ds)
     to_unit, unit = case.vessel.speed_as_given(1.0) if case is not None else (1.0, "m/s")
-    motion = make_subplots(rows=1, cols=2, subplot_titles=("body depth [m]", f"vessel speed over ground [{unit}]"))
-    for k, name in enumerate(ds["body"].values if ds.sizes.get("body", 0) else []):
-        motion.add_trace(go.Scatter(x=t, y=-ds["body_position"].values[keep, k, 2], name=plot_text(f"{name} depth")),
-                         1, 1)
+    titles = (f"{choice.tension_title} [kN]", *(f"body {q} [{u}]" for q, (u, _) in histories.items()),
+              f"vessel speed over ground [{unit}]")
+    motion = make_subplots(rows=1, cols=len(titles), subplot_titles=titles)
+    for label, node in choice.ends.items():
+        motion.add_trace(go.Scatter(x=t, y=ds["tension"].values[keep, node] / 1e3, name=plot_text(label)), 1, 1)
+    for col, (quantity, (_, values)) in enumerate(histories.items(), start=2):
+        for k, name in enumerate(ds["body"].values):
+            motion.add_trace(go.Scatter(x=t, y=values[keep, k], name=plot_text(f"{name} {quantity}")), 1, col)
+        if quantity == "depth":
+            motion.update_yaxes(autorange="reversed", row=1, col=col)
     v = ds["vessel_position"].values
     speed = np.hypot(*np.gradient(v[:, :2], ds["time"].values, axis=0).T) if len(v) > 1 else np.zeros(len(v))
-    motion.add_trace(go.Scatter(x=t, y=speed[keep] * to_unit, name="vessel speed"), 1, 2)
-    motion.update_yaxes(autorange="reversed", row=1, col=1)
+    motion.add_trace(go.Scatter(x=t, y=speed[keep] * to_unit, name="vessel speed"), 1, len(titles))
     motion.update_xaxes(title_text="time [s]")
-    motion.update_layout(height=380)
+    motion.update_layout(height=380, title={"text": f"what matters for a {choice.kind} system"})
     return macros("result.html.j2").plots([first, page.figure(motion, "plot-body-history")])
 
 

@@ -1,21 +1,26 @@
 """The picture of a dynamic result (``kanat run --plot``): histories and cable snapshots.
 
-Top: the tension at the first node (``s = 0``) of every cable against time, and the height
-of every body, each on its own axis with a least span (:func:`kanat.report.geometry.at_least`).
-Bottom: the cables at a few evenly spaced times in elevation (x–z) and, for a run that
-leaves the x–z plane, in plan (x–y), each cable its own line, bodies marked, equal scales
-on both axes. Positions are drawn in the global frame when the tow point stays put, and in
-a frame translating with the tow point when it moves (so a long tow's snapshots overlay).
+What is drawn depends on the kind of system (:mod:`kanat.report.kinds`). Top left: the
+tensions that matter (towed systems and networks: the top tension, at the vessel; moored
+systems: the fairlead tensions, never the anchor ends). Top right: the bodies' depth (towed
+systems and networks) or their surge, heave and pitch (moored systems), each on its own axis
+with a least span (:func:`kanat.report.geometry.at_least`). Bottom: the cables at a few evenly
+spaced times in elevation (x–z) and, for a run that leaves the x–z plane, in plan (x–y), with
+equal scales on both axes. A single cable is coloured by time; a system of several cables has
+each cable in its own colour, named in the legend, the latest output solid and the earlier
+ones faint. Positions are drawn in the global frame when the tow point stays put, and in a
+frame translating with the tow point when it moves (so a long tow's snapshots overlay).
 
-Every line that shows geometry carries a ``gid`` naming what it is
-(``elevation/CABLE/OUTPUT``, ``plan/CABLE/OUTPUT``, ``elevation-body/BODY/OUTPUT``), so a
-test can read back what was drawn.
+Every line carries a ``gid`` naming what it is (``tension/LABEL``, ``depth/BODY``,
+``surge/BODY``, ``heave/BODY``, ``pitch/BODY``, ``elevation/CABLE/OUTPUT``,
+``plan/CABLE/OUTPUT``, ``elevation-body/BODY/OUTPUT``), so a test can read back what was drawn.
 """
 from __future__ import annotations
 
 from pathlib import Path
 
 import numpy as np
+from matplotlib import colormaps
 from matplotlib.figure import Figure
 
 from kanat.report.geometry import (
@@ -30,6 +35,7 @@ from kanat.report.geometry import (
     surface_and_seabed,
     tow_frame,
 )
+from kanat.report.kinds import Choice, body_histories, choose
 
 DPI = 110
 STYLES = ("-", "--", "-.", ":")
@@ -39,32 +45,45 @@ SNAPSHOT_COLOURS = "viridis"
 """Colour map of the snapshot times (the history panels use the C0, C1, ... cycle per cable)."""
 VIEWS = {"elevation": (0, 2), "plan": (0, 1)}
 """The projections drawn: name -> the two position components (x–z, x–y)."""
+FADED = 0.35
+"""Opacity of the earlier snapshots of a system drawn by cable (the latest is opaque)."""
+MIN_ANGLE_SPAN = 2.0
+"""Least span of an angle axis [deg]: a body that does not pitch stays a flat line."""
 
 
-def _histories(ax_tension, ax_height, ds, nodes) -> None:
-    time = ds["time"].values
-    tension = ds["tension"].values
-    for k, (name, index) in enumerate(nodes.items()):
-        ax_tension.plot(time, tension[:, index[0]] / KN, lw=1.4, color=f"C{k}", ls=STYLES[k % len(STYLES)],
-                        label=f"{name} at s = 0",
-                        gid=f"tension/{name}")
-    at_least(ax_tension, "y", tension[:, [i[0] for i in nodes.values()]] / KN, relative=MIN_RELATIVE_SPAN)
-    ax_tension.set(xlabel="time [s]", ylabel="tension [kN]", title="tension at the first end of each cable")
-    ax_tension.grid(alpha=0.3)
-    ax_tension.legend(fontsize=8, loc="best")
-    if ax_height is None:
-        return
-    heights = ds["body_position"].values[:, :, 2]
+def _style(by_cable: bool, k: int, name: str, rank: int, count: int, latest: bool, t: float):
+    """Colour and legend label of cable ``k`` at snapshot ``rank`` of ``count``."""
+    if by_cable:
+        return f"C{k}", (name if latest else None)
+    return colormaps[SNAPSHOT_COLOURS](0.9 * rank / max(count - 1, 1)), (f"t = {t:g} s" if k == 0 else None)
+
+
+def _tensions(ax, ds, choice: Choice) -> None:
+    time, tension = ds["time"].values, ds["tension"].values
+    for k, (label, node) in enumerate(choice.ends.items()):
+        ax.plot(time, tension[:, node] / KN, lw=1.4, color=f"C{k}", ls=STYLES[k % len(STYLES)], label=label,
+                gid=f"tension/{label}")
+    at_least(ax, "y", tension[:, list(choice.ends.values())] / KN, relative=MIN_RELATIVE_SPAN)
+    ax.set(xlabel="time [s]", ylabel="tension [kN]", title=choice.tension_title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
+
+
+def _body_history(ax, ds, quantity: str, unit: str, values, last: bool) -> None:
+    """One body quantity (:func:`kanat.report.kinds.body_histories`) of every body against time."""
     for k, name in enumerate(ds["body"].values):
-        ax_height.plot(time, heights[:, k], lw=1.4, color=f"C{k}", ls=STYLES[k % len(STYLES)], label=str(name),
-                       gid=f"height/{name}")
-    at_least(ax_height, "y", heights, minimum=MIN_HEIGHT_SPAN)
-    ax_height.set(xlabel="time [s]", ylabel="z [m] (up; 0 at the mean surface)", title="body height")
-    ax_height.grid(alpha=0.3)
-    ax_height.legend(fontsize=8, loc="best")
+        ax.plot(ds["time"].values, values[:, k], lw=1.4, color=f"C{k}", ls=STYLES[k % len(STYLES)],
+                label=str(name), gid=f"{quantity}/{name}")
+    at_least(ax, "y", values, minimum=MIN_HEIGHT_SPAN if unit == "m" else MIN_ANGLE_SPAN)
+    ax.set(ylabel=f"{quantity} [{unit}]", title=f"body {quantity}")
+    if quantity == "depth":
+        ax.invert_yaxis()
+    ax.set_xlabel("time [s]" if last else "")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
 
 
-def draw_view(ax, ds, view: str, picks, frame, nodes, fixed) -> None:
+def draw_view(ax, ds, view: str, picks, frame, nodes, fixed, by_cable: bool = False) -> None:
     """Cables, bodies, tow point and anchors of outputs ``picks`` projected on ``view``.
 
     Parameters
@@ -80,21 +99,25 @@ def draw_view(ax, ds, view: str, picks, frame, nodes, fixed) -> None:
         :func:`kanat.report.geometry.cable_nodes`.
     fixed : dict
         :func:`kanat.report.geometry.fixed_points`.
+    by_cable : bool
+        Each cable its own colour, named in the legend, the latest output drawn solid and the
+        earlier ones faint; else every cable in the colour of its output's time.
     """
     a, b = VIEWS[view]
     time, position = ds["time"].values, ds["position"].values
     bodies = ds["body"].values if "body" in ds.dims else []
-    from matplotlib import colormaps
-
-    colours = colormaps[SNAPSHOT_COLOURS](np.linspace(0.0, 0.9, len(picks)))
-    for colour, i in zip(colours, picks):
+    for rank, i in enumerate(picks):
         xyz = position[i] - frame.shift[i]
+        latest = rank == len(picks) - 1
         for k, (name, index) in enumerate(nodes.items()):
-            ax.plot(xyz[index, a], xyz[index, b], color=colour, lw=1.3,
-                    label=f"t = {time[i]:g} s" if k == 0 else None, gid=f"{view}/{name}/{i}")
+            colour, label = _style(by_cable, k, name, rank, len(picks), latest, time[i])
+            ax.plot(xyz[index, a], xyz[index, b], color=colour, lw=1.6 if latest or not by_cable else 0.9,
+                    alpha=1.0 if latest or not by_cable else FADED, ls=STYLES[k % len(STYLES)] if by_cable else "-",
+                    label=label, gid=f"{view}/{name}/{i}")
         for k, name in enumerate(bodies):
             at = ds["body_position"].values[i, k] - frame.shift[i]
-            ax.plot(at[a], at[b], "o", ms=7, mfc=colour, mec="k", gid=f"{view}-body/{name}/{i}")
+            face = "white" if by_cable else colormaps[SNAPSHOT_COLOURS](0.9 * rank / max(len(picks) - 1, 1))
+            ax.plot(at[a], at[b], "o", ms=7, mfc=face, mec="k", gid=f"{view}-body/{name}/{i}")
     if fixed["towed"]:
         tow = ds["vessel_position"].values[picks] - frame.shift[picks]
         ax.plot(tow[:, a], tow[:, b], "v", ms=9, color="k", label="tow point", gid=f"{view}-tow")
@@ -104,17 +127,21 @@ def draw_view(ax, ds, view: str, picks, frame, nodes, fixed) -> None:
     ax.grid(alpha=0.3)
 
 
-def _geometry(ax_elevation, ax_plan, ds, snapshots: int, nodes) -> None:
+def _geometry(ax_elevation, ax_plan, ds, snapshots: int, nodes, by_cable: bool) -> None:
     picks = snapshot_indices(ds.sizes["time"], snapshots)
     frame, fixed = tow_frame(ds), fixed_points(ds)
-    draw_view(ax_elevation, ds, "elevation", picks, frame, nodes, fixed)
+    draw_view(ax_elevation, ds, "elevation", picks, frame, nodes, fixed, by_cable)
     z = ds["position"].values[picks][..., 2]
     surface_and_seabed(ax_elevation, fixed["depth"], float(z.min()), float(np.ptp(z)))
-    ax_elevation.set(xlabel=frame.label("x"), ylabel="z [m] (up)", title="elevation (x–z)")
+    when = (f": t = {ds['time'].values[picks[-1]]:g} s solid, {len(picks) - 1} earlier outputs faint"
+            if by_cable and len(picks) > 1 else "")
+    ax_elevation.set(xlabel=frame.label("x"), ylabel="z [m] (up)", title=f"elevation (x–z){when}")
     ax_elevation.legend(fontsize=8, loc="best")
     if ax_plan is not None:
-        draw_view(ax_plan, ds, "plan", picks, frame, nodes, fixed)
+        draw_view(ax_plan, ds, "plan", picks, frame, nodes, fixed, by_cable)
         ax_plan.set(xlabel=frame.label("x"), ylabel=frame.label("y") + " (port)", title="plan (x–y), seen from above")
+        if by_cable:
+            ax_plan.legend(fontsize=8, loc="best")
 
 
 def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
@@ -137,20 +164,23 @@ def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
         from kanat.report.statics_plot import plot_statics
 
         return plot_statics(ds, path)
-    nodes = cable_nodes(ds)
-    has_bodies = "body" in ds.dims and ds.sizes["body"] > 0
+    nodes, choice = cable_nodes(ds), choose(ds)
+    histories = body_histories(ds, choice.kind)
     planar = is_planar(ds)
-    fig = Figure(figsize=(12, 8.5), layout="constrained")
-    grid = fig.add_gridspec(2, 2, height_ratios=[1, 1.25])
-    ax_tension = fig.add_subplot(grid[0, 0] if has_bodies else grid[0, :])
-    ax_height = fig.add_subplot(grid[0, 1]) if has_bodies else None
+    fig = Figure(figsize=(12, 8.5 if len(histories) < 2 else 10), layout="constrained")
+    grid = fig.add_gridspec(2, 2, height_ratios=[1 if len(histories) < 2 else 1.4, 1.25])
+    _tensions(fig.add_subplot(grid[0, 0] if histories else grid[0, :]), ds, choice)
+    if histories:
+        cells = grid[0, 1].subgridspec(len(histories), 1)
+        axes = [fig.add_subplot(cells[k]) for k in range(len(histories))]
+        for k, (ax, (quantity, (unit, values))) in enumerate(zip(axes, histories.items())):
+            _body_history(ax, ds, quantity, unit, values, last=k == len(histories) - 1)
     ax_elevation = fig.add_subplot(grid[1, :] if planar else grid[1, 0])
     ax_plan = None if planar else fig.add_subplot(grid[1, 1])
-    _histories(ax_tension, ax_height, ds, nodes)
-    _geometry(ax_elevation, ax_plan, ds, snapshots, nodes)
+    _geometry(ax_elevation, ax_plan, ds, snapshots, nodes, choice.by_cable)
     attrs = ds.attrs
-    fig.suptitle(f"{attrs.get('case_name', '')} — {attrs.get('model', '')}, {attrs.get('scheme', '')}, "
-                 f"status {attrs.get('status', '?')}")
+    fig.suptitle(f"{attrs.get('case_name', '')} ({choice.kind}) — {attrs.get('model', '')}, "
+                 f"{attrs.get('scheme', '')}, status {attrs.get('status', '?')}")
     if path is not None:
         fig.savefig(Path(path), dpi=DPI)
     return fig
