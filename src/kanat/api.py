@@ -415,6 +415,9 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     if isinstance(start, Case):
         require_supported(start, name)
     if name == "lumped" and any(fix.release_at is not None for c in case.cables for fix in (c.end_a, c.end_b)):
+        if resume:
+            raise KanatError("resume: a run with release_at writes its result at the end and keeps no "
+                             "checkpoint; run it again")
         return _run_released(case, scheme, output, progress, observers, start)
     build = functools.partial(entry.build, start=start) if isinstance(entry, Dynamic) else None
     entry = Dynamic(build) if build is not None else entry
