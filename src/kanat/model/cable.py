@@ -339,10 +339,12 @@ class Cable(KanatModel):
                         "unstretched arclength s from 'from', in order of s")
     from_: CableEnd = Field(alias="from", description="first end (s = 0)")
     to: CableEnd = Field(description="second end (s = length)")
-    end_a: EndFixity = Field(EndFixity(), description="bending at the 'from' end: {clamped: true} "
-                             "holds the line's direction there (default pinned)")
-    end_b: EndFixity = Field(EndFixity(), description="bending at the 'to' end: {clamped: true} "
-                             "holds the line's direction there (default pinned)")
+    end_a: EndFixity = Field(EndFixity(), description="the 'from' end: {clamped: true} "
+                             "holds the line's direction there (with bending; default pinned); "
+                             "{release_at: t} lets the line go at time t")
+    end_b: EndFixity = Field(EndFixity(), description="the 'to' end: {clamped: true} "
+                             "holds the line's direction there (with bending; default pinned); "
+                             "{release_at: t} lets the line go at time t")
 
     @field_validator("line_type")
     @classmethod
