@@ -18,11 +18,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.errors import CaseError, Problem
+from kanat.io.provenance import case_sha256, case_yaml
 from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem
 
 TIME_RTOL = 1e-9      # relative tolerance of a release time on the output grid
 VESSEL_VARIABLES = ("vessel_position", "vessel_heading", "vessel_pitch")
+SUMMED_ATTRIBUTES = ("steps", "step_cuts", "force_evaluations", "explicit_steps", "snap_events", "wall_time_s",
+                     "solver_time_s", "setup_time_s", "compile_time_s")
 
 
 @dataclass(frozen=True)
@@ -155,7 +158,8 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
         Outputs of every phase, times shifted by the phase's start (a later phase's first output,
         at the release, is the earlier phase's last and is dropped); an anchor let go has no
         ``anchor_force`` (NaN) after its release; the vessel's outputs are the case's vessel at the
-        run's times; snap events on the run's clock; the last phase's attributes.
+        run's times; snap events on the run's clock; the last phase's attributes but for the case
+        itself (``case_yaml``, ``case_sha256``: the case as written, with its releases).
     """
     import xarray as xr
 
@@ -171,7 +175,11 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
     static = first[[v for v in first.data_vars if "time" not in first[v].dims and "event" not in first[v].dims]]
     out = xr.merge([static, timed, event], join="outer", compat="override")
     out = _vessel_outputs(case, out)
-    out.attrs = dict(last.attrs)
+    out.attrs = {**last.attrs, "case_sha256": case_sha256(case), "case_yaml": case_yaml(case)}   # the run's case
+    for key in SUMMED_ATTRIBUTES:                  # counts and times of the whole run, not its last phase
+        values = [ds.attrs.get(key) for _, ds in parts]
+        if all(isinstance(v, (int, float, np.integer, np.floating)) for v in values):
+            out.attrs[key] = sum(values)
     for name in ("s", "cable", "segment_cable", "segment_length", "cable_name"):
         if name in first.coords:
             out = out.assign_coords({name: first[name]})
