@@ -149,3 +149,20 @@ def test_a_run_with_a_release_writes_the_whole_run(fall, tmp_path):
     assert "release_at: 5" in ds.attrs["case_yaml"] and "phase from t = 5 s" in ds.attrs["release_phases"]
     with pytest.raises(kanat.errors.KanatError, match="resume"):
         quietly(kanat.run, fall, output=tmp_path / "again.nc", resume=True)
+
+
+@pytest.mark.slow
+def test_lazy_wave_hung_in_air_holds_whoi_top_force():
+    """larsen.cbl: the riser's last 20 m are in air (weight in air, no buoyancy: 7.3 kN more than
+    wet), and WHOI's file gives the static force at the platform, (-35.773, 170.35) kN."""
+    out = quietly(kanat.run, whoi("larsen"))
+    assert out.ok, out.status
+    last = out.dataset.isel(time=-1)
+    x, tension = last.position.values, last.segment_tension.values
+    along = (x[-2] - x[-1]) / np.linalg.norm(x[-2] - x[-1])
+    held = -tension[-1] * along                                   # the platform's force on the line
+    assert held[2] == pytest.approx(170.35e3, rel=0.02)            # +0.8 %
+    assert held[0] == pytest.approx(-35.773e3, rel=0.08)           # -6.0 %
+    assert x[-1, 2] == pytest.approx(20.0) and (x[-4:, 2] > 0).all()   # the top 20 m in air
+    speed = np.abs(last.velocity.values).max()
+    assert speed < 0.01                                            # settled [m/s]
