@@ -36,7 +36,7 @@ class Phase:
     ----------
     start : float
         The run's time at the phase's start [s] (the phase's own clock starts at 0).
-    case : dict
+    changes : dict
         The phase's changes to the case (:meth:`kanat.model.Case.replace`): the ends released
         before ``start`` made ``free``, ``duration`` the phase's length.
     released : tuple of str
@@ -44,7 +44,7 @@ class Phase:
     """
 
     start: float
-    case: dict
+    changes: dict
     released: tuple[str, ...] = ()
 
 
@@ -95,7 +95,7 @@ def phase_case(case, phase: Phase, before=None):
     phase : Phase
     before : xarray.Dataset or None
     """
-    changes = dict(phase.case)
+    changes = dict(phase.changes)
     if before is not None:
         last = before.isel(time=-1)
         for k, name in enumerate(last.body.values if "body" in last.dims else ()):
@@ -125,6 +125,11 @@ def _check(case, events) -> None:
             problems.append(Problem(where, f"release_at {t:g} s is not a multiple of the output interval "
                                            f"{sim.output_interval:g} s; release on an output time"))
     first = events[0][0]
+    rigid = [name for name, body in case.bodies.items() if body.dof == 6]
+    if rigid:
+        problems.append(Problem(("bodies", rigid[0], "dof"), "a body with dof: 6 and a release: a phase starts "
+                                "from the last output of the one before, which does not keep a rigid body's "
+                                "rotation rates"))
     if env.waves is not None:
         problems.append(Problem(("environment", "waves"), "waves with a release: a phase after a release "
                                 "would start the waves over; leave the waves out or the release"))
