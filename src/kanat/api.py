@@ -433,7 +433,9 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
 def _run_released(case: Case, scheme, output, progress, observers, start) -> Outcome:
     """:func:`run` of a lumped case with ends released at a time: its phases one after the other,
     each from the last output of the one before (:mod:`kanat.lumped.release`), joined on the run's
-    clock. The joined result is written to ``output`` at the end (no checkpoints, no resume)."""
+    clock. The joined result is written to ``output`` at the end (no checkpoints, no resume); the
+    ``observers`` and the returned summary see each phase on its own clock (``progress`` is told
+    the run's time)."""
     from kanat.lumped import release
 
     release.refuse_start(start)
