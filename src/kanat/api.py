@@ -416,6 +416,11 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
         raise KanatError(f"start: model '{name}' solves a steady state; start applies to dynamic runs")
     if isinstance(start, Case):
         require_supported(start, name)
+    if name == "lumped" and any(fix.release_at is not None for c in case.cables for fix in (c.end_a, c.end_b)):
+        if resume:
+            raise KanatError("resume: a run with release_at writes its result at the end and keeps no "
+                             "checkpoint; run it again")
+        return _run_released(case, scheme, output, progress, observers, start)
     build = functools.partial(entry.build, start=start) if isinstance(entry, Dynamic) else None
     entry = Dynamic(build) if build is not None else entry
     if output is None:
@@ -425,6 +430,44 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     output = check_output_file(output)
     with OutputLock(output):                    # a second run on this output is refused, not interleaved
         return _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, observers, method)
+
+
+def _run_released(case: Case, scheme, output, progress, observers, start) -> Outcome:
+    """:func:`run` of a lumped case with ends released at a time: its phases one after the other,
+    each from the last output of the one before (:mod:`kanat.lumped.release`), joined on the run's
+    clock. The joined result is written to ``output`` at the end (no checkpoints, no resume); the
+    ``observers`` and the returned summary see each phase on its own clock (``progress`` is told
+    the run's time)."""
+    from kanat.lumped import release
+
+    release.refuse_start(start)
+    parts, texts, summary = [], [], None
+    for phase in release.phases(case):
+        start = parts[-1][1] if parts else None
+        outcome = run(release.phase_case(case, phase, start), scheme=scheme, progress=_shifted(progress, phase.start),
+                      observers=observers, start=start)
+        summary = outcome.summary
+        parts.append((phase, outcome.dataset))
+        let_go = f" after releasing {', '.join(phase.released)} at t = {phase.start:g} s" if phase.released else ""
+        texts.append(f"phase from t = {phase.start:g} s{let_go}: {outcome.status}")
+        if not outcome.ok:
+            break
+    dataset = release.join(case, parts)
+    dataset.attrs["release_phases"] = "; ".join(texts)
+    status = dataset.attrs.get("status", summary.status)
+    if output is not None:
+        from kanat.io.results import write_result
+
+        write_result(dataset, output)
+    text = "\n".join([*texts, summary.summary()])
+    return Outcome(status, text, dataset, None if output is None else Path(output), summary)
+
+
+def _shifted(progress, start: float):
+    """``progress`` told the run's time in a phase that starts at ``start``."""
+    if progress is None:
+        return None
+    return lambda t, info: progress(t + start, info)
 
 
 def _check_checkpoint_every(every) -> None:

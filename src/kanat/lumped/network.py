@@ -518,6 +518,9 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
     buoys = [k for k, name in enumerate(body_names) if case.bodies[name].surface_buoy is not None]
     cols = _element_arrays(case, rows, laws, rho, g)
     area, weight = _contact_arrays(n, cols, node_force)
+    for name, body in case.bodies.items():         # a point body's own bearing area (seabed_area)
+        if name in b.named and body.dof == 3:
+            area[b.named[name]] += body.seabed_area
     names, s, index, seg_cable, first_el = [], [], [], [], []
     for (nodes, cable, grid), cn in zip(rows, cable_nodes):
         first_el.append(len(seg_cable))

@@ -83,6 +83,9 @@ class Body(KanatModel):
         Buoyancy minus weight [N]; negative sinks.
     drag_area : float
         C_D S [m^2] (3-DOF bodies; 6-DOF bodies use ``drag_areas``).
+    seabed_area : float
+        Bearing area on the seabed [m^2] (3-DOF bodies): the contact pressure of
+        :mod:`kanat.physics.contact` acts on it where the body's node is below the seabed.
     added_mass : float
         [kg] (3-DOF bodies; 6-DOF bodies use ``added_mass_matrix``).
     force : tuple of 3 float
@@ -108,6 +111,12 @@ class Body(KanatModel):
     drag_area: float = quantity(0.0, unit="m^2", ge=0)
     added_mass: float = quantity(0.0, unit="kg", ge=0)
     force: Vector3 = quantity(ZERO3, unit="N")
+    seabed_area: float = quantity(
+        0.0, unit="m^2", ge=0,
+        description="dof 3: the body's bearing area on the seabed, on which environment.seabed's contact "
+                    "pressure (stiffness x penetration + damping) acts where the body reaches the seabed: a "
+                    "sinker or an anchor dropped to the bottom (lumped model); 0: the body's node touches "
+                    "the seabed only on its lines' contact area")
     spreading_force: float = quantity(
         0.0, unit="N", description="otter board force F0, horizontal and perpendicular to the "
                                    "vessel heading, positive to port (lumped model)")
@@ -181,6 +190,9 @@ class Body(KanatModel):
                 raise ValueError(f"{', '.join(used)} {verb} for rigid bodies: add dof: 6 "
                                  "(a 3-DOF body is a point)")
             return self
+        if self.seabed_area > 0.0:
+            raise ValueError("seabed_area is for point bodies (dof: 3); a dof: 6 body's seabed contact is not "
+                             "modelled")
         self._check_rigid()
         if self.buoyancy_at is not None and tuple(self.center_of_buoyancy) != ZERO3:
             raise ValueError("give either buoyancy_at or center_of_buoyancy, not both")

@@ -96,7 +96,7 @@ class CableEnd(KanatModel):
 
 
 class EndFixity(KanatModel):
-    """How a cable end holds the line's direction (with ``bending_stiffness``).
+    """How a cable end holds the line's direction (with ``bending_stiffness``), and when it lets go.
 
     Attributes
     ----------
@@ -108,6 +108,10 @@ class EndFixity(KanatModel):
         anchor, in vessel axes at a vessel end, in body axes at a body end. None: along the
         line's end element in the network's first guess (the line laid straight or sagging
         between its end positions, on the seabed where it would dip below it).
+    release_at : float or None
+        Time [s] at which a vessel or anchor end lets go of the line: from then on the end is a
+        free node, starting from the place and velocity it had (:mod:`kanat.release`). None: held
+        for the whole run.
     """
 
     clamped: bool = Field(False, description="the line leaves this end clamped: the end holds its "
@@ -117,6 +121,10 @@ class EndFixity(KanatModel):
         None, description="clamp direction from the end into the line: global at an anchor, vessel "
                           "axes at a vessel end, body axes at a body end; default: along the line's "
                           "end element in the first guess")
+    release_at: float | None = quantity(
+        None, unit="s", gt=0, description="time at which this end (the vessel or an anchor) lets go of the "
+                                          "line, which goes on from there with a free end (lumped model); "
+                                          "default: held for the whole run")
 
     @model_validator(mode="after")
     def _direction(self) -> EndFixity:
@@ -331,10 +339,12 @@ class Cable(KanatModel):
                         "unstretched arclength s from 'from', in order of s")
     from_: CableEnd = Field(alias="from", description="first end (s = 0)")
     to: CableEnd = Field(description="second end (s = length)")
-    end_a: EndFixity = Field(EndFixity(), description="bending at the 'from' end: {clamped: true} "
-                             "holds the line's direction there (default pinned)")
-    end_b: EndFixity = Field(EndFixity(), description="bending at the 'to' end: {clamped: true} "
-                             "holds the line's direction there (default pinned)")
+    end_a: EndFixity = Field(EndFixity(), description="the 'from' end: {clamped: true} "
+                             "holds the line's direction there (with bending; default pinned); "
+                             "{release_at: t} lets the line go at time t")
+    end_b: EndFixity = Field(EndFixity(), description="the 'to' end: {clamped: true} "
+                             "holds the line's direction there (with bending; default pinned); "
+                             "{release_at: t} lets the line go at time t")
 
     @field_validator("line_type")
     @classmethod
@@ -372,7 +382,19 @@ class Cable(KanatModel):
             self.__pydantic_fields_set__.discard("sections")
         self._check_attachments()
         self._distinct_ends()
+        self._releasable()
         return self
+
+    def _releasable(self) -> None:
+        for key, end in (("end_a", self.from_), ("end_b", self.to)):
+            fixity = getattr(self, key)
+            if fixity.release_at is None:
+                continue
+            if end.kind not in ("vessel", "anchor"):
+                raise ValueError(f"{key}.release_at: only a vessel or an anchor end can be released (this end "
+                                 f"is {end}); a {end.kind} end is already free to move")
+            if fixity.clamped:
+                raise ValueError(f"{key}: a released end cannot be clamped too (give release_at or clamped)")
 
     def _check_attachments(self) -> None:
         for i, item in enumerate(self.attachments):

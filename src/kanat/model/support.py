@@ -212,6 +212,12 @@ def _line_type_key(key: str, test) -> Callable[[Case], list[Use]]:
     return uses
 
 
+def _released_ends(case: Case) -> list[Use]:
+    return [(("cables", i, key, "release_at"), f" (at t = {fmt(getattr(cable, key).release_at)} s)")
+            for i, cable in enumerate(case.cables) for key in ("end_a", "end_b")
+            if getattr(cable, key).release_at is not None]
+
+
 def _clamped_ends(case: Case) -> list[Use]:
     return [(("cables", i, key, "clamped"), "") for i, cable in enumerate(case.cables)
             for key in ("end_a", "end_b") if getattr(cable, key).clamped]
@@ -422,6 +428,15 @@ FEATURES: tuple[Feature, ...] = (
             statics=YES, continuum=NO, lumped=YES,
             note={"statics": "statics solves a case with bending by the lumped model's equilibrium",
                   "continuum": "the continuum model's cable ends are pinned"}),
+    Feature("body_seabed_area", "a body's bearing area on the seabed", _body_key("seabed_area", _NONZERO),
+            statics=IGNORED, continuum=NO, lumped=YES,
+            note={"statics": "statics does not set bodies on the seabed",
+                  "continuum": "the continuum model's seabed contact is its cable's"}),
+    Feature("end_release", "a cable end released at a time", _released_ends,
+            statics=IGNORED, continuum=NO, lumped=YES, pitch=NO,
+            note={"statics": "its steady state is before the release",
+                  "continuum": "the continuum model's ends stay where the case puts them; run the lumped model",
+                  "pitch": "the pitch model holds its tow cable"}),
     Feature("max_strain", "a strain limit", _line_type_key("max_strain", _NOT_NONE),
             statics=IGNORED, continuum=YES, lumped=YES,
             note="statics reports the tensions; the dynamic models stop a run that exceeds the limit"),

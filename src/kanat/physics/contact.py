@@ -1,6 +1,7 @@
 """Seabed contact of line nodes (theory/moorings.md §3 "Seabed contact"; MoorDyn's kbot/cbot convention).
 
-Node ``n`` carries the contact area ``A_n = sum d L0 / 2`` of its elements. With the seabed's
+Node ``n`` carries the contact area ``A_n = sum d L0 / 2`` of its elements, plus the
+``seabed_area`` of a point body on it (its bearing area: an anchor or sinker that lands). With the seabed's
 upward unit normal ``nu`` and the node's penetration ``delta = (h(x, y) - z) nu_z`` (the
 normal distance below the seabed, :meth:`kanat.physics.seabed.PlaneSeabed.penetration`)::
 
