@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from ..schemes import DYNAMIC_MODELS
 from ._base import fmt
 from . import limits
 from .case import Case
@@ -80,7 +81,7 @@ def check_discretization(case: Case, out: Findings) -> None:
 def check_run_size(case: Case, out: Findings) -> None:
     """Time steps, node-steps and the estimated result size of a dynamic run."""
     sim = case.simulation
-    if sim is None or case.model not in ("continuum", "lumped"):
+    if sim is None or case.model not in DYNAMIC_MODELS:
         return
     cost = run_cost(case)
     nodes = cost.nodes
@@ -111,7 +112,7 @@ def check_run_size(case: Case, out: Findings) -> None:
 def _outputs(case: Case) -> int:
     """Outputs a dynamic run of ``case`` stores, t = 0 included (1 for a steady model)."""
     sim = case.simulation
-    if sim is None or case.model not in ("continuum", "lumped"):
+    if sim is None or case.model not in DYNAMIC_MODELS:
         return 1
     return math.floor(sim.duration / sim.output_interval * (1 + TIME_TOL)) + 1
 

@@ -22,12 +22,13 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from ..errors import CaseError, Problem
+from ..schemes import MODELS
 from ._base import fmt
 from .case import Case
 from .paths import Path, key_path, line_of
 
 YES, NO, IGNORED = "yes", "no", "ignored"
-SOLVERS = ("statics", "continuum", "lumped", "pitch")
+SOLVERS = MODELS
 """Solver names: the case models; ``statics`` also solves the steady state of a dynamic case."""
 
 Use = tuple[Path, str]
