@@ -229,7 +229,7 @@ class Case(KanatModel):
         kanat.errors.CaseWarning
             For a case that runs but probably not as meant.
         """
-        from .validation import replaced
+        from .edit import replaced
 
         return replaced(self, changes)
 

@@ -4,13 +4,16 @@ segments, result size, node-steps and the pitch problem's Fourier series."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from ..schemes import DYNAMIC_MODELS
 from ._base import fmt
 from . import limits
-from .case import Case
 from .findings import Findings, byte_size
 from .run_cost import check_node_steps, run_cost
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 TIME_TOL = 1e-6             # relative tolerance on "multiple of dt"
 

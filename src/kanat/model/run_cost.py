@@ -20,10 +20,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ..schemes import DYNAMIC_MODELS
 from . import limits
-from .case import Case
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 EXPLICIT_SCHEMES = ("rk4", "abm4")
 """Lumped schemes whose step is bounded by stability (their limits: :data:`limits.EXPLICIT_STABILITY`)."""

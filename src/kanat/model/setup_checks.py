@@ -21,14 +21,17 @@ its problems with ``out.error(path, message)``.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from ..schemes import DYNAMIC_MODELS, SCHEME_NAMES, schemes_of
 from ._base import fmt, listing, suggest
-from .case import Case
 from .environment import JonswapWaves
 from .paths import key_path
 from .support import has_drag, needs_network, single_cable
 from .vessel import Turn, start_speeds
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 ATTACHMENT_SNAP = 1e-6
 """The lumped model puts an attachment on the node within this fraction of the cable's length
