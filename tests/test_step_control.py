@@ -81,6 +81,7 @@ def test_a_partly_refused_halving_counts_every_refusal():
     assert work == Steps(1, 3, 2)                         # h and the second h/2 refused; h/2, h/4, h/4 taken
 
 
+@pytest.mark.slow
 def test_the_continuum_model_cuts_its_steps_through_the_controller():
     """A generalized-α that refuses steps longer than dt/4 (a Newton failure) runs the speed step as
     the plain scheme does at dt/4, bit for bit, with three cuts a step."""

@@ -58,8 +58,7 @@ class Case(KanatModel):
     Attributes
     ----------
     name : str
-    model : str
-        One of :data:`kanat.schemes.MODELS`.
+    model : {"statics", "continuum", "lumped", "pitch"}
     environment : Environment
     line_types : dict of str to LineType
     bodies : dict of str to Body
