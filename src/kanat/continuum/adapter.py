@@ -3,8 +3,8 @@
 :class:`ContinuumModel` wraps the planar or the spatial cable (:mod:`kanat.continuum.models`)
 and a scheme of the generalized-α family or Kaliukh & Vusatiuk's factorized schemes. It steps
 ``dt`` at a time; a step whose Newton iteration fails is cut in halves (up to
-:data:`kanat.continuum.stepper.MAX_CUTS` levels, :class:`kanat.step_control.Halving`) before the run stops with a message
-saying where and what to try. Its checks of every output:
+:data:`kanat.continuum.stepper.MAX_CUTS` levels: :class:`kanat.step_control.Halving`, the step
+control both models share) before the run stops with a message saying where and what to try. Its checks of every output:
 
 * compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
   stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``

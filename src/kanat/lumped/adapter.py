@@ -201,9 +201,9 @@ class LumpedModel:
                                           self._tensions)
         except SolverError as error:
             raise StepFailure(str(error)) from None
-        return LumpedState(scheme_state, state.snaps), Steps(taken, _count(scheme_state, "iterations")
-                                                             - _count(state.scheme, "iterations"),
-                                                             _count(scheme_state, "cuts") - _count(state.scheme, "cuts"))
+        iterations = _count(scheme_state, "iterations") - _count(state.scheme, "iterations")
+        cuts = _count(scheme_state, "cuts") - _count(state.scheme, "cuts")
+        return LumpedState(scheme_state, state.snaps), Steps(taken, iterations, cuts)
 
     def _tensions(self, scheme_state) -> np.ndarray:
         """Element tensions (m,) of a scheme state (a view of one work array)."""
