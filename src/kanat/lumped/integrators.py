@@ -7,9 +7,9 @@ Every scheme is a frozen dataclass (its fields are its parameters) with the cont
    free nodes' positions and velocities, plus the scheme's own history) — everything a
    checkpoint needs to continue exactly (:meth:`SchemeState.arrays`);
 2. ``step(system, state, h) -> state``: a new state ``h`` later; the old one is not touched;
-3. class attributes ``name``, ``model = "lumped"``, ``order``, ``explicit`` and, for
-   explicit schemes, ``stability_limit``: the largest ``omega h`` on the imaginary axis
-   (undamped oscillation) for which the scheme is stable.
+3. class attributes ``name``, ``order`` and, for explicit schemes, ``stability_limit``: the
+   largest ``omega h`` on the imaginary axis (undamped oscillation) for which the scheme is
+   stable; ``model`` and ``explicit`` come from the list of names (:data:`kanat.schemes.SCHEME_NAMES`).
 
 Schemes:
 
@@ -133,9 +133,7 @@ class RK4(Scheme):
     """Classical 4th-order Runge–Kutta on ``y = (q, q_dot)``."""
 
     name: ClassVar[str] = "rk4"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
-    explicit: ClassVar[bool] = True
     stability_limit: ClassVar[float] = EXPLICIT_STABILITY["rk4"]    # imaginary-axis bound 2 sqrt(2) = 2.83, real 2.79
     evaluations_per_step: ClassVar[int] = 4
     state_type: ClassVar[type] = ExplicitState
@@ -156,9 +154,7 @@ class ABM4(Scheme):
     """Adams–Bashforth–Moulton 4 (PECE), started by RK4; ``history`` holds ``f_n .. f_n-3``."""
 
     name: ClassVar[str] = "abm4"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
-    explicit: ClassVar[bool] = True
     stability_limit: ClassVar[float] = EXPLICIT_STABILITY["abm4"]    # 0.3: PECE is weakly unstable on the imaginary axis (growth
                                               # 1e-4 per step at 0.3, 1.5e-3 at 0.5; real-axis bound 1.28):
                                               # it relies on some physical damping (tests measure it)
@@ -204,9 +200,7 @@ class GeneralizedAlphaLumped(Scheme):
     """
 
     name: ClassVar[str] = "generalized-alpha-lumped"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 2
-    explicit: ClassVar[bool] = False
     lambda_inf: float = -0.5
     max_iterations: int = 12
     tolerance: float = 1e-5
