@@ -7,9 +7,11 @@ arrays once per run); any other scheme (the implicit one, a user's own) or the c
 mass matrix goes through ``scheme.step`` with the tensions and snap events updated after
 every step in Python. Both paths give the same states to round-off (tests). A compiled
 implicit step whose Newton iteration fails is retaken as compiled half steps (up to
-:data:`COMPILED_HALVINGS` deep), and where even those fail, by the explicit ``rk4`` at its safe
-step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
-implicit run never fails where ``rk4`` succeeds.
+:data:`COMPILED_HALVINGS` deep, by the step control both models share,
+:class:`kanat.step_control.Halving`), and where even those fail, by the explicit ``rk4`` at its
+safe step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
+implicit run never fails where ``rk4`` succeeds. Each scheme's compiled run is found in
+:data:`COMPILED` by its class.
 """
 from __future__ import annotations
 
