@@ -47,13 +47,13 @@ def measure(case) -> dict:
         tracker = SnapTracker(0.0, np.zeros(net.n_elements))
         T = np.zeros(net.n_elements)
         state, _ = advance(scheme, system, state, h, 20, tracker, lambda s: T)        # load the kernels
-        evaluations, iterations = system.evaluations, state.get("iterations", 0)
+        evaluations, iterations = system.evaluations, getattr(state, "iterations", 0)
         start = time.perf_counter()
         state, _ = advance(scheme, system, state, h, STEPS, tracker, lambda s: T)
         spent = time.perf_counter() - start
         out[name] = spent / (system.evaluations - evaluations)
         if not scheme.explicit:
-            out["iterations"] = (state["iterations"] - iterations) / STEPS
+            out["iterations"] = (state.iterations - iterations) / STEPS
     out["bandwidth"] = _arrays(system).bandwidth
     return out
 

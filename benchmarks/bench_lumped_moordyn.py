@@ -142,7 +142,7 @@ def run_kanat(p, scheme_name, h):
     middle = net.node_index[p["segments"] // 2]
 
     def tensions(st):
-        xs, vs, _, _ = system.full(st["t"], *state_positions(st))
+        xs, vs, _, _ = system.full(st.t, *state_positions(st))
         kernels.tensions(xs, vs, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                          net.law_n, net.law_x, net.law_y, T)
         return T

@@ -80,7 +80,7 @@ def test_base_is_valid():
      ["'sledd' is not a body or point", "bodies: sled", "(did you mean 'sled'?)"]),
     # enum values
     ("model: lumped", "model: lumpd", "model", 2,
-     ["'lumpd' is not one of: continuum, lumped, statics, pitch",
+     ["'lumpd' is not one of: statics, continuum, lumped, pitch",
       "(did you mean 'lumped'?)"]),
     ("type: regular", "type: regullar", "environment.waves.type", 5,
      ["'regullar' is not a valid type; valid: regular, jonswap, components (did you mean 'regular'?)"]),
@@ -124,7 +124,7 @@ def test_missing_key_points_at_its_block():
 def test_missing_model_lists_choices():
     problem = only_error(edit("model: lumped\n", ""))
     assert problem.key == "" and problem.line == 1
-    assert "missing required key 'model'; one of: continuum, lumped, statics, pitch" in str(problem)
+    assert "missing required key 'model'; one of: statics, continuum, lumped, pitch" in str(problem)
 
 
 def test_missing_required_section_points_at_model_line():

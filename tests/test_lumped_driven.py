@@ -69,8 +69,8 @@ def test_a_chain_held_by_friction_starts_at_rest():
     velocity and vanishes at rest)."""
     model = LumpedModel(driven(1.0, motion=[]))
     state = model.initial().scheme
-    assert np.max(np.abs(state["a"])) < 1e-6
-    assert np.max(np.abs(state["v"])) == 0.0
+    assert np.max(np.abs(state.a)) < 1e-6
+    assert np.max(np.abs(state.v)) == 0.0
 
 
 def test_a_fairlead_that_starts_moving_starts_the_line_quasi_statically():
@@ -82,7 +82,7 @@ def test_a_fairlead_that_starts_moving_starts_the_line_quasi_statically():
     motion = [{"dof": "surge", "amplitude": 4.0, "period": 12.0, "phase_deg": 0.0}]
     model = LumpedModel(driven(1.0, motion=motion))
     state = model.initial().scheme
-    x, v = model.system.full(0.0, state["x"], state["v"])[:2]
+    x, v = model.system.full(0.0, state.x, state.v)[:2]
     net = model.net
     d = x[net.el_j] - x[net.el_i]
     rate = np.einsum("kr,kr->k", v[net.el_j] - v[net.el_i], d) / np.einsum("kr,kr->k", d, d)

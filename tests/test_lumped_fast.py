@@ -3,6 +3,8 @@ LumpedSystem driven step by step: same accelerations, same states after many ste
 snap events; the vectorized track sampler against VesselTrack.state."""
 from pathlib import Path
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -19,7 +21,7 @@ from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
 from kanat.model import Case
-from kanat.lumped.integrators import SCHEMES, GeneralizedAlphaLumped
+from kanat.lumped.integrators import SCHEMES, GeneralizedAlphaLumped, ImplicitState
 from kanat.schemes import get_scheme
 
 WAVES = {"regular": {"type": "regular", "height": 3.0, "period": 6.0, "heading_deg": 150.0},
@@ -109,15 +111,15 @@ def test_fused_steps_match_python_steps_and_record_the_same_snaps(name):
     state = state0
     for _ in range(steps):
         state = scheme.step(system, state, h)
-        python_tracker.update(state["t"], tensions(state))
+        python_tracker.update(state.t, tensions(state))
     fused, taken = advance(scheme, system, state0, h, steps, fused_tracker, tensions)
-    assert taken == steps and fused["t"] == pytest.approx(state["t"], abs=1e-12)
-    np.testing.assert_allclose(fused["y"], state["y"], rtol=1e-9, atol=1e-9)
+    assert taken == steps and fused.t == pytest.approx(state.t, abs=1e-12)
+    np.testing.assert_allclose(fused.y, state.y, rtol=1e-9, atol=1e-9)
     a, b = python_tracker.events(), fused_tracker.events()
     assert len(a["time"]) > 0                                   # the stirred network snaps
     for key in a:
         np.testing.assert_allclose(b[key], a[key], rtol=1e-6, atol=1e-6)
-    np.testing.assert_array_equal(state0["y"], scheme.start(system, 0.0, x[free], v[free], h)["y"])  # untouched
+    np.testing.assert_array_equal(state0.y, scheme.start(system, 0.0, x[free], v[free], h).y)  # untouched
 
 
 def test_fused_path_is_not_used_for_the_consistent_mass():
@@ -140,11 +142,11 @@ def test_fused_implicit_steps_match_the_python_scheme():
     state = state0
     for _ in range(steps):
         state = scheme.step(system, state, h)
-        python_tracker.update(state["t"], element_tensions(system, state, T))
+        python_tracker.update(state.t, element_tensions(system, state, T))
     fused, taken = advance(scheme, system, state0, h, steps, fused_tracker, lambda st: element_tensions(system, st, T))
     assert taken == steps
     for key in ("x", "v"):
-        np.testing.assert_allclose(fused[key], state[key], rtol=1e-7, atol=1e-7)
+        np.testing.assert_allclose(getattr(fused, key), getattr(state, key), rtol=1e-7, atol=1e-7)
     a, b = python_tracker.events(), fused_tracker.events()
     assert len(a["time"]) > 0
     for key in a:
@@ -210,9 +212,9 @@ def test_a_run_counts_the_steps_it_halved():
     compiled = advance._fused_implicit
 
     def spy(*args):
-        done, failed = compiled(*args)
+        new, done, iterations, failed = compiled(*args)
         failures.append(failed)
-        return done, failed
+        return new, done, iterations, failed
 
     with pytest.MonkeyPatch.context() as patch:           # two iterations a step: some steps fail
         patch.setattr(advance, "_fused_implicit", spy)
@@ -231,10 +233,10 @@ def test_the_python_scheme_counts_its_halvings(fails_above, cuts, monkeypatch):
     def attempt(scheme, system, state, h):
         if h > fails_above * 0.1 + 1e-12:
             return None, scheme.max_iterations
-        return {**state, "t": state["t"] + h, "iterations": state["iterations"] + 1}, 1
+        return dataclasses.replace(state, t=state.t + h), 1
 
     monkeypatch.setattr(implicit, "_attempt", attempt)
-    state = {"t": 0.0, "x": None, "v": None, "a": None, "iterations": 0, "cuts": 0}
+    state = ImplicitState(0.0)
     new = implicit.generalized_alpha_step(GeneralizedAlphaLumped(), None, state, 0.1)
-    assert new["t"] == pytest.approx(0.1)
-    assert new["cuts"] == cuts
+    assert new.t == pytest.approx(0.1)
+    assert new.cuts == cuts

@@ -13,7 +13,7 @@ import pytest
 
 from kanat.lumped import kernels
 from kanat.lumped.equilibrium import equilibrium
-from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.integrators import SCHEMES, ImplicitState, state_positions
 from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.stepping import step_info
@@ -58,7 +58,7 @@ def chain(segments=3, stiffness=2e3):
 def energy(system, state):
     """Kinetic + gravity + elastic energy of a vacuum network (lumped masses, linear law)."""
     net = system.net
-    x, v, _, _ = system.full(state["t"], *state_positions(state))
+    x, v, _, _ = system.full(state.t, *state_positions(state))
     mass = net.node_mass.copy()
     np.add.at(mass, net.el_i, 0.5 * net.el_mass * net.el_length)
     np.add.at(mass, net.el_j, 0.5 * net.el_mass * net.el_length)
@@ -95,7 +95,7 @@ def test_pendulum_chain_conserves_energy_over_100_periods(name):
 
     def observe(state):
         energies.append(energy(system, state))
-        sway.append(system.full(state["t"], *state_positions(state))[0][bob, 0])
+        sway.append(system.full(state.t, *state_positions(state))[0][bob, 0])
 
     e0 = energy(system, scheme.start(system, 0.0, x[system.free_index], 0 * x[system.free_index], h))
     integrate(system, scheme, x, 0 * x, h, int(110 * period / h), every=10, observe=observe)
@@ -159,7 +159,7 @@ def test_taut_line_natural_frequencies(mode):
     mid = net.node_index[segments // 2]
     times, values = [], []
     integrate(system, scheme, x, 0 * x, h, steps, observe=lambda s: (
-        times.append(s["t"]), values.append(system.full(s["t"], *state_positions(s))[0][mid, component])))
+        times.append(s.t), values.append(system.full(s.t, *state_positions(s))[0][mid, component])))
     omega = 2 * math.pi / zero_crossing_period(np.array(times), np.array(values))
     assert omega == pytest.approx(exact, rel=0.02)
 
@@ -187,10 +187,10 @@ def test_mass_dropped_on_a_tether_snaps_to_the_energy_balance_peak():
     T = np.zeros(1)
 
     def observe(state):
-        xs, vs, _, _ = system.full(state["t"], *state_positions(state))
+        xs, vs, _, _ = system.full(state.t, *state_positions(state))
         kernels.tensions(xs, vs, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                          net.law_n, net.law_x, net.law_y, T)
-        tracker.update(state["t"], T)
+        tracker.update(state.t, T)
 
     fall = math.sqrt(2 * drop / G)
     bounce = 2 * fall + math.pi * math.sqrt(m_eff / k)      # slack flight up and down + half a stretch cycle
@@ -225,10 +225,10 @@ def test_generalized_alpha_damps_the_highest_frequency_by_lambda_inf(lam):
 
     def step(z, v, u):
         """One step from the body at height z with vertical velocity v and acceleration u / h."""
-        state = {"t": 0.0, "x": np.array([[0.0, 0.0, z]]), "v": np.array([[0.0, 0.0, v]]),
-                 "a": np.array([[0.0, 0.0, u / h]]), "iterations": 0, "cuts": 0}
+        state = ImplicitState(0.0, np.array([[0.0, 0.0, z]]), np.array([[0.0, 0.0, v]]),
+                              np.array([[0.0, 0.0, u / h]]))
         after = scheme.step(system, state, h)
-        return after["x"][0, 2] - z_eq, after["v"][0, 2], h * after["a"][0, 2]
+        return after.x[0, 2] - z_eq, after.v[0, 2], h * after.a[0, 2]
 
     assert abs(step(z_eq - 1e-6, 0.0, 0.0)[0]) < 1e-6 / 1e4 ** 2 * 10      # the position balanced at once
     size = 1e-6 * omega

@@ -138,8 +138,8 @@ def test_mooring_lowest_mode_against_the_time_domains_free_decay():
     times, sway = [], []
     for _ in range(int(4.5 * 2 * math.pi / omega / h)):
         state = scheme.step(system, state, h)
-        times.append(state["t"])
-        sway.append(system.full(state["t"], *state_positions(state))[0][body, 1] - lin.position[body, 1])
+        times.append(state.t)
+        sway.append(system.full(state.t, *state_positions(state))[0][body, 1] - lin.position[body, 1])
     measured = 2 * math.pi / zero_crossing_period(np.array(times), np.array(sway))
     assert omega == pytest.approx(measured, rel=0.01)
 

@@ -23,7 +23,7 @@ from kanat.io import CaseWarning, check_text, parse_case
 from kanat.io.yaml_loader import LineLoader
 from kanat.model import Case, Vessel
 from kanat.model.setup_checks import ATTACHMENT_SNAP, LAW_SAMPLES, LAW_STRAIN
-from kanat.model.simulation import KNOWN_SCHEMES, KnownScheme
+from kanat.schemes import SCHEME_NAMES, SchemeName
 from kanat.model.vessel import start_speeds
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -32,14 +32,41 @@ FILE = "case.yaml"
 
 # --- the copies of the models' facts -----------------------------------------------------
 
-def test_the_known_schemes_are_the_registries():
-    """Name for name, model for model: what validation checks ``simulation.scheme`` against."""
+def test_the_scheme_names_are_the_registries():
+    """Name for name, model for model: the list validation checks ``simulation.scheme`` against is
+    what the registries hold (each registry is refused at import where it is not: test below)."""
     from kanat.continuum.family import FamilyScheme
 
-    registered = {name: KnownScheme(cls.model, cls.explicit,
-                                    cls.model == "continuum" and not issubclass(cls, FamilyScheme))
+    registered = {name: SchemeName(cls.model, cls.explicit,
+                                   cls.model == "continuum" and not issubclass(cls, FamilyScheme))
                   for name, cls in SCHEMES.items()}
-    assert registered == KNOWN_SCHEMES
+    assert registered == SCHEME_NAMES
+
+
+def test_a_registry_that_differs_from_the_list_is_refused():
+    """A listed name left out, a class stating another model than the list's: clear errors."""
+    from dataclasses import dataclass
+    from typing import ClassVar
+
+    from kanat.errors import KanatError
+    from kanat.lumped.integrators import ABM4, RK4
+    from kanat.schemes import Scheme, registry
+
+    with pytest.raises(KanatError, match=r"not registered \['generalized-alpha-lumped'\]"):
+        registry(RK4, ABM4)
+    with pytest.raises(KanatError, match="states model 'continuum'"):
+        @dataclass(frozen=True)
+        class Mislabelled(Scheme):
+            name: ClassVar[str] = "rk4"
+            model: ClassVar[str] = "continuum"
+
+
+def test_the_model_names_are_the_front_doors():
+    """Every model a case may name has an entry in the front door, and no other."""
+    from kanat import api
+    from kanat.schemes import MODELS
+
+    assert sorted(api.MODELS) == sorted(MODELS)
 
 
 def test_the_tolerances_are_the_models():

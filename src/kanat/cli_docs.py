@@ -57,9 +57,9 @@ COORDINATES = {
 
 
 def _schemes() -> list[str]:
-    from kanat.api import SCHEMES
+    from kanat.schemes import SCHEME_NAMES          # the one list (the registries are held to it)
 
-    return sorted(SCHEMES)
+    return sorted(SCHEME_NAMES)
 
 
 def reference_page() -> str:

@@ -303,7 +303,7 @@ class Coupling:
         steps = int(round(dt / h))
         state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
         if taken < steps or not np.all(np.isfinite(state_positions(state)[0])):
-            raise SolverError(f"the lines' state became non-finite at t = {state['t']:.6g} s (substep {h:.3g} s, "
+            raise SolverError(f"the lines' state became non-finite at t = {state.t:.6g} s (substep {h:.3g} s, "
                               f"{self.scheme.name}); the coupling stays at t = {self.time:.6g} s: pass a smaller "
                               "substep, or scheme='rk4'")
         self._state = state
@@ -312,7 +312,7 @@ class Coupling:
     # --- what the host may read -------------------------------------------------------------
     @property
     def time(self) -> float | None:
-        return None if self._state is None else float(self._state["t"])
+        return None if self._state is None else float(self._state.t)
 
     def forces(self) -> np.ndarray:
         """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for a rigid
@@ -334,21 +334,21 @@ class Coupling:
         """Everything needed to continue exactly (copies): give it to :meth:`restore`."""
         if self._state is None:
             raise KanatError("nothing to save: call initialize(positions) first")
-        return {"scheme": _copied(self._state), "snaps": _copied(self._snaps.state()),
+        return {"scheme": self._state.copy(), "snaps": _copied(self._snaps.state()),
                 "drive": self.system.driven()}
 
     def restore(self, state: dict) -> None:
         """Continue from a :meth:`state` of this coupling (or of another of the same case)."""
-        scheme = _copied(state["scheme"])
+        scheme = state["scheme"].copy()
         self._state = scheme
         self.system.drive(*state["drive"])
-        self._snaps = SnapTracker(scheme["t"], self._tensions(scheme), _copied(state["snaps"]))
+        self._snaps = SnapTracker(scheme.t, self._tensions(scheme), _copied(state["snaps"]))
 
     def _tensions(self, scheme_state) -> np.ndarray:
         from kanat.lumped import entries
 
         net = self.net
-        x, v = self.system.full(scheme_state["t"], *state_positions(scheme_state))[:2]
+        x, v = self.system.full(scheme_state.t, *state_positions(scheme_state))[:2]
         entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                          net.law_n, net.law_x, net.law_y, self._T)
         return self._T

@@ -57,6 +57,7 @@ from kanat.io.stream import Checkpoint
 from kanat.statics.diagnose import steady_failure
 from kanat.statics.steady_checks import LEFT_BY_DYNAMIC_MODELS, check_steady, nodes_by_cable
 from kanat.schemes import label
+from kanat.step_control import Steps
 
 log = logging.getLogger(__name__)
 
@@ -70,18 +71,6 @@ class StepFailure(SolverError):
 
 class StopRun(Exception):
     """Raised by an observer's ``record`` to stop a run (its message becomes the status)."""
-
-
-@dataclass(frozen=True)
-class Steps:
-    """Work done by ``advance``: steps, Newton iterations (implicit schemes), step cuts."""
-
-    steps: int = 0
-    iterations: int = 0
-    cuts: int = 0
-
-    def __add__(self, other: Steps) -> Steps:
-        return Steps(self.steps + other.steps, self.iterations + other.iterations, self.cuts + other.cuts)
 
 
 class DynamicModel(Protocol):

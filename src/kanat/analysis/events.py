@@ -10,7 +10,6 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from kanat.analysis.select import time_window
 
 EVENT_COLUMNS = ("time", "segment", "cable", "peak_tension", "rise_rate")
 SUMMARY_COLUMNS = ("cable", "events", "peak_tension_max", "rise_rate_max", "first_time", "last_time")
@@ -64,11 +63,3 @@ def snap_summary(ds: xr.Dataset, window=None) -> pd.DataFrame:
                      "rise_rate_max": group["rise_rate"].max(), "first_time": group["time"].min(),
                      "last_time": group["time"].max()})
     return pd.DataFrame(rows, columns=list(SUMMARY_COLUMNS))
-
-
-def events_in_window(ds: xr.Dataset, window=None) -> int:
-    """Number of snap events in the window (0 when the result records none)."""
-    if window is not None and "time" in ds.dims:
-        part = time_window(ds, window)
-        window = (float(part["time"].values[0]), float(part["time"].values[-1]))
-    return len(snap_events(ds, window))

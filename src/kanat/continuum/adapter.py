@@ -3,8 +3,8 @@
 :class:`ContinuumModel` wraps the planar or the spatial cable (:mod:`kanat.continuum.models`)
 and a scheme of the generalized-α family or Kaliukh & Vusatiuk's factorized schemes. It steps
 ``dt`` at a time; a step whose Newton iteration fails is cut in halves (up to
-:data:`kanat.continuum.stepper.MAX_CUTS` levels) before the run stops with a message
-saying where and what to try. Its checks of every output:
+:data:`kanat.continuum.stepper.MAX_CUTS` levels: :class:`kanat.step_control.Halving`, the step
+control both models share) before the run stops with a message saying where and what to try. Its checks of every output:
 
 * compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
   stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``
@@ -29,11 +29,12 @@ from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.continuum.winch import material_stations
-from kanat.dynamics import StepFailure, Steps
+from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.schemes import get_scheme
+from kanat.step_control import Halving, Steps, StepsExhausted
 
 COMPRESSION_TOLERANCE = 1e-3
 """Compression beyond this fraction of the largest tension (or of the cable's weight) fails a run."""
@@ -45,6 +46,8 @@ SLENDER_SEGMENT = 10.0
 slender column's, and two segments of 10 diameters are 80 radii of gyration (d/4) long."""
 PENETRATION_FACTOR = 10.0
 """A node deeper below the seabed than this many static penetrations (plus 1 mm) fails a run."""
+HALVING = Halving(MAX_CUTS)
+"""The step control: a step whose Newton iteration fails is retaken as 2, 4, 8, 16 sub-steps."""
 TIME_VARIABLES = ("position", "velocity", "tension", "body_position", "vessel_position", "vessel_heading",
                   "vessel_pitch", "newton_iterations")
 
@@ -175,31 +178,23 @@ class ContinuumModel:
         done = Steps()
         for _ in range(steps):
             try:
-                state, work = self._step(state, self.dt, 0)
-            except NewtonFailure as failure:
-                raise StepFailure(self._failure(failure, state)) from None
+                state, work = HALVING.take(self._attempt, state, self.dt)
+            except StepsExhausted as exhausted:
+                raise StepFailure(self._failure(exhausted.refusal, state)) from None
             done = done + work
             if self.slack is not None:
                 self._observe_slack(state)
         return state, done
+
+    def _attempt(self, state, dt: float):
+        """One step of the scheme: ``(state, iterations)``; raises NewtonFailure (a refused step)."""
+        return self.scheme.step(self.cable_model, state, dt)
 
     def _observe_slack(self, state) -> None:
         """Hand the step's nodal tensions to the slack log (with the tolerance of :meth:`_compression`)."""
         tension, cable = state.y[:, 0], self.cable_model.cable
         scale = max(float(np.max(np.abs(tension))), abs(cable.params[k.W0]) * cable.length, 1.0)
         self.slack.observe(state.t, tension, self._facts(state).euler[0], COMPRESSION_TOLERANCE * scale)
-
-    def _step(self, state, dt: float, level: int):
-        """One step of ``dt``, cut into halves recursively when Newton fails."""
-        try:
-            new, spent = self.scheme.step(self.cable_model, state, dt)
-            return new, Steps(1, spent, 0)
-        except NewtonFailure:
-            if level >= MAX_CUTS:
-                raise
-        half, first = self._step(state, dt / 2, level + 1)
-        new, second = self._step(half, dt / 2, level + 1)
-        return new, Steps(1, first.iterations + second.iterations, 1 + first.cuts + second.cuts)
 
     def _s(self, state) -> np.ndarray:
         """Arclength of the state's nodes (with a winch: at t = 0)."""

@@ -266,16 +266,6 @@ def derive(bending: bool = False) -> Derivation:
     return Derivation(state, rates, slopes, constants, current, pole, e1, residual, M, K, F)
 
 
-def system_matrices() -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
-    """The sympy matrices ``(M, K, F)`` of ``M Y_t + K Y_s = F`` (shapes (6,6), (6,6), (6,1)).
-
-    Symbols: see :class:`Derivation` (``derive().state``, ``.constants``, ``.current``,
-    ``.pole``, ``.e1``).
-    """
-    d = derive()
-    return d.M, d.K, d.F
-
-
 def characteristic_polynomial(speed: sp.Symbol | None = None) -> sp.Expr:
     """``det(K - lam M)`` factored; its roots ``lam`` are the characteristic speeds."""
     lam = speed if speed is not None else sp.Symbol("lambda")

@@ -183,10 +183,6 @@ class Layout:
             out.update(zip(dims, np.shape(values)))
         return out
 
-    def with_attrs(self, **attrs) -> "Layout":
-        """The same layout with more global attributes."""
-        return Layout(self.static, self.labels, self.time_variables, {**self.attrs, **attrs})
-
 
 def to_dataset(layout: Layout, times, series: dict, final: dict | None = None, attrs: dict | None = None):
     """An ``xarray.Dataset`` of a result held in memory, laid out as its netCDF file.

@@ -26,14 +26,14 @@ from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.lumped import entries, stepping
-from kanat.lumped.advance import advance
+from kanat.lumped.advance import HALVING, advance
 from kanat.lumped.equilibrium import starting_state
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
 from kanat.model.run_cost import check_node_steps
 from kanat.lumped.system import LumpedSystem
-from kanat.lumped.integrators import SCHEMES, state_positions
+from kanat.lumped.integrators import SCHEMES, SchemeState, state_positions
 from kanat.lumped.mooring_outputs import (
     allowed_penetration,
     anchor_forces,
@@ -56,7 +56,7 @@ TIME_VARIABLES = ("position", "velocity", "tension", "segment_tension", "body_po
 class LumpedState:
     """The scheme's state (``t``, positions, velocities, history) and the snap events so far."""
 
-    scheme: dict
+    scheme: SchemeState
     snaps: SnapTracker
 
 
@@ -179,36 +179,35 @@ class LumpedModel:
         return LumpedState(state, SnapTracker(0.0, self._tensions(state)))
 
     def save(self, state: LumpedState) -> dict:
-        arrays = {f"scheme_{k}": np.asarray(v) for k, v in state.scheme.items()}
+        arrays = {f"scheme_{k}": np.asarray(v) for k, v in state.scheme.arrays().items()}
         arrays.update({f"snap_{k}": v for k, v in state.snaps.state().items()})
         arrays["evaluations"] = np.array(self.system.evaluations)
         return arrays
 
     def restore(self, arrays: dict) -> LumpedState:
-        scheme = {k[7:]: (v.item() if v.ndim == 0 and k[7:] in ("t", "iterations", "cuts", "explicit") else v)
-                  for k, v in arrays.items() if k.startswith("scheme_")}
+        scheme = self.scheme.state_type.from_arrays({k[7:]: v for k, v in arrays.items() if k.startswith("scheme_")})
         snaps = {k[5:]: v for k, v in arrays.items() if k.startswith("snap_")}
         self.system.evaluations = int(arrays["evaluations"])
-        x = self.system.full(scheme["t"], *state_positions(scheme))[0]
+        x = self.system.full(scheme.t, *state_positions(scheme))[0]
         self.info = stepping.step_info(self.net, x, self.case.simulation.mass_matrix == "consistent",
                                        self.case.environment.seabed)
-        return LumpedState(scheme, SnapTracker(scheme["t"], self._tensions(scheme), snaps))
+        return LumpedState(scheme, SnapTracker(scheme.t, self._tensions(scheme), snaps))
 
     # 3. step -----------------------------------------------------------------------------
     def advance(self, state: LumpedState, t_end: float):
-        steps = int(round((t_end - state.scheme["t"]) / self.dt))
-        before, cut = state.scheme.get("iterations", 0), state.scheme.get("cuts", 0)
+        steps = int(round((t_end - state.scheme.t) / self.dt))
         try:
             scheme_state, taken = advance(self.scheme, self.system, state.scheme, self.dt, steps, state.snaps,
                                           self._tensions)
         except SolverError as error:
             raise StepFailure(str(error)) from None
-        return LumpedState(scheme_state, state.snaps), Steps(taken, scheme_state.get("iterations", 0) - before,
-                                                             scheme_state.get("cuts", 0) - cut)
+        iterations = _count(scheme_state, "iterations") - _count(state.scheme, "iterations")
+        cuts = _count(scheme_state, "cuts") - _count(state.scheme, "cuts")
+        return LumpedState(scheme_state, state.snaps), Steps(taken, iterations, cuts)
 
     def _tensions(self, scheme_state) -> np.ndarray:
         """Element tensions (m,) of a scheme state (a view of one work array)."""
-        return self._element_tensions(*self.system.full(scheme_state["t"], *state_positions(scheme_state))[:2])
+        return self._element_tensions(*self.system.full(scheme_state.t, *state_positions(scheme_state))[:2])
 
     def _element_tensions(self, x, v) -> np.ndarray:
         """Element tensions (m,) of all nodes' ``x, v`` (a view of one work array)."""
@@ -223,14 +222,14 @@ class LumpedModel:
         scheme = state.scheme
         positions = state_positions(scheme)[0]
         seen = self._seen
-        if seen is not None and seen[0] == scheme["t"] and np.array_equal(seen[1], positions):
+        if seen is not None and seen[0] == scheme.t and np.array_equal(seen[1], positions):
             return seen[2]
-        return self.system.full(scheme["t"], *state_positions(scheme))[0]
+        return self.system.full(scheme.t, *state_positions(scheme))[0]
 
     # 4. outputs ------------------------------------------------------------------------
     def outputs(self, state: LumpedState) -> dict:
         system, net = self.system, self.net
-        t = state.scheme["t"]
+        t = state.scheme.t
         x, v, _, heading = system.full(t, *state_positions(state.scheme))
         self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy())             # for check()
         T = self._element_tensions(x, v).copy()
@@ -246,7 +245,7 @@ class LumpedModel:
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:
-        net, t = self.net, state.scheme["t"]
+        net, t = self.net, state.scheme.t
         x = self._positions(state)
         strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
         k = int(np.argmax(strain - self.max_strain))
@@ -301,12 +300,16 @@ class LumpedModel:
         slack_bent = self._slack_with_bending(events["element"])
         if slack_bent:
             self.notes.append(slack_bent)
-        explicit = int(state.scheme.get("explicit", 0))
+        explicit = _count(state.scheme, "explicit")
         if explicit:
-            self.notes.append(f"{explicit} rk4 steps at the explicit safe step where the implicit Newton iteration "
-                              "failed even on the step cut to 1/8")
+            self.notes.append(HALVING.fallback_note(explicit, "rk4"))
         return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations,
                            "explicit_steps": explicit}
+
+
+def _count(state: SchemeState, name: str) -> int:
+    """The count ``name`` (``iterations``, ``cuts``, ``explicit``) an implicit state keeps; 0 for the others."""
+    return int(getattr(state, name, 0))
 
 
 def start_state(net, start, mass_matrix: str = "lumped") -> tuple[np.ndarray, np.ndarray]:

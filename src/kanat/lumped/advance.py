@@ -7,19 +7,24 @@ arrays once per run); any other scheme (the implicit one, a user's own) or the c
 mass matrix goes through ``scheme.step`` with the tensions and snap events updated after
 every step in Python. Both paths give the same states to round-off (tests). A compiled
 implicit step whose Newton iteration fails is retaken as compiled half steps (up to
-:data:`COMPILED_HALVINGS` deep), and where even those fail, by the explicit ``rk4`` at its safe
-step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
-implicit run never fails where ``rk4`` succeeds.
+:data:`COMPILED_HALVINGS` deep, by the step control both models share,
+:class:`kanat.step_control.Halving`), and where even those fail, by the explicit ``rk4`` at its
+safe step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
+implicit run never fails where ``rk4`` succeeds. Each scheme's compiled run is found in
+:data:`COMPILED` by its class.
 """
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
 from kanat.lumped import entries, fast, fast_implicit, stepping
-from kanat.lumped.integrators import ABM4, RK4, GeneralizedAlphaLumped, pack, state_positions, unpack
-
+from kanat.lumped.integrators import ABM4, RK4, ExplicitState, GeneralizedAlphaLumped, pack, unpack
+from kanat.step_control import Halving, StepRefused
 
 COMPILED_HALVINGS = 3       # a failed compiled implicit step is retried as 2, 4, 8 compiled half steps
+HALVING = Halving(COMPILED_HALVINGS)
 CALL_STEPS = 50_000
 """Most steps of one compiled call: the interpreter gets control back (and Ctrl-C is handled)
 every 50 000 steps, a few seconds of a large network at most, and the vessel's samples for a
@@ -27,9 +32,9 @@ call (``2 steps + 1`` times) stay a few MB, whatever the output interval."""
 
 
 def supports(system, scheme) -> bool:
-    """Whether the fused path can run ``scheme`` on ``system``."""
-    return (type(scheme) in (RK4, ABM4, GeneralizedAlphaLumped) and not system.consistent
-            and system.steady_velocity is None)
+    """Whether the fused path can run ``scheme`` on ``system``: a scheme with a compiled run
+    (:data:`COMPILED`), the lumped mass matrix, no steady frame."""
+    return type(scheme) in COMPILED and not system.consistent and system.steady_velocity is None
 
 
 class FusedArrays:
@@ -111,14 +116,17 @@ def _arrays(system) -> FusedArrays:
     return system._fused
 
 
-def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> tuple[dict, int]:
+def advance(scheme, system, state, h: float, steps: int, tracker, tensions):
     """Take ``steps`` steps of size ``h`` from ``state``, updating ``tracker`` after each.
+
+    The scheme's compiled run (:data:`COMPILED`) takes them where :func:`supports` says it can,
+    else the scheme's own ``step`` one by one.
 
     Parameters
     ----------
     scheme : kanat.schemes.Scheme
     system : kanat.lumped.system.LumpedSystem
-    state : dict
+    state : kanat.lumped.integrators.SchemeState
         The scheme's state (not modified).
     tracker : kanat.lumped.snap.SnapTracker
     tensions : callable
@@ -126,118 +134,152 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions) -> t
 
     Returns
     -------
-    state : dict
+    state : kanat.lumped.integrators.SchemeState
     taken : int
         Steps taken (fewer than ``steps`` only when the state became non-finite).
     """
     if not supports(system, scheme):
-        for done in range(steps):
-            state = scheme.step(system, state, h)
-            tracker.update(state["t"], tensions(state))
-            if not np.all(np.isfinite(state_positions(state)[0])):
-                return state, done + 1
-        return state, steps
-    state = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
-    taken = 0
-    if isinstance(scheme, GeneralizedAlphaLumped):        # each call starts afresh: a run resumed from a
-        arrays = _arrays(system)                           # checkpoint takes the very same iterations
-        arrays.tangent[:] = 0.0
-        arrays.in_contact[:] = False
-    while taken < steps and isinstance(scheme, ABM4) and len(state["history"]) < 4:
-        state = scheme.step(system, state, h)                     # RK4 start-up, in Python
-        tracker.update(state["t"], tensions(state))
-        taken += 1
+        return _python_steps(scheme, system, state, h, steps, tracker, tensions)
+    return COMPILED[type(scheme)](scheme, system, state, h, steps, tracker, tensions)
+
+
+def _python_steps(scheme, system, state, h, steps, tracker, tensions):
+    """``steps`` of the scheme's own ``step``, the tracker updated after each."""
+    for done in range(steps):
+        state = scheme.step(system, state, h)
+        tracker.update(state.t, tensions(state))
+        if not _finite(state):
+            return state, done + 1
+    return state, steps
+
+
+def _finite(state) -> bool:
+    return bool(np.all(np.isfinite(state.positions()[0])))
+
+
+def _explicit_run(scheme, system, state, h, steps, tracker, tensions, taken: int = 0):
+    """``rk4`` or ``abm4`` (its history complete) in compiled calls of at most :data:`CALL_STEPS` steps."""
+    state = state.copy()                                  # the calls advance its arrays in place
     while taken < steps:
-        batch = min(steps - taken, CALL_STEPS)
-        if isinstance(scheme, GeneralizedAlphaLumped):
-            done, failed = _fused_implicit(scheme, system, state, h, batch, tracker)
-            if failed and not _halved(scheme, system, state, h, tracker, COMPILED_HALVINGS):
-                _explicit(system, state, h, tracker)
-            done += failed
-        else:
-            done = _fused(scheme, system, state, h, batch, tracker)
+        state, done = _fused(scheme, system, state, h, min(steps - taken, CALL_STEPS), tracker)
         taken += done
-        if not np.all(np.isfinite(state_positions(state)[0])):
+        if not _finite(state):
             break
     return state, taken
 
 
-def _halved(scheme, system, state, h, tracker, levels: int) -> bool:
-    """Take one failed step of ``h`` as two compiled steps of ``h / 2`` (each halved again where it
-    fails, ``levels`` deep); ``state`` is updated in place. False (and ``state`` untouched) when
-    even that fails."""
-    if levels == 0:
-        return False
-    saved = {k: (np.array(v) if isinstance(v, np.ndarray) else v) for k, v in state.items()}
-    for _ in range(2):
-        done, failed = _fused_implicit(scheme, system, state, 0.5 * h, 1, tracker)
-        if failed and not _halved(scheme, system, state, 0.5 * h, tracker, levels - 1):
-            cuts = state["cuts"]                        # every failed attempt counts, kept or not
-            state.clear()
-            state.update(saved, cuts=cuts)
-            return False
-    return True
+def _abm4_run(scheme, system, state, h, steps, tracker, tensions):
+    """``abm4``: its RK4 start-up in Python (until four rates are known), then compiled."""
+    taken = 0
+    while taken < steps and len(state.history) < 4:
+        state = scheme.step(system, state, h)
+        tracker.update(state.t, tensions(state))
+        taken += 1
+    return _explicit_run(scheme, system, state, h, steps, tracker, tensions, taken)
 
 
-def _explicit(system, state, h, tracker) -> None:
-    """Take one step of ``h`` of the implicit ``state`` (updated in place) by compiled ``rk4`` steps
-    at the explicit safe step of the state (:mod:`kanat.lumped.stepping`), and restart the implicit
-    scheme from their end with the acceleration of eq. (1) there; the steps are added to the state's
-    ``explicit`` count."""
+def _implicit_run(scheme, system, state, h, steps, tracker, tensions):
+    """Generalized-α in compiled calls; a step a call fails is retaken by :func:`_retake`."""
+    arrays = _arrays(system)                 # each call starts afresh: a run resumed from a
+    arrays.tangent[:] = 0.0                  # checkpoint takes the very same iterations
+    arrays.in_contact[:] = False
+    taken = 0
+    while taken < steps:
+        state, done, iterations, failed = _fused_implicit(scheme, system, state, h, min(steps - taken, CALL_STEPS),
+                                                          tracker)
+        state = replace(state, iterations=state.iterations + iterations, cuts=state.cuts + int(failed))
+        if failed:
+            state = _retake(scheme, system, state, h, tracker)
+        taken += done + failed
+        if not _finite(state):
+            break
+    return state, taken
+
+
+def _retake(scheme, system, state, h, tracker):
+    """The step of ``h`` a compiled call failed, as compiled half steps (:data:`HALVING`), else by
+    ``rk4`` (:func:`_explicit`); its work is added to the state's counts."""
+    def attempt(current, step):
+        new, done, iterations, failed = _fused_implicit(scheme, system, current, step, 1, tracker)
+        if failed:
+            raise StepRefused("the compiled Newton iteration did not converge", iterations)
+        return new, iterations
+
+    def fallback(current, step):
+        return _explicit(system, current, step, tracker)
+
+    new, work = HALVING.retake(attempt, state, h, fallback)
+    return replace(new, iterations=state.iterations + work.iterations, cuts=state.cuts + work.cuts)
+
+
+def _explicit(system, state, h, tracker):
+    """One step of ``h`` of the implicit ``state`` by compiled ``rk4`` steps at the explicit safe step
+    of the state (:mod:`kanat.lumped.stepping`), the implicit scheme restarted from their end with the
+    acceleration of eq. (1) there; the steps are added to the state's ``explicit`` count."""
     net = system.net
-    x = system.full(state["t"], state["x"], state["v"])[0]
+    x = system.full(state.t, state.x, state.v)[0]
     info = stepping.step_info(net, x, False, system.case.environment.seabed)
     count = max(1, int(np.ceil(h / info.safe_step(RK4) - 1e-9)))
-    sub = {"t": float(state["t"]), "y": pack(state["x"], state["v"])}
-    done = _fused(RK4(), system, sub, h / count, count, tracker)
-    xf, vf = (np.array(part) for part in unpack(sub["y"]))
-    a = system.acceleration(sub["t"], xf, vf) if done == count else np.full_like(xf, np.nan)
-    state.update(t=sub["t"], x=xf, v=vf, a=a, explicit=state.get("explicit", 0) + done)
+    sub, done = _fused(RK4(), system, ExplicitState(float(state.t), pack(state.x, state.v)), h / count, count,
+                       tracker)
+    xf, vf = (np.array(part) for part in unpack(sub.y))
+    a = system.acceleration(sub.t, xf, vf) if done == count else np.full_like(xf, np.nan)
     _arrays(system).tangent[:] = 0.0                    # the implicit factors start afresh
+    return replace(state, t=sub.t, x=xf, v=vf, a=a, explicit=state.explicit + done)
 
 
-def _fused_implicit(scheme, system, state, h, steps, tracker) -> tuple[int, bool]:
-    """Compiled generalized-α steps from ``state`` (updated in place; a failed step counts as a cut):
-    (steps taken, failed)."""
+def _fused_implicit(scheme, system, state, h, steps, tracker):
+    """Compiled generalized-α steps from ``state`` (not modified): the new state, the steps done, the
+    Newton iterations spent and whether the call stopped at a step it failed (the state's counts are
+    the caller's to add)."""
     arrays = _arrays(system)
-    t0 = float(state["t"])
+    t0 = float(state.t)
     af = scheme.coefficients[1]
     step = np.arange(steps) + 1.0
     pos, vel, heading = track_samples(system, t0 + h * np.concatenate([step - af, step]))    # one sampling
     mid, end = (pos[:steps], vel[:steps], heading[:steps]), (pos[steps:], vel[steps:], heading[steps:])
-    x, v, a = (np.array(state[k], dtype=float) for k in ("x", "v", "a"))
+    x, v, a = (np.array(value, dtype=float) for value in (state.x, state.v, state.a))
     done, iterations, count, failed = entries.implicit_steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
         arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
         arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events)
     tracker.absorb(arrays.events[:count].copy())
-    state.update(t=t0 + done * h, x=x, v=v, a=a, iterations=state["iterations"] + iterations,
-                 cuts=state.get("cuts", 0) + int(failed))            # the failed step is retaken in halves
     system.evaluations += iterations
-    return done, failed
+    return replace(state, t=t0 + done * h, x=x, v=v, a=a), done, iterations, failed
 
 
-def _fused(scheme, system, state, h, steps, tracker) -> int:
-    """One compiled call from ``state`` (updated in place); returns the steps it took."""
+def _fused(scheme, system, state, h, steps, tracker):
+    """One compiled call of ``rk4`` or ``abm4`` from ``state``, whose arrays it advances in place:
+    the state at its end and the steps it took."""
     arrays = _arrays(system)
-    t0 = float(state["t"])
+    t0 = float(state.t)
     samples = track_samples(system, t0 + 0.5 * h * np.arange(2 * steps + 1))
     snap = tracker.kernel_arrays()
     args = (samples, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work, snap, arrays.events)
-    if isinstance(scheme, ABM4):
-        done, count = entries.abm4_steps(t0, h, steps, state["y"], state["history"], *args)
-    else:
-        done, count = entries.rk4_steps(t0, h, steps, state["y"], *args)
+    done, count = FUSED_CALLS[type(scheme)](t0, h, steps, state, args)
     tracker.absorb(arrays.events[:count].copy())
-    state["t"] = t0 + done * h
     system.evaluations += done * scheme.evaluations_per_step
-    return done
+    return replace(state, t=t0 + done * h), done
+
+
+def _rk4_call(t0, h, steps, state, args):
+    return entries.rk4_steps(t0, h, steps, state.y, *args)
+
+
+def _abm4_call(t0, h, steps, state, args):
+    return entries.abm4_steps(t0, h, steps, state.y, state.history, *args)
+
+
+FUSED_CALLS = {RK4: _rk4_call, ABM4: _abm4_call}
+"""The compiled call of each explicit scheme: ``(t0, h, steps, state, args) -> (steps done, events)``."""
+COMPILED = {RK4: _explicit_run, ABM4: _abm4_run, GeneralizedAlphaLumped: _implicit_run}
+"""Each scheme's compiled run: ``(scheme, system, state, h, steps, tracker, tensions) -> (state, taken)``."""
 
 
 def element_tensions(system, state, out: np.ndarray) -> np.ndarray:
     """Element tensions (m,) of a scheme state, written into ``out`` (the Python path)."""
     net = system.net
-    x, v, _, _ = system.full(state["t"], *state_positions(state))
+    x, v, _, _ = system.full(state.t, *state.positions())
     entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
                      net.law_n, net.law_x, net.law_y, out)
     return out

@@ -14,10 +14,12 @@ converges linearly rather than quadratically, to the same answer). ``J`` is spar
 the network's node graph; it is factorized by SuperLU at every iteration. An increment that
 raises the residual's 2-norm is halved (the line search of
 :func:`kanat.lumped.fast_implicit.newton_step`). A step whose
-Newton iteration fails is halved, up to ``MAX_HALVINGS`` times, then the run stops with
-a :class:`~kanat.errors.SolverError` naming time, cable and node.
+Newton iteration fails is halved, up to ``MAX_HALVINGS`` times (:class:`kanat.step_control.Halving`),
+then the run stops with a :class:`~kanat.errors.SolverError` naming time, cable and node.
 """
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 import scipy.sparse as sp
@@ -28,8 +30,10 @@ from kanat.lumped import kernels
 from kanat.lumped.bending import bending_blocks
 from kanat.lumped.fast_implicit import LINE_SEARCH_HALVINGS
 from kanat.physics.contact import contact_tangent
+from kanat.step_control import Halving, StepRefused, StepsExhausted
 
 MAX_HALVINGS = 4          # a step is cut to at most 1/16 before the run is stopped
+HALVING = Halving(MAX_HALVINGS)
 ACCELERATION_SCALE = 1.0  # m/s^2 floor of the convergence scale (1/10 g)
 
 
@@ -153,7 +157,7 @@ def _residual(system, t, x, v, am_free, a_full):
 def _attempt(scheme, system, state, h):
     """One step of size ``h``; None when Newton fails. Returns (state, iterations)."""
     am, af, gamma, beta = scheme.coefficients
-    t, x0, v0, a0 = state["t"], state["x"], state["v"], state["a"]
+    t, x0, v0, a0 = state.t, state.x, state.v, state.a
     tm = t + (1.0 - af) * h
     n = system.net.n_nodes
     x, v, a_full = np.empty((n, 3)), np.empty((n, 3)), np.zeros((n, 3))
@@ -184,22 +188,25 @@ def _attempt(scheme, system, state, h):
         if np.max(np.abs(delta)) <= scheme.tolerance * scale:
             x1 = x0 + h * v0 + h * h * ((0.5 - beta) * a0 + beta * a1)
             v1 = v0 + h * ((1.0 - gamma) * a0 + gamma * a1)
-            new = {"t": t + h, "x": x1, "v": v1, "a": a1, "iterations": state["iterations"] + iteration}
-            return new, iteration
+            return replace(state, t=t + h, x=x1, v=v1, a=a1), iteration
     return None, scheme.max_iterations
 
 
-def generalized_alpha_step(scheme, system, state, h, level: int = 0):
-    """Advance ``state`` by ``h`` (eqs. 1-3), halving the step where Newton fails; each halving
-    adds one to the state's ``cuts``."""
-    new, _ = _attempt(scheme, system, state, h)
-    if new is not None:
-        return {**new, "cuts": state.get("cuts", 0)}
-    if level >= MAX_HALVINGS:
-        worst = system.free_index[int(np.argmax(np.abs(state["a"]).sum(axis=1)))]
+def generalized_alpha_step(scheme, system, state, h):
+    """Advance ``state`` by ``h`` (eqs. 1-3); a step whose Newton iteration fails is retaken in halves
+    (:data:`HALVING`). The state's ``iterations`` and ``cuts`` count the work (:mod:`kanat.step_control`)."""
+    def attempt(current, step):
+        new, iterations = _attempt(scheme, system, current, step)
+        if new is None:
+            raise StepRefused(f"Newton did not converge in {scheme.max_iterations} iterations")
+        return new, iterations
+
+    try:
+        new, work = HALVING.take(attempt, state, h)
+    except StepsExhausted as exhausted:
+        failed = exhausted.state
+        worst = system.free_index[int(np.argmax(np.abs(failed.a).sum(axis=1)))]
         raise SolverError(
-            f"Newton did not converge in {scheme.max_iterations} iterations at t = {state['t']:.6g} s "
-            f"even with the step cut to {h:.3g} s, near {system.net.where(worst)}; "
-            "reduce dt, raise axial_damping, or try scheme rk4")
-    half = generalized_alpha_step(scheme, system, {**state, "cuts": state.get("cuts", 0) + 1}, 0.5 * h, level + 1)
-    return generalized_alpha_step(scheme, system, half, 0.5 * h, level + 1)
+            f"{exhausted} at t = {failed.t:.6g} s even with the step cut to {exhausted.h:.3g} s, near "
+            f"{system.net.where(worst)}; reduce dt, raise axial_damping, or try scheme rk4") from None
+    return replace(new, iterations=state.iterations + work.iterations, cuts=state.cuts + work.cuts)

@@ -2,13 +2,14 @@
 
 Every scheme is a frozen dataclass (its fields are its parameters) with the contract:
 
-1. ``start(system, t, xf, vf, h) -> state``: a state dict of arrays and numbers at ``t``
-   (free nodes' positions ``x`` and velocities ``v``, flattened ``(n_free, 3)``, plus the
-   scheme's own history) — everything a checkpoint needs to continue exactly;
+1. ``start(system, t, xf, vf, h) -> state``: the scheme's state at ``t`` (its ``state_type``, a
+   frozen dataclass: :class:`ExplicitState`, :class:`MultistepState` or :class:`ImplicitState`:
+   free nodes' positions and velocities, plus the scheme's own history) — everything a
+   checkpoint needs to continue exactly (:meth:`SchemeState.arrays`);
 2. ``step(system, state, h) -> state``: a new state ``h`` later; the old one is not touched;
-3. class attributes ``name``, ``model = "lumped"``, ``order``, ``explicit`` and, for
-   explicit schemes, ``stability_limit``: the largest ``omega h`` on the imaginary axis
-   (undamped oscillation) for which the scheme is stable.
+3. class attributes ``name``, ``order`` and, for explicit schemes, ``stability_limit``: the
+   largest ``omega h`` on the imaginary axis (undamped oscillation) for which the scheme is
+   stable; ``model`` and ``explicit`` come from the list of names (:data:`kanat.schemes.SCHEME_NAMES`).
 
 Schemes:
 
@@ -23,6 +24,7 @@ Schemes:
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -42,6 +44,81 @@ def unpack(y):
     return y[:half].reshape(-1, 3), y[half:].reshape(-1, 3)
 
 
+@dataclass(frozen=True)
+class SchemeState:
+    """A lumped scheme's state at time ``t`` [s]; subclasses add its arrays."""
+
+    t: float
+
+    def positions(self) -> tuple[np.ndarray, np.ndarray]:
+        """Free nodes' ``(x, v)``, shape (n_free, 3) each."""
+        raise NotImplementedError
+
+    def arrays(self) -> dict:
+        """Every field by name, as a checkpoint stores it (:meth:`from_arrays` reads it back)."""
+        return {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+
+    @classmethod
+    def from_arrays(cls, arrays: dict):
+        """The state of :meth:`arrays` (numbers stored as 0-d arrays come back as numbers; a field
+        a checkpoint lacks takes its default)."""
+        values = {}
+        for f in dataclasses.fields(cls):
+            if f.name in arrays:
+                value = arrays[f.name]
+                values[f.name] = value.item() if f.type in ("float", "int") and np.ndim(value) == 0 else value
+        return cls(**values)
+
+    def copy(self):
+        """The same state with its arrays copied."""
+        return dataclasses.replace(self, **{name: np.array(value) for name, value in self.arrays().items()
+                                            if isinstance(value, np.ndarray)})
+
+
+@dataclass(frozen=True)
+class ExplicitState(SchemeState):
+    """``rk4``'s state: ``y = (x, v)`` of the free nodes packed (:func:`pack`), shape (6 n_free,)."""
+
+    y: np.ndarray = None
+
+    def positions(self):
+        return unpack(self.y)
+
+
+@dataclass(frozen=True)
+class MultistepState(ExplicitState):
+    """``abm4``'s state: ``y`` and ``history``, the rates ``f_n .. f_n-k`` (k + 1, 6 n_free), k < 4."""
+
+    history: np.ndarray = None
+
+
+@dataclass(frozen=True)
+class ImplicitState(SchemeState):
+    """The generalized-α state and its work so far.
+
+    Attributes
+    ----------
+    x, v, a : ndarray, shape (n_free, 3)
+        Free nodes' positions [m], velocities [m/s] and accelerations [m/s^2].
+    iterations : int
+        Newton iterations so far.
+    cuts : int
+        Refused step attempts so far (:mod:`kanat.step_control`).
+    explicit : int
+        Steps ``rk4`` took where the implicit iteration failed even on the step's halves.
+    """
+
+    x: np.ndarray = None
+    v: np.ndarray = None
+    a: np.ndarray = None
+    iterations: int = 0
+    cuts: int = 0
+    explicit: int = 0
+
+    def positions(self):
+        return self.x, self.v
+
+
 def _rk4(system, t, y, h):
     f = system.rhs
     k1 = f(t, y)
@@ -56,17 +133,16 @@ class RK4(Scheme):
     """Classical 4th-order Runge–Kutta on ``y = (q, q_dot)``."""
 
     name: ClassVar[str] = "rk4"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
-    explicit: ClassVar[bool] = True
     stability_limit: ClassVar[float] = EXPLICIT_STABILITY["rk4"]    # imaginary-axis bound 2 sqrt(2) = 2.83, real 2.79
     evaluations_per_step: ClassVar[int] = 4
+    state_type: ClassVar[type] = ExplicitState
 
     def start(self, system, t, xf, vf, h):
-        return {"t": float(t), "y": pack(xf, vf)}
+        return ExplicitState(float(t), pack(xf, vf))
 
     def step(self, system, state, h):
-        return {"t": state["t"] + h, "y": _rk4(system, state["t"], state["y"], h)}
+        return ExplicitState(state.t + h, _rk4(system, state.t, state.y, h))
 
 
 AB4 = np.array([55.0, -59.0, 37.0, -9.0]) / 24.0     # on f_n, f_n-1, f_n-2, f_n-3
@@ -78,28 +154,27 @@ class ABM4(Scheme):
     """Adams–Bashforth–Moulton 4 (PECE), started by RK4; ``history`` holds ``f_n .. f_n-3``."""
 
     name: ClassVar[str] = "abm4"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 4
-    explicit: ClassVar[bool] = True
     stability_limit: ClassVar[float] = EXPLICIT_STABILITY["abm4"]    # 0.3: PECE is weakly unstable on the imaginary axis (growth
                                               # 1e-4 per step at 0.3, 1.5e-3 at 0.5; real-axis bound 1.28):
                                               # it relies on some physical damping (tests measure it)
     evaluations_per_step: ClassVar[int] = 2
+    state_type: ClassVar[type] = MultistepState
 
     def start(self, system, t, xf, vf, h):
         y = pack(xf, vf)
-        return {"t": float(t), "y": y, "history": system.rhs(t, y)[None, :]}
+        return MultistepState(float(t), y, system.rhs(t, y)[None, :])
 
     def step(self, system, state, h):
-        t, y, hist = state["t"], state["y"], state["history"]
+        t, y, hist = state.t, state.y, state.history
         if len(hist) < 4:                                   # RK4 start-up
             y1 = _rk4(system, t, y, h)
-            return {"t": t + h, "y": y1, "history": np.vstack([system.rhs(t + h, y1)[None, :], hist])}
+            return MultistepState(t + h, y1, np.vstack([system.rhs(t + h, y1)[None, :], hist]))
         yp = y + h * (AB4 @ hist)
         fp = system.rhs(t + h, yp)
         yc = y + h * (AM4[0] * fp + AM4[1:] @ hist[:3])
         fc = system.rhs(t + h, yc)
-        return {"t": t + h, "y": yc, "history": np.vstack([fc[None, :], hist[:3]])}
+        return MultistepState(t + h, yc, np.vstack([fc[None, :], hist[:3]]))
 
 
 @dataclass(frozen=True)
@@ -125,12 +200,11 @@ class GeneralizedAlphaLumped(Scheme):
     """
 
     name: ClassVar[str] = "generalized-alpha-lumped"
-    model: ClassVar[str] = "lumped"
     order: ClassVar[int] = 2
-    explicit: ClassVar[bool] = False
     lambda_inf: float = -0.5
     max_iterations: int = 12
     tolerance: float = 1e-5
+    state_type: ClassVar[type] = ImplicitState
 
     def __post_init__(self):
         if not -1.0 <= self.lambda_inf <= 0.0:
@@ -155,7 +229,7 @@ class GeneralizedAlphaLumped(Scheme):
 
     def start(self, system, t, xf, vf, h):
         xf, vf = np.array(xf, float), np.array(vf, float)
-        return {"t": float(t), "x": xf, "v": vf, "a": system.acceleration(t, xf, vf), "iterations": 0, "cuts": 0}
+        return ImplicitState(float(t), xf, vf, system.acceleration(t, xf, vf))
 
     def step(self, system, state, h):
         return generalized_alpha_step(self, system, state, h)
@@ -165,8 +239,6 @@ SCHEMES = registry(RK4, ABM4, GeneralizedAlphaLumped)
 """Every lumped scheme by name."""
 
 
-def state_positions(state) -> tuple[np.ndarray, np.ndarray]:
+def state_positions(state: SchemeState) -> tuple[np.ndarray, np.ndarray]:
     """Free nodes' ``(x, v)``, shape (n_free, 3) each, of any scheme's state."""
-    if "y" in state:
-        return unpack(state["y"])
-    return state["x"], state["v"]
+    return state.positions()

@@ -22,9 +22,9 @@ from .operations import WinchStep
 from .problems import PitchModel, SphereTwoCables
 from .simulation import Simulation
 from .vessel import Vessel
+from ..schemes import DYNAMIC_MODELS, MODELS
 
-ModelName = Literal["continuum", "lumped", "statics", "pitch"]
-DYNAMIC_MODELS = ("continuum", "lumped")
+ModelName = Literal[MODELS]
 _SECTIONS = ("environment", "line_types", "bodies", "points", "vessel", "cables")
 
 
@@ -58,7 +58,7 @@ class Case(KanatModel):
     Attributes
     ----------
     name : str
-    model : {"continuum", "lumped", "statics", "pitch"}
+    model : {"statics", "continuum", "lumped", "pitch"}
     environment : Environment
     line_types : dict of str to LineType
     bodies : dict of str to Body
@@ -228,7 +228,7 @@ class Case(KanatModel):
         kanat.errors.CaseWarning
             For a case that runs but probably not as meant.
         """
-        from .validation import replaced
+        from .edit import replaced
 
         return replaced(self, changes)
 

@@ -15,9 +15,9 @@ collects what they find.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING
 
 from ..errors import Problem
-from .case import Case
 from .findings import Findings
 from .line_checks import (MAX_STATIC_STRAIN, MAX_STRETCH, check_anchors, check_attachments, check_bodies, check_clamps,
                           check_element_length, check_fixed_span, check_hanging_loads, check_line_types,
@@ -30,6 +30,9 @@ from .sea_checks import (BREAKING_DEPTH_RATIO, BREAKING_STEEPNESS, DEEP_WATER_KH
                          check_towing, check_waves, wavelength)
 from .setup_checks import check_continuum_cable, check_lumped_network, check_scheme, check_sea, check_track
 from .support import check_support
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 __all__ = ["BREAKING_DEPTH_RATIO", "BREAKING_STEEPNESS", "CHECKS", "DEEP_WATER_KH", "Findings", "LIMIT_CHECKS",
            "MAX_STATIC_STRAIN", "MAX_STRETCH", "RESONANCE_GAIN", "TIME_TOL", "physical_checks", "wavelength"]

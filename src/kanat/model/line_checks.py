@@ -4,11 +4,14 @@ mooring buoys, element lengths, and bodies or points no cable uses."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from ._base import fmt
 from .cable import Cable, CableEnd
-from .case import Case
 from .findings import Findings, kn
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 MAX_STRETCH = 0.20          # strain beyond which fixed ends are an error, not a warning
 MAX_STATIC_STRAIN = 0.10    # static strain of a hanging system considered unphysical

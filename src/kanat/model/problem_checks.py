@@ -3,11 +3,14 @@ sphere on two cables (Naumov & Agievich), pitch resonance and stabilizer, and se
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from ._base import fmt
-from .case import Case
 from .findings import Findings
 from .paths import Path
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 RESONANCE_GAIN = 10.0       # dynamic amplification of a pitch harmonic worth a warning
 

@@ -4,12 +4,16 @@ segments, result size, node-steps and the pitch problem's Fourier series."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
+from ..schemes import DYNAMIC_MODELS
 from ._base import fmt
 from . import limits
-from .case import Case
 from .findings import Findings, byte_size
 from .run_cost import check_node_steps, run_cost
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 TIME_TOL = 1e-6             # relative tolerance on "multiple of dt"
 
@@ -80,7 +84,7 @@ def check_discretization(case: Case, out: Findings) -> None:
 def check_run_size(case: Case, out: Findings) -> None:
     """Time steps, node-steps and the estimated result size of a dynamic run."""
     sim = case.simulation
-    if sim is None or case.model not in ("continuum", "lumped"):
+    if sim is None or case.model not in DYNAMIC_MODELS:
         return
     cost = run_cost(case)
     nodes = cost.nodes
@@ -111,7 +115,7 @@ def check_run_size(case: Case, out: Findings) -> None:
 def _outputs(case: Case) -> int:
     """Outputs a dynamic run of ``case`` stores, t = 0 included (1 for a steady model)."""
     sim = case.simulation
-    if sim is None or case.model not in ("continuum", "lumped"):
+    if sim is None or case.model not in DYNAMIC_MODELS:
         return 1
     return math.floor(sim.duration / sim.output_interval * (1 + TIME_TOL)) + 1
 

@@ -20,9 +20,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
+from ..schemes import DYNAMIC_MODELS
 from . import limits
-from .case import Case
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 EXPLICIT_SCHEMES = ("rk4", "abm4")
 """Lumped schemes whose step is bounded by stability (their limits: :data:`limits.EXPLICIT_STABILITY`)."""
@@ -98,7 +102,7 @@ def explicit_safe_step(case: Case, scheme: str) -> tuple[float, str]:
 def run_cost(case: Case) -> RunCost | None:
     """The estimated work of a dynamic run of ``case`` (None for a steady model)."""
     sim = case.simulation
-    if sim is None or case.model not in ("continuum", "lumped"):
+    if sim is None or case.model not in DYNAMIC_MODELS:
         return None
     nodes = sum(c.segments + 1 for c in case.cables)
     step, why = sim.step_or_default, "dt" if sim.dt is not None else "the default step"

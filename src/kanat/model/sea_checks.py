@@ -3,12 +3,15 @@ breaking limits, a towed cable's vessel track, and a 2-D run kept in the x-z pla
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from ._base import fmt
-from .case import Case
 from .environment import JonswapWaves, RegularWaves
 from .findings import Findings
 from .vessel import Heading, Turn
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 BREAKING_STEEPNESS = 1 / 7  # Miche's limit of H / wavelength for regular waves
 BREAKING_DEPTH_RATIO = 0.78 # depth-limited breaking, H / depth (McCowan)

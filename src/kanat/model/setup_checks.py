@@ -5,7 +5,7 @@ that passed validation; whatever they would refuse there is checked here first, 
 ``kanat validate`` and the run accept the same cases and every refusal comes with its file,
 line and key:
 
-* the scheme: a name of the case's model's registry (:data:`~kanat.model.simulation.KNOWN_SCHEMES`),
+* the scheme: a name of the case's model's registry (:data:`~kanat.schemes.SCHEME_NAMES`),
   and what that scheme can step (Kaliukh & Vusatiuk's factorized schemes a uniform flexible cable, the
   lumped model's implicit scheme no 6-DOF body);
 * the sea: a JONSWAP spectrum that is positive, a seabed that holds the lines;
@@ -21,14 +21,17 @@ its problems with ``out.error(path, message)``.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
+from ..schemes import DYNAMIC_MODELS, SCHEME_NAMES, schemes_of
 from ._base import fmt, listing, suggest
-from .case import Case
 from .environment import JonswapWaves
 from .paths import key_path
-from .simulation import KNOWN_SCHEMES, schemes_of
 from .support import has_drag, needs_network, single_cable
 from .vessel import Turn, start_speeds
+
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
 
 ATTACHMENT_SNAP = 1e-6
 """The lumped model puts an attachment on the node within this fraction of the cable's length
@@ -52,10 +55,10 @@ def builds_lumped_network(case: Case) -> bool:
 def check_scheme(case: Case, out) -> None:
     """``simulation.scheme`` names a scheme of the case's model, which can step this case."""
     sim = case.simulation
-    if sim is None or sim.scheme is None or case.model not in ("continuum", "lumped"):
+    if sim is None or sim.scheme is None or case.model not in DYNAMIC_MODELS:
         return
     valid = schemes_of(case.model)
-    known = KNOWN_SCHEMES.get(sim.scheme)
+    known = SCHEME_NAMES.get(sim.scheme)
     if known is None or known.model != case.model:
         other = f" ('{sim.scheme}' is a {known.model} scheme)" if known is not None else ""
         hint = other + suggest(sim.scheme, valid)
@@ -67,7 +70,7 @@ def check_scheme(case: Case, out) -> None:
         rigid = sorted({e.name for c in case.cables for e in c.ends
                         if e.kind == "body" and e.name in case.bodies and case.bodies[e.name].dof == 6})
         if rigid:
-            explicit = [n for n in valid if KNOWN_SCHEMES[n].explicit]
+            explicit = [n for n in valid if SCHEME_NAMES[n].explicit]
             out.error(("simulation", "scheme"), f"scheme {sim.scheme} does not take bodies with dof: 6 yet "
                       f"(body '{rigid[0]}'); use simulation.scheme: {' or '.join(explicit)}")
 
@@ -102,7 +105,7 @@ def check_track(case: Case, out) -> None:
     that the rate is 0 in floating point counts as none). For the models that sail the track: the
     dynamic ones, and the lumped equilibrium of network statics (the other statics take the initial
     speed only)."""
-    if case.model not in ("continuum", "lumped") and not builds_lumped_network(case):
+    if case.model not in DYNAMIC_MODELS and not builds_lumped_network(case):
         return
     track = case.vessel.track
     for i, (segment, speed) in enumerate(zip(track, start_speeds(track))):
@@ -146,7 +149,7 @@ def check_sea(case: Case, out) -> None:
     """The dynamic models' sea and seabed: a JONSWAP spectrum that is positive (DNV's normalization
     ``1 - 0.287 ln(gamma)`` is not, beyond gamma = 32.6), and a seabed stiff enough to hold the
     lines (their static penetration ``w / (k d)`` within the depth)."""
-    if case.model not in ("continuum", "lumped"):
+    if case.model not in DYNAMIC_MODELS:
         return
     env = case.environment
     waves = env.waves

@@ -1,7 +1,6 @@
 """Time integration settings (case section ``simulation``)."""
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal
 
 from ._base import KanatModel, quantity
@@ -13,53 +12,6 @@ DEFAULT_IMPLICIT_DT = 0.1
 """Step [s] of the lumped implicit scheme when the case gives no ``dt`` (at most the output interval)."""
 
 
-@dataclass(frozen=True)
-class KnownScheme:
-    """What the case checks know of one registered time scheme.
-
-    Attributes
-    ----------
-    model : {"continuum", "lumped"}
-        The model whose registry holds it.
-    explicit : bool
-        Its step is bounded by a stability limit (the lumped model's explicit schemes are the
-        ones that take 6-DOF bodies).
-    uniform_cable_only : bool
-        It steps a uniform, perfectly flexible cable only (Kaliukh & Vusatiuk's factorized schemes,
-        outside the generalized-alpha family).
-    """
-
-    model: str
-    explicit: bool = False
-    uniform_cable_only: bool = False
-
-
-KNOWN_SCHEMES: dict[str, KnownScheme] = {
-    "generalized-alpha": KnownScheme("continuum"),
-    "box": KnownScheme("continuum"),
-    "backward-euler": KnownScheme("continuum"),
-    "generalized-trapezoidal": KnownScheme("continuum"),
-    "factorized": KnownScheme("continuum", uniform_cable_only=True),
-    "factorized-4": KnownScheme("continuum", uniform_cable_only=True),
-    "wave-factorized": KnownScheme("continuum", uniform_cable_only=True),
-    "wave-factorized-2": KnownScheme("continuum", uniform_cable_only=True),
-    "wave-factorized-3": KnownScheme("continuum", uniform_cable_only=True),
-    "rk4": KnownScheme("lumped", explicit=True),
-    "abm4": KnownScheme("lumped", explicit=True),
-    "generalized-alpha-lumped": KnownScheme("lumped"),
-}
-"""Every scheme a case may name in ``simulation.scheme``, by name. The source is the models'
-registries (:data:`kanat.continuum.schemes.SCHEMES`, :data:`kanat.lumped.integrators.SCHEMES`,
-joined in :data:`kanat.api.SCHEMES`), which sit above this layer: a case is checked against this
-copy (:mod:`kanat.model.setup_checks`), and ``tests/test_setup_checks.py`` holds it equal to
-the registries, name for name and attribute for attribute."""
-
-
-def schemes_of(model: str) -> list[str]:
-    """The names of ``model``'s schemes (:data:`KNOWN_SCHEMES`), sorted."""
-    return sorted(name for name, known in KNOWN_SCHEMES.items() if known.model == model)
-
-
 class Simulation(KanatModel):
     """How long and how finely to integrate, and with which scheme.
 
@@ -67,7 +19,7 @@ class Simulation(KanatModel):
     ----------
     scheme : str or None
         Scheme name from the model's scheme registry (theory/time-schemes.md §1–3, theory/lumped.md; checked against
-        :data:`KNOWN_SCHEMES`); None: the model's default.
+        :data:`kanat.schemes.SCHEME_NAMES`); None: the model's default.
     lambda_inf : float
         Spectral radius at infinite frequency of the generalized-alpha family, in [-1, 0].
     gamma : float or None

@@ -20,14 +20,18 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ..errors import CaseError, Problem
+from ..schemes import MODELS
 from ._base import fmt
-from .case import Case
 from .paths import Path, key_path, line_of
 
+if TYPE_CHECKING:                 # a check takes a case, and the case's edit runs the checks (edit.py)
+    from .case import Case
+
 YES, NO, IGNORED = "yes", "no", "ignored"
-SOLVERS = ("statics", "continuum", "lumped", "pitch")
+SOLVERS = MODELS
 """Solver names: the case models; ``statics`` also solves the steady state of a dynamic case."""
 
 Use = tuple[Path, str]

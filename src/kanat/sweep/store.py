@@ -37,7 +37,6 @@ import re
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 import xarray as xr
 
 from kanat.analysis.summary import statistic_units
@@ -254,8 +253,3 @@ def read_summary(path) -> tuple[xr.Dataset, list, list]:
 
     ds = read_result(path)
     return ds, json.loads(ds.attrs.get("parameters", "[]")), json.loads(ds.attrs.get("statistics", "[]"))
-
-
-def summary_frame(ds: xr.Dataset) -> pd.DataFrame:
-    """The summary as a pandas table indexed by case."""
-    return ds.to_dataframe()

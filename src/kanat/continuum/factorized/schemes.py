@@ -56,7 +56,6 @@ class Factorized(ContinuumScheme):
 
     name: ClassVar[str] = "factorized"
     order: ClassVar[int] = 1
-    explicit: ClassVar[bool] = False
     sweeps: ClassVar[tuple] = TWO_SWEEPS
     implicit_source: bool = True
     compiled: bool = True
@@ -99,7 +98,6 @@ class WaveFactorized(ContinuumScheme):
     """
 
     name: ClassVar[str] = "wave-factorized"
-    explicit: ClassVar[bool] = False
     blocks: ClassVar[int] = 2
     gamma: float = 0.6
     iterations: int = 1
