@@ -25,7 +25,7 @@ from ..errors import Problem
 from ..model import Case
 from ..model.checks import physical_checks
 from ..model.paths import key_path
-from ..model.validation import data_path, field_at
+from ..model.data_problems import data_path, field_at
 
 UNSET = object()
 """No value can stand in for a key."""
@@ -59,7 +59,7 @@ def _set_aside(data: dict, err: dict, stand_in: int) -> tuple | None:
     there (in place); its path, or None when it cannot."""
     loc = tuple(err["loc"])
     path = data_path(loc, data)
-    owner, key, _, _ = field_at(loc)
+    owner, key, _, _ = field_at(Case, loc)
     if err["type"] == "missing" or path != loc or not loc or loc[-1] != key:
         return None
     parent = data
