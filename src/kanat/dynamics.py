@@ -515,9 +515,8 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     """The checks of a steady state that a model's ``check`` does not make
     (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`) on the initial state of a model
     built from a case (``model.case``) whose outputs hold node positions and tensions; their
-    warnings are logged. None when it passes (or the model has no case or no such outputs). A start
-    ``as_given`` is no steady state: a body may start anywhere (a buoy dropped from the air), so the
-    bodies are not checked there."""
+    warnings are logged. None when it passes (or the model has no case or no such outputs); the
+    checks know a start ``as_given`` is no steady state (``check_steady(..., start=True)``)."""
     case = getattr(model, "case", None)
     if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
         return None
@@ -525,10 +524,8 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     names = [str(name) for name in layout.labels.get("body", ())]
     bodies = dict(zip(names, np.reshape(values.get("body_position", np.zeros((0, 3))), (-1, 3))))
     attitudes = dict(zip(names, np.reshape(values["body_attitude"], (-1, 3)))) if "body_attitude" in values else None
-    given = getattr(case.simulation, "initial_state", "equilibrium") == "as_given"
-    only = tuple(c for c in LEFT_BY_DYNAMIC_MODELS if not (given and c == "bodies"))
-    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=only,
-                           bodies=bodies, attitudes=attitudes)
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS,
+                           bodies=bodies, attitudes=attitudes, start=True)
     for warning in verdict.warnings:
         log.warning(warning)
     return verdict.failure
