@@ -279,19 +279,23 @@ class Checkpointer:
     path : path-like
         The result file; the checkpoint is ``PATH.ckpt.npz``.
     case_sha256 : str
+        The case's hash, written into the checkpoints (:func:`kanat.io.provenance.case_sha256`).
     every : int, optional
     before : sequence of observers
+    accepted : tuple of str
+        Other hashes a checkpoint of the same case may carry (the form earlier releases wrote,
+        :func:`kanat.io.provenance.case_hashes`).
     """
 
-    def __init__(self, path, case_sha256: str, every: int | None = None, before=()):
-        self.path, self.case_sha256 = Path(path), case_sha256
+    def __init__(self, path, case_sha256: str, every: int | None = None, before=(), accepted=()):
+        self.path, self.case_sha256, self.accepted = Path(path), case_sha256, tuple(accepted)
         self.every, self.before = every, tuple(before)
         self._last = time.perf_counter()
         self._saved_at: float | None = None
 
     def load(self, model) -> Checkpoint:
         """The checkpoint to resume ``model`` from (refusing another case or scheme)."""
-        return Checkpoint.load(self.path, self.case_sha256, label(model.scheme))
+        return Checkpoint.load(self.path, self.case_sha256, label(model.scheme), self.accepted)
 
     def start(self, layout: Layout, resume_at: int | None = None) -> None:
         self._last = time.perf_counter()
