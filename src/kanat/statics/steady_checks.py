@@ -24,7 +24,8 @@ reported, as ``<check>: ...``):
    between 0 and the cable's length.
 7. ``bodies``: every body (given its positions) where its cables hold it, not above the water
    surface when its loads are those of a submerged body, and not wholly under the seabed
-   (:mod:`kanat.statics.body_checks`).
+   (:mod:`kanat.statics.body_checks`); not made on a dynamic run's start ``as_given``, which is
+   no steady state (:func:`checks_of_state`).
 
 A node that holds a body (a cable end at a body, an attachment) is named with it in the messages
 (``body 'sled' at cable 'tow' node 100 (s = 1000 m)``).
@@ -154,7 +155,8 @@ def checks_of_state(case, only: tuple[str, ...] | None, start: bool) -> tuple[st
     given = start and getattr(case.simulation, "initial_state", "equilibrium") == "as_given"
     if not given:
         return only
-    return tuple(name for name in (only or [c.__name__[1:] for c in CHECKS] + ["bodies"]) if name != "bodies")
+    every = [check.__name__[1:] for check in CHECKS] + ["bodies"]
+    return tuple(name for name in (every if only is None else only) if name != "bodies")
 
 
 def nodes_by_cable(cable_of_node, s, position, tension) -> dict[str, NodeArrays]:
