@@ -161,3 +161,47 @@ def test_a_continuum_tow_into_the_seabed_says_where_the_body_would_be():
                              "body 'sled' at cable 'tow' node 100 (s = 1000 m) is ")
     assert number(status, "m) is") == pytest.approx(-deep.bodies["sled"][2] - 100.0, rel=1e-3)
     assert "the continuum model's own start: " in status
+
+
+def test_a_rigid_body_without_a_position_is_checked_against_its_hydrostatic_reference(three_legs):
+    """No ``position``: the hydrostatics balance at the origin (as network statics takes it), so
+    the body fails once it rose more than its draft B / (rho g A_w) above z = 0."""
+    case, result = three_legs
+    unplaced = case.replace({"bodies.buoy.position": None})
+    assert unplaced.bodies["buoy"].position is None
+    moved = solve_statics(unplaced)
+    assert moved.verdict.status == "ok"                        # the example's position is the origin
+    assert np.allclose(moved.bodies["buoy"], result.bodies["buoy"], atol=1e-6)
+    body, env = case.bodies["buoy"], case.environment
+    draft = (body.net_buoyancy + body.mass * env.gravity) / (env.water_density * env.gravity * body.waterplane_area)
+    for rise, ok in ((draft - 0.05, True), (draft + 0.05, False)):
+        up = np.array([0.0, 0.0, rise - float(result.bodies["buoy"][2])])
+        bodies = {"buoy": result.bodies["buoy"] + up}
+        verdict = check_steady(unplaced, _moved(result, shift=up), only=("bodies",), bodies=bodies,
+                               attitudes=result.attitudes)
+        assert (verdict.status == "ok") == ok, verdict.status
+    assert "above its hydrostatic reference z = 0 (no position given)" in verdict.status
+    assert number(verdict.status, "rose") == pytest.approx(draft + 0.05, abs=1e-3)
+    assert number(verdict.status, "B / (rho g A_w) =") == pytest.approx(draft, rel=1e-3)
+
+
+@pytest.mark.parametrize("initial_state, start, checked", [
+    ("as_given", True, False),        # a run's start as given is no steady state: bodies anywhere
+    ("as_given", False, True),        # the same case's statics is one
+    ("equilibrium", True, True),      # a run started from its equilibrium
+])
+def test_a_start_as_given_skips_the_bodies_check_and_nothing_else(initial_state, start, checked):
+    case, nodes, bodies = _mpl_standing_up(50.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                # the continuum model starts from its steady state
+        case = case.replace({"simulation.initial_state": initial_state})
+    verdict = check_steady(case, nodes, bodies=bodies, start=start)
+    alone = check_steady(case, nodes, only=("bodies",), bodies=bodies).status
+    assert alone.startswith("failed: bodies: body 'float' at (0, 0, 50) m is 50 m above the water")
+    if checked:
+        assert verdict.status.startswith("failed: bodies: ") and verdict.status == alone
+        return
+    # without the bodies, the standing umbilical fails the first cable check as it would alone
+    cables_only = ("finite", "strain", "tension", "reach", "seabed", "grounded")
+    assert verdict.status == check_steady(case, nodes, only=cables_only, bodies=bodies).status
+    assert "bodies" not in verdict.status

@@ -29,6 +29,7 @@ from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.equilibrium import starting_state
 
 from helpers import quiet
+from helpers_moordyn import run_moordyn
 
 pytestmark = pytest.mark.slow
 
@@ -87,25 +88,22 @@ def start_from(moordyn, system, line, x: np.ndarray) -> None:
     moordyn.Deserialize(system, state.tobytes())
 
 
-def run_moordyn(moordyn, path, x0, duration, coupling, point, every=0.1):
+def run_from(moordyn, path, x0, duration, coupling, point, every=0.1):
     """MoorDyn-C (its RK2, 0.5 ms) from ``x0`` at rest, its fairlead at ``point(t)`` moved at its mean velocity
     over each ``coupling`` step: rows ``(t, fairlead tension)`` and the node positions every ``every`` s,
     and its own initial state."""
-    rows, shapes, per = [], [], int(round(every / coupling))
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.Init(system, list(point(0.0)), [0.0] * 3)
+    def start(system):
         line = moordyn.GetLine(system, 1)
         own = nodes(moordyn, line)
         start_from(moordyn, system, line, x0)
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            moordyn.Step(system, list(point(t)), list((point(t + coupling) - point(t)) / coupling), t, coupling)
-            if (k + 1) % per == 0:
-                rows.append([(k + 1) * coupling, moordyn.GetLineFairTen(line)])
-                shapes.append(nodes(moordyn, line))
-        moordyn.Close(system)
-    return np.array(rows), np.array(shapes), own
+        return own
+
+    def record(system):
+        line = moordyn.GetLine(system, 1)
+        return [moordyn.GetLineFairTen(line), *nodes(moordyn, line).ravel()]
+    own, rows = run_moordyn(moordyn, path, duration, coupling, record, int(round(every / coupling)),
+                            point=point, at_start=start)
+    return rows[:, :2], rows[:, 2:].reshape(len(rows), SEGMENTS + 1, 3), own
 
 
 @pytest.mark.parametrize("stiffness", [2e6, 2e7])
@@ -123,7 +121,7 @@ def test_moordyn_holds_the_equilibrium_kanat_finds_for_a_line_with_bending(tmp_p
     flexible = kanat_case(path, 1.0, motion=False).replace({"line_types.flex.bending_stiffness": 0.0})
     plain = LumpedModel(flexible)
     x_flexible = starting_state(plain.net, flexible, plain.system)[0][plain.net.node_index]
-    rows, shapes, own = run_moordyn(moordyn, path, x, 20.0, 0.1, lambda t: np.array([0.0, 0.0, -5.0]), every=5.0)
+    rows, shapes, own = run_from(moordyn, path, x, 20.0, 0.1, lambda t: np.array([0.0, 0.0, -5.0]), every=5.0)
     drift = np.abs(shapes - x).max()
     assert drift < 0.02
     bent = np.abs(x - x_flexible).max()
@@ -151,7 +149,7 @@ def test_a_driven_line_with_bending_moves_as_moordyn_s(tmp_path):
     case = kanat_case(path, duration, motion=True)
     model = LumpedModel(case)
     x0 = starting_state(model.net, case, model.system)[0][model.net.node_index]
-    theirs, shapes, _ = run_moordyn(moordyn, path, x0, duration, 0.002, surge)
+    theirs, shapes, _ = run_from(moordyn, path, x0, duration, 0.002, surge)
     with quiet():
         ds = api.run(case).dataset
     assert ds.attrs["status"] == "ok"

@@ -19,6 +19,7 @@ from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.integrators import GeneralizedAlphaLumped
 from kanat.physics import contact
 
+import helpers_moordyn
 from helpers import quiet
 
 WD0050 = Path(__file__).resolve().parent / "data" / "moordyn" / "wd0050_chain.dat"
@@ -47,20 +48,8 @@ def moordyn_fairlead_tension(moordyn, path, point, duration, coupling, dt, every
     """MoorDyn-C (RK2 at ``dt``) on the file ``path`` with its one coupled point at ``point(t)``, moved
     every ``coupling`` seconds at its mean velocity over the step: rows ``(t, fairlead tension)``
     every ``every`` seconds."""
-    record, per = [], int(round(every / coupling))
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, dt)
-        moordyn.Init(system, list(point(0.0)), [0.0] * 3)
-        line = moordyn.GetLine(system, 1)
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            moordyn.Step(system, list(point(t)), list((point(t + coupling) - point(t)) / coupling), t, coupling)
-            if (k + 1) % per == 0:
-                record.append([(k + 1) * coupling, moordyn.GetLineFairTen(line)])
-        moordyn.Close(system)
-    return np.array(record)
+    return helpers_moordyn.run_moordyn(moordyn, path, duration, coupling, helpers_moordyn.fairlead_tension(moordyn),
+                                       int(round(every / coupling)), point=point, scheme="RK2", dt=dt)[1]
 
 
 def test_a_chain_held_by_friction_starts_at_rest():

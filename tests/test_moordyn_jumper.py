@@ -49,7 +49,7 @@ from kanat.errors import CaseWarning
 from kanat.io import load_case
 from kanat.physics.waves import sea_from_model
 
-from helpers import quiet
+import helpers_moordyn
 
 COUPLING, SAMPLE = 0.02, 5                  # s; MoorDyn sampled every SAMPLE coupling steps (0.1 s)
 TOLERANCE = dict(mean=0.01, range=0.03, max=0.03)
@@ -120,23 +120,8 @@ def run_moordyn(text: str, path, sea, duration: float) -> np.ndarray:
     ``(t, top tension)`` every 0.1 s."""
     moordyn = pytest.importorskip("moordyn")
     path.write_text(text)
-    record = []
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.Init(system, [], [])
-        moordyn.ExternalWaveKinInit(system)
-        line = moordyn.GetLine(system, 1)
-        for k in range(int(round(duration / COUPLING))):
-            t = k * COUPLING
-            points = np.array(moordyn.ExternalWaveKinGetCoordinates(system))
-            middle = t + COUPLING / 2
-            moordyn.ExternalWaveKinSet(system, sea.velocity(points, middle).tolist(),
-                                       sea.acceleration(points, middle).tolist(), t)
-            moordyn.Step(system, [], [], t, COUPLING)
-            if (k + 1) % SAMPLE == 0:
-                record.append([(k + 1) * COUPLING, moordyn.GetLineFairTen(line)])
-        moordyn.Close(system)
-    return np.array(record)
+    return helpers_moordyn.run_moordyn(moordyn, path, duration, COUPLING, helpers_moordyn.fairlead_tension(moordyn),
+                                       SAMPLE, sea=sea)[1]
 
 
 def run_kanat(case) -> np.ndarray:

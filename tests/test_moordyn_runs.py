@@ -24,6 +24,7 @@ from kanat.io.results import read_result
 from kanat.lumped.adapter import LumpedModel
 
 from helpers import quiet
+from helpers_moordyn import run_moordyn
 
 FILES = Path(__file__).resolve().parents[1] / "examples" / "moordyn"
 CHAIN = FILES / "three_leg_chain_50.dat"
@@ -74,21 +75,12 @@ def test_the_static_state_agrees_with_moordyns_initial_condition(moordyn, moordy
 def test_a_moored_vessel_in_waves_agrees_with_moordyn_side_by_side(moordyn, moordyn_folder):
     duration, coupling = 120.0, 0.05
     copy = moordyn_folder(CHAIN)
-    with quiet():
-        system = moordyn.Create(str(copy))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, 0.001)
-        moordyn.Init(system, list((BASE + displacement(0.0)).ravel()), [0.0] * 9)
-        lines = [moordyn.GetLine(system, i) for i in (1, 2, 3)]
-        record = []
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            velocity = np.tile((displacement(t + coupling) - displacement(t)) / coupling, 3)
-            moordyn.Step(system, list((BASE + displacement(t)).ravel()), list(velocity), t, coupling)
-            if (k + 1) % 10 == 0:
-                record.append([(k + 1) * coupling] + [moordyn.GetLineFairTen(line) for line in lines])
-        moordyn.Close(system)
-    theirs = np.array(record)
+    _, theirs = run_moordyn(
+        moordyn, copy, duration, coupling,
+        lambda system: [moordyn.GetLineFairTen(moordyn.GetLine(system, i)) for i in (1, 2, 3)], 10,
+        point=lambda t: (BASE + displacement(t)).ravel(),
+        velocity=lambda t: np.tile((displacement(t + coupling) - displacement(t)) / coupling, 3),
+        scheme="RK2", dt=0.001)
     for scheme in ("rk4", None):                   # rk4 at its safe step, and the default (implicit) scheme
         case = load_case(CHAIN).replace({"vessel.motion": MOTION, "simulation.duration": duration,
                                          "simulation.output_dt": 0.5, "simulation.scheme": scheme})

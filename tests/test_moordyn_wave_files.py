@@ -48,6 +48,7 @@ from kanat.io.moordyn import read_moordyn
 from kanat.io.results import read_result
 from kanat.physics.waves import component_sea, regular_wave, sea_from_model
 
+import helpers_moordyn
 from helpers import quiet
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "moordyn" / "waves"
@@ -322,28 +323,10 @@ def run_moordyn(path: Path, sea=None):
     """MoorDyn on ``path`` (RK2, 1 ms); with ``sea`` the file's WaveKin is 1 and the sea's
     kinematics are set at its nodes every coupling step, mid-step."""
     moordyn = pytest.importorskip("moordyn")
-    record = []
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, 0.001)
-        moordyn.Init(system, [], [])
-        if sea is not None:
-            moordyn.ExternalWaveKinInit(system)
-        line = moordyn.GetLine(system, 1)
-        still = moordyn.GetLineFairTen(line)
-        for k in range(int(round(DURATION / COUPLING))):
-            t = k * COUPLING
-            if sea is not None:
-                points = np.array(moordyn.ExternalWaveKinGetCoordinates(system))
-                moordyn.ExternalWaveKinSet(system, sea.velocity(points, t + COUPLING / 2).tolist(),
-                                           sea.acceleration(points, t + COUPLING / 2).tolist(), t)
-            moordyn.Step(system, [], [], t, COUPLING)
-            if (k + 1) % SAMPLE == 0:
-                record.append([(k + 1) * COUPLING, moordyn.GetLineFairTen(line),
-                               *moordyn.GetLineNodePos(line, 20)])
-        moordyn.Close(system)
-    return statistics(still, np.array(record))
+    record = helpers_moordyn.fairlead_tension(moordyn, node=20)
+    still, rows = helpers_moordyn.run_moordyn(moordyn, path, DURATION, COUPLING, record, SAMPLE, sea=sea,
+                                              scheme="RK2", dt=0.001, at_start=lambda system: record(system)[0])
+    return statistics(still, rows)
 
 
 @pytest.fixture(scope="module")

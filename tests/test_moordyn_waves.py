@@ -59,7 +59,7 @@ from kanat.errors import CaseWarning
 from kanat.io import load_case
 from kanat.physics.waves import sea_from_model
 
-from helpers import quiet
+import helpers_moordyn
 
 pytestmark = pytest.mark.slow
 
@@ -124,25 +124,9 @@ def run_moordyn(geometry: str, sea, folder):
     moordyn = pytest.importorskip("moordyn")
     path = folder / f"moordyn_{geometry}.dat"          # MoorDyn writes its log beside its input
     path.write_text(moordyn_text(geometry, MOORDYN_ONLY))
-    record = []
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.Init(system, [], [])
-        moordyn.ExternalWaveKinInit(system)
-        line = moordyn.GetLine(system, 1)
-        still = moordyn.GetLineFairTen(line)
-        for k in range(int(round(DURATION / COUPLING))):
-            t = k * COUPLING
-            points = np.array(moordyn.ExternalWaveKinGetCoordinates(system))
-            middle = t + COUPLING / 2
-            moordyn.ExternalWaveKinSet(system, sea.velocity(points, middle).tolist(),
-                                       sea.acceleration(points, middle).tolist(), t)
-            moordyn.Step(system, [], [], t, COUPLING)
-            if (k + 1) % SAMPLE == 0:
-                record.append([(k + 1) * COUPLING, moordyn.GetLineFairTen(line),
-                               *moordyn.GetLineNodePos(line, MIDDLE)])
-        moordyn.Close(system)
-    return still, np.array(record)
+    record = helpers_moordyn.fairlead_tension(moordyn, node=MIDDLE)
+    return helpers_moordyn.run_moordyn(moordyn, path, DURATION, COUPLING, record, SAMPLE, sea=sea,
+                                       at_start=lambda system: record(system)[0])
 
 
 def run_kanat(geometry: str, case):

@@ -484,14 +484,15 @@ def _run(entry, case, name, output, scheme, resume, progress, checkpoint_every, 
     """:func:`run` once the output (if any) is checked and locked."""
     if isinstance(entry, Steady):
         return _steady(entry, case, name, output, method)
-    from kanat.io.provenance import case_sha256
+    from kanat.io.provenance import case_hashes
     from kanat.io.stream import ResultStream
 
     recorder = dynamics.Recorder() if output is None else None
     sinks = [recorder] if recorder is not None else [ResultStream(output)]
     checkpointer = None
     if output is not None:
-        checkpointer = dynamics.Checkpointer(output, case_sha256(case), checkpoint_every, before=sinks)
+        current, earlier = case_hashes(case)
+        checkpointer = dynamics.Checkpointer(output, current, checkpoint_every, before=sinks, accepted=(earlier,))
         sinks.append(checkpointer)
     if progress is not None:
         sinks.append(dynamics.Progress(progress))
@@ -596,14 +597,14 @@ def case_of(result) -> Case:
     kanat.errors.KanatError
         When the result does not carry its case (written before kanat embedded it).
     """
-    from kanat.io.provenance import case_sha256
+    from kanat.io.provenance import same_case
 
     attrs = result.attrs if hasattr(result, "attrs") else read_result(result).attrs
     text = attrs.get("case_yaml")
     if not text:
         raise KanatError("this result does not carry its case (no case_yaml attribute); run its case file instead")
     case = load_case(text)
-    if attrs.get("case_sha256") not in (None, case_sha256(case)):
+    if attrs.get("case_sha256") is not None and not same_case(attrs["case_sha256"], case):
         raise KanatError("the case embedded in this result does not match its case_sha256: the file was edited")
     return case
 

@@ -22,7 +22,9 @@ from kanat.cli_common import fail, show
 ATTRIBUTES = {
     "kanat_version": "version of kanat that wrote the file",
     "case_name": "the case's `name`",
-    "case_sha256": "SHA-256 of the case's canonical JSON form (insensitive to YAML layout and comments)",
+    "case_sha256": "SHA-256 of the case's canonical JSON form with default values left out (insensitive to YAML "
+                   "layout, comments, keys written at their defaults and keys a later release adds with defaults: "
+                   "a run resumes across releases)",
     "case_yaml": "the case itself, as YAML that loads back to the same case",
     "model": "the model that ran: statics, continuum, lumped or pitch",
     "scheme": "time scheme (dynamic models) or statics method",

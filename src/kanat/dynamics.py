@@ -268,19 +268,23 @@ class Checkpointer:
     path : path-like
         The result file; the checkpoint is ``PATH.ckpt.npz``.
     case_sha256 : str
+        The case's hash, written into the checkpoints (:func:`kanat.io.provenance.case_sha256`).
     every : int, optional
     before : sequence of observers
+    accepted : tuple of str
+        Other hashes a checkpoint of the same case may carry (the form earlier releases wrote,
+        :func:`kanat.io.provenance.case_hashes`).
     """
 
-    def __init__(self, path, case_sha256: str, every: int | None = None, before=()):
-        self.path, self.case_sha256 = Path(path), case_sha256
+    def __init__(self, path, case_sha256: str, every: int | None = None, before=(), accepted=()):
+        self.path, self.case_sha256, self.accepted = Path(path), case_sha256, tuple(accepted)
         self.every, self.before = every, tuple(before)
         self._last = time.perf_counter()
         self._saved_at: float | None = None
 
     def load(self, model) -> Checkpoint:
         """The checkpoint to resume ``model`` from (refusing another case or scheme)."""
-        return Checkpoint.load(self.path, self.case_sha256, label(model.scheme))
+        return Checkpoint.load(self.path, self.case_sha256, label(model.scheme), self.accepted)
 
     def start(self, layout: Layout, resume_at: int | None = None) -> None:
         self._last = time.perf_counter()
@@ -504,9 +508,8 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     """The checks of a steady state that a model's ``check`` does not make
     (:data:`kanat.statics.steady_checks.LEFT_BY_DYNAMIC_MODELS`) on the initial state of a model
     built from a case (``model.case``) whose outputs hold node positions and tensions; their
-    warnings are logged. None when it passes (or the model has no case or no such outputs). A start
-    ``as_given`` is no steady state: a body may start anywhere (a buoy dropped from the air), so the
-    bodies are not checked there."""
+    warnings are logged. None when it passes (or the model has no case or no such outputs); the
+    checks know a start ``as_given`` is no steady state (``check_steady(..., start=True)``)."""
     case = getattr(model, "case", None)
     if case is None or not {"position", "tension"} <= values.keys() or not {"s", "cable"} <= layout.static.keys():
         return None
@@ -514,10 +517,8 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
     names = [str(name) for name in layout.labels.get("body", ())]
     bodies = dict(zip(names, np.reshape(values.get("body_position", np.zeros((0, 3))), (-1, 3))))
     attitudes = dict(zip(names, np.reshape(values["body_attitude"], (-1, 3)))) if "body_attitude" in values else None
-    given = getattr(case.simulation, "initial_state", "equilibrium") == "as_given"
-    only = tuple(c for c in LEFT_BY_DYNAMIC_MODELS if not (given and c == "bodies"))
-    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=only,
-                           bodies=bodies, attitudes=attitudes)
+    verdict = check_steady(case, nodes, when="the initial state (t = 0)", only=LEFT_BY_DYNAMIC_MODELS,
+                           bodies=bodies, attitudes=attitudes, start=True)
     for warning in verdict.warnings:
         log.warning(warning)
     return verdict.failure

@@ -11,8 +11,37 @@ from kanat.version import __version__
 
 
 def case_sha256(case) -> str:
-    """SHA-256 of the case's canonical JSON form (insensitive to YAML layout and comments)."""
-    return hashlib.sha256(case.model_dump_json(by_alias=True).encode()).hexdigest()
+    """SHA-256 of what the user wrote that sets the numbers: the case's canonical JSON with every
+    value equal to its default left out.
+
+    Insensitive to YAML layout and comments, to keys written at their default values, and to keys
+    a later release adds with defaults (a run started before that release resumes with it); any
+    value that differs from its default, written or derived, changes it.
+    """
+    return _sha256(case.model_dump_json(by_alias=True, exclude_defaults=True))
+
+
+def whole_case_sha256(case) -> str:
+    """SHA-256 of the case's whole canonical JSON, defaults included: the ``case_sha256`` that
+    earlier releases wrote, still taken for the same case when the model has not changed since
+    (:func:`same_case`)."""
+    return _sha256(case.model_dump_json(by_alias=True))
+
+
+def case_hashes(case) -> tuple[str, str]:
+    """The hashes a file written for ``case`` may carry: :func:`case_sha256`, then
+    :func:`whole_case_sha256` (files of earlier releases)."""
+    return case_sha256(case), whole_case_sha256(case)
+
+
+def same_case(recorded: str | None, case) -> bool:
+    """Whether the hash ``recorded`` in a result or checkpoint is ``case``'s (either form of
+    :func:`case_hashes`)."""
+    return recorded in case_hashes(case)
+
+
+def _sha256(text: str) -> str:
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
 def case_yaml(case) -> str:

@@ -8,7 +8,8 @@ roll, pitch, yaw; ``heading_deg`` the direction the waves travel, from the vesse
 its +y):
 
 * ``.csv``: columns ``omega`` [rad/s], ``heading_deg``, ``dof``, ``amplitude``, ``phase_deg``,
-  in any order, a header row naming them; lines starting with ``#`` are comments.
+  in any order, a header row naming them; lines starting with ``#`` are comments (read by
+  :func:`kanat.io.csv_rows.read_rows`, as the case's other tables).
 * WAMIT ``.4`` (motion RAOs; WAMIT manual, "Output files", option 4): rows ``PER BETA I MOD PHA
   RE IM`` with the period [s], the heading [deg], the mode 1-6 and the modulus and phase [deg]
   of ``xi / A`` (rotations ``xi L / A`` with WAMIT's length ``ULEN``, given as ``motion.ulen``,
@@ -23,19 +24,21 @@ its +y):
 """
 from __future__ import annotations
 
-import csv
 import math
 from pathlib import Path as FilePath
 
 from ..model.operations import DOFS
+from .csv_rows import TableError, TableSpec, read_rows
 
 RAO_COLUMNS = ("omega", "heading_deg", "dof", "amplitude", "phase_deg")
 """Columns of a RAO CSV file."""
 MAX_RAO_BYTES = 64 * 1024**2
 """Largest RAO file read [bytes]."""
+RAO_TABLE = TableSpec("RAO table", RAO_COLUMNS, RAO_COLUMNS, "raos.csv", max_bytes=MAX_RAO_BYTES)
+"""A RAO CSV file, read by :func:`kanat.io.csv_rows.read_rows` as every table of a case is."""
 
 
-class RaoError(ValueError):
+class RaoError(TableError):
     """A RAO file that cannot be read; the message names the file, the row and the column."""
 
 
@@ -46,8 +49,9 @@ def read_raos(path: str | FilePath, ulen: float = 1.0) -> list[tuple[float, floa
     ------
     OSError
         When the file cannot be read.
-    RaoError
-        With the file, the row and the column of the first bad entry.
+    TableError
+        With the file, the row and the column of the first bad entry (a :class:`RaoError` but
+        for the faults every CSV table can have, :mod:`kanat.io.csv_rows`).
     """
     path = FilePath(path)
     size = path.stat().st_size
@@ -79,32 +83,13 @@ def _number(text: str, where: str) -> float:
 
 
 def _read_csv(path: FilePath) -> list:
-    try:
-        with path.open(newline="", encoding="utf-8") as handle:
-            lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)
-                     if row and not row[0].lstrip().startswith("#")]
-    except UnicodeDecodeError:
-        raise RaoError(f"{path.name}: not a text file (it is not UTF-8)") from None
-    if not lines:
-        raise RaoError(f"{path.name}: empty; the first row names the columns {', '.join(RAO_COLUMNS)}")
-    header = [h.strip().lower() for h in lines[0][1]]
-    missing = [c for c in RAO_COLUMNS if c not in header]
-    if missing:
-        raise RaoError(f"{path.name}: the header row lacks the column(s) {', '.join(missing)}; "
-                       f"a RAO table's columns are {', '.join(RAO_COLUMNS)}")
-    index = [header.index(c) for c in RAO_COLUMNS]
     rows = []
-    for number, row in lines[1:]:
-        if len(row) != len(header):
-            raise RaoError(f"{path.name}, line {number}: {len(row)} values for {len(header)} columns")
-        where = f"{path.name}, line {number}, column"
-        dof = row[index[2]].strip().lower()
+    for row in read_rows(path, RAO_TABLE):
+        dof = row.text("dof").lower()
         if dof not in DOFS:
-            raise RaoError(f"{where} dof: {dof[:20]!r} is not one of {', '.join(DOFS)}")
-        omega, heading, amplitude, phase = (_number(row[index[k]], f"{where} {RAO_COLUMNS[k]}")
-                                            for k in (0, 1, 3, 4))
-        rows.append((_positive(omega, f"{where} omega"), heading, dof,
-                     _not_negative(amplitude, f"{where} amplitude"), phase))
+            raise RaoError(f"{row.where('dof')}: {dof[:20]!r} is not one of {', '.join(DOFS)}")
+        rows.append((_positive(row.number("omega"), row.where("omega")), row.number("heading_deg"), dof,
+                     _not_negative(row.number("amplitude"), row.where("amplitude")), row.number("phase_deg")))
     return rows
 
 
@@ -178,4 +163,4 @@ def _read_capytaine(path: FilePath) -> list:
     return [r for r in rows if r[0] > 0.0]
 
 
-__all__ = ["MAX_RAO_BYTES", "RAO_COLUMNS", "RaoError", "read_raos"]
+__all__ = ["MAX_RAO_BYTES", "RAO_COLUMNS", "RAO_TABLE", "RaoError", "read_raos"]

@@ -1,37 +1,27 @@
 """The sea-state table of a design block (``design: {sea_states: sea_states.csv}``).
 
 Read when the case is loaded, into ``design.sea_state_rows``, like a vessel's motion table
-(:mod:`kanat.io.tables`, whose file checks it shares): a CSV file whose first row names the
-columns :data:`kanat.model.design.SEA_STATE_COLUMNS` (any order; ``gamma`` and
+(:mod:`kanat.io.tables`) and by the same reader (:func:`kanat.io.csv_rows.read_rows`): a CSV
+file whose first row names the columns :data:`kanat.model.design.SEA_STATE_COLUMNS` (any order; ``gamma`` and
 ``heading_deg`` may be left out: 3.3 and 0); lines starting with ``#`` are comments.
 """
 from __future__ import annotations
 
-import csv
 from pathlib import Path as FilePath
 from typing import Any
 
 from ..errors import Problem
-from ..model._base import suggest
 from ..model.design import SEA_STATE_COLUMNS
 from ..model.paths import Path, key_path, line_of
-from .tables import TableError, check_csv_file
+from .csv_rows import TableError, TableSpec, read_rows
 
 OPTIONAL = {"gamma": 3.3, "heading_deg": 0.0}
 """Columns a table may leave out, and their values."""
-
-
-def _header(row: list[str], name: str) -> list[str]:
-    columns = [cell.strip().lower() for cell in row]
-    for column in columns:
-        if column not in SEA_STATE_COLUMNS:
-            raise TableError(f"{name}: unknown column '{column[:24]}'"
-                             f"{suggest(column, list(SEA_STATE_COLUMNS))}; columns: "
-                             f"{', '.join(SEA_STATE_COLUMNS)}")
-    missing = [c for c in SEA_STATE_COLUMNS if c not in columns and c not in OPTIONAL]
-    if missing:
-        raise TableError(f"{name}: no '{missing[0]}' column; columns: {', '.join(SEA_STATE_COLUMNS)}")
-    return columns
+SEA_STATE_TABLE = TableSpec("sea-state table", SEA_STATE_COLUMNS,
+                            tuple(c for c in SEA_STATE_COLUMNS if c not in OPTIONAL), "sea_states.csv")
+"""A sea-state table's columns (:data:`kanat.model.design.SEA_STATE_COLUMNS`)."""
+TEXT_COLUMNS = ("name",)
+"""Columns read as text; the others are numbers."""
 
 
 def read_sea_states(path: str | FilePath) -> list[dict[str, Any]]:
@@ -44,35 +34,9 @@ def read_sea_states(path: str | FilePath) -> list[dict[str, Any]]:
     TableError
         With the file, the line and the column of the first bad entry.
     """
-    path = FilePath(path)
-    check_csv_file(path, "sea-state table", SEA_STATE_COLUMNS, "sea_states.csv")
-    try:
-        with path.open(newline="", encoding="utf-8") as handle:
-            lines = [(n, row) for n, row in enumerate(csv.reader(handle), 1)
-                     if row and not row[0].lstrip().startswith("#")]
-    except (UnicodeDecodeError, csv.Error):
-        raise TableError(f"{path.name}: not a CSV text file") from None
-    if not lines:
-        raise TableError(f"{path.name}: empty; the first row names the columns "
-                         f"({', '.join(SEA_STATE_COLUMNS)})")
-    columns = _header(lines[0][1], path.name)
-    rows = []
-    for number, row in lines[1:]:
-        if len(row) != len(columns):
-            raise TableError(f"{path.name}, line {number}: {len(row)} values for {len(columns)} columns")
-        entry: dict[str, Any] = dict(OPTIONAL)
-        for column, text in zip(columns, row):
-            text = text.strip()
-            if column == "name":
-                entry[column] = text
-                continue
-            try:
-                entry[column] = float(text)
-            except ValueError:
-                raise TableError(f"{path.name}, line {number}, column {column}: {text[:20]!r} is "
-                                 "not a number") from None
-        rows.append(entry)
-    return rows
+    return [{column: row.text(column) if column in TEXT_COLUMNS else row.number(column, OPTIONAL.get(column))
+             for column in SEA_STATE_COLUMNS}
+            for row in read_rows(path, SEA_STATE_TABLE)]
 
 
 def resolve_sea_states(data: Any, base: FilePath, file: str | None,
@@ -102,4 +66,4 @@ def resolve_sea_states(data: Any, base: FilePath, file: str | None,
     return [Problem(key_path(where), message, file, line_of(lines, where))]
 
 
-__all__ = ["OPTIONAL", "read_sea_states", "resolve_sea_states"]
+__all__ = ["OPTIONAL", "SEA_STATE_TABLE", "read_sea_states", "resolve_sea_states"]

@@ -293,15 +293,17 @@ class Checkpoint:
         return path
 
     @classmethod
-    def load(cls, result_path, case_sha256: str, scheme: str) -> Checkpoint:
-        """Read the checkpoint of ``result_path``; refuse one written for another case or scheme."""
+    def load(cls, result_path, case_sha256: str, scheme: str, accepted: tuple[str, ...] = ()) -> Checkpoint:
+        """Read the checkpoint of ``result_path``; refuse one written for another case (a hash other
+        than ``case_sha256`` and the ``accepted`` ones, :func:`kanat.io.provenance.case_hashes`) or
+        another scheme."""
         path = cls.path_for(result_path)
         if not path.exists():
             raise KanatError(f"no checkpoint {path} to resume from; run without --resume to start afresh")
         with np.load(path) as data:
             meta = json.loads(str(data["__meta__"]))
             state = {k: data[k] for k in data.files if k != "__meta__"}
-        if meta["case_sha256"] != case_sha256:
+        if meta["case_sha256"] not in (case_sha256, *accepted):
             raise KanatError(f"{path} was written for a different case (the case file changed since); "
                              "run without --resume to start afresh")
         if meta.get("scheme") != scheme:

@@ -43,7 +43,7 @@ from kanat.lumped.mooring_outputs import (
     line_forces,
     out_of_water,
 )
-from kanat.physics.contact import PENETRATION_MARGIN
+from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
 from kanat.physics.seabed import seabed_of
 from kanat.schemes import get_scheme
 
@@ -272,8 +272,9 @@ class LumpedModel:
                     "without environment.seabed this model has no seabed contact: add environment.seabed "
                     "(stiffness, damping, friction)")
         return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}), more "
-                f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight / "
-                "(stiffness x contact area)); raise environment.seabed.stiffness or damping, or reduce dt")
+                f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight in "
+                f"water, if any, / (stiffness x contact area) + {PENETRATION_FLOOR * 1e3:g} mm); raise "
+                "environment.seabed.stiffness or damping, or reduce dt")
 
     def _slack_with_bending(self, elements) -> str | None:
         """A note when elements of a line type with bending stiffness went slack (but for those at a free

@@ -10,8 +10,9 @@ bodies, body attitudes, and the penetration the seabed check allows.
   half element's loads), less the half element's weight where that element rests on the seabed
   (both its ends touching, or the anchor on the seabed and the other end touching): the
   seabed carries it, not the anchor;
-* the allowed penetration of node ``n``: ``PENETRATION_MARGIN W_n / (k_b A_n) + PENETRATION_FLOOR``
-  (its weight in water over the contact stiffness), or round-off without seabed contact.
+* the allowed penetration of node ``n``: ``PENETRATION_MARGIN max(W_n, 0) / (k_b A_n) + PENETRATION_FLOOR``
+  (its weight in water over the contact stiffness; a node lighter than water, of a buoyant
+  section, presses on nothing: the floor alone), or round-off without seabed contact.
 """
 from __future__ import annotations
 
@@ -112,12 +113,14 @@ def anchors_on_seabed(net, environment) -> np.ndarray:
 
 
 def allowed_penetration(net, environment) -> np.ndarray:
-    """Penetration below the seabed each node may reach before a run fails (n,) [m]."""
+    """Penetration below the seabed each node may reach before a run fails (n,) [m]: never less than
+    :data:`PENETRATION_FLOOR` (module docstring)."""
     block = environment.seabed
     if block is None:
         return np.full(net.n_nodes, NO_CONTACT_RTOL * (environment.depth or 0.0))
     area = net.node_contact_area
-    static = np.where(area > 0, net.node_weight / (block.stiffness * np.maximum(area, 1e-300)), 0.0)
+    weight = np.maximum(net.node_weight, 0.0)      # a node lighter than water presses on nothing
+    static = np.where(area > 0, weight / (block.stiffness * np.maximum(area, 1e-300)), 0.0)
     return PENETRATION_MARGIN * static + PENETRATION_FLOOR
 
 

@@ -24,8 +24,9 @@ the umbilical 47 m above the surface). :func:`check_bodies` looks at every body'
    (``net_buoyancy > 0``, no waterplane) keeps its lift in the air in the model (a failure); a
    sinking one weighs ``m g`` in the air, not ``-net_buoyancy`` (a warning: the state is off
    by its buoyancy). A rigid body with a waterplane (``waterplane_area`` or a heave stiffness)
-   is out of the water when it rose above its given ``position`` by more than its wall-sided
-   draft ``B / (rho g A_w)``, ``B = net_buoyancy + m g`` its buoyancy (a failure).
+   is out of the water when it rose above its given ``position`` (none given: the origin, where
+   network statics balances its hydrostatics, :func:`hydrostatic_reference`) by more than its
+   wall-sided draft ``B / (rho g A_w)``, ``B = net_buoyancy + m g`` its buoyancy (a failure).
 4. ``seabed``: no rigid body's reference point lies under the seabed by more than its reach
    (the largest fairlead offset) plus :data:`PENETRATION_FLOOR`: the whole body would be in
    the ground. A point body is a node of its cables, whose own ``seabed`` check covers it.
@@ -174,20 +175,28 @@ def _surface(case, name, position, attitude, cables, when, warnings) -> str | No
 
 def _rigid_surface(case, name, position, when) -> str | None:
     """A surface-piercing rigid body: out of the water once it rose more than its wall-sided draft
-    above its given position (where its hydrostatics balance)."""
+    above where its hydrostatics balance (:func:`hydrostatic_reference`)."""
     env, body = case.environment, case.bodies[name]
-    if body.position is None:
-        return None
     heave_stiffness = float(body.hydrostatic_stiffness_matrix(env.water_density, env.gravity)[2, 2])
     if heave_stiffness <= 0:
         return None
     draft = max(body.buoyancy(env.gravity), 0.0) / heave_stiffness         # B / (rho g A_w)
-    rise = float(position[2]) - float(body.position[2])
+    reference = hydrostatic_reference(body)
+    rise = float(position[2]) - float(reference[2])
     if rise <= draft + SURFACE_TOLERANCE:
         return None
-    return (f"body '{name}' at {_xyz(position)} rose {rise:.4g} m above its given position in {when}, more than "
+    given = ("its given position" if body.position is not None
+             else "its hydrostatic reference z = 0 (no position given)")
+    return (f"body '{name}' at {_xyz(position)} rose {rise:.4g} m above {given} in {when}, more than "
             f"its draft B / (rho g A_w) = {draft:.4g} m: it is out of the water, where its linear hydrostatics "
             "no longer hold; check its buoyancy, its hydrostatics and the lines' pull")
+
+
+def hydrostatic_reference(body) -> np.ndarray:
+    """Where a rigid body's hydrostatics balance, the point its ``hydrostatic_stiffness`` (or
+    waterplane) restores towards [m], shape (3,): its ``position``, or, none given, the origin on
+    the mean surface, as network statics takes it (:func:`kanat.statics.network._own_loads`)."""
+    return np.zeros(3) if body.position is None else np.asarray(body.position, dtype=float)
 
 
 def _seabed(case, name, position, attitude, cables, when, warnings) -> str | None:

@@ -24,7 +24,8 @@ reported, as ``<check>: ...``):
    between 0 and the cable's length.
 7. ``bodies``: every body (given its positions) where its cables hold it, not above the water
    surface when its loads are those of a submerged body, and not wholly under the seabed
-   (:mod:`kanat.statics.body_checks`).
+   (:mod:`kanat.statics.body_checks`); not made on a dynamic run's start ``as_given``, which is
+   no steady state (:func:`checks_of_state`).
 
 A node that holds a body (a cable end at a body, an attachment) is named with it in the messages
 (``body 'sled' at cable 'tow' node 100 (s = 1000 m)``).
@@ -104,7 +105,7 @@ class Verdict:
 
 def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady state",
                  only: tuple[str, ...] | None = None, bodies: Mapping | None = None,
-                 attitudes: Mapping | None = None) -> Verdict:
+                 attitudes: Mapping | None = None, start: bool = False) -> Verdict:
     """Run the checks of the module docstring on the nodes of every cable of ``case``.
 
     Parameters
@@ -121,12 +122,17 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
         Body positions (a rigid body's reference point) [m]; None: no ``bodies`` check.
     attitudes : mapping of str to array_like, shape (3,), optional
         Roll, pitch, yaw of the bodies [rad] where known (rigid bodies' fairleads).
+    start : bool
+        The state is a dynamic run's initial state. A start ``as_given``
+        (``simulation.initial_state``) is then no steady state: a body may start anywhere (a buoy
+        dropped from the air), so the ``bodies`` check is not made (:func:`checks_of_state`).
 
     Returns
     -------
     Verdict
     """
     warnings: list[str] = []
+    only = checks_of_state(case, only, start)
     prepared = [(cable, _Nodes(case, cable, cables[cable.name])) for cable in case.cables if cable.name in cables]
     checks = [check for check in CHECKS if only is None or check.__name__[1:] in only]
     with np.errstate(over="ignore", invalid="ignore"):      # a state at 1e200 m fails, it does not warn
@@ -140,6 +146,17 @@ def check_steady(case, cables: Mapping[str, CableNodes], when: str = "the steady
             if failure is not None:
                 return Verdict(f"bodies: {failure}", tuple(warnings))
     return Verdict(None, tuple(warnings))
+
+
+def checks_of_state(case, only: tuple[str, ...] | None, start: bool) -> tuple[str, ...] | None:
+    """The checks a state must pass: ``only`` (None: all), less ``bodies`` for a dynamic run's
+    start as given, which places the bodies where the case writes them, in or out of the water,
+    and is no steady state."""
+    given = start and getattr(case.simulation, "initial_state", "equilibrium") == "as_given"
+    if not given:
+        return only
+    every = [check.__name__[1:] for check in CHECKS] + ["bodies"]
+    return tuple(name for name in (every if only is None else only) if name != "bodies")
 
 
 def nodes_by_cable(cable_of_node, s, position, tension) -> dict[str, NodeArrays]:
