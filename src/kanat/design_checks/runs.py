@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from kanat.io.provenance import case_sha256, case_yaml
+from kanat.io.provenance import case_yaml, same_case
 from kanat.model import Case
 from kanat.model.design import SeaState
 
@@ -47,7 +47,7 @@ def complete(job: Job) -> bool:
 
     try:
         with read_result(job.path) as ds:
-            return ds.attrs.get("status") == "ok" and ds.attrs.get("case_sha256") == case_sha256(job.case)
+            return ds.attrs.get("status") == "ok" and same_case(ds.attrs.get("case_sha256"), job.case)
     except Exception:  # noqa: BLE001 - an unreadable file is run again
         return False
 
