@@ -105,16 +105,19 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
         Constant nodal loads [N].
     node_mass : ndarray, shape (n,)
         Nodal (body) mass including body added mass [kg].
-    el : tuple
-        ``(el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x,
-        law_y, mat, buoy, d)``, the element and law arrays of :class:`kanat.lumped.network.Network`
-        (``mat`` the tangential added mass, ``buoy = rho g A``, ``d`` the diameter).
+    el : kanat.lumped.entries.Elements
+        The elements' properties and laws, read by name (``el.length`` is ``L0``, ``el.mass``
+        ``m``, ``el.added_mass_tangential`` ``m_at``, ``el.buoyancy`` ``rho g A``, ...).
     F, M, T, strain : ndarray, shapes (n, 3), (n, 6), (m,), (m,)
         Outputs, overwritten; ``M`` holds each node's symmetric mass block packed as
         :data:`PACKED` (xx, yy, zz, xy, xz, yz).
     """
-    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el[:16]
-    mat, buoy = el[16], el[17]
+    el_i, el_j, L0, m, ma, mat = el.first_node, el.second_node, el.length, el.mass, el.added_mass, \
+        el.added_mass_tangential
+    w, disp, buoy, cn, ct, stretch = el.weight, el.displaced, el.buoyancy, el.drag_normal, el.drag_tangential, \
+        el.stretch_drag
+    c, law, law_kind, law_n, law_x, law_y = el.damping, el.law, el.law_kind, el.law_size, el.law_strains, \
+        el.law_values
     for a in range(x.shape[0]):
         for r in range(3):
             F[a, r] = node_force[a, r]
@@ -164,21 +167,17 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
             M[node, 5] -= added * t1 * t2
 
 
-def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
-           law, law_kind, law_n, law_x, law_y, F, M, T, strain, wet=None, mat=None, buoy=None):
+def forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain, wet=None):
     """:func:`element_forces` with the mass blocks unpacked to ``M`` (n, 3, 3) (the Python path).
 
-    The arguments are those of :func:`element_forces` with ``el`` spread out; ``F, M, T,
-    strain`` (shapes (n, 3), (n, 3, 3), (m,), (m,)) are overwritten. ``wet`` (default all 1),
-    ``mat`` (default 0) and ``buoy`` (default 0): wetted fraction, tangential added mass, ``rho g A``.
+    The arguments are those of :func:`element_forces` (``el`` an
+    :class:`~kanat.lumped.entries.Elements`); ``F, M, T, strain`` (shapes (n, 3), (n, 3, 3),
+    (m,), (m,)) are overwritten. ``wet`` (default all 1): the wetted fraction of each element.
     """
-    ones, zeros = np.ones(len(el_i)), np.zeros(len(el_i))
-    none = np.zeros(0, dtype=np.int64)                 # no bending triples: element_forces reads none
-    el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
-          zeros if mat is None else mat, zeros if buoy is None else buoy, zeros, none, none, none, np.zeros(0))
+    wet = np.ones(len(el.first_node)) if wet is None else wet
     packed = np.empty((x.shape[0], 6))
-    entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force,
-                           node_mass, el, F, packed, T, strain)
+    entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(wet), node_force, node_mass, el, F,
+                           packed, T, strain)
     M[:] = packed[:, np.array(PACKED)]
 
 

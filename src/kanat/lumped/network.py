@@ -36,6 +36,7 @@ import numpy as np
 from kanat.errors import CaseError, Problem
 from kanat.lumped.bending import bending_triples
 from kanat.lumped.clamps import clamped_ends, given_directions, place_guides, vessel_start
+from kanat.lumped.entries import Elements
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.model.paths import key_path
@@ -171,6 +172,19 @@ class Network:
     def anchors(self) -> np.ndarray:
         """The anchors' nodes (``anchor_nodes`` without the clamps' guides), in ``anchor_names``' order."""
         return self.anchor_nodes[:len(self.anchor_names)]
+
+    def elements(self) -> Elements:
+        """The elements as the kernels read them (:class:`kanat.lumped.entries.Elements`), built here
+        only: a new element property is a field there and its fill here."""
+        before, node, after, stiffness = self.bend[:4]
+        return Elements(
+            first_node=self.el_i, second_node=self.el_j, length=self.el_length, mass=self.el_mass,
+            added_mass=self.el_added_mass, weight=self.el_weight, displaced=self.el_displaced,
+            drag_normal=self.el_cn, drag_tangential=self.el_ct, stretch_drag=self.el_stretch_drag,
+            damping=self.el_damping, law=self.el_law, law_kind=self.law_kind, law_size=self.law_n,
+            law_strains=self.law_x, law_values=self.law_y, added_mass_tangential=self.el_added_tangential,
+            buoyancy=self.el_buoyancy, diameter=self.el_diameter, bend_before=before, bend_node=node,
+            bend_after=after, bend_stiffness=stiffness)
 
     def where(self, node: int) -> str:
         """``cable 'x' node k`` for an internal node, for messages."""
