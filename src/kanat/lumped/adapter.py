@@ -212,9 +212,7 @@ class LumpedModel:
 
     def _element_tensions(self, x, v) -> np.ndarray:
         """Element tensions (m,) of all nodes' ``x, v`` (a view of one work array)."""
-        net = self.net
-        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                         net.law_n, net.law_x, net.law_y, self._T)
+        entries.tensions(x, v, self.system.el_args, self._T)
         return self._T
 
     def _positions(self, state: LumpedState) -> np.ndarray:

@@ -236,8 +236,6 @@ def _fused(scheme, system, state, h, steps, tracker) -> int:
 
 def element_tensions(system, state, out: np.ndarray) -> np.ndarray:
     """Element tensions (m,) of a scheme state, written into ``out`` (the Python path)."""
-    net = system.net
     x, v, _, _ = system.full(state["t"], *state_positions(state))
-    entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                     net.law_n, net.law_x, net.law_y, out)
+    entries.tensions(x, v, system.el_args, out)
     return out

@@ -35,6 +35,7 @@ Elements = aot.record(
     buoyancy=F1,                            # rho g A [N/m]
     diameter=F1,                            # d [m]
     bend_before=I1, bend_node=I1, bend_after=I1, bend_stiffness=F1,   # bending triples (kanat.lumped.bending)
+    compression_stiffness=F1,               # > 0: the element is a bar that also pushes (kernels eq. 2a) [N]
 )
 """The elements of a network as the kernels read them (``elements.length[k]``): one field per
 property, filled by :meth:`kanat.lumped.network.Network.elements` and nowhere else
@@ -66,7 +67,7 @@ register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), re
 register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, Elements, F2, F2, F1, F1),
          twin="kanat.lumped.oracle_numpy.element_forces_numpy")
 register("lumped_solve", "kanat.lumped.kernels", (F3, F2, B1, F2), twin="kanat.lumped.oracle_numpy.lumped_solve_into")
-register("tensions", "kanat.lumped.kernels", (F2, F2, I1, I1, F1, F1, I1, I1, I1, F2, F2, F1))
+register("tensions", "kanat.lumped.kernels", (F2, F2, Elements, F1))
 register("add_body_loads", "kanat.lumped.kernels", (F2, F2, F2, F2, I1, F1, F1, F1, FLOAT, FLOAT, F2))
 register("place_fairleads", "kanat.lumped.rigid", (F2, F2, RIG))
 register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, RIG, F3))

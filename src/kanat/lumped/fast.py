@@ -338,8 +338,7 @@ def tensions_at(y, s, samples, nodes, el, bodies, work):
     x, v, T = work[0], work[1], work[4]
     place(y, samples[0][s], samples[1][s], nodes, x, v)
     place_rigid(x, v, bodies[7])
-    kernels.tensions(x, v, el.first_node, el.second_node, el.length, el.damping, el.law, el.law_kind,
-                     el.law_size, el.law_strains, el.law_values, T)
+    kernels.tensions(x, v, el, T)
 
 
 @kernel

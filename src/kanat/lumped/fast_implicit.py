@@ -182,9 +182,7 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
     x, v, M, uw, bu = work[0], work[1], work[3], work[7], work[10]
     K, C, D, Kc, Cc = blocks
     A[:, :, :, :] = 0.0
-    kernels.tangent_blocks(x, v, uw, el.first_node, el.second_node, el.length, el.drag_normal, el.drag_tangential,
-                           el.stretch_drag, el.damping, el.law, el.law_kind, el.law_size, el.law_strains,
-                           el.law_values, K, C, D)
+    kernels.tangent_blocks(x, v, uw, el, K, C, D)
     el_i, el_j = el.first_node, el.second_node
     for k in range(el_i.shape[0]):
         pi, pj = position[el_i[k]], position[el_j[k]]

@@ -41,7 +41,9 @@ def forces_numpy(el, x, v, uw, aw, node_force, node_mass, wet=None):
         sel = el.law == row
         f[sel] = elastic_numpy(el.law_kind[row], el.law_size[row], el.law_strains[row], el.law_values[row],
                                np.maximum(e[sel], 0.0))[0]
-    T = np.where(e > 0.0, np.maximum(0.0, f + el.damping * edot), 0.0)
+    rope = np.where(e > 0.0, np.maximum(0.0, f + el.damping * edot), 0.0)               # eq. (2)
+    bar = np.where(e > 0.0, f, el.compression_stiffness * e) + el.damping * edot        # eq. (2a)
+    T = np.where(el.compression_stiffness > 0.0, bar, rope)
     s = wet * np.where(el.stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
 
     def drag(v_end):                                  # eqs. (4)-(5) on one end's own velocity
