@@ -9,6 +9,11 @@
   approaches at second order in ``1 / N``.
 * The force kernel against its NumPy twin with compressed bars, and the tangent against finite
   differences of the forces in compression.
+* A whole run: a column shortened between two anchors sagging under its own weight (``q``) starts
+  from its equilibrium with the midspan deflection of a beam-column (Timoshenko & Gere §1.11:
+  ``delta = q / (P k^2) (sec(k L / 2) - 1) - q L^2 / (8 P)``, ``k^2 = P / EI``), with ``P`` the
+  run's own compression, to 1e-3 (40 elements), where a plain beam's ``5 q L^4 / (384 EI)`` is
+  30-110 % off.
 * A rope (``compression_stiffness: 0``) still carries nothing when compressed, and the key without
   bending stiffness is refused at its key.
 """
@@ -18,6 +23,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
+from kanat import api
 from kanat.lumped import kernels, oracle_numpy
 from kanat.lumped.bending import bending_blocks
 from kanat.lumped.network import build_network
@@ -141,3 +147,27 @@ def test_compression_without_bending_stiffness_is_refused_at_its_key():
             diameter=0.05, mass=2.0, axial_stiffness=EA, compression_stiffness=EA)},
             cables=[dict(name="c", line_type="rope", length=10, **{"from": "anchor:[0, 0, -50]"},
                          to="anchor:[10, 0, -50]")]))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("strain", [-3e-4, -6e-4])
+def test_a_sagging_compressed_column_deflects_as_a_beam_column(strain):
+    weight = 2.0                                                       # N/m
+    line = dict(diameter=0.05, mass=2.0, weight_in_water=weight, axial_stiffness=EA, bending_stiffness=EI,
+                compression_stiffness=EA)
+    case = api.load_case({
+        "model": "lumped", "environment": {"depth": 200}, "line_types": {"bar": line},
+        "cables": [dict(name="column", line_type="bar", length=LENGTH, segments=40,
+                        **{"from": "anchor:[0, 0, -50]"}, to=f"anchor:[{LENGTH * (1 + strain)}, 0, -50]")],
+        "simulation": dict(duration=0.01, output_dt=0.01, scheme="generalized-alpha-lumped")})
+    outcome = api.run(case)
+    assert outcome.summary.status == "ok"
+    start = outcome.dataset.isel(time=0)                               # the equilibrium
+    load = -float(start["segment_tension"].mean())
+    assert 0.2 < load / (math.pi**2 * EI / LENGTH**2) < 0.6            # compressed, below Euler's load
+    assert float(start["tension"].max()) < 0.0                         # node tensions too: no floor on bars
+    k = math.sqrt(load / EI)
+    beam_column = weight / (load * k * k) * (1.0 / math.cos(k * LENGTH / 2) - 1.0) - weight * LENGTH**2 / (8 * load)
+    deflection = -50.0 - float(start["position"][..., 2].min())
+    assert deflection == pytest.approx(beam_column, rel=1e-3)
+    assert deflection > 1.3 * 5 * weight * LENGTH**4 / (384 * EI)     # the compression's amplification
