@@ -157,9 +157,9 @@ def _installed_fingerprint() -> int:
 
 def checker(spec) -> Callable[[object], bool]:
     """A test of whether a value is what ``spec`` (an :class:`Array`, a scalar type name, None, a
-    :func:`record` class or a tuple of them) describes, exactly as the compiled code reads it (NumPy's ``flags.carray``: C
-    order, aligned, writeable). Made once per entry version: a call checks its arguments in about
-    0.15 us each."""
+    :func:`record` class or a tuple of them) describes, exactly as the compiled code reads it
+    (NumPy's ``flags.carray``: C order, aligned, writeable; a record of its own class only). Made
+    once per entry version: a call checks its arguments in about 0.15 us each."""
     if spec is None:
         return lambda value: value is None
     if is_record(spec):

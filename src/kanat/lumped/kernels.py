@@ -1,10 +1,11 @@
 """Compiled kernels of the lumped model (numba), one loop over elements or nodes each.
 
 Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - x_i``,
-``l = |d|``, ``t = d / l`` (theory/lumped.md; Bezverkhyi 2006, eqs. 3-4)::
+``l = |d|``, ``t = d / l`` (theory/lumped.md §2-3, eq. (2a) is eq. (L6a); Bezverkhyi 2006, eqs. 3-4)::
 
     (1)  e = l / L0 - 1,   e_dot = t . (v_j - v_i) / L0                    strain, rate
     (2)  T = max(0, f(e) + C_E2 e_dot) H(e)                                tension-only law
+    (2a) T = f~(e) + C_E2 e_dot,  f~ = f(e) (e > 0), C_c e (e <= 0)         a bar (C_c > 0): also pushes
     (3)  F_i += T t,  F_j -= T t                                           internal forces Q*
     (4)  v_r = u_w - v_a,  v_t = (v_r . t) t,  v_n = v_r - v_t   relative flow at end a = i, j
     (5)  f_d = phi s (c_n |v_n| v_n + c_t |v_r . t| v_t),  s = sqrt(1+e) or 1   drag per length
