@@ -20,8 +20,13 @@ Two guards keep it honest:
 
 When the module is stale or missing (no C compiler at install), or a call's arguments do not
 match, the run uses numba's just-in-time kernels, which give the same numbers bit for bit
-(tests/test_aot.py). ``KANAT_AOT=0`` in the environment makes a process use numba's kernels
-throughout (to compare, or to debug a kernel); so does :meth:`Lookup.numba_only` within a block.
+(tests/test_aot.py). ``KANAT_AOT=0`` (or ``KANAT_KERNELS=numba``) in the environment makes a
+process use numba's kernels throughout (to compare, or to debug a kernel); so does
+:meth:`Lookup.numba_only` within a block. ``KANAT_KERNELS=python`` or :meth:`Lookup.python_only`
+runs the plain twins instead, without numba (:data:`KERNEL_MODES`; docs/kernels.md).
+
+Kernel inputs that belong together are named records (:func:`record`): a named tuple whose class
+is its own argument specification, read by field name in the kernels.
 
 Python code calls an entry through its :class:`EntryPoint` (``assemble = aot.register(...)``
 beside its callers), always the same object; :data:`LOOKUP`, the one :class:`Lookup` of the
