@@ -101,3 +101,20 @@ def test_a_run_in_python_mode_imports_no_numba():
     out = subprocess.run([sys.executable, "-c", script, os.path.dirname(__file__)], capture_output=True, text=True,
                          check=True, env={**os.environ, "KANAT_KERNELS": "python"})
     assert out.stdout.strip().splitlines()[-1] == "False"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("family", sorted(warmup.CASES))
+def test_every_familys_tiny_case_runs_on_the_plain_twins_as_on_numba(family):
+    """Each family's tiny case (:data:`kanat.warmup.CASES`) through the plain twins and numba's kernels."""
+    case = api.load_case(warmup.CASES[family])
+    with aot.LOOKUP.numba_only():
+        want = api.run(case).dataset
+    with aot.LOOKUP.python_only():
+        outcome = api.run(case)
+    assert outcome.summary.status == "ok"
+    got = outcome.dataset
+    for name in ("tension", "position"):
+        scale = float(np.nanmax(np.abs(want[name].values)))
+        np.testing.assert_allclose(got[name].values, want[name].values, rtol=RELATIVE, atol=RELATIVE * scale,
+                                   err_msg=f"{family}: {name}")
