@@ -143,8 +143,7 @@ def run_kanat(p, scheme_name, h):
 
     def tensions(st):
         xs, vs, _, _ = system.full(st.t, *state_positions(st))
-        kernels.tensions(xs, vs, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                         net.law_n, net.law_x, net.law_y, T)
+        kernels.tensions(xs, vs, net.elements(), T)
         return T
 
     def sample():                                   # the compiled path leaves the last state in its work arrays

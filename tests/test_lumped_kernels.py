@@ -39,9 +39,7 @@ def random_state(net, seed=0):
 def run_forces(net, x, v, uw, aw, mass):
     F, M = np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3, 3))
     T, e = np.zeros(net.n_elements), np.zeros(net.n_elements)
-    kernels.forces(x, v, uw, aw, net.node_force, mass, net.el_i, net.el_j, net.el_length, net.el_mass,
-                   net.el_added_mass, net.el_weight, net.el_displaced, net.el_cn, net.el_ct, net.el_stretch_drag,
-                   net.el_damping, net.el_law, net.law_kind, net.law_n, net.law_x, net.law_y, F, M, T, e)
+    kernels.forces(x, v, uw, aw, net.node_force, mass, net.elements(), F, M, T, e)
     return F, M, T, e
 
 
@@ -52,7 +50,7 @@ def test_force_kernel_matches_its_numpy_twin(law, dimensional):
     x, v, uw, aw = random_state(net)
     mass = net.node_mass + net.node_added_mass
     got = run_forces(net, x, v, uw, aw, mass)
-    want = oracle_numpy.forces_numpy(net, x, v, uw, aw, mass)
+    want = oracle_numpy.forces_numpy(net.elements(), x, v, uw, aw, net.node_force, mass)
     for a, b in zip(got, want):
         np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-9)
     assert np.all(got[2] >= 0.0)                                  # never compressive
@@ -63,8 +61,7 @@ def test_tension_only_kernel_matches_the_force_kernel():
     net = build_network(network_case(LAWS[2]))
     x, v, uw, aw = random_state(net, 3)
     T = np.zeros(net.n_elements)
-    kernels.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                     net.law_n, net.law_x, net.law_y, T)
+    kernels.tensions(x, v, net.elements(), T)
     np.testing.assert_allclose(T, run_forces(net, x, v, uw, aw, net.node_mass)[2], rtol=1e-14)
 
 
@@ -119,9 +116,7 @@ def test_tangent_blocks_are_the_derivatives_of_the_forces(law):
     x = net.x_guess * 1.03                           # all taut, smooth
     m = net.n_elements
     K, C, D = np.empty((m, 3, 3)), np.empty((m, 3, 3)), np.empty((m, 3, 3))
-    kernels.tangent_blocks(x, v, uw, net.el_i, net.el_j, net.el_length, net.el_cn, net.el_ct,
-                           net.el_stretch_drag, net.el_damping, net.el_law, net.law_kind, net.law_n,
-                           net.law_x, net.law_y, K, C, D)
+    kernels.tangent_blocks(x, v, uw, net.elements(), K, C, D)
     zero = np.zeros((m, 3))
     k = 0
     i, j = net.el_i[k], net.el_j[k]
@@ -152,9 +147,7 @@ def test_tangent_blocks_are_the_derivatives_of_the_forces(law):
         Fp = run_forces(solo, x_slack, v + dv, uw, zero, net.node_mass)[0]
         Fm = run_forces(solo, x_slack, v - dv, uw, zero, net.node_mass)[0]
         Ks, Cs, Ds = np.empty((m, 3, 3)), np.empty((m, 3, 3)), np.empty((m, 3, 3))
-        kernels.tangent_blocks(x_slack, v, uw, net.el_i, net.el_j, net.el_length, solo.el_cn, solo.el_ct,
-                               net.el_stretch_drag, solo.el_damping, net.el_law, net.law_kind, net.law_n,
-                               net.law_x, net.law_y, Ks, Cs, Ds)
+        kernels.tangent_blocks(x_slack, v, uw, solo.elements(), Ks, Cs, Ds)
         np.testing.assert_allclose(-(Fp[i] - Fm[i]) / (2 * h), Ds[k][:, q], rtol=1e-5, atol=1e-6)
 
 

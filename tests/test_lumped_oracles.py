@@ -188,8 +188,7 @@ def test_mass_dropped_on_a_tether_snaps_to_the_energy_balance_peak():
 
     def observe(state):
         xs, vs, _, _ = system.full(state.t, *state_positions(state))
-        kernels.tensions(xs, vs, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                         net.law_n, net.law_x, net.law_y, T)
+        kernels.tensions(xs, vs, net.elements(), T)
         tracker.update(state.t, T)
 
     fall = math.sqrt(2 * drop / G)

@@ -20,8 +20,13 @@ Two guards keep it honest:
 
 When the module is stale or missing (no C compiler at install), or a call's arguments do not
 match, the run uses numba's just-in-time kernels, which give the same numbers bit for bit
-(tests/test_aot.py). ``KANAT_AOT=0`` in the environment makes a process use numba's kernels
-throughout (to compare, or to debug a kernel); so does :meth:`Lookup.numba_only` within a block.
+(tests/test_aot.py). ``KANAT_AOT=0`` (or ``KANAT_KERNELS=numba``) in the environment makes a
+process use numba's kernels throughout (to compare, or to debug a kernel); so does
+:meth:`Lookup.numba_only` within a block. ``KANAT_KERNELS=python`` or :meth:`Lookup.python_only`
+runs the plain twins instead, without numba (:data:`KERNEL_MODES`; docs/kernels.md).
+
+Kernel inputs that belong together are named records (:func:`record`): a named tuple whose class
+is its own argument specification, read by field name in the kernels.
 
 Python code calls an entry through its :class:`EntryPoint` (``assemble = aot.register(...)``
 beside its callers), always the same object; :data:`LOOKUP`, the one :class:`Lookup` of the
@@ -30,6 +35,7 @@ itself: no module's namespace is written.
 """
 from __future__ import annotations
 
+import collections
 import contextlib
 import functools
 import hashlib
@@ -60,9 +66,29 @@ class Array:
 
 
 FLOAT, INT, BOOL = "float64", "int64", "bool"
-"""Scalar specifications; ``None`` is Python's None; a tuple of specifications a tuple argument."""
+"""Scalar specifications; ``None`` is Python's None; a tuple of specifications a tuple argument;
+a :func:`record` class a record of named fields."""
 F1, F2, F3, F4 = Array(FLOAT, 1), Array(FLOAT, 2), Array(FLOAT, 3), Array(FLOAT, 4)
 I1, I2, B1 = Array(INT, 1), Array(INT, 2), Array(BOOL, 1)
+
+
+def record(name: str, module: str, **fields) -> type:
+    """A named record: a :func:`collections.namedtuple` class ``module.name`` whose fields are
+    ``fields`` (name: specification, in order), itself the specification of its instances.
+
+    Kernels read a record's fields by name (``elements.length[k]``); numba types it as a named
+    tuple (``types.NamedTuple`` of the fields' types, with the class), which both its just-in-time
+    and its ahead-of-time compilers take, so adding a field is adding it here and filling it where
+    the record is built. The class's ``SPECIFICATION`` holds the fields' specifications.
+    """
+    kind = collections.namedtuple(name, tuple(fields), module=module)
+    kind.SPECIFICATION = tuple(fields.values())
+    return kind
+
+
+def is_record(spec) -> bool:
+    """Whether ``spec`` is a :func:`record` class."""
+    return isinstance(spec, type) and hasattr(spec, "SPECIFICATION")
 
 
 MODULES = ("_continuum", "_lumped", "_lumped_explicit")
@@ -75,13 +101,15 @@ compiled side by side at install (about 40 s of CPU each)."""
 class Entry:
     """A kernel compiled at install: numba's ``function`` in module ``home``, in one version per
     argument specification of ``versions`` (``<name>__<i>`` in the extension ``module``), returning
-    ``returns``."""
+    ``returns``; ``twin``, ``"module.function"`` of its plain NumPy twin taking the same arguments
+    (:meth:`Lookup.python_only` runs it), or None where the twin is the kernel's own Python code."""
 
     home: str
     function: str
     versions: tuple
     returns: object = None
     module: str = "_continuum"
+    twin: str | None = None
 
 
 ENTRIES: dict[str, Entry] = {}
@@ -90,10 +118,10 @@ ENTRIES: dict[str, Entry] = {}
 
 
 def register(name: str, home: str, *versions, returns=None, function: str | None = None,
-             module: str = "_continuum") -> "EntryPoint":
+             module: str = "_continuum", twin: str | None = None) -> "EntryPoint":
     """Declare the entry ``name`` (:class:`Entry`; ``function`` defaults to ``name``); the
     :class:`EntryPoint` its callers call."""
-    ENTRIES[name] = Entry(home, function or name, tuple(versions), returns, module)
+    ENTRIES[name] = Entry(home, function or name, tuple(versions), returns, module, twin)
     return EntryPoint(name)
 
 
@@ -133,12 +161,15 @@ def _installed_fingerprint() -> int:
 
 
 def checker(spec) -> Callable[[object], bool]:
-    """A test of whether a value is what ``spec`` (an :class:`Array`, a scalar type name, None or a
-    tuple of them) describes, exactly as the compiled code reads it (NumPy's ``flags.carray``: C
-    order, aligned, writeable). Made once per entry version: a call checks its arguments in about
-    0.15 us each."""
+    """A test of whether a value is what ``spec`` (an :class:`Array`, a scalar type name, None, a
+    :func:`record` class or a tuple of them) describes, exactly as the compiled code reads it
+    (NumPy's ``flags.carray``: C order, aligned, writeable; a record of its own class only). Made
+    once per entry version: a call checks its arguments in about 0.15 us each."""
     if spec is None:
         return lambda value: value is None
+    if is_record(spec):
+        fields = checker(spec.SPECIFICATION)
+        return lambda value: type(value) is spec and fields(tuple(value))
     if isinstance(spec, tuple):
         items, n = tuple(map(checker, spec)), len(spec)
         return lambda value: (type(value) is tuple and len(value) == n
@@ -161,16 +192,45 @@ def matches(value, spec) -> bool:
     return checker(spec)(value)
 
 
+KERNEL_MODES = ("aot", "numba", "python")
+"""What :data:`LOOKUP` runs (``KANAT_KERNELS`` in the environment chooses for a process):
+``aot`` the modules compiled at install where current, else numba's kernels (the default);
+``numba`` numba's kernels throughout (also ``KANAT_AOT=0``); ``python`` the plain twins: an
+entry's NumPy twin where it has one (:class:`Entry` ``twin``), else the kernel's own Python code
+run by the interpreter, kernels it calls included (slow: small cases only, to test and debug)."""
+
+
+def _environment_mode() -> str:
+    """The kernel mode the environment asks for (:data:`KERNEL_MODES`)."""
+    mode = os.environ.get("KANAT_KERNELS", "aot")
+    if mode not in KERNEL_MODES:
+        raise ValueError(f"KANAT_KERNELS={mode!r}: expected one of {', '.join(KERNEL_MODES)}")
+    return "numba" if mode == "aot" and os.environ.get("KANAT_AOT") == "0" else mode
+
+
 class Lookup:
-    """Where the entries' code comes from, for the process: the extension modules compiled at
-    install when current (:meth:`module`), else numba's kernels; ``KANAT_AOT=0`` or
-    :meth:`numba_only` chooses numba's throughout. :data:`LOOKUP` is the one instance; what it
-    finds is kept in it, never written into a module's namespace."""
+    """Where the entries' code comes from, for the process (:data:`KERNEL_MODES`): the extension
+    modules compiled at install when current (:meth:`module`), else numba's kernels;
+    ``KANAT_AOT=0`` or :meth:`numba_only` chooses numba's throughout, ``KANAT_KERNELS=python`` or
+    :meth:`python_only` the plain twins. :data:`LOOKUP` is the one instance; what it finds is
+    kept in it, never written into a module's namespace."""
 
     def __init__(self):
         self.modules: dict = {}
         self.kernels: dict = {}
-        self.compiled_allowed = True
+        self.mode: str | None = None                      # None: the environment's (_environment_mode)
+
+    @property
+    def interpreted(self) -> bool:
+        """Whether kernels run as plain Python (the ``python`` mode): :class:`kanat.jit.Deferred`
+        asks it at every call."""
+        return self.current_mode() == "python"
+
+    def current_mode(self) -> str:
+        """The mode in force (:data:`KERNEL_MODES`)."""
+        if self.mode is None:
+            self.mode = _environment_mode()
+        return self.mode
 
     def module(self, name: str = "_continuum"):
         """The compiled module ``kanat.<name>`` when it was built and matches the sources, else None.
@@ -178,7 +238,7 @@ class Lookup:
         Imports no numba. The answer is kept for the process (until :meth:`numba_only`)."""
         if name not in self.modules:
             module = None
-            if self.compiled_allowed and os.environ.get("KANAT_AOT") != "0":
+            if self.current_mode() == "aot":
                 try:
                     module = importlib.import_module(f"kanat.{name}")
                     module = module if module.fingerprint() == fingerprint() else None
@@ -191,19 +251,43 @@ class Lookup:
         """The entry ``name`` of :data:`ENTRIES` (:func:`kernel`), made once and kept."""
         found = self.kernels.get(name)
         if found is None:
-            found = self.kernels[name] = _kernel(name, self.module(ENTRIES[name].module))
+            if self.current_mode() == "python":
+                found = twin(name)
+            else:
+                found = _kernel(name, self.module(ENTRIES[name].module))
+            self.kernels[name] = found
         return found
+
+    def twin_of(self, function: Callable) -> Callable:
+        """The plain twin of a numba kernel's Python ``function``: the NumPy twin of the entry it
+        is, if any, else ``function`` itself."""
+        for name, entry in ENTRIES.items():
+            if entry.twin is not None and entry.function == function.__name__ and entry.home == function.__module__:
+                return twin(name)
+        return function
 
     @contextlib.contextmanager
     def numba_only(self):
         """Within the block, every entry runs numba's kernel (as an install without the compiled
         modules, or ``KANAT_AOT=0``); what was found before is restored after it."""
-        saved = self.modules, self.kernels, self.compiled_allowed
-        self.modules, self.kernels, self.compiled_allowed = {}, {}, False
-        try:
+        with self._mode("numba"):
             yield self
+
+    @contextlib.contextmanager
+    def python_only(self):
+        """Within the block, every kernel runs its plain twin (``KANAT_KERNELS=python``); what was
+        found before is restored after it."""
+        with self._mode("python"):
+            yield self
+
+    @contextlib.contextmanager
+    def _mode(self, mode: str):
+        saved = self.modules, self.kernels, self.mode
+        self.modules, self.kernels, self.mode = {}, {}, mode
+        try:
+            yield
         finally:
-            self.modules, self.kernels, self.compiled_allowed = saved
+            self.modules, self.kernels, self.mode = saved
 
 
 LOOKUP = Lookup()
@@ -226,6 +310,16 @@ def kernel(name: str) -> Callable:
     current, each called only with arguments that match it (the one that matched last is tried
     first), numba's kernel otherwise. Made once per process (:data:`LOOKUP` keeps it)."""
     return LOOKUP.kernel(name)
+
+
+def twin(name: str) -> Callable:
+    """The plain twin of the entry ``name``: its NumPy twin (:class:`Entry` ``twin``) or the
+    kernel's own Python code."""
+    entry = ENTRIES[name]
+    if entry.twin is not None:
+        home, function = entry.twin.rsplit(".", 1)
+        return getattr(importlib.import_module(home), function)
+    return getattr(importlib.import_module(entry.home), entry.function).py_func
 
 
 def _kernel(name: str, compiled) -> Callable:

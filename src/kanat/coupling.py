@@ -347,10 +347,8 @@ class Coupling:
     def _tensions(self, scheme_state) -> np.ndarray:
         from kanat.lumped import entries
 
-        net = self.net
         x, v = self.system.full(scheme_state.t, *state_positions(scheme_state))[:2]
-        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                         net.law_n, net.law_x, net.law_y, self._T)
+        entries.tensions(x, v, self.system.el_args, self._T)
         return self._T
 
     def _points_array(self, values, what: str) -> np.ndarray:

@@ -87,6 +87,8 @@ class Deferred:
         return self._real()._numba_type_
 
     def __call__(self, *args):
+        if aot.LOOKUP.interpreted:                        # KANAT_KERNELS=python: the plain twin
+            return aot.LOOKUP.twin_of(self.py_func)(*args)
         dispatcher = self.dispatcher if self.dispatcher is not None else self._real()
         return dispatcher(*args)
 
@@ -211,6 +213,9 @@ def is_cached(dispatcher, accept=None) -> bool:
 
 def pending(family: Family) -> float | None:
     """Seconds of compiling ``family`` would cost now (its measured ``compile_s``), or None if
-    every kernel of it is cached. Cheap: reads the cache index, compiles nothing."""
+    every kernel of it is cached or the kernels run as plain Python (``KANAT_KERNELS=python``).
+    Cheap: reads the cache index, compiles nothing."""
+    if aot.LOOKUP.interpreted:
+        return None
     cached = all(is_cached(dispatcher, accept) for dispatcher, accept in family.entries)
     return None if cached else family.compile_s

@@ -211,9 +211,7 @@ class LumpedModel:
 
     def _element_tensions(self, x, v) -> np.ndarray:
         """Element tensions (m,) of all nodes' ``x, v`` (a view of one work array)."""
-        net = self.net
-        entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                         net.law_n, net.law_x, net.law_y, self._T)
+        entries.tensions(x, v, self.system.el_args, self._T)
         return self._T
 
     def _positions(self, state: LumpedState) -> np.ndarray:
@@ -284,12 +282,13 @@ class LumpedModel:
         net = self.net
         at_free_end = (net.kinds[net.el_i] == "free") | (net.kinds[net.el_j] == "free")   # no pull there anyway
         types = sorted({net.el_type[k] for k in np.unique(elements)
-                        if not at_free_end[k] and self.case.line_types[net.el_type[k]].bending_stiffness > 0.0})
+                        if not at_free_end[k] and self.case.line_types[net.el_type[k]].bending_stiffness > 0.0
+                        and net.el_compression[k] == 0.0})
         if not types:
             return None
         return (f"elements of line type '{types[0]}' (bending stiffness) went slack: the lumped model's elements "
                 "carry no compression, so a compressed part of a line with EI is no beam there (it shortens "
-                "freely); the snap events list them")
+                "freely; the line type's compression_stiffness makes its elements bars); the snap events list them")
 
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state: LumpedState) -> tuple[dict, dict]:

@@ -278,8 +278,6 @@ COMPILED = {RK4: _explicit_run, ABM4: _abm4_run, GeneralizedAlphaLumped: _implic
 
 def element_tensions(system, state, out: np.ndarray) -> np.ndarray:
     """Element tensions (m,) of a scheme state, written into ``out`` (the Python path)."""
-    net = system.net
     x, v, _, _ = system.full(state.t, *state.positions())
-    entries.tensions(x, v, net.el_i, net.el_j, net.el_length, net.el_damping, net.el_law, net.law_kind,
-                     net.law_n, net.law_x, net.law_y, out)
+    entries.tensions(x, v, system.el_args, out)
     return out

@@ -248,15 +248,15 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     body_node, drag_area, spreading, fluid_inertia, buoy_node, buoy_area, buoy_height, rig, contact = bodies
     place(y, vpos, vvel, nodes, x, v)
     place_rigid(x, v, rig)
-    el_i, el_j = el[0], el[1]
+    el_i, el_j = el.first_node, el.second_node
     if not still:                        # else uw, aw hold the uniform current and zero (FusedArrays)
         for k in range(el_i.shape[0]):
             for r in range(3):
                 mid[k, r] = 0.5 * (x[el_i[k], r] + x[el_j[k], r])
         water(mid, t, cz, cu, current_ramp, sea, uw, aw)
-    wetted(x, el_i, el_j, el[18], t, sea, bound, wet)
+    wetted(x, el_i, el_j, el.diameter, t, sea, bound, wet)
     kernels.element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain)
-    bending_forces(x, el[19], el[20], el[21], el[22], F)
+    bending_forces(x, el.bend_before, el.bend_node, el.bend_after, el.bend_stiffness, F)
     seabed_loads(x, v, el_i, el_j, contact, work)
     if body_node.shape[0] > 0:
         if not still:
@@ -338,7 +338,7 @@ def tensions_at(y, s, samples, nodes, el, bodies, work):
     x, v, T = work[0], work[1], work[4]
     place(y, samples[0][s], samples[1][s], nodes, x, v)
     place_rigid(x, v, bodies[7])
-    kernels.tensions(x, v, el[0], el[1], el[2], el[10], el[11], el[12], el[13], el[14], el[15], T)
+    kernels.tensions(x, v, el, T)
 
 
 @kernel

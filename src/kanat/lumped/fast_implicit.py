@@ -159,13 +159,13 @@ def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c
 def bending_tangent(A, bw, position, x, el, c_stiff):
     """The bending's Gauss-Newton blocks (:func:`kanat.lumped.bending.bending_blocks`, eq. 4) times
     ``c_stiff`` in the band tangent."""
-    triples = el[20].shape[0]
+    triples = el.bend_node.shape[0]
     if triples == 0:
         return
     J, K = np.empty((3, 3, 3)), np.empty((triples, 3, 3, 3, 3))
-    bending_blocks(x, el[19], el[20], el[21], el[22], J, K)
+    bending_blocks(x, el.bend_before, el.bend_node, el.bend_after, el.bend_stiffness, J, K)
     for p in range(triples):
-        nodes = (el[19][p], el[20][p], el[21][p])
+        nodes = (el.bend_before[p], el.bend_node[p], el.bend_after[p])
         for m in range(3):
             pm = position[nodes[m]]
             for n in range(3):
@@ -182,9 +182,8 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
     x, v, M, uw, bu = work[0], work[1], work[3], work[7], work[10]
     K, C, D, Kc, Cc = blocks
     A[:, :, :, :] = 0.0
-    kernels.tangent_blocks(x, v, uw, el[0], el[1], el[2], el[7], el[8], el[9], el[10], el[11], el[12], el[13],
-                           el[14], el[15], K, C, D)
-    el_i, el_j = el[0], el[1]
+    kernels.tangent_blocks(x, v, uw, el, K, C, D)
+    el_i, el_j = el.first_node, el.second_node
     for k in range(el_i.shape[0]):
         pi, pj = position[el_i[k]], position[el_j[k]]
         for a, b, sign in ((pi, pi, 1.0), (pi, pj, -1.0), (pj, pi, -1.0), (pj, pj, 1.0)):

@@ -80,9 +80,7 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
     m = net.n_elements
     K, C, D = np.empty((m, 3, 3)), np.empty((m, 3, 3)), np.empty((m, 3, 3))
     uw = system.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))[0]
-    kernels.tangent_blocks(x, v, uw, net.el_i, net.el_j, net.el_length, net.el_cn, net.el_ct,
-                           net.el_stretch_drag, net.el_damping, net.el_law, net.law_kind, net.law_n,
-                           net.law_x, net.law_y, K, C, D)
+    kernels.tangent_blocks(x, v, uw, system.el_args, K, C, D)
     diag = c_stiff * K + c_damp * (C + D)
     off = -c_stiff * K - c_damp * C                 # drag: each end's on its own velocity (D on ii, jj)
     pattern = _pattern(system)

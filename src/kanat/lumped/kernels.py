@@ -1,10 +1,11 @@
 """Compiled kernels of the lumped model (numba), one loop over elements or nodes each.
 
 Element ``k`` joins nodes ``i = el_i[k]`` and ``j = el_j[k]``; with ``d = x_j - x_i``,
-``l = |d|``, ``t = d / l`` (theory/lumped.md; Bezverkhyi 2006, eqs. 3-4)::
+``l = |d|``, ``t = d / l`` (theory/lumped.md §2-3, eq. (2a) is eq. (L6a); Bezverkhyi 2006, eqs. 3-4)::
 
     (1)  e = l / L0 - 1,   e_dot = t . (v_j - v_i) / L0                    strain, rate
     (2)  T = max(0, f(e) + C_E2 e_dot) H(e)                                tension-only law
+    (2a) T = f~(e) + C_E2 e_dot,  f~ = f(e) (e > 0), C_c e (e <= 0)         a bar (C_c > 0): also pushes
     (3)  F_i += T t,  F_j -= T t                                           internal forces Q*
     (4)  v_r = u_w - v_a,  v_t = (v_r . t) t,  v_n = v_r - v_t   relative flow at end a = i, j
     (5)  f_d = phi s (c_n |v_n| v_n + c_t |v_r . t| v_t),  s = sqrt(1+e) or 1   drag per length
@@ -90,6 +91,25 @@ def wetted_fraction(z_i, z_j, d, eta):
 
 
 @kernel
+def axial_force(kinds, ns, xs, ys, row, compression, damping, e, edot):
+    """The element's axial force ``T`` at strain ``e`` and rate ``edot``, eqs. (2) and (2a).
+
+    A rope (``compression == 0``) is tension-only: ``T = max(0, f(e) + C_E2 e_dot)`` for ``e > 0``
+    and 0 otherwise (the caller passes only ``e > 0``). A bar (``compression > 0``, a line type
+    with bending stiffness and a ``compression_stiffness``) also pushes:
+    ``T = f~(e) + C_E2 e_dot`` with ``f~(e) = f(e)`` for ``e > 0`` and ``compression * e`` for
+    ``e <= 0``, continuous at ``e = 0`` and without the clamp at zero.
+    """
+    if compression > 0.0:
+        f = compression * e
+        if e > 0.0:
+            f, _ = elastic_row(kinds, ns, xs, ys, row, e)
+        return f + damping * edot
+    f, _ = elastic_row(kinds, ns, xs, ys, row, e)
+    return max(0.0, f + damping * edot)
+
+
+@kernel
 def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain):
     """Nodal forces, packed lumped mass blocks and element tensions and strains, eqs. (1)-(8).
 
@@ -105,16 +125,20 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
         Constant nodal loads [N].
     node_mass : ndarray, shape (n,)
         Nodal (body) mass including body added mass [kg].
-    el : tuple
-        ``(el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x,
-        law_y, mat, buoy, d)``, the element and law arrays of :class:`kanat.lumped.network.Network`
-        (``mat`` the tangential added mass, ``buoy = rho g A``, ``d`` the diameter).
+    el : kanat.lumped.entries.Elements
+        The elements' properties and laws, read by name (``el.length`` is ``L0``, ``el.mass``
+        ``m``, ``el.added_mass_tangential`` ``m_at``, ``el.buoyancy`` ``rho g A``, ...).
     F, M, T, strain : ndarray, shapes (n, 3), (n, 6), (m,), (m,)
         Outputs, overwritten; ``M`` holds each node's symmetric mass block packed as
         :data:`PACKED` (xx, yy, zz, xy, xz, yz).
     """
-    el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y = el[:16]
-    mat, buoy = el[16], el[17]
+    el_i, el_j, L0, m, ma, mat = el.first_node, el.second_node, el.length, el.mass, el.added_mass, \
+        el.added_mass_tangential
+    w, disp, buoy, cn, ct, stretch = el.weight, el.displaced, el.buoyancy, el.drag_normal, el.drag_tangential, \
+        el.stretch_drag
+    c, law, law_kind, law_n, law_x, law_y = el.damping, el.law, el.law_kind, el.law_size, el.law_strains, \
+        el.law_values
+    compression = el.compression_stiffness
     for a in range(x.shape[0]):
         for r in range(3):
             F[a, r] = node_force[a, r]
@@ -128,10 +152,9 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
         t0, t1, t2 = d0 * inv, d1 * inv, d2 * inv
         e = length / L0[k] - 1.0
         tension = 0.0
-        if e > 0.0:
+        if e > 0.0 or compression[k] > 0.0:
             edot = (t0 * (v[j, 0] - v[i, 0]) + t1 * (v[j, 1] - v[i, 1]) + t2 * (v[j, 2] - v[i, 2])) / L0[k]
-            f, _ = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
-            tension = max(0.0, f + c[k] * edot)
+            tension = axial_force(law_kind, law_n, law_x, law_y, law[k], compression[k], c[k], e, edot)
         T[k] = tension
         strain[k] = e
         phi = wet[k]
@@ -164,21 +187,17 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
             M[node, 5] -= added * t1 * t2
 
 
-def forces(x, v, uw, aw, node_force, node_mass, el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c,
-           law, law_kind, law_n, law_x, law_y, F, M, T, strain, wet=None, mat=None, buoy=None):
+def forces(x, v, uw, aw, node_force, node_mass, el, F, M, T, strain, wet=None):
     """:func:`element_forces` with the mass blocks unpacked to ``M`` (n, 3, 3) (the Python path).
 
-    The arguments are those of :func:`element_forces` with ``el`` spread out; ``F, M, T,
-    strain`` (shapes (n, 3), (n, 3, 3), (m,), (m,)) are overwritten. ``wet`` (default all 1),
-    ``mat`` (default 0) and ``buoy`` (default 0): wetted fraction, tangential added mass, ``rho g A``.
+    The arguments are those of :func:`element_forces` (``el`` an
+    :class:`~kanat.lumped.entries.Elements`); ``F, M, T, strain`` (shapes (n, 3), (n, 3, 3),
+    (m,), (m,)) are overwritten. ``wet`` (default all 1): the wetted fraction of each element.
     """
-    ones, zeros = np.ones(len(el_i)), np.zeros(len(el_i))
-    none = np.zeros(0, dtype=np.int64)                 # no bending triples: element_forces reads none
-    el = (el_i, el_j, L0, m, ma, w, disp, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
-          zeros if mat is None else mat, zeros if buoy is None else buoy, zeros, none, none, none, np.zeros(0))
+    wet = np.ones(len(el.first_node)) if wet is None else wet
     packed = np.empty((x.shape[0], 6))
-    entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(ones if wet is None else wet), node_force,
-                           node_mass, el, F, packed, T, strain)
+    entries.element_forces(x, v, _writable(uw), _writable(aw), _writable(wet), node_force, node_mass, el, F,
+                           packed, T, strain)
     M[:] = packed[:, np.array(PACKED)]
 
 
@@ -299,8 +318,7 @@ def consistent_solve(B, el_i, el_j, node_mass, F, free, a):
 
 
 @kernel
-def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, law_n, law_x, law_y,
-                   K, C, D):
+def tangent_blocks(x, v, uw, el, K, C, D):
     """Element Jacobian blocks for the implicit scheme.
 
     ``K = d(T t)/dd`` (axial and geometric stiffness), ``C = d(T t)/d(v_j - v_i)`` (Kelvin–
@@ -308,8 +326,13 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
     velocity, eq. 5, so ``-dF_a/dv_a`` with ``D`` taken at the element's mean relative flow
     ``u_w - (v_i + v_j)/2`` for both ends — exact where they move together), each shape
     (m, 3, 3). Assembly: ``-dF/dx`` has ``+K`` on the diagonal blocks ``ii, jj`` and ``-K`` off
-    it; the same pattern for ``C``; ``+D`` on the diagonal blocks ``ii, jj`` of ``-dF/dv``.
+    it; the same pattern for ``C``; ``+D`` on the diagonal blocks ``ii, jj`` of ``-dF/dv``. A bar
+    (eq. 2a) has them in compression too (its geometric stiffness then negative: buckling).
     """
+    el_i, el_j, L0, cn, ct, stretch, c = el.first_node, el.second_node, el.length, el.drag_normal, \
+        el.drag_tangential, el.stretch_drag, el.damping
+    law, law_kind, law_n, law_x, law_y = el.law, el.law_kind, el.law_size, el.law_strains, el.law_values
+    compression = el.compression_stiffness
     t, dv, vn = np.empty(3), np.empty(3), np.empty(3)
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
@@ -320,11 +343,14 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
         for r in range(3):
             dv[r] = v[j, r] - v[i, r]
         tdv = t[0] * dv[0] + t[1] * dv[1] + t[2] * dv[2]
-        tension, slope = 0.0, 0.0
+        tension, slope, bar = 0.0, 0.0, compression[k] > 0.0
         if e > 0.0:
             f, df = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
             tension = f + c[k] * tdv / L0[k]
             slope = df
+        elif bar:
+            tension = compression[k] * e + c[k] * tdv / L0[k]
+            slope = compression[k]
         vts = 0.0
         for r in range(3):
             vts += (uw[k, r] - 0.5 * (v[i, r] + v[j, r])) * t[r]
@@ -335,7 +361,7 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
         for r in range(3):
             for q in range(3):
                 nrq = (1.0 if r == q else 0.0) - t[r] * t[q]
-                if tension > 0.0:
+                if tension > 0.0 or bar:
                     dTdd = slope / L0[k] * t[q] + c[k] / L0[k] * (dv[q] - tdv * t[q]) / length
                     K[k, r, q] = t[r] * dTdd + tension / length * nrq
                     C[k, r, q] = c[k] / L0[k] * t[r] * t[q]
@@ -347,18 +373,20 @@ def tangent_blocks(x, v, uw, el_i, el_j, L0, cn, ct, stretch, c, law, law_kind, 
 
 
 @kernel
-def tensions(x, v, el_i, el_j, L0, c, law, law_kind, law_n, law_x, law_y, T):
-    """Element tensions only, eqs. (1)-(2) (for outputs and snap detection)."""
+def tensions(x, v, el, T):
+    """Element tensions only, eqs. (1)-(2a) (for outputs and snap detection); ``el`` an
+    :class:`~kanat.lumped.entries.Elements`."""
+    el_i, el_j, L0, compression = el.first_node, el.second_node, el.length, el.compression_stiffness
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
         d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
         length = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
         e = length / L0[k] - 1.0
         T[k] = 0.0
-        if e > 0.0:
+        if e > 0.0 or compression[k] > 0.0:
             edot = (d0 * (v[j, 0] - v[i, 0]) + d1 * (v[j, 1] - v[i, 1]) + d2 * (v[j, 2] - v[i, 2])) / (length * L0[k])
-            f, _ = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)
-            T[k] = max(0.0, f + c[k] * edot)
+            T[k] = axial_force(el.law_kind, el.law_size, el.law_strains, el.law_values, el.law[k], compression[k],
+                               el.damping[k], e, edot)
 
 
 def body_loads(x, v, uw, aw, body_node, drag_area, spreading, fluid_inertia, rho, heading, F):

@@ -36,6 +36,7 @@ import numpy as np
 from kanat.errors import CaseError, Problem
 from kanat.lumped.bending import bending_triples
 from kanat.lumped.clamps import clamped_ends, given_directions, place_guides, vessel_start
+from kanat.lumped.entries import Elements
 from kanat.lumped.grid import cable_grid
 from kanat.lumped.rigid import RigidBodies, rigid_bodies
 from kanat.model.paths import key_path
@@ -89,6 +90,9 @@ class Network:
         Line type of each element (its section's).
     el_cn, el_ct, el_stretch_drag, el_damping, el_law, law_kind, law_n, law_x, law_y
         Drag, Kelvin–Voigt ``C_E2`` [N s] and elastic laws (module docstring).
+    el_compression : ndarray, shape (m,)
+        The line type's ``compression_stiffness`` [N]: > 0, the element is a bar that also pushes
+        (:func:`kanat.lumped.kernels.axial_force`); 0, a rope.
     body_names, body_node : per body (3-DOF: its node; 6-DOF: its reference pseudo-node)
     body_drag_area, body_spreading : per body (0 for 6-DOF bodies)
     load_node, load_drag_area, load_spreading : nodes with point-body loads (3-DOF bodies and
@@ -134,6 +138,7 @@ class Network:
     el_ct: np.ndarray
     el_stretch_drag: np.ndarray
     el_damping: np.ndarray
+    el_compression: np.ndarray
     el_law: np.ndarray
     law_kind: np.ndarray
     law_n: np.ndarray
@@ -171,6 +176,19 @@ class Network:
     def anchors(self) -> np.ndarray:
         """The anchors' nodes (``anchor_nodes`` without the clamps' guides), in ``anchor_names``' order."""
         return self.anchor_nodes[:len(self.anchor_names)]
+
+    def elements(self) -> Elements:
+        """The elements as the kernels read them (:class:`kanat.lumped.entries.Elements`), built here
+        only: a new element property is a field there and its fill here."""
+        before, node, after, stiffness = self.bend[:4]
+        return Elements(
+            first_node=self.el_i, second_node=self.el_j, length=self.el_length, mass=self.el_mass,
+            added_mass=self.el_added_mass, weight=self.el_weight, displaced=self.el_displaced,
+            drag_normal=self.el_cn, drag_tangential=self.el_ct, stretch_drag=self.el_stretch_drag,
+            damping=self.el_damping, law=self.el_law, law_kind=self.law_kind, law_size=self.law_n,
+            law_strains=self.law_x, law_values=self.law_y, added_mass_tangential=self.el_added_tangential,
+            buoyancy=self.el_buoyancy, diameter=self.el_diameter, bend_before=before, bend_node=node,
+            bend_after=after, bend_stiffness=stiffness, compression_stiffness=self.el_compression)
 
     def where(self, node: int) -> str:
         """``cable 'x' node k`` for an internal node, for messages."""
@@ -451,7 +469,7 @@ def _with_clamps(net: Network, guides: list, triples: list) -> Network:
 
 def _element_arrays(case, rows, laws, rho, g):
     cols = {k: [] for k in ("i", "j", "L", "m", "EI", "ma", "mat", "w", "disp", "buoy", "d", "cn", "ct", "stretch",
-                            "c", "law", "type")}
+                            "c", "law", "type", "compression")}
     for nodes, cable, grid in rows:
         for k in range(len(grid.s) - 1):
             name = cable.sections[grid.section[k]].line_type
@@ -468,7 +486,7 @@ def _element_arrays(case, rows, laws, rho, g):
                       "ma": lt.added_mass, "mat": lt.added_mass_tangential, "w": weight,
                       "disp": (lt.mass * g - weight) / g, "buoy": lt.mass * g - weight, "d": lt.diameter,
                       "cn": cn, "ct": ct, "stretch": 0.0 if dimensional else 1.0, "c": lt.axial_damping,
-                      "law": laws[0][name], "type": name}
+                      "law": laws[0][name], "type": name, "compression": lt.compression_stiffness}
             for key, value in values.items():
                 cols[key].append(value)
     return cols
@@ -543,6 +561,7 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
         el_added_mass=arr("ma"), el_weight=arr("w"), el_displaced=arr("disp"),
         el_added_tangential=arr("mat"), el_buoyancy=arr("buoy"), el_diameter=arr("d"), el_type=list(cols["type"]),
         el_cn=arr("cn"), el_ct=arr("ct"), el_stretch_drag=arr("stretch"), el_damping=arr("c"),
+        el_compression=arr("compression"),
         el_law=arr("law", np.int64), law_kind=laws[1], law_n=laws[2], law_x=laws[3], law_y=laws[4],
         body_names=body_names, body_node=body_node,
         body_drag_area=np.array([case.bodies[k].drag_area if t else 0.0 for k, t in zip(body_names, three)]),

@@ -24,49 +24,60 @@ def elastic_numpy(kind, n, xs, ys, e):
     return y[k - 1] + slope * (e - x[k - 1]), slope
 
 
-def forces_numpy(net, x, v, uw, aw, node_mass, wet=None, mat=None, buoy=None):
-    """Twin of :func:`kernels.forces` (same defaults for ``wet``, ``mat``, ``buoy``): returns
-    ``F (n,3), M (n,3,3), T (m,), strain (m,)``."""
-    m = len(net.el_i)
-    wet = np.ones(m) if wet is None else np.asarray(wet)
-    mat = np.zeros(m) if mat is None else np.asarray(mat)
-    buoy = np.zeros(m) if buoy is None else np.asarray(buoy)
-    i, j, L0 = net.el_i, net.el_j, net.el_length
+def forces_numpy(el, x, v, uw, aw, node_force, node_mass, wet=None):
+    """Twin of :func:`kernels.forces`: returns ``F (n,3), M (n,3,3), T (m,), strain (m,)``.
+
+    ``el`` a :class:`kanat.lumped.entries.Elements`, ``wet`` (default all 1) the wetted fractions.
+    """
+    i, j, L0 = el.first_node, el.second_node, el.length
+    wet = np.ones(len(i)) if wet is None else np.asarray(wet)
     d = x[j] - x[i]
     length = np.linalg.norm(d, axis=1)
     t = d / length[:, None]
     e = length / L0 - 1.0
     edot = np.einsum("kr,kr->k", t, v[j] - v[i]) / L0
     f = np.zeros_like(e)
-    for row in range(len(net.law_kind)):
-        sel = net.el_law == row
-        f[sel] = elastic_numpy(net.law_kind[row], net.law_n[row], net.law_x[row], net.law_y[row],
+    for row in range(len(el.law_kind)):
+        sel = el.law == row
+        f[sel] = elastic_numpy(el.law_kind[row], el.law_size[row], el.law_strains[row], el.law_values[row],
                                np.maximum(e[sel], 0.0))[0]
-    T = np.where(e > 0.0, np.maximum(0.0, f + net.el_damping * edot), 0.0)
-    s = wet * np.where(net.el_stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
+    rope = np.where(e > 0.0, np.maximum(0.0, f + el.damping * edot), 0.0)               # eq. (2)
+    bar = np.where(e > 0.0, f, el.compression_stiffness * e) + el.damping * edot        # eq. (2a)
+    T = np.where(el.compression_stiffness > 0.0, bar, rope)
+    s = wet * np.where(el.stretch_drag > 0, np.sqrt(1.0 + e), 1.0)
 
     def drag(v_end):                                  # eqs. (4)-(5) on one end's own velocity
         vr = uw - v_end
         vts = np.einsum("kr,kr->k", vr, t)
         vn = vr - vts[:, None] * t
-        return s[:, None] * (net.el_cn[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
-                             + (net.el_ct * np.abs(vts) * vts)[:, None] * t)
+        return s[:, None] * (el.drag_normal[:, None] * np.linalg.norm(vn, axis=1)[:, None] * vn
+                             + (el.drag_tangential * np.abs(vts) * vts)[:, None] * t)
     at = np.einsum("kr,kr->k", aw, t)[:, None] * t
-    fi = wet[:, None] * ((net.el_displaced + net.el_added_mass)[:, None] * (aw - at)
-                         + (net.el_displaced + mat)[:, None] * at)
+    fi = wet[:, None] * ((el.displaced + el.added_mass)[:, None] * (aw - at)
+                         + (el.displaced + el.added_mass_tangential)[:, None] * at)
     load = fi * (0.5 * L0)[:, None]
-    load[:, 2] -= (net.el_weight + (1.0 - wet) * buoy) * 0.5 * L0
-    F = np.array(net.node_force, dtype=float)
+    load[:, 2] -= (el.weight + (1.0 - wet) * el.buoyancy) * 0.5 * L0
+    F = np.array(node_force, dtype=float)
     np.add.at(F, i, T[:, None] * t + load + drag(v[i]) * (0.5 * L0)[:, None])
     np.add.at(F, j, -T[:, None] * t + load + drag(v[j]) * (0.5 * L0)[:, None])
     eye = np.eye(3)
     tt = np.einsum("kr,kq->krq", t, t)
-    blocks = (0.5 * L0)[:, None, None] * ((net.el_mass + wet * net.el_added_mass)[:, None, None] * eye
-                                           + (wet * (mat - net.el_added_mass))[:, None, None] * tt)
+    blocks = (0.5 * L0)[:, None, None] * ((el.mass + wet * el.added_mass)[:, None, None] * eye
+                                           + (wet * (el.added_mass_tangential - el.added_mass))[:, None, None] * tt)
     M = node_mass[:, None, None] * eye
     np.add.at(M, i, blocks)
     np.add.at(M, j, blocks)
     return F, M, T, e
+
+
+PACKED_ROWS, PACKED_COLUMNS = [0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]   # xx, yy, zz, xy, xz, yz
+
+
+def element_forces_numpy(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain):
+    """Twin of :func:`kernels.element_forces`, with its arguments: ``F, M, T, strain`` overwritten,
+    ``M`` (n, 6) the symmetric mass blocks packed (xx, yy, zz, xy, xz, yz)."""
+    F[:], full, T[:], strain[:] = forces_numpy(el, x, v, uw, aw, node_force, node_mass, wet)
+    M[:] = full[:, PACKED_ROWS, PACKED_COLUMNS]
 
 
 def lumped_solve_numpy(M, F, free, a):
@@ -74,6 +85,11 @@ def lumped_solve_numpy(M, F, free, a):
     out = np.array(a, dtype=float)
     out[free] = np.linalg.solve(M[free], F[free][..., None])[..., 0]
     return out
+
+
+def lumped_solve_into(M, F, free, a):
+    """Twin of :func:`kernels.lumped_solve`, with its arguments (``a`` of free nodes overwritten)."""
+    a[:] = lumped_solve_numpy(M, F, free, a)
 
 
 def consistent_matrix(net, x, node_mass):

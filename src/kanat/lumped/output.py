@@ -2,7 +2,8 @@
 
 Node tension is the mean of the two adjacent element tensions at interior nodes, and
 extrapolated linearly from the first two elements at cable ends (``1.5 T_0 - 0.5 T_1``,
-clipped at 0), second-order accurate like the elements' own midpoint values.
+clipped at 0 on ropes; a bar's, ``compression_stiffness > 0``, may be negative), second-order
+accurate like the elements' own midpoint values.
 """
 from __future__ import annotations
 
@@ -29,6 +30,7 @@ class NodeTension:
             wb += [-0.5, *([0.5] * (n - 1)), -0.5]
         self.ia, self.ib = np.array(ia, np.int64), np.array(ib, np.int64)
         self.wa, self.wb = np.array(wa), np.array(wb)
+        self.floor = np.where(net.el_compression[self.ia] > 0.0, -np.inf, 0.0)   # bars push: no floor
 
     def __call__(self, T: np.ndarray) -> np.ndarray:
-        return np.maximum(0.0, self.wa * T[self.ia] + self.wb * T[self.ib])
+        return np.maximum(self.floor, self.wa * T[self.ia] + self.wb * T[self.ib])

@@ -89,10 +89,7 @@ class LumpedSystem:
         self._zero_m3 = np.zeros((m, 3))
         self.eta_bound = float(np.sum(self.sea.amplitude)) if self.sea is not None else 0.0
         self.evaluations = 0
-        self.el_args = (net.el_i, net.el_j, net.el_length, net.el_mass, net.el_added_mass, net.el_weight,
-                        net.el_displaced, net.el_cn, net.el_ct, net.el_stretch_drag, net.el_damping, net.el_law,
-                        net.law_kind, net.law_n, net.law_x, net.law_y, net.el_added_tangential, net.el_buoyancy,
-                        net.el_diameter, *net.bend[:4])
+        self.el_args = net.elements()           # kanat.lumped.entries.Elements
         self.contact = self._contact(case, net)
         self.normal_force, self._tangent = np.zeros(n), np.zeros((n, 3))
         self.rig = net.rigid.arrays()
@@ -270,8 +267,8 @@ class LumpedSystem:
             uw, aw = self._u_uniform, self._zero_m3
         else:
             uw, aw = self.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))
-        kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, *self.el_args[:16],
-                       self._F, self._M, self.tension, self.strain, self.wetted(t, x), *self.el_args[16:18])
+        kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, self.el_args, self._F, self._M,
+                       self.tension, self.strain, self.wetted(t, x))
         self.evaluations += 1
         if len(net.bend[1]):
             bending_forces(x, *net.bend[:4], self._F)

@@ -86,6 +86,9 @@ class LineType(KanatModel):
         Minimum breaking load [N].
     bending_stiffness : float
         EI [N m^2]; 0: a perfectly flexible line.
+    compression_stiffness : float
+        The axial stiffness in compression [N] of a line with bending stiffness (lumped model);
+        0: the line carries no compression.
     max_strain : float or None
         Strain limit of the line [-]; None: from the material (:meth:`strain_limit`).
     added_mass_tangential : float
@@ -122,6 +125,12 @@ class LineType(KanatModel):
                     "from the turning angle at interior nodes; no torsion); 0: a perfectly flexible line. "
                     "The cable's ends and inline bodies are pinned (moment-free), a free end carries no "
                     "shear either; no case key clamps an end")
+    compression_stiffness: float = quantity(
+        0.0, unit="N", ge=0,
+        description="axial stiffness in compression of a line with bending_stiffness (lumped model: its "
+                    "elements are bars that push back in proportion to their shortening, and the bending "
+                    "stiffness makes a compressed length buckle near Euler's load pi^2 EI / L^2); usually "
+                    "the axial_stiffness; 0: the line carries no compression, its compressed parts go slack")
     max_strain: float | None = quantity(
         None, unit="-", gt=0, le=1,
         description="largest strain the line may take (a limit checked on results); None: "
@@ -196,6 +205,15 @@ class LineType(KanatModel):
         except line_catalog.CatalogError as error:
             raise ValueError(str(error).removeprefix("nominal_diameter: ")) from None
         return diameter
+
+    @field_validator("compression_stiffness")
+    @classmethod
+    def _compression_needs_bending(cls, stiffness: float, info: ValidationInfo) -> float:
+        if stiffness > 0.0 and info.data.get("bending_stiffness", 0.0) <= 0.0:
+            raise ValueError("a line carries compression only with bending stiffness (without it a "
+                             "compressed chain of elements folds at no load): add bending_stiffness [N m^2] "
+                             "or set compression_stiffness to 0")
+        return stiffness
 
     @property
     def area(self) -> float:

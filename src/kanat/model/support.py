@@ -428,6 +428,12 @@ FEATURES: tuple[Feature, ...] = (
     Feature("bending_stiffness", "bending stiffness", _line_type_key("bending_stiffness", _NONZERO),
             statics=YES, continuum=YES, lumped=YES,
             note={"statics": "statics solves a case with bending by the lumped model's equilibrium"}),
+    Feature("compression_stiffness", "compression carried by a line with bending stiffness",
+            _line_type_key("compression_stiffness", _NONZERO),
+            statics=NO, continuum=IGNORED, lumped=YES,
+            note={"statics": "statics reports tension-only lines (compression clipped at 0): run the lumped "
+                             "model, whose first output is the equilibrium",
+                  "continuum": "the continuum model carries compression its own way (simulation.slack)"}),
     Feature("clamped_end", "a clamped cable end", _clamped_ends,
             statics=YES, continuum=NO, lumped=YES,
             note={"statics": "statics solves a case with bending by the lumped model's equilibrium",
