@@ -34,6 +34,7 @@ CONTRACTION = 0.1           # an increment above this fraction of the one before
                             # more iterations on the three-leg mooring at 0.0125 s; a rebuild costs ~4 iterations)
 FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
+CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -247,7 +248,11 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     raised to the power 0.8 — RADAU5's ``FACCON = MAX(FACCON, UROUND)**0.8`` (Hairer & Wanner,
     IV.8, the code's step start), which lets it drift towards 1 over the steps it is not
     measured — so a step whose first increment is already small enough ends there, with one
-    force evaluation. New factors start with the rate unknown (0). Factors :data:`FACTOR_AGE`
+    force evaluation. The carried rate is taken as at least :data:`CARRIED_RATE_FLOOR`: a rate
+    measured while the line was nearly linear (a slack line falling freely contracts at 1e-10)
+    says nothing of the next step, where an element may snap taut, and a first increment 1e8
+    times the tolerance was accepted on it (a released line falling through its own slack
+    stretched 187 % at dt 0.01 s, where rk4 and a measured rate keep it within 0.1 %). New factors start with the rate unknown (0). Factors :data:`FACTOR_AGE`
     steps old (``tangent[4]``) are rebuilt whatever their rate: the tangent drifts with the
     tension and the drag, and fresh factors contract enough for more steps to end after their
     first iteration (the three-leg mooring of ``benchmarks/bench_mooring_moordyn.py``, 12.5 ms,
@@ -271,7 +276,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     refresh = tangent[0] != h or tangent[4] >= FACTOR_AGE
     previous, norm_before, backtracks = 0.0, np.inf, 0
     if tangent[3] > 0.0:
-        tangent[3] = max(tangent[3], 1e-16) ** 0.8
+        tangent[3] = max(tangent[3], CARRIED_RATE_FLOOR) ** 0.8
     for iteration in range(1, max_iterations + 1):
         for f in range(nf):
             for r in range(3):
