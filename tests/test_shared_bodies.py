@@ -50,7 +50,7 @@ def _quiet(function, *args, **kwargs):
         return function(*args, **kwargs)
 
 
-def _write(layout: str, path) -> None:
+def write_shared_array(layout: str, path, segments: int = 40) -> None:
     """Two coupled bodies, a 230 m chain between them, a 640 m chain from each to an anchor."""
     first, second = LAYOUTS[layout]
     ms = _quiet(mp.System, depth=150)
@@ -59,11 +59,11 @@ def _write(layout: str, path) -> None:
         ms.addBody(-1, [x, y, z, *np.radians(angles)], m=0, v=0)
     ms.addPoint(1, [8, 2, -12], body=1)
     ms.addPoint(1, [6, -3, -12], body=2)
-    ms.addLine(230, "chain", pointA=1, pointB=2)
+    ms.addLine(230, "chain", nSegs=segments, pointA=1, pointB=2)
     for body, anchor in ((1, [-600, 0, -150]), (2, [800, 0, -150])):
         ms.addPoint(1, [-8, 0, -12], body=body)
         ms.addPoint(1, anchor)
-        ms.addLine(640, "chain", pointA=len(ms.pointList), pointB=len(ms.pointList) - 1)
+        ms.addLine(640, "chain", nSegs=segments, pointA=len(ms.pointList), pointB=len(ms.pointList) - 1)
     _quiet(ms.initialize)
     _quiet(ms.unload, str(path))
 
@@ -72,7 +72,7 @@ def _write(layout: str, path) -> None:
 def layout(request, tmp_path_factory):
     """``(case, MoorPy system read back from the same file at equilibrium, kanat's result)``."""
     path = tmp_path_factory.mktemp("shared") / f"{request.param}.dat"
-    _write(request.param, path)
+    write_shared_array(request.param, path)
     ms = _quiet(mp.System, file=str(path))
     _quiet(ms.initialize)
     _quiet(ms.solveEquilibrium, tol=1e-10, maxIter=5000)

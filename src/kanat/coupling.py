@@ -37,8 +37,16 @@ row, the vessel's case position) follows::
 
     (2)  q(tau) = q_t + q_dot_t (tau - t),    r = (x, y, z) + R o,    r_dot = (x_dot, y_dot, z_dot) + w x R o
 
-``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`);
-and the forces (N, 6) are, body by body, the lines' resultant and moment about ``(x, y, z)``::
+``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`).
+A MoorDyn file's bodies move as MoorDyn-C moves its coupled bodies (``Body::updateFairlead``,
+``XYZQuat::fromVec6``): the angles are intrinsic x-y-z ones and their rates are taken as the angular
+velocity about the global axes::
+
+    (2b) r = (x, y, z) + Rx(roll) Ry(pitch) Rz(yaw) o,    r_dot = (x_dot, y_dot, z_dot) + q_dot[3:] x (r - (x, y, z))
+
+(the same as eq. (2) to first order in the angles away from a heading; at a heading of 200 deg a
+pitch of 1 deg turns about the global y axis here, about the body's own y axis in eq. (2)).
+The forces (N, 6) are, body by body, the lines' resultant and moment about ``(x, y, z)``::
 
     (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i      (the body's points i)
 
@@ -125,22 +133,41 @@ class DrivenBodies:
         The body of each vessel node.
     offsets : ndarray, shape (p, 3)
         Each vessel node in its body's axes, from the body's reference point [m].
+    moordyn : bool
+        MoorDyn-C's angles, eq. (2b), instead of ``vessel.motion``'s, eq. (2).
     """
 
     names: tuple
     owner: np.ndarray
     offsets: np.ndarray
+    moordyn: bool = False
 
     def placed(self, q: np.ndarray, rates: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Positions and velocities (k, p, 3) of the points for the bodies' ``q`` and rates (k, N, 6),
-        eq. (2)."""
+        eq. (2) or (2b)."""
         r = np.empty((q.shape[0], len(self.owner), 3))
         u = np.empty_like(r)
         for b in range(len(self.names)):
             on = self.owner == b
-            displacement, velocity = point_series(self.offsets[on], q[:, b], rates[:, b])
-            r[:, on], u[:, on] = self.offsets[on][None] + displacement, velocity
+            if self.moordyn:
+                turned = np.einsum("kij,pj->kpi", moordyn_rotations(q[:, b, 3:]), self.offsets[on])
+                r[:, on] = q[:, None, b, :3] + turned
+                u[:, on] = rates[:, None, b, :3] + np.cross(rates[:, None, b, 3:], turned)
+            else:
+                displacement, velocity = point_series(self.offsets[on], q[:, b], rates[:, b])
+                r[:, on], u[:, on] = self.offsets[on][None] + displacement, velocity
         return r, u
+
+
+def moordyn_rotations(angles: np.ndarray) -> np.ndarray:
+    """``Rx(roll) Ry(pitch) Rz(yaw)`` (k, 3, 3) of ``angles`` (k, 3) [rad]: MoorDyn-C's coupled bodies
+    (intrinsic x-y-z Euler angles, eq. (2b))."""
+    c, s = np.cos(angles), np.sin(angles)
+    one, nil = np.ones(len(angles)), np.zeros(len(angles))
+    Rx = np.stack([one, nil, nil, nil, c[:, 0], -s[:, 0], nil, s[:, 0], c[:, 0]], -1).reshape(-1, 3, 3)
+    Ry = np.stack([c[:, 1], nil, s[:, 1], nil, one, nil, -s[:, 1], nil, c[:, 1]], -1).reshape(-1, 3, 3)
+    Rz = np.stack([c[:, 2], -s[:, 2], nil, s[:, 2], c[:, 2], nil, nil, nil, one], -1).reshape(-1, 3, 3)
+    return Rx @ Ry @ Rz
 
 
 class Coupling:
@@ -471,4 +498,4 @@ def driven_bodies(case: Case, net) -> DrivenBodies:
         raise KanatError(f"case '{case.name}': rigid_vessel=True drives the file's Coupled bodies, but the "
                          f"coupled point(s) at {loose} m are on none of them; drive the points instead "
                          "(rigid_vessel=False)")
-    return DrivenBodies(tuple(body.name for body in bodies), owner, offsets)
+    return DrivenBodies(tuple(body.name for body in bodies), owner, offsets, moordyn=True)
