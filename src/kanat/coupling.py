@@ -53,8 +53,8 @@ The forces (N, 6) are, body by body, the lines' resultant and moment about ``(x,
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
 ``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
-scheme's default step, cut to divide the coupling step exactly. The state after a step is what a run of the same case with the same
-motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
+scheme's default step, cut to divide the coupling step exactly. The state after a step is what a
+run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
 """
 from __future__ import annotations
 
@@ -438,7 +438,9 @@ def driven_points(case: Case, net):
     end at each (``CABLE.from``, ``CABLE.to``) in cable order (the network's own)."""
     arms = np.asarray(net.vessel_offset, float)
     names: list[str | None] = [None] * len(arms)
-    coupled = moordyn_coupled_points(case)
+    from kanat.io.moordyn_coupled import coupled_points
+
+    coupled = coupled_points(case)
     for name, xyz in coupled:
         hit = np.flatnonzero(np.all(np.isclose(arms, xyz, rtol=0.0, atol=1e-9), axis=1))
         if len(hit) and names[hit[0]] is None:
@@ -458,18 +460,6 @@ def driven_points(case: Case, net):
             if len(hit) and names[hit[0]] is None:
                 names[hit[0]] = label
     return [name or f"vessel{k}" for k, name in enumerate(names)], net
-
-
-def moordyn_coupled_points(case: Case) -> list[tuple[str, np.ndarray]]:
-    """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
-    in file order; empty for any other case."""
-    from kanat.io.moordyn_coupled import moordyn_items
-
-    read = moordyn_items(case)
-    if read is None:
-        return []
-    points, _ = read
-    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
 
 
 def driven_bodies(case: Case, net) -> DrivenBodies:

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["CoupledBody", "coupled_bodies", "moordyn_items"]
+__all__ = ["CoupledBody", "coupled_bodies", "coupled_points", "moordyn_items"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -81,3 +81,13 @@ def coupled_bodies(case) -> list[CoupledBody]:
         out.append(CoupledBody(f"body{number}", X, np.radians(body.angles_deg), offsets,
                                X + offsets @ np.asarray(rotation(body.angles_deg)).T))
     return out
+
+
+def coupled_points(case) -> list[tuple[str, np.ndarray]]:
+    """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
+    in file order; empty for any other case."""
+    read = moordyn_items(case)
+    if read is None:
+        return []
+    points, _ = read
+    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
