@@ -14,6 +14,8 @@ chain each), written with ``System.unload`` and read by kanat and by MoorPy. Ora
     between the two bodies, where MoorPy's analytic tangent differs from its own re-solved
     statics (and from kanat's) by up to 1.6 % of the largest term (measured: 1.6, 0.56 and 0.30 %
     on the aligned, turned and offset-heeled layouts);
+  - MoorPy's own ``getCoupledStiffness`` call, which differences its Euler angles: kanat's matrix
+    times the angle-rate Jacobian (to MoorPy's equilibrium tolerance);
   - central differences of kanat's own statics, each body's fairleads moved or turned alone.
 """
 from __future__ import annotations
@@ -147,6 +149,27 @@ def test_the_coupled_matrix_is_moorpys_analytic_one_but_its_cross_turns(layout):
     np.testing.assert_allclose(np.where(cross_turns, 0.0, result.coupled_matrix), np.where(cross_turns, 0.0, K),
                                atol=1e-6 * scale)
     assert np.max(np.abs(result.coupled_matrix - K)[cross_turns]) < 2e-2 * scale
+
+
+def _euler_rates(angles) -> np.ndarray:
+    """``E`` (3, 3): the angular velocity about the global axes of unit rates of roll, pitch, yaw of
+    ``R = Rz(yaw) Ry(pitch) Rx(roll)`` at ``angles`` [rad]."""
+    _, pitch, yaw = angles
+    cp, sp, cy, sy = np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
+    return np.array([[cp * cy, -sy, 0.0], [cp * sy, cy, 0.0], [-sp, 0.0, 1.0]])
+
+
+def test_moorpys_own_coupled_stiffness_is_the_matrix_in_its_euler_angles(layout):
+    """MoorPy's ``getCoupledStiffness`` (its own call, steps STEP and TURN) differences its Euler angles:
+    its rotation columns are kanat's times the angle-rate Jacobian, ``K E``. Within 1e-5 of the largest
+    term, MoorPy's equilibrium tolerance being 0.05 STEP (measured: 5.9e-6, 1.5e-6, 2.1e-6 on the
+    aligned, turned and offset-heeled layouts)."""
+    _, _, ms, result = layout
+    J = np.eye(12)
+    for b, body in enumerate(ms.bodyList):
+        J[6 * b + 3:6 * b + 6, 6 * b + 3:6 * b + 6] = _euler_rates(body.r6[3:])
+    K = _quiet(ms.getCoupledStiffness, dx=STEP, dth=TURN, lines_only=True)
+    np.testing.assert_allclose(result.coupled_matrix @ J, K, atol=1e-5 * np.max(np.abs(K)))
 
 
 def _kanat_differences(case) -> np.ndarray:
