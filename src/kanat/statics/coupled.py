@@ -173,27 +173,17 @@ class CoupledBodies:
 def coupled_body_stiffness(solution: NetworkSolution, bodies) -> CoupledBodies:
     """Eq. (1) of the coupled ``bodies`` (sequence of :class:`kanat.io.moordyn_coupled.CoupledBody`)
     as rigid bodies, each about its reference point, at the equilibrium ``solution`` (module
-    docstring). A vessel end on none of them stays held.
-
-    Raises
-    ------
-    ValueError
-        When a body has no fairlead among the vessel's ends.
-    """
+    docstring). A vessel end on none of them stays held; a body with no line end has zero rows."""
     problem = solution.problem
     n_free = problem.offsets[-1]
     single = len(problem.nodes)
     nodes, where, q = [], {}, [solution.q]
     for b, body in enumerate(bodies):
         X = np.asarray(body.position, float)
-        on = 0
         for _, point, members in coupled_groups(problem):
             if len(body.points) and np.min(np.max(np.abs(body.points - point), axis=1)) <= SAME_POINT * max(
                     1.0, np.max(np.abs(point))):
                 where.update({member: (single + b, point - X) for member in members})
-                on += 1
-        if not on:
-            raise ValueError(f"coupled body '{body.name}' has no line end among the vessel's")
         nodes.append(NetworkNode(body.name, "body", 6, X.copy()))
         q.append(np.concatenate([X, np.zeros(3)]))
     augmented = _augmented(problem, nodes, where)
