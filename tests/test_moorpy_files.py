@@ -6,8 +6,7 @@ side with MoorPy reading the same file back.
 * the same body with its CG 1 m below the reference point: imported with MoorDyn-C's
   ``buoyancy_at: cg`` (the importer says so); ``buoyancy_at: reference`` heels it as MoorPy does;
 * two coupled bodies, turned, sharing a line (a shared-mooring array): the lines' geometry and
-  tensions, and the vessel's stiffness against MoorPy's coupled 12x12 stiffness of the two
-  bodies moved together;
+  tensions, and each body's stiffness against the diagonal blocks of MoorPy's coupled 12x12;
 * a line touching the seabed between two suspended ends: the lumped model's equilibrium
   against MoorPy's catenary, which models the grounded middle.
 """
@@ -128,26 +127,17 @@ def test_shared_line_between_coupled_bodies_has_moorpys_geometry(shared):
     assert 170.0 < np.linalg.norm(ms.lineList[0].rB - ms.lineList[0].rA) < 230.0
 
 
-def test_the_vessel_stiffness_is_moorpys_two_bodies_moved_together(shared):
-    """Both coupled bodies move as one rigid vessel about the origin: body b at X_b moves by
-    T_b = [[I, -S(X_b)], [0, I]], its load adds ``X_b x F_b`` to the moment, which turns with the
-    rotation (-S(F_b) S(X_b)): K = sum T_b^T K_bb' T_b' - S(F_b) S(X_b)."""
+def test_each_coupled_body_has_moorpys_stiffness(shared):
+    """Each coupled body its own (no longer one vessel): its 6x6 about its reference point is the
+    diagonal block of MoorPy's coupled 12x12 (the other body held); the whole matrix, and more
+    layouts, in tests/test_shared_bodies.py."""
     ms = _reread(shared)
     K12 = _quiet(ms.getCoupledStiffnessA, lines_only=True)
-    K = np.zeros((6, 6))
-    T = []
-    for body in ms.bodyList:
-        X = body.r6[:3]
-        S = np.array([[0, -X[2], X[1]], [X[2], 0, -X[0]], [-X[1], X[0], 0]])
-        T.append(np.block([[np.eye(3), -S], [np.zeros((3, 3)), np.eye(3)]]))
-        F = body.getForces(lines_only=True)[:3]
-        SF = np.array([[0, -F[2], F[1]], [F[2], 0, -F[0]], [-F[1], F[0], 0]])
-        K[3:, 3:] -= SF @ S
-    for i in range(2):
-        for j in range(2):
-            K += T[i].T @ K12[6 * i:6 * i + 6, 6 * j:6 * j + 6] @ T[j]
     result = solve_network_case(_load(shared))
-    np.testing.assert_allclose(result.stiffness["vessel"], K, atol=1e-6 * np.max(np.abs(K)))
+    assert "vessel" not in result.stiffness
+    for b in range(2):
+        block = K12[6 * b:6 * b + 6, 6 * b:6 * b + 6]
+        np.testing.assert_allclose(result.stiffness[f"body{b + 1}"], block, atol=1e-6 * np.max(np.abs(block)))
 
 
 @pytest.mark.slow

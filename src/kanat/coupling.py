@@ -26,29 +26,41 @@ lumped model (element tensions, the half elements' weight, drag and seabed conta
 positive as the lines pull the host. A host that knows its points at both ends of the step passes
 ``v_t = (r_t+dt - r_t) / dt``: the motion is then the straight line between them.
 
-With ``rigid_vessel=True`` the host drives the vessel as one rigid body: ``positions`` (1, 6) are
-its ``q = (x, y, z, roll, pitch, yaw)`` [m, rad] (the displacement of the vessel origin, and the
-angles of ``R = Rz(yaw) Ry(pitch) Rx(roll)`` as in ``vessel.motion``), ``velocities`` their rates
-``q_dot`` [m/s, rad/s]; each point at lever arm ``a`` (its case position at q = 0) follows::
+With ``rigid_vessel=True`` the host drives rigid bodies that carry the points, each by six
+components (MoorDyn's coupled bodies): a MoorDyn file's ``Coupled`` bodies, in file order (named
+``bodyN``), else the vessel as one body (``vessel``) whose reference point is the global origin.
+``positions`` (N, 6) are each body's ``q = (x, y, z, roll, pitch, yaw)`` [m, rad]: its reference
+point and the angles of ``R = Rz(yaw) Ry(pitch) Rx(roll)`` (as in ``vessel.motion`` and a MoorDyn
+body's row; at rest a MoorDyn body is at its row's ``X0 .. y0``, the vessel at zero), ``velocities``
+their rates ``q_dot`` [m/s, rad/s]; each point at ``o`` in its body's axes (a MoorDyn body's point
+row, the vessel's case position) follows::
 
-    (2)  q(tau) = q_t + q_dot_t (tau - t),    r = (x, y, z) + R a,    r_dot = (x_dot, y_dot, z_dot) + w x R a
+    (2)  q(tau) = q_t + q_dot_t (tau - t),    r = (x, y, z) + R o,    r_dot = (x_dot, y_dot, z_dot) + w x R o
 
-``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`);
-and the forces (1, 6) are the lines' resultant and moment about ``(x, y, z)``::
+``w`` the angular velocity of the angle rates (:func:`kanat.physics.motion_samples.point_series`).
+A MoorDyn file's bodies move as MoorDyn-C moves its coupled bodies (``Body::updateFairlead``,
+``XYZQuat::fromVec6``): the angles are intrinsic x-y-z ones and their rates are taken as the angular
+velocity about the global axes::
 
-    (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i
+    (2b) r = (x, y, z) + Rx(roll) Ry(pitch) Rz(yaw) o,    r_dot = (x_dot, y_dot, z_dot) + q_dot[3:] x (r - (x, y, z))
+
+(the same as eq. (2) to first order in the angles away from a heading; at a heading of 200 deg a
+pitch of 1 deg turns about the global y axis here, about the body's own y axis in eq. (2)).
+The forces (N, 6) are, body by body, the lines' resultant and moment about ``(x, y, z)``::
+
+    (3)  F = sum_i F_i,    M = sum_i (r_i - (x, y, z)) x F_i      (the body's points i)
 
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
 ``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
-scheme's default step, cut to divide the coupling step exactly. The state after a step is what a run of the same case with the same
-motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
+scheme's default step, cut to divide the coupling step exactly. The state after a step is what a
+run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/test_coupling.py).
 """
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass
 from os import PathLike
-from pathlib import Path
 
 import numpy as np
 
@@ -76,20 +88,20 @@ class DrivenSystem(LumpedSystem):
 
     :meth:`drive` sets the motion of the step about to be taken; every sample of the vessel's
     points (the Python schemes' and the compiled steps', :func:`kanat.lumped.advance.track_samples`)
-    comes from it. With ``arms`` the host drives the vessel as a rigid body, eq. (2).
+    comes from it. With ``bodies`` the host drives rigid bodies that carry the points, eq. (2).
     """
 
-    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray, arms=None) -> None:
-        """Eq. (1) from ``t`` for ``positions``, ``velocities`` (p, 3) of the vessel nodes; or, given their
-        lever ``arms`` (p, 3), eq. (2) for the vessel's ``(x, y, z, roll, pitch, yaw)`` and rates (1, 6)."""
+    def drive(self, t: float, positions: np.ndarray, velocities: np.ndarray, bodies=None) -> None:
+        """Eq. (1) from ``t`` for ``positions``, ``velocities`` (p, 3) of the vessel nodes; or, given the
+        :class:`DrivenBodies` that carry them, eq. (2) for each body's ``(x, y, z, roll, pitch, yaw)`` and
+        rates (N, 6)."""
         self._t0 = float(t)
         self._r0, self._v0 = np.array(positions, float), np.array(velocities, float)
-        self._arms = None if arms is None else np.asarray(arms, float)
+        self._bodies = bodies
 
     def driven(self) -> tuple:
-        """The motion set by :meth:`drive`: ``(t, positions, velocities, arms)`` (copies)."""
-        arms = None if self._arms is None else self._arms.copy()
-        return self._t0, self._r0.copy(), self._v0.copy(), arms
+        """The motion set by :meth:`drive`: ``(t, positions, velocities, bodies)`` (copies)."""
+        return self._t0, self._r0.copy(), self._v0.copy(), self._bodies
 
     def vessel_points(self, times, arms=None):
         """Positions, velocities (k, p, 3) and heading (k,) of the driven points at ``times`` (k,),
@@ -100,14 +112,62 @@ class DrivenSystem(LumpedSystem):
         late = (times - self._t0)[:, None, None]
         q = self._r0[None] + self._v0[None] * late
         v = np.broadcast_to(self._v0, q.shape).copy()
-        if self._arms is not None:
-            displacement, v = point_series(self._arms, q[:, 0], v[:, 0])
-            q = self._arms[None] + displacement
+        if self._bodies is not None:
+            q, v = self._bodies.placed(q, v)
         return q, v, np.zeros(len(times))
 
     def reference(self, t: float) -> np.ndarray:
-        """The rigid vessel's ``(x, y, z, roll, pitch, yaw)`` (6,) at ``t``, eq. (2)."""
-        return self._r0[0] + self._v0[0] * (t - self._t0)
+        """Each driven body's ``(x, y, z, roll, pitch, yaw)`` (N, 6) at ``t``, eq. (2)."""
+        return self._r0 + self._v0 * (t - self._t0)
+
+
+@dataclass(frozen=True, eq=False)
+class DrivenBodies:
+    """Rigid bodies carrying the driven points, eq. (2).
+
+    Attributes
+    ----------
+    names : tuple of str
+        The bodies, in the order of the host's arrays.
+    owner : ndarray of int, shape (p,)
+        The body of each vessel node.
+    offsets : ndarray, shape (p, 3)
+        Each vessel node in its body's axes, from the body's reference point [m].
+    moordyn : bool
+        MoorDyn-C's angles, eq. (2b), instead of ``vessel.motion``'s, eq. (2).
+    """
+
+    names: tuple
+    owner: np.ndarray
+    offsets: np.ndarray
+    moordyn: bool = False
+
+    def placed(self, q: np.ndarray, rates: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Positions and velocities (k, p, 3) of the points for the bodies' ``q`` and rates (k, N, 6),
+        eq. (2) or (2b)."""
+        r = np.empty((q.shape[0], len(self.owner), 3))
+        u = np.empty_like(r)
+        for b in range(len(self.names)):
+            on = self.owner == b
+            if self.moordyn:
+                turned = np.einsum("kij,pj->kpi", moordyn_rotations(q[:, b, 3:]), self.offsets[on])
+                r[:, on] = q[:, None, b, :3] + turned
+                u[:, on] = rates[:, None, b, :3] + np.cross(rates[:, None, b, 3:], turned)
+            else:
+                displacement, velocity = point_series(self.offsets[on], q[:, b], rates[:, b])
+                r[:, on], u[:, on] = self.offsets[on][None] + displacement, velocity
+        return r, u
+
+
+def moordyn_rotations(angles: np.ndarray) -> np.ndarray:
+    """``Rx(roll) Ry(pitch) Rz(yaw)`` (k, 3, 3) of ``angles`` (k, 3) [rad]: MoorDyn-C's coupled bodies
+    (intrinsic x-y-z Euler angles, eq. (2b))."""
+    c, s = np.cos(angles), np.sin(angles)
+    one, nil = np.ones(len(angles)), np.zeros(len(angles))
+    Rx = np.stack([one, nil, nil, nil, c[:, 0], -s[:, 0], nil, s[:, 0], c[:, 0]], -1).reshape(-1, 3, 3)
+    Ry = np.stack([c[:, 1], nil, s[:, 1], nil, one, nil, -s[:, 1], nil, c[:, 1]], -1).reshape(-1, 3, 3)
+    Rz = np.stack([c[:, 2], -s[:, 2], nil, s[:, 2], c[:, 2], nil, nil, nil, one], -1).reshape(-1, 3, 3)
+    return Rx @ Ry @ Rz
 
 
 class Coupling:
@@ -121,8 +181,9 @@ class Coupling:
     scheme : str or kanat.schemes.Scheme, optional
         Overrides ``simulation.scheme``.
     rigid_vessel : bool
-        Drive the vessel as one rigid body instead of point by point, eq. (2): ``points`` is then
-        ``["vessel"]`` (a MoorDyn file's one ``Coupled`` body: ``["bodyN"]``) and every array (1, 6).
+        Drive rigid bodies instead of points, eq. (2): ``points`` is then a MoorDyn file's ``Coupled``
+        bodies (``["body1", "body2", ...]``, each point on its body), else ``["vessel"]``, and every
+        array (len(points), 6).
     substep : float, optional
         The lumped model's largest step inside a coupling step [s] (an explicit scheme's is also
         capped at its safe step); default ``simulation.dt`` (a MoorDyn file's ``dtM`` is read only with
@@ -155,11 +216,10 @@ class Coupling:
             raise KanatError(f"case '{case.name}' has no vessel points to drive: give the lines' ends on "
                              "the host as {vessel: [x, y, z]} (MoorDyn: Coupled points)")
         self.points, self.net = driven_points(case, self.net)
-        self.arms = None
+        self.bodies = None
         if rigid_vessel:
-            bodies = moordyn_coupled_bodies(case)
-            self.points = bodies if len(bodies) == 1 else ["vessel"]
-            self.arms = self.net.vessel_offset.copy()
+            self.bodies = driven_bodies(case, self.net)
+            self.points = list(self.bodies.names)
         sim = self.case.simulation
         self.system = DrivenSystem(self.net, self.case, sim.mass_matrix)
         self.scheme = self._choose(scheme)
@@ -228,7 +288,7 @@ class Coupling:
         Returns
         -------
         ndarray, shape (len(points), 3)
-            The lines' forces on the points [N] (a rigid vessel: (1, 6), eq. (3)).
+            The lines' forces on the points [N] (rigid bodies: (N, 6), eq. (3)).
 
         Raises
         ------
@@ -247,17 +307,17 @@ class Coupling:
         free = self.system.free_index
         velocity = speed[free]
         velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0        # Euler angle rates
-        self.system.drive(t, r, v, self.arms)
+        self.system.drive(t, r, v, self.bodies)
         self._state = self.scheme.start(self.system, float(t), x[free], velocity, self.inner_step(1.0))
         self._snaps = SnapTracker(float(t), self._tensions(self._state))
         return self.forces()
 
     def _placed(self, q: np.ndarray) -> np.ndarray:
         """The vessel nodes' positions (p, 3) for the host's ``q``: the points themselves, or the rigid
-        vessel's points, eq. (2)."""
-        if self.arms is None:
+        bodies' points, eq. (2)."""
+        if self.bodies is None:
             return q
-        return self.arms + point_series(self.arms, q, np.zeros_like(q))[0][0]
+        return self.bodies.placed(q[None], np.zeros_like(q)[None])[0][0]
 
     def _equilibrium(self, case, positions, x0):
         net = dataclasses.replace(self.net, vessel_offset=positions)
@@ -282,7 +342,7 @@ class Coupling:
         Returns
         -------
         ndarray, shape (len(points), 3)
-            The lines' forces on the points at ``t + dt`` [N] (a rigid vessel: (1, 6), eq. (3)).
+            The lines' forces on the points at ``t + dt`` [N] (rigid bodies: (N, 6), eq. (3)).
 
         Raises
         ------
@@ -298,7 +358,7 @@ class Coupling:
             raise KanatError(f"step(t = {t:.9g} s, ...): the coupling is at t = {now:.9g} s; step from there "
                              "(or restore() a state saved at t)")
         self.system.drive(now, self._points_array(positions, "positions"),
-                          self._points_array(velocities, "velocities"), self.arms)
+                          self._points_array(velocities, "velocities"), self.bodies)
         h = self.inner_step(dt)
         steps = int(round(dt / h))
         state, taken = advance(self.scheme, self.system, self._state, h, steps, self._snaps, self._tensions)
@@ -315,14 +375,17 @@ class Coupling:
         return None if self._state is None else float(self._state.t)
 
     def forces(self) -> np.ndarray:
-        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for a rigid
-        vessel (1, 6), their sum and moment about the vessel's reference point [N, N m], eq. (3)."""
+        """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for rigid
+        bodies (N, 6), each body's sum and moment about its reference point [N, N m], eq. (3)."""
         x, v, _, heading = self.system.full(self.time, *state_positions(self._state))
         F = self.system.loads(self.time, x, v, heading)[0][self.net.vessel_nodes].copy()
-        if self.arms is None:
+        if self.bodies is None:
             return F
-        lever = x[self.net.vessel_nodes] - self.system.reference(self.time)[:3]
-        return np.concatenate([F.sum(axis=0), np.cross(lever, F).sum(axis=0)])[None]
+        owner = self.bodies.owner
+        lever = x[self.net.vessel_nodes] - self.system.reference(self.time)[owner, :3]
+        out = np.zeros((len(self.points), 6))
+        np.add.at(out, owner, np.concatenate([F, np.cross(lever, F)], axis=1))
+        return out
 
     def nodes(self) -> tuple[np.ndarray, np.ndarray]:
         """Positions and velocities (n, 3) of the cables' nodes at :attr:`time` [m, m/s], in a
@@ -353,7 +416,7 @@ class Coupling:
 
     def _points_array(self, values, what: str) -> np.ndarray:
         array = np.asarray(values, dtype=float)
-        shape = (len(self.points), 3 if self.arms is None else 6)
+        shape = (len(self.points), 3 if self.bodies is None else 6)
         if array.size != shape[0] * shape[1]:
             raise KanatError(f"{what} must have shape {shape} (points {', '.join(self.points)}); got "
                              f"{np.shape(values)}")
@@ -373,7 +436,9 @@ def driven_points(case: Case, net):
     end at each (``CABLE.from``, ``CABLE.to``) in cable order (the network's own)."""
     arms = np.asarray(net.vessel_offset, float)
     names: list[str | None] = [None] * len(arms)
-    coupled = moordyn_coupled_points(case)
+    from kanat.io.moordyn_coupled import coupled_points
+
+    coupled = coupled_points(case)
     for name, xyz in coupled:
         hit = np.flatnonzero(np.all(np.isclose(arms, xyz, rtol=0.0, atol=1e-9), axis=1))
         if len(hit) and names[hit[0]] is None:
@@ -395,34 +460,30 @@ def driven_points(case: Case, net):
     return [name or f"vessel{k}" for k, name in enumerate(names)], net
 
 
-def moordyn_coupled_points(case: Case) -> list[tuple[str, np.ndarray]]:
-    """``(pointN, xyz)`` of the ``Coupled``/``Vessel`` points of the MoorDyn file ``case`` was read from,
-    in file order; empty for any other case."""
-    read = _moordyn_items(case)
-    if read is None:
-        return []
-    points, _ = read
-    return [(f"point{number}", np.asarray(p.xyz, float)) for number, p in points.items() if p.kind == "vessel"]
+def driven_bodies(case: Case, net) -> DrivenBodies:
+    """The rigid bodies of ``rigid_vessel=True``: a MoorDyn file's ``Coupled`` bodies (file order, each
+    point on its body, :mod:`kanat.io.moordyn_coupled`), else the one vessel about the global origin.
 
+    Raises
+    ------
+    kanat.errors.KanatError
+        When a vessel point of a MoorDyn file is on none of its coupled bodies.
+    """
+    from kanat.io.moordyn_coupled import coupled_bodies
 
-def moordyn_coupled_bodies(case: Case) -> list[str]:
-    """``bodyN`` of the ``Coupled`` bodies of the MoorDyn file ``case`` was read from; empty otherwise."""
-    read = _moordyn_items(case)
-    return [] if read is None else [f"body{number}" for number, b in read[1].items() if b.kind == "coupled"]
-
-
-def _moordyn_items(case: Case):
-    """The MoorDyn file's points and bodies by number (:mod:`kanat.io.moordyn_map`), or None."""
-    source = getattr(case, "source", None)
-    if not source or not Path(source).is_file():
-        return None
-    from kanat.io.moordyn_map import Reader, file_version, read_bodies, read_points
-    from kanat.io.moordyn_text import looks_like_moordyn, split
-
-    text = Path(source).read_text(errors="replace")
-    if not looks_like_moordyn(text):
-        return None
-    reader = Reader(split(text), str(source), Path(source).parent)
-    reader.version = file_version(reader)
-    bodies = read_bodies(reader)
-    return read_points(reader, bodies), bodies
+    where = np.asarray(net.vessel_offset, float)
+    bodies = coupled_bodies(case)
+    if not bodies:
+        return DrivenBodies(("vessel",), np.zeros(len(where), int), where.copy())
+    owner, offsets = np.full(len(where), -1), np.zeros_like(where)
+    for b, body in enumerate(bodies):
+        for k, point in enumerate(body.points):
+            hit = np.flatnonzero(np.all(np.isclose(where, point, rtol=0.0, atol=1e-9 * max(1.0, np.max(np.abs(point)))),
+                                        axis=1))
+            owner[hit], offsets[hit] = b, body.offsets[k]
+    if np.any(owner < 0):
+        loose = ", ".join(f"({x:.6g}, {y:.6g}, {z:.6g})" for x, y, z in where[owner < 0])
+        raise KanatError(f"case '{case.name}': rigid_vessel=True drives the file's Coupled bodies, but the "
+                         f"coupled point(s) at {loose} m are on none of them; drive the points instead "
+                         "(rigid_vessel=False)")
+    return DrivenBodies(tuple(body.name for body in bodies), owner, offsets, moordyn=True)

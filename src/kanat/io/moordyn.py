@@ -32,7 +32,9 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
 * Points: ``Fixed`` points are anchors (each line end its own ``anchor:[x, y, z]``),
   ``Vessel``/``Coupled`` points are vessel fairleads (``{vessel: [x, y, z]}``, the
   vessel at the origin at t = 0; all coupled points and bodies become fairleads of
-  kanat's one vessel, so they move together), free points (``Connect``/``Free``/``Point``)
+  kanat's one vessel; statics and ``kanat.Coupling(..., rigid_vessel=True)`` read back which
+  fairlead is on which ``Coupled`` body, :mod:`kanat.io.moordyn_coupled`, and treat each body as
+  its own), free points (``Connect``/``Free``/``Point``)
   are kanat points: ``Mass`` -> ``mass``, ``Volume`` -> ``volume``, ``CdA`` -> ``drag_area``, ``Ca``
   -> ``added_mass = Ca rho V`` [kg]; v1's ``FX, FY, FZ`` [N, as MoorDyn documents them]
   -> ``force``. ``BodyN`` points are fairleads on body N.
@@ -45,8 +47,9 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
   (MoorDyn2.cpp) skips the first of 3 or 6 values), ``Ca`` -> ``added_mass_matrix = rho V diag(Ca)``
   (1 value: the three translations; 3 values: x, y, z). A ``Coupled`` body is the vessel
   (its points become vessel fairleads at ``position + R offset``, ``R = Rz(yaw) Ry(pitch)
-  Rx(roll)`` of ``r0, p0, y0``; the vessel's rotations then turn about the vessel origin,
-  not about the body's reference point); a ``Fixed`` body's points become anchors there.
+  Rx(roll)`` of ``r0, p0, y0``, as MoorPy reads them; a run's vessel rotations turn about the
+  vessel origin, while statics' stiffness and the coupling API take each body about its own
+  reference point); a ``Fixed`` body's points become anchors there.
 * Options: ``WtrDpth`` -> ``depth`` with a ``seabed`` block (``kBot`` -> ``stiffness``,
   ``cBot`` -> ``damping``, ``FrictionCoefficient`` -> both frictions, MoorDyn-F's
   ``MU_KA``/``MU_KT`` -> ``friction``/``lateral_friction``), ``rho``/``rhoW``/``WtrDnsty``

@@ -83,6 +83,10 @@ VARIABLES: dict[str, Variable] = {
     "body_stiffness": Variable(("body", "dof", "dof_j"), "N/m, N/rad, N m/m, N m/rad",
                                "mooring stiffness at each body about its reference point, -dF/dq of the lines "
                                "with the other free nodes in equilibrium (statics)"),
+    "coupled_stiffness": Variable(("coupled_dof", "coupled_dof_j"), "N/m, N/rad, N m/m, N m/rad",
+                                  "mooring stiffness of several coupled bodies together (MoorPy's "
+                                  "getCoupledStiffness), each body's surge, sway, heave, roll, pitch, yaw about "
+                                  "its reference point, labelled body.dof (statics)"),
     "point_stiffness": Variable(("point", "xyz", "xyz_j"), "N/m",
                                 "mooring stiffness at each network point, -dF/dx of the lines with the other "
                                 "free nodes in equilibrium (statics)"),

@@ -126,6 +126,11 @@ def _mooring_variables(result, bodies: list) -> dict:
             "point_stiffness": _known("point_stiffness", ("point", "xyz", "xyz_j"),
                                       _forces([result.stiffness[p] for p in points], len(points), 3, 3)),
         })
+    matrix = getattr(result, "coupled_matrix", None)
+    if matrix is not None:
+        labels = [f"{b}.{d}" for b in result.coupled_bodies for d in DOFS]
+        out.update({"coupled_dof": _label("coupled_dof", labels), "coupled_dof_j": _label("coupled_dof_j", labels),
+                    "coupled_stiffness": _known("coupled_stiffness", ("coupled_dof", "coupled_dof_j"), matrix)})
     return out
 
 

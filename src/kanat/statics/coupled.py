@@ -22,6 +22,14 @@ Two views of the same ends:
   lever turns, the geometric term ``-S(f) S(a)`` (MoorPy's ``Body.getStiffnessA``);
 * each **coupled point** (the vessel's ends grouped by position, named by its first cable
   end, ``line1.to``): 3x3 of that point moving alone, the other coupled points held.
+
+Several coupled bodies (a MoorDyn file's ``Coupled`` bodies, :mod:`kanat.io.moordyn_coupled`) are
+each their own rigid body (:func:`coupled_body_stiffness`): body ``b`` a 6-DOF node at its
+reference point ``X_b``, its fairleads at ``o = r - X_b`` in global axes, and eq. (1) of all
+of them together is the ``6 N x 6 N`` matrix of MoorPy's ``getCoupledStiffness`` (body by body
+in file order, each ``(surge, sway, heave, roll, pitch, yaw)`` about its own reference point;
+the off-diagonal blocks are what a line shared by two bodies couples). Each body's own 6x6
+is its diagonal block, the other bodies held.
 """
 from __future__ import annotations
 
@@ -32,7 +40,8 @@ import numpy as np
 from kanat.statics.network import NetworkSolution, assemble, warm_starts
 from kanat.statics.network_setup import LineEnd, NetworkNode, NetworkProblem
 
-__all__ = ["VESSEL", "CoupledStiffness", "coupled_groups", "coupled_stiffness"]
+__all__ = ["VESSEL", "CoupledBodies", "CoupledStiffness", "coupled_body_stiffness", "coupled_groups",
+           "coupled_stiffness"]
 
 VESSEL = "vessel"
 SAME_POINT = 1e-9            # m: vessel ends closer than this are one coupled point
@@ -132,3 +141,58 @@ def coupled_stiffness(solution: NetworkSolution) -> CoupledStiffness | None:
         {name: R_points[n_free + 3 * g:n_free + 3 * g + 3].copy() for g, name in enumerate(names)},
         {name: matrix[3 * g:3 * g + 3, 3 * g:3 * g + 3].copy() for g, name in enumerate(names)},
         matrix, R[n_free:n_free + 3].copy(), R[n_free + 3:n_free + 6].copy(), body)
+
+
+@dataclass(frozen=True, eq=False)
+class CoupledBodies:
+    """Several coupled rigid bodies at equilibrium, each about its own reference point.
+
+    Attributes
+    ----------
+    positions : dict of str to ndarray, shape (3,)
+        Each body's reference point [m], in the order of ``matrix``.
+    forces, moments : dict of str to ndarray, shape (3,)
+        Resultant force of the lines on each body [N] and its moment about the body's reference
+        point [N m].
+    stiffness : dict of str to ndarray, shape (6, 6)
+        Each body's diagonal block of ``matrix``: eq. (1) of that body moving alone, the other
+        coupled bodies and points held.
+    matrix : ndarray, shape (6 N, 6 N)
+        Eq. (1) of all the bodies together (MoorPy's ``getCoupledStiffness``): rows and columns
+        ``6 b .. 6 b + 5`` are body ``b``'s surge, sway, heave [m] and small rotations about the
+        global axes [rad] at its reference point.
+    """
+
+    positions: dict
+    forces: dict
+    moments: dict
+    stiffness: dict
+    matrix: np.ndarray
+
+
+def coupled_body_stiffness(solution: NetworkSolution, bodies) -> CoupledBodies:
+    """Eq. (1) of the coupled ``bodies`` (sequence of :class:`kanat.io.moordyn_coupled.CoupledBody`)
+    as rigid bodies, each about its reference point, at the equilibrium ``solution`` (module
+    docstring). A vessel end on none of them stays held; a body with no line end has zero rows."""
+    problem = solution.problem
+    n_free = problem.offsets[-1]
+    single = len(problem.nodes)
+    nodes, where, q = [], {}, [solution.q]
+    for b, body in enumerate(bodies):
+        X = np.asarray(body.position, float)
+        for _, point, members in coupled_groups(problem):
+            if len(body.points) and np.min(np.max(np.abs(body.points - point), axis=1)) <= SAME_POINT * max(
+                    1.0, np.max(np.abs(point))):
+                where.update({member: (single + b, point - X) for member in members})
+        nodes.append(NetworkNode(body.name, "body", 6, X.copy()))
+        q.append(np.concatenate([X, np.zeros(3)]))
+    augmented = _augmented(problem, nodes, where)
+    R, J, _, _ = assemble(augmented, np.concatenate(q), warm_starts(solution.lines))
+    matrix = _condensed(J, n_free)
+    names = [body.name for body in bodies]
+    load = R[n_free:].reshape(-1, 6)
+    return CoupledBodies({name: np.asarray(body.position, float).copy() for name, body in zip(names, bodies)},
+                         {name: load[b, :3].copy() for b, name in enumerate(names)},
+                         {name: load[b, 3:].copy() for b, name in enumerate(names)},
+                         {name: matrix[6 * b:6 * b + 6, 6 * b:6 * b + 6].copy() for b, name in enumerate(names)},
+                         matrix)

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
-from kanat.statics.coupled import VESSEL, coupled_stiffness
+from kanat.statics.coupled import VESSEL, coupled_body_stiffness, coupled_stiffness
 from kanat.statics.network import NetworkSolution, cross, solve_network
 from kanat.statics.network_setup import NeedsLumped, NetworkProblem, network_problem
 from kanat.statics.piecewise import sample
@@ -120,10 +120,14 @@ class NetworkResult:
     vessel_velocity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     sphere: None = None
     coupled_bodies: dict = field(default_factory=dict)
-    """Coupled bodies (the vessel, ``vessel``) by name: their reference point [m]; their line
+    """Coupled bodies (the vessel, ``vessel``; a MoorDyn file's several ``bodyN``) by name: their
+    reference point [m]; their line
     force and moment are in ``body_forces`` and ``body_moments``."""
     coupled_points: dict = field(default_factory=dict)
     """Coupled points (the vessel's fairleads, named by their first cable end) by name: position [m]."""
+    coupled_matrix: np.ndarray | None = None
+    """With several coupled bodies (a MoorDyn file's array), the (6 N, 6 N) stiffness of all of them
+    together, in the order of ``coupled_bodies`` (:func:`kanat.statics.coupled.coupled_body_stiffness`)."""
 
     @property
     def verdict(self):
@@ -359,7 +363,15 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
     stiffness = condensed_stiffness(solution)
     coupled_bodies, coupled_points = {}, {}
     coupled = coupled_stiffness(solution)
-    if coupled is not None and VESSEL not in bodies and not set(coupled.points) & set(points):
+    several = _several_coupled_bodies(case, solution, bodies)
+    if several is not None and coupled is not None:
+        coupled_bodies = several.positions
+        body_forces.update(several.forces)
+        body_moments.update(several.moments)
+        stiffness.update(several.stiffness)
+        coupled_points = coupled.points
+        stiffness.update(coupled.point_stiffness)
+    elif coupled is not None and VESSEL not in bodies and not set(coupled.points) & set(points):
         coupled_bodies[VESSEL] = np.zeros(3)
         body_forces[VESSEL], body_moments[VESSEL] = coupled.body_force, coupled.body_moment
         stiffness[VESSEL] = coupled.body_stiffness
@@ -368,7 +380,19 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
     return NetworkResult(case, method, cables, bodies, attitudes, points, body_forces, body_moments, anchors,
                          stiffness, solution.iterations, solution.stages,
                          float(np.max(np.abs(solution.residual), initial=0.0)), tuple(notes),
-                         coupled_bodies=coupled_bodies, coupled_points=coupled_points)
+                         coupled_bodies=coupled_bodies, coupled_points=coupled_points,
+                         coupled_matrix=None if several is None else several.matrix)
+
+
+def _several_coupled_bodies(case, solution, bodies):
+    """Each coupled body of a MoorDyn file with several (:func:`kanat.statics.coupled.coupled_body_stiffness`),
+    or None (no such file, one coupled body, or a name taken by a free body)."""
+    from kanat.io.moordyn_coupled import coupled_bodies
+
+    coupled = coupled_bodies(case)
+    if len(coupled) < 2 or {body.name for body in coupled} & set(bodies):
+        return None
+    return coupled_body_stiffness(solution, coupled)
 
 
 # --------------------------------------------------------------------------- from node positions
