@@ -184,15 +184,15 @@ def fairlead_motion(case, times) -> tuple[np.ndarray, np.ndarray]:
     """Positions and velocities (k, p, 3) of the case's vessel fairleads at ``times`` (k,), from
     its compiled motion (no track: the vessel frame is fixed; module docstring).
 
-    The fairleads are the ends of the cables on the vessel in MoorDyn's coupled-point order
-    (:func:`kanat.io.moordyn_coupled.coupled_points`).
+    The fairleads are the cables' ends on the vessel (``{vessel: [x, y, z]}``), in cable order:
+    here MoorDyn's coupled points 4, 5, 6, the ends of lines 1, 2, 3.
     """
-    from kanat.io.moordyn_coupled import coupled_points
     from kanat.physics.motion import compile_motion, motion_at, rigid_point_motion
 
     if case.vessel.track:
         raise ValueError("fairlead_motion takes a vessel without a track")
-    offsets = np.array([xyz for _, xyz in coupled_points(case)])
+    offsets = np.array([end.offset for cable in case.cables for end in (cable.from_, cable.to)
+                        if end.kind == "vessel"], dtype=float)
     motion = compile_motion(case.vessel.motion, case.environment)
     positions, velocities = [], []
     for t in np.asarray(times, dtype=float):
