@@ -27,6 +27,7 @@ from kanat.api import simulate  # noqa: E402
 from kanat.io.case_file import load_case  # noqa: E402
 
 DURATION, OUTPUT_DT, SEGMENTS = 0.5, 0.05, 6
+MOORDYN_DT = 0.005     # s: MoorDyn's inner step here (the points' motion does not depend on it)
 ROTATIONS = [("roll", 1.5, 20.0), ("pitch", 2.0, -60.0), ("yaw", 0.8, 45.0)]     # deg/m, deg: a test table
 
 
@@ -90,6 +91,7 @@ def test_moordyn_points_follow_kanats_motion(tmp_path):
     assert np.abs(positions - expected.reshape(steps + 1, -1)).max() < 1e-12
     system = moordyn.Create(str(bench.moordyn_file(tmp_path, case)))
     try:
+        moordyn.SetDt(system, MOORDYN_DT)
         moordyn.Init(system, list(positions[0]), [0.0] * positions.shape[1])
         points = [moordyn.GetPoint(system, number) for number in (4, 5, 6)]
         for k in range(steps):
