@@ -8,7 +8,10 @@ Oracles:
   :func:`fairlead_motion` at the output times, to 1e-9 m and 1e-9 m/s; also with pitch, roll and
   yaw RAOs added, so that the fairleads' lever arms are exercised;
 * MoorDyn-C itself, driven as the benchmark drives it: after each coupling step its coupled
-  points are at the positions kanat's motion gives at that instant, to 1e-9 m.
+  points are at the positions kanat's motion gives at that instant, to 1e-9 m, and its waves
+  (``WaveKin 7`` from the benchmark's ``wave_frequencies.txt``) are kanat's sea, elevation and
+  stretched kinematics to 1e-6 (1.7e-7 m seen; tests/test_wave_stretching.py holds the two codes'
+  WaveKin 7 seas to 1e-7).
 
 The RAO table is the benchmark's closed-form cylinder: its long-wave limits are checked too
 (surge amplitude 1 with a 90 deg lead of the crest's particle displacement, heave 1 in phase).
@@ -25,9 +28,11 @@ import bench_storm_moordyn as bench  # noqa: E402
 
 from kanat.api import simulate  # noqa: E402
 from kanat.io.case_file import load_case  # noqa: E402
+from kanat.physics.waves import sea_from_model  # noqa: E402
 
 DURATION, OUTPUT_DT, SEGMENTS = 0.5, 0.05, 6
 MOORDYN_DT = 0.005     # s: MoorDyn's inner step here (the points' motion does not depend on it)
+SEA_POINTS = [(20.0, 0.0, -8.0), (-10.0, 17.321, -2.0), (300.0, -100.0, -60.0)]    # m: where the seas are compared
 ROTATIONS = [("roll", 1.5, 20.0), ("pitch", 2.0, -60.0), ("yaw", 0.8, 45.0)]     # deg/m, deg: a test table
 
 
@@ -89,12 +94,21 @@ def test_moordyn_points_follow_kanats_motion(tmp_path):
     positions, velocities = bench.moordyn_drive(case, steps * bench.COUPLING)
     expected, _ = bench.fairlead_motion(case, np.arange(steps + 1) * bench.COUPLING)
     assert np.abs(positions - expected.reshape(steps + 1, -1)).max() < 1e-12
+    sea = sea_from_model(case.environment)
     system = moordyn.Create(str(bench.moordyn_file(tmp_path, case)))
     try:
         moordyn.SetDt(system, MOORDYN_DT)
         moordyn.Init(system, list(positions[0]), [0.0] * positions.shape[1])
         points = [moordyn.GetPoint(system, number) for number in (4, 5, 6)]
+        waves = moordyn.GetWaves(system)
         for k in range(steps):
+            t = k * bench.COUPLING
+            for where in SEA_POINTS:                # the same sea: kanat's components, MoorDyn's WaveKin 7
+                velocity, acceleration, elevation, _ = moordyn.GetWavesKin(waves, *where)
+                point = np.array([where])
+                assert abs(elevation - sea.elevation(point[:, 0], point[:, 1], t)[0]) < 1e-6
+                assert np.abs(np.asarray(velocity) - sea.velocity(point, t)[0]).max() < 1e-6
+                assert np.abs(np.asarray(acceleration) - sea.acceleration(point, t)[0]).max() < 1e-6
             moordyn.Step(system, list(positions[k]), list(velocities[k]), k * bench.COUPLING, bench.COUPLING)
             reached = np.concatenate([moordyn.GetPointPos(point) for point in points])
             assert np.abs(reached - expected[k + 1].ravel()).max() < 1e-9, k
