@@ -4,8 +4,8 @@ beside MoorDyn-C (PyPI ``moordyn``, the ``peers`` extra) driven by the same moti
 The mooring is ``examples/moordyn/three_leg_chain_50.dat`` (three 640 m studless chain legs of 50
 segments from anchors in 120 m of water to three fairleads 20 m from the vessel's centre, 8 m
 deep; MoorDyn's coupled points). The sea is a JONSWAP storm (``HS`` 6 m, ``TP`` 11 s, gamma 3.3,
-``SEED``) travelling along ``HEADING_DEG`` (towards leg 1's anchor side: leg 1 slackens, legs 2
-and 3 take the load). The vessel is a floating vertical cylinder of radius 20 m and draft 12 m;
+``SEED``) travelling along ``HEADING_DEG`` (180 deg: in line with leg 1, whose anchor is on +x, so
+that leg 1 takes the surge head-on and legs 2 and 3 at 60 deg). The vessel is a floating vertical cylinder of radius 20 m and draft 12 m;
 its RAOs (``benchmarks/data/cylinder_raos.csv``, written by :func:`cylinder_raos`,
 ``python benchmarks/bench_storm_moordyn.py --write-raos``) are closed-form, deep water:
 

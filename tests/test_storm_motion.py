@@ -14,7 +14,8 @@ Oracles:
   WaveKin 7 seas to 1e-7).
 
 The RAO table is the benchmark's closed-form cylinder: its long-wave limits are checked too
-(surge amplitude 1 with a 90 deg lead of the crest's particle displacement, heave 1 in phase).
+(surge amplitude 1 with phase 90 deg, the water particles' displacement, zero under the crest;
+heave 1 in phase with the crest) and its heave lags its force by 90 deg at resonance.
 """
 import math
 import sys
