@@ -28,6 +28,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.statics import budget
+from kanat.lumped.relaxation import relax
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
 
@@ -42,6 +43,10 @@ STALL, STALL_GROWTH = 0.01, 1.5   # pseudo-time step growth when the residual mo
 LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before the PTC step is tried
 STARTING_DIFFERENCE = 0.01    # s, the time step of the starting velocities' central difference
 ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
+RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dynamic relaxation (its axial
+#                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
+#                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
+RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
 
 
 def node_graph(net) -> list[set]:
@@ -165,7 +170,14 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     solve (:mod:`kanat.statics.budget`).
     """
     with budget.budget("the equilibrium of the lumped network"):
-        return _equilibrium(net, case, x0, velocity, friction, time)
+        try:
+            return _equilibrium(net, case, x0, velocity, friction, time)
+        except SolverError as error:
+            failure = error
+        try:
+            return _relaxed_equilibrium(net, case, velocity, friction, time)
+        except SolverError:
+            raise failure from None
 
 
 def _equilibrium(net, case, x0, velocity, friction, time):
@@ -206,6 +218,60 @@ def _equilibrium_from(net, case, x0, velocity, solve, start):
     info["continuation_stages"] = len(factors) + 1
     info["first_guess"] = start
     return x, info
+
+
+def _scaled(net, factor):
+    """``net`` with every elastic law's force scaled by ``factor`` (the continuation's softer line)."""
+    return net if factor == 1.0 else dataclasses.replace(net, law_y=net.law_y * factor)
+
+
+def _load_scale(net) -> float:
+    """The nodal load scale [N]: the largest applied nodal force or element weight."""
+    return max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+
+
+def _relaxed_equilibrium(net, case, velocity, friction, time):
+    """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
+    of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
+    guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
+    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`).
+
+    Returns as :func:`_solve`, with ``fallback = "dynamic relaxation"`` and the relaxation's
+    ``relaxation_steps`` in the info."""
+    from kanat.lumped.catenary_guess import catenary_guess
+
+    x0 = catenary_guess(net, case)
+    x = np.array(net.x_guess if x0 is None else x0, dtype=float)
+    stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
+    factor = min(1.0, RELAXATION_STIFFNESS / stiffest) if stiffest > 0.0 else 1.0
+    soft = _scaled(net, factor)
+    if velocity is None:
+        velocity = LumpedSystem(net, case, waves=False).frame_velocity()
+    system = LumpedSystem(soft, case, waves=False, steady_velocity=velocity, steady_time=time, friction=friction)
+    forces, free = _SteadyForces(system), system.free_index
+    colour, neighbours = distance2_colouring(soft), node_graph(soft)
+    step = FD_STEP * np.min(soft.el_length)
+
+    def force(q):
+        return forces(0.0, q)[0]
+
+    relaxed = relax(force, lambda q: _jacobian(force, free, q, colour, step, neighbours), x[free],
+                    RELAXATION_TARGET * _load_scale(net))
+    x[free] = relaxed.position
+    stages = [factor * 10.0**k for k in range(int(np.ceil(np.log10(1.0 / factor))))] + [1.0]
+    for k, stage in enumerate(stages):
+        x, info = _solve(_scaled(net, stage), case, x, velocity, MAX_ITERATIONS, taut=(k == 0),
+                         friction=friction, time=time)
+    return x, {**info, "first_guess": "catenary" if x0 is not None else "network",
+               "fallback": "dynamic relaxation", "relaxation_steps": relaxed.steps,
+               "continuation_stages": len(stages)}
+
+
+def relaxation_note(info: dict) -> str:
+    """The run's note that its initial equilibrium came from the dynamic-relaxation fallback."""
+    return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
+            f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
+            f"stages; residual {info['residual']:.3g} N): Newton's method alone did not converge")
 
 
 def first_guess(net, case):
@@ -385,7 +451,13 @@ def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
     SolverError
         As :func:`equilibrium`.
     """
-    x = equilibrium(net, case, friction=False)[0]          # in the track's frame (_solve's default)
+    return starting_state_info(net, case, system)[:2]
+
+
+def starting_state_info(net, case, system) -> tuple[np.ndarray, np.ndarray, dict]:
+    """:func:`starting_state` and the info of its equilibrium (:func:`_solve`'s; ``fallback`` says
+    whether dynamic relaxation found it)."""
+    x, info = equilibrium(net, case, friction=False)          # in the track's frame (_solve's default)
     v = np.zeros_like(x)
     v[:] = system.frame_velocity()
     if system.motion is not None:
@@ -393,4 +465,4 @@ def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
         ahead = equilibrium(net, case, x0=x, friction=False, time=delta)[0]
         behind = equilibrium(net, case, x0=x, friction=False, time=-delta)[0]
         v = (ahead - behind) / (2.0 * delta)
-    return x, v
+    return x, v, info
