@@ -20,8 +20,8 @@ largest eigenvalue of ``M^-1 dF/dq``)::
     (2)  m_i = MASS_SAFETY h^2 / 2 max_r sum_c |dF_r/dq_c|,   r the rows of node i
 
 recomputed from the tangent every REMASS_PEAKS energy peaks (a line's transverse stiffness grows
-with its tension); a step that raises the residual tenfold doubles every mass and restarts from
-the last peak. The relaxation stops when the largest force falls below ``target``; Newton's
+with its tension); a step that raises the residual to BLOW_UP times the start's doubles every mass
+and restarts from the last peak. The relaxation stops when the largest force falls below ``target``; Newton's
 method polishes the rest (quadratic convergence from there).
 """
 from __future__ import annotations
@@ -33,8 +33,9 @@ import numpy as np
 from kanat.statics import budget
 
 MASS_SAFETY = 2.0          # eq. (2): the Gershgorin bound times this (slack elements may snap taut)
+MASS_FLOOR = 1e-2          # of the heaviest node: the lightest a slack node may be
 REMASS_PEAKS = 20          # energy peaks between recomputations of the masses, eq. (2)
-BLOW_UP = 10.0             # a residual this many times the last peak's doubles the masses
+BLOW_UP = 10.0             # a residual this many times the start's doubles the masses
 MAX_RELAXATION_STEPS = 200_000
 
 
@@ -48,10 +49,13 @@ class Relaxed:
     peaks: int
 
 
-def fictitious_masses(jacobian: np.ndarray | object, floor: float) -> np.ndarray:
-    """Eq. (2): each free node's mass (n_free,) from the sparse tangent ``dF/dq`` (3 n_free square)."""
+def fictitious_masses(jacobian, floor: float) -> np.ndarray:
+    """Eq. (2): each free node's mass (n_free,) from the sparse tangent ``dF/dq`` (3 n_free square),
+    at least MASS_FLOOR of the heaviest (a node whose elements are all slack has no tangent) and
+    ``floor``."""
     rows = np.asarray(abs(jacobian).sum(axis=1)).ravel().reshape(-1, 3).max(axis=1)
-    return np.maximum(0.5 * MASS_SAFETY * rows, floor)
+    mass = 0.5 * MASS_SAFETY * rows
+    return np.maximum(mass, max(MASS_FLOOR * np.max(mass, initial=0.0), floor))
 
 
 def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RELAXATION_STEPS) -> Relaxed:
@@ -80,8 +84,8 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
     mass = fictitious_masses(tangent(x), floor)
     v = np.zeros_like(x)
     energy, peaks, since_mass = 0.0, 0, 0
-    anchor_x, anchor_norm = x.copy(), float(np.max(np.abs(F)))
-    best = (anchor_norm, x.copy())
+    anchor_x, first_norm = x.copy(), float(np.max(np.abs(F)))
+    best = (first_norm, x.copy())
     for step in range(1, max_steps + 1):
         if step % 1000 == 0:
             budget.check_time()
@@ -93,7 +97,7 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
             best = (norm, x.copy())
         if norm <= target:
             return Relaxed(x, norm, step, peaks)
-        if not np.isfinite(norm) or norm > BLOW_UP * max(anchor_norm, target):
+        if not np.isfinite(norm) or norm > BLOW_UP * max(first_norm, target):
             mass *= 2.0                                     # unstable: heavier, from the last peak
             x, v, energy = anchor_x.copy(), np.zeros_like(x), 0.0
             F = force(x)
@@ -104,7 +108,7 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
             v[:] = 0.0
             energy, peaks, since_mass = 0.0, peaks + 1, since_mass + 1
             F = force(x)
-            anchor_x, anchor_norm = x.copy(), float(np.max(np.abs(F)))
+            anchor_x = x.copy()
             if since_mass >= REMASS_PEAKS:
                 mass = np.maximum(mass, fictitious_masses(tangent(x), floor))
                 since_mass = 0
