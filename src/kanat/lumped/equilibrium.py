@@ -16,6 +16,11 @@ Keyes 1998, SIAM J. Numer. Anal. 35, 508)::
 and it becomes Newton's method as ``dtau`` grows. ``dF/dq`` is the exact finite-difference
 Jacobian, built with a distance-2 colouring of the node graph (a node's force depends
 only on its neighbours), so it costs ``3 x colours`` force evaluations.
+
+Where all of that fails (lines held up by many small inline floats, whose sections go slack and
+taut from one iterate to the next), :func:`_relaxed_equilibrium` settles the softened network by
+dynamic relaxation (:mod:`kanat.lumped.relaxation`) and lets Newton's method finish; the info's
+``fallback`` says so. It runs only after the other paths failed, so they give what they gave.
 """
 from __future__ import annotations
 
@@ -152,7 +157,7 @@ def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
 def _tolerance(net, xf) -> float:
     """Force residual at which the equilibrium is converged [N]: RESIDUAL_TOLERANCE of the nodal
     load scale, but not below the round-off of the stiffest element's force."""
-    scale = max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+    scale = _load_scale(net)
     stiffness = np.max(net.law_y[:, 0]) / np.min(net.el_length) if net.law_y.size else 0.0
     noise = ROUNDOFF_FACTOR * np.finfo(float).eps * stiffness * max(np.max(np.abs(xf), initial=0.0), 1.0)
     return max(RESIDUAL_TOLERANCE * scale, noise)
