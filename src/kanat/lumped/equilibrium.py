@@ -52,6 +52,7 @@ RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dyna
 #                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
 #                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
+RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 
 
 def node_graph(net) -> list[set]:
@@ -239,7 +240,8 @@ def _relaxed_equilibrium(net, case, velocity, friction, time):
     """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
     of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
     guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
-    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`).
+    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`), relaxed
+    again at its own stiffness first where Newton's method does not converge from the last.
 
     Returns as :func:`_solve`, with ``fallback = "dynamic relaxation"`` and the relaxation's
     ``relaxation_steps`` in the info."""
@@ -247,29 +249,40 @@ def _relaxed_equilibrium(net, case, velocity, friction, time):
 
     x0 = catenary_guess(net, case)
     x = np.array(net.x_guess if x0 is None else x0, dtype=float)
-    stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
-    factor = min(1.0, RELAXATION_STIFFNESS / stiffest) if stiffest > 0.0 else 1.0
-    soft = _scaled(net, factor)
     if velocity is None:
         velocity = LumpedSystem(net, case, waves=False).frame_velocity()
-    system = LumpedSystem(soft, case, waves=False, steady_velocity=velocity, steady_time=time, friction=friction)
+    stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
+    factor = min(1.0, RELAXATION_STIFFNESS / stiffest) if stiffest > 0.0 else 1.0
+    target = RELAXATION_TARGET * _load_scale(net)
+    x, steps = _relaxed(_scaled(net, factor), case, x, velocity, friction, time, target)
+    stages = [factor * 10.0**k for k in range(int(np.ceil(np.log10(1.0 / factor))))] + [1.0]
+    for k, stage in enumerate(stages):
+        stage_net = _scaled(net, stage)
+        try:
+            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, taut=(k == 0), friction=friction, time=time)
+        except SolverError:
+            x, more = _relaxed(stage_net, case, x, velocity, friction, time, RETRY_TARGET * target)
+            steps += more
+            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, friction=friction, time=time)
+    return x, {**info, "first_guess": "catenary" if x0 is not None else "network",
+               "fallback": "dynamic relaxation", "relaxation_steps": steps, "continuation_stages": len(stages)}
+
+
+def _relaxed(net, case, x, velocity, friction, time, target):
+    """``(x, steps)``: all nodes' positions (n, 3) after dynamic relaxation of ``net`` from ``x``
+    down to a largest force of ``target`` [N] (or its step limit), and the steps it took."""
+    system = LumpedSystem(net, case, waves=False, steady_velocity=velocity, steady_time=time, friction=friction)
     forces, free = _SteadyForces(system), system.free_index
-    colour, neighbours = distance2_colouring(soft), node_graph(soft)
-    step = FD_STEP * np.min(soft.el_length)
+    colour, neighbours = distance2_colouring(net), node_graph(net)
+    step = FD_STEP * np.min(net.el_length)
 
     def force(q):
         return forces(0.0, q)[0]
 
-    relaxed = relax(force, lambda q: _jacobian(force, free, q, colour, step, neighbours), x[free],
-                    RELAXATION_TARGET * _load_scale(net))
+    relaxed = relax(force, lambda q: _jacobian(force, free, q, colour, step, neighbours), x[free], target)
+    x = x.copy()
     x[free] = relaxed.position
-    stages = [factor * 10.0**k for k in range(int(np.ceil(np.log10(1.0 / factor))))] + [1.0]
-    for k, stage in enumerate(stages):
-        x, info = _solve(_scaled(net, stage), case, x, velocity, MAX_ITERATIONS, taut=(k == 0),
-                         friction=friction, time=time)
-    return x, {**info, "first_guess": "catenary" if x0 is not None else "network",
-               "fallback": "dynamic relaxation", "relaxation_steps": relaxed.steps,
-               "continuation_stages": len(stages)}
+    return x, relaxed.steps
 
 
 def relaxation_note(info: dict) -> str:
