@@ -173,14 +173,15 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     each stage starting from the last: a softer line's equilibrium is stretched more, so every
     element stays taut when it stiffens and Newton's method sees no slack kinks.
 
-    Parameters and returns as :func:`_solve`. The whole search has the time budget of a steady
-    solve (:mod:`kanat.statics.budget`).
+    Parameters and returns as :func:`_solve`. The search has the time budget of a steady solve
+    (:mod:`kanat.statics.budget`), and its fallback (:func:`_relaxed_equilibrium`) another.
     """
     with budget.budget("the equilibrium of the lumped network"):
         try:
             return _equilibrium(net, case, x0, velocity, friction, time)
         except SolverError as error:
             failure = error
+    with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
         try:
             return _relaxed_equilibrium(net, case, velocity, friction, time)
         except SolverError:
