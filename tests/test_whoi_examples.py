@@ -317,8 +317,8 @@ def test_bottom_mooring_in_waves_runs_in_the_lumped_model():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["deep_s", "surface"])
-@pytest.mark.xfail(strict=True, reason="no initial state: the lumped equilibrium does not converge, "
-                                       "even by dynamic relaxation (see README.md)")
+@pytest.mark.xfail(strict=False, reason="no initial state within the steady-solve budget (120 s): dynamic "
+                                        "relaxation converges on deep_s in ~120-180 s of a busy core (see README.md)")
 def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     initial_state(case_of(name), "lumped")
 
