@@ -48,10 +48,9 @@ STALL, STALL_GROWTH = 0.01, 1.5   # pseudo-time step growth when the residual mo
 LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before the PTC step is tried
 STARTING_DIFFERENCE = 0.01    # s, the time step of the starting velocities' central difference
 ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
-RELAXATION_STIFFNESS = 1e4     # N: each elastic law's largest coefficient is capped at this in the dynamic
-#                                relaxation (its axial modes, 1e3-1e4 times slower than a chain's, leave the
-#                                fictitious motion a period of a few hundred steps), or higher:
-RELAXATION_STRAIN = 0.05       # the cap is at least the load scale over this strain (a deep mooring's wire)
+RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dynamic relaxation (its axial
+#                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
+#                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
 RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 
@@ -233,16 +232,6 @@ def _scaled(net, factor):
     return net if factor == 1.0 else dataclasses.replace(net, law_y=net.law_y * factor)
 
 
-def _capped(net, cap: float):
-    """``net`` with each elastic law scaled down so that its largest coefficient is at most ``cap``
-    [N] (a law already below it unchanged: a chain softened to a wire's stiffness leaves the wire
-    as it is, where one factor for all would stretch the wire many times its length)."""
-    if not net.law_y.size or not np.isfinite(cap):
-        return net
-    largest = np.max(np.abs(net.law_y), axis=1, keepdims=True)
-    return dataclasses.replace(net, law_y=net.law_y * np.minimum(1.0, cap / np.maximum(largest, 1e-300)))
-
-
 def _load_scale(net) -> float:
     """The nodal load scale [N]: the largest applied nodal force or element weight."""
     return max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
@@ -250,7 +239,7 @@ def _load_scale(net) -> float:
 
 def _relaxed_equilibrium(net, case, velocity, friction, time):
     """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
-    of the lines softened (:func:`_capped`) from the still-water catenaries (or the network's
+    of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
     guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
     :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`), relaxed
     again at its own stiffness first where Newton's method does not converge from the last.
@@ -264,12 +253,12 @@ def _relaxed_equilibrium(net, case, velocity, friction, time):
     if velocity is None:
         velocity = LumpedSystem(net, case, waves=False).frame_velocity()
     stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
-    cap = max(RELAXATION_STIFFNESS, _load_scale(net) / RELAXATION_STRAIN)
+    factor = min(1.0, RELAXATION_STIFFNESS / stiffest) if stiffest > 0.0 else 1.0
     target = RELAXATION_TARGET * _load_scale(net)
-    x, steps = _relaxed(_capped(net, cap), case, x, velocity, friction, time, target)
-    stages = [cap * 10.0**k for k in range(int(np.ceil(np.log10(max(stiffest / cap, 1.0)))))] + [np.inf]
+    x, steps = _relaxed(_scaled(net, factor), case, x, velocity, friction, time, target)
+    stages = [factor * 10.0**k for k in range(int(np.ceil(np.log10(1.0 / factor))))] + [1.0]
     for k, stage in enumerate(stages):
-        stage_net = _capped(net, stage)
+        stage_net = _scaled(net, stage)
         try:
             x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, taut=(k == 0), friction=friction, time=time)
         except SolverError:
