@@ -173,12 +173,17 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     element stays taut when it stiffens and Newton's method sees no slack kinks.
 
     Parameters and returns as :func:`_solve`. The search has the time budget of a steady solve
-    (:mod:`kanat.statics.budget`), and its fallback (:func:`_relaxed_equilibrium`) another.
+    (:mod:`kanat.statics.budget`). Where it fails on a network with inline bodies (floats clamped
+    along a line: the systems it is built for), the fallback (:func:`_relaxed_equilibrium`) is
+    tried under a budget of its own; elsewhere the failure stands as it did (a case with no
+    equilibrium fails as fast as before).
     """
     with budget.budget("the equilibrium of the lumped network"):
         try:
             return _equilibrium(net, case, x0, velocity, friction, time)
         except SolverError as error:
+            if not any(cable.attachments for cable in case.cables):
+                raise
             failure = error
     with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
         try:
