@@ -129,19 +129,9 @@ def test_network_statics_and_the_lumped_equilibrium_agree_in_still_water(name):
     test_statics_and_the_lumped_equilibrium_agree(name, still)
 
 
-@pytest.mark.parametrize("name", ["branch", "horiz"])
-@pytest.mark.xfail(strict=True, reason="network statics finds no catenary with the floats inline (see README.md)")
-def test_network_statics_of_an_array_with_inline_floats(name):
-    statics(still(case_of(name)))
-
-
-@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name == "horiz" else name
-                                  for name in NETWORKS])
-def test_each_body_of_a_network_is_in_balance(name):
-    """The line force on each body balances its net buoyancy, its drag in the (uniform) current
-    and its own force, to 3 N: the lumped node also takes part of its elements' drag."""
-    case = case_of(name)
-    ds = initial_state(case, "lumped")
+def bodies_in_balance(case, ds, tolerance):
+    """The line force on each body of result ``ds`` balances its net buoyancy, its drag in the
+    (uniform) current, its own force and its waterplane, to ``tolerance`` [N]."""
     u = np.array(case.environment.current.velocity)
     for body in ds["body"].values:
         spec = case.bodies[str(body)]
@@ -151,7 +141,32 @@ def test_each_body_of_a_network_is_in_balance(name):
         if spec.surface_buoy is not None:                     # the waterplane carries the rest
             immersion = -float(ds["body_position"].sel(body=body).values[2])
             load[2] += case.environment.water_density * case.environment.gravity * spec.surface_buoy.waterplane_area * immersion
-        assert np.max(np.abs(line + load)) < 3.0, (body, line, load)
+        assert np.max(np.abs(line + load)) < tolerance, (body, line, load)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["branch", "horiz"])
+def test_network_statics_of_an_array_with_inline_floats_goes_to_the_lumped_equilibrium(name):
+    """Network statics finds no catenaries for lines split by inline floats ("load continuation
+    stalled", "no catenary found"); the front door solves them by the lumped equilibrium and says
+    so. Oracles: every body's balance, and the lumped model's own start in still water."""
+    case = still(case_of(name))
+    ds = statics(case)
+    assert ds.attrs["status"] == "ok"
+    assert ds.attrs["scheme"] == "lumped equilibrium"
+    bodies_in_balance(case, ds, 3.0)
+    run = initial_state(case, "lumped")
+    gap = np.max(np.abs(ds["body_position"].values - run["body_position"].values))
+    assert gap < 1e-6, gap
+
+
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name == "horiz" else name
+                                  for name in NETWORKS])
+def test_each_body_of_a_network_is_in_balance(name):
+    """The line force on each body balances its net buoyancy, its drag in the (uniform) current
+    and its own force, to 3 N: the lumped node also takes part of its elements' drag."""
+    case = case_of(name)
+    bodies_in_balance(case, initial_state(case, "lumped"), 3.0)
 
 
 @pytest.mark.parametrize("name", CONTINUUM_VS_LUMPED)
@@ -233,9 +248,11 @@ DYNAMIC = {     # name: (duration, dt, output_dt, tolerance on the tensions at e
     "loops": (5.0, 0.05, 0.5, 0.02),
     "mine": (10.0, 0.1, 0.1, 0.05, "lumped"),      # through the slack instant that stops the continuum
 }
-# Not here: taut (lumped), rov and stratus2 run, but their runs at dt and dt/2 disagree (snap loads
-# under waves and heave that start at full height): see README.md.
+# Not here: rov and stratus2 run, but their runs at dt and dt/2 disagree: see README.md.
 SLOW_DYNAMIC = {
+    "bottom": (10.0, 0.01, 0.1, 0.05),     # WHOI's 16 s wave ramp; 20 s: peaks 1.5 %, means 0.03 % apart
+    "taut": (10.0, 0.01, 0.1, 0.05),       # WHOI's 10 s wave ramp, through slack instants from 5 s on;
+    # 20 s: peaks 2.0 %, means 0.005 % apart (continuum)
     "tow3d": (300.0, 1.0, 5.0, 0.02),
     "multi_leg_3d": (20.0, 0.1, 0.5, 0.05),
     "branch": (5.0, 0.01, 0.1, 0.05),
@@ -300,10 +317,46 @@ def test_bottom_mooring_in_waves_runs_in_the_lumped_model():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["deep_s", "surface", "seatex", "shallow_s"])
-@pytest.mark.xfail(strict=True, reason="no initial state: the lumped equilibrium does not converge")
+@pytest.mark.parametrize("name", ["deep_s", "surface"])
+@pytest.mark.xfail(strict=False, reason="no initial state within the steady-solve budget (120 s): dynamic "
+                                        "relaxation converges on deep_s in ~120-180 s of a busy core (see README.md)")
 def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     initial_state(case_of(name), "lumped")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, floats, float_body", [("shallow_s", 14 * 200.0, "float"),
+                                                      ("seatex", 100 * 39.6, "wavescan")])
+def test_floats_that_newton_cannot_place_are_placed_by_dynamic_relaxation(name, floats, float_body):
+    """Newton's method stalls on these lines held up by many small floats; dynamic relaxation
+    places them. Oracle: the whole system's vertical balance from the case's data alone (the
+    anchor holds the lift of the floats less the line's weight in water and the buoy's, plus the
+    buoy's waterplane force at its place), and the model's own check of the result: these floats
+    lift more than the line weighs, and the equilibrium of a model that gives an inline float its
+    full buoyancy out of the water has them above it, which the run refuses, naming one."""
+    from kanat.lumped.equilibrium import equilibrium
+    from kanat.lumped.network import build_network
+
+    case = still(case_of(name))                     # no drag: the vertical balance is the data's
+    start = case.model_copy(update={"environment": case.environment.at_start()})
+    net = build_network(start)
+    x, info = quietly(equilibrium, net, start)
+    assert info["fallback"] == "dynamic relaxation"
+    assert info["residual"] < 1e-6 * floats
+    env, buoy = case.environment, case.bodies[float_body]
+    (cable,) = case.cables
+    line = case.line_types[cable.line_type]
+    z_ends = np.sort(np.column_stack([x[net.el_i, 2], x[net.el_j, 2]]), axis=1)
+    dry = np.clip(z_ends[:, 1] / np.maximum(z_ends[:, 1] - z_ends[:, 0], 1e-12), 0.0, 1.0) * net.el_length
+    line_weight = line.weight_in_water * cable.length + (line.mass * env.gravity - line.weight_in_water) * dry.sum()
+    z = x[net.body_node[list(net.body_names).index(float_body)], 2]
+    waterplane = env.water_density * env.gravity * buoy.surface_buoy.waterplane_area * min(max(-z, 0.0), buoy.surface_buoy.height)
+    anchor = info["loads"][net.anchor_nodes[0], 2]             # what the anchor must hold down
+    assert anchor == pytest.approx(floats - line_weight + buoy.net_buoyancy + waterplane, abs=1.0)
+    sim = {**case.simulation.model_dump(exclude_none=True), "duration": case.simulation.dt, "output_dt": case.simulation.dt}
+    ds = quietly(kanat.simulate, quietly(case.replace, {"simulation": sim}))
+    assert "above the water surface" in ds.attrs["status"]
+    assert "initial equilibrium by dynamic relaxation" in ds.attrs["notes"]
 
 
 @pytest.mark.slow

@@ -105,7 +105,7 @@ def _statics(case: Case, method: str = "auto"):
 
 def _lumped_statics(case: Case, reason: str):
     """Network statics by the lumped model's equilibrium (statics may not import the lumped model)."""
-    from kanat.lumped.equilibrium import equilibrium
+    from kanat.lumped.equilibrium import equilibrium, relaxation_note
     from kanat.lumped.mooring_outputs import (anchor_forces, anchors_on_seabed, attitudes, contact_length,
                                               out_of_water)
     from kanat.lumped.network import build_network
@@ -125,7 +125,8 @@ def _lumped_statics(case: Case, reason: str):
     anchors = anchor_forces(net, info["loads"], info["normal_force"], on_seabed,
                             0.0 if seabed is None else seabed.friction)
     return result_from_positions(case, cables, bodies, points, "lumped equilibrium", info["iterations"],
-                                 [f"solved by the lumped model's equilibrium: {reason}"],
+                                 [f"solved by the lumped model's equilibrium: {reason}",
+                                  *([relaxation_note(info)] if "fallback" in info else [])],
                                  grounded=dict(zip(net.cable_names, grounded)),
                                  anchor_forces=dict(zip(net.anchor_names, anchors)),
                                  attitudes=dict(zip(net.body_names, attitudes(net, x))))

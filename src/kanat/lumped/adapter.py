@@ -27,7 +27,7 @@ from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
 from kanat.lumped import entries, stepping
 from kanat.lumped.advance import HALVING, advance
-from kanat.lumped.equilibrium import starting_state
+from kanat.lumped.equilibrium import relaxation_note, starting_state, starting_state_info
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker
@@ -165,7 +165,9 @@ class LumpedModel:
         elif sim.initial_state == "equilibrium":
             try:
                 start = self.case.model_copy(update={"environment": self.case.environment.at_start()})
-                x, v = starting_state(self.net, start, system)
+                x, v, info = starting_state_info(self.net, start, system)
+                if "fallback" in info:
+                    self.notes.append(relaxation_note(info))
             except SolverError as error:
                 raise SolverError(f"{error}. Tried: the network equilibrium at the initial tow speed. "
                                   "Give bodies and points a position near where they settle (a guess), or start "

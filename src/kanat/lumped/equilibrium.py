@@ -16,6 +16,11 @@ Keyes 1998, SIAM J. Numer. Anal. 35, 508)::
 and it becomes Newton's method as ``dtau`` grows. ``dF/dq`` is the exact finite-difference
 Jacobian, built with a distance-2 colouring of the node graph (a node's force depends
 only on its neighbours), so it costs ``3 x colours`` force evaluations.
+
+Where all of that fails (lines held up by many small inline floats, whose sections go slack and
+taut from one iterate to the next), :func:`_relaxed_equilibrium` settles the softened network by
+dynamic relaxation (:mod:`kanat.lumped.relaxation`) and lets Newton's method finish; the info's
+``fallback`` says so. It runs only after the other paths failed, so they give what they gave.
 """
 from __future__ import annotations
 
@@ -28,6 +33,7 @@ import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.statics import budget
+from kanat.lumped.relaxation import relax
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
 
@@ -42,6 +48,11 @@ STALL, STALL_GROWTH = 0.01, 1.5   # pseudo-time step growth when the residual mo
 LINE_SEARCH_HALVINGS = 3       # a Newton step is shortened at most 2^-3 before the PTC step is tried
 STARTING_DIFFERENCE = 0.01    # s, the time step of the starting velocities' central difference
 ROUNDOFF_FACTOR = 64.0         # force round-off allowance: eps x stiffness x coordinate size x this
+RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dynamic relaxation (its axial
+#                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
+#                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
+RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
+RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 
 
 def node_graph(net) -> list[set]:
@@ -147,7 +158,7 @@ def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
 def _tolerance(net, xf) -> float:
     """Force residual at which the equilibrium is converged [N]: RESIDUAL_TOLERANCE of the nodal
     load scale, but not below the round-off of the stiffest element's force."""
-    scale = max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+    scale = _load_scale(net)
     stiffness = np.max(net.law_y[:, 0]) / np.min(net.el_length) if net.law_y.size else 0.0
     noise = ROUNDOFF_FACTOR * np.finfo(float).eps * stiffness * max(np.max(np.abs(xf), initial=0.0), 1.0)
     return max(RESIDUAL_TOLERANCE * scale, noise)
@@ -161,11 +172,24 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     each stage starting from the last: a softer line's equilibrium is stretched more, so every
     element stays taut when it stiffens and Newton's method sees no slack kinks.
 
-    Parameters and returns as :func:`_solve`. The whole search has the time budget of a steady
-    solve (:mod:`kanat.statics.budget`).
+    Parameters and returns as :func:`_solve`. The search has the time budget of a steady solve
+    (:mod:`kanat.statics.budget`). Where it fails on a network with inline bodies (floats clamped
+    along a line: the systems it is built for), the fallback (:func:`_relaxed_equilibrium`) is
+    tried under a budget of its own; elsewhere the failure stands as it did (a case with no
+    equilibrium fails as fast as before).
     """
     with budget.budget("the equilibrium of the lumped network"):
-        return _equilibrium(net, case, x0, velocity, friction, time)
+        try:
+            return _equilibrium(net, case, x0, velocity, friction, time)
+        except SolverError as error:
+            if not any(cable.attachments for cable in case.cables):
+                raise
+            failure = error
+    with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
+        try:
+            return _relaxed_equilibrium(net, case, velocity, friction, time)
+        except SolverError:
+            raise failure from None
 
 
 def _equilibrium(net, case, x0, velocity, friction, time):
@@ -206,6 +230,72 @@ def _equilibrium_from(net, case, x0, velocity, solve, start):
     info["continuation_stages"] = len(factors) + 1
     info["first_guess"] = start
     return x, info
+
+
+def _scaled(net, factor):
+    """``net`` with every elastic law's force scaled by ``factor`` (the continuation's softer line)."""
+    return net if factor == 1.0 else dataclasses.replace(net, law_y=net.law_y * factor)
+
+
+def _load_scale(net) -> float:
+    """The nodal load scale [N]: the largest applied nodal force or element weight."""
+    return max(np.max(np.abs(net.node_force)), np.max(net.el_weight * net.el_length), 1.0)
+
+
+def _relaxed_equilibrium(net, case, velocity, friction, time):
+    """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
+    of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
+    guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
+    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`), relaxed
+    again at its own stiffness first where Newton's method does not converge from the last.
+
+    Returns as :func:`_solve`, with ``fallback = "dynamic relaxation"`` and the relaxation's
+    ``relaxation_steps`` in the info."""
+    from kanat.lumped.catenary_guess import catenary_guess
+
+    x0 = catenary_guess(net, case)
+    x = np.array(net.x_guess if x0 is None else x0, dtype=float)
+    if velocity is None:
+        velocity = LumpedSystem(net, case, waves=False).frame_velocity()
+    stiffest = float(np.max(np.abs(net.law_y))) if net.law_y.size else 0.0
+    factor = min(1.0, RELAXATION_STIFFNESS / stiffest) if stiffest > 0.0 else 1.0
+    target = RELAXATION_TARGET * _load_scale(net)
+    x, steps = _relaxed(_scaled(net, factor), case, x, velocity, friction, time, target)
+    stages = [factor * 10.0**k for k in range(int(np.ceil(np.log10(1.0 / factor))))] + [1.0]
+    for k, stage in enumerate(stages):
+        stage_net = _scaled(net, stage)
+        try:
+            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, taut=(k == 0), friction=friction, time=time)
+        except SolverError:
+            x, more = _relaxed(stage_net, case, x, velocity, friction, time, RETRY_TARGET * target)
+            steps += more
+            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, friction=friction, time=time)
+    return x, {**info, "first_guess": "catenary" if x0 is not None else "network",
+               "fallback": "dynamic relaxation", "relaxation_steps": steps, "continuation_stages": len(stages)}
+
+
+def _relaxed(net, case, x, velocity, friction, time, target):
+    """``(x, steps)``: all nodes' positions (n, 3) after dynamic relaxation of ``net`` from ``x``
+    down to a largest force of ``target`` [N] (or its step limit), and the steps it took."""
+    system = LumpedSystem(net, case, waves=False, steady_velocity=velocity, steady_time=time, friction=friction)
+    forces, free = _SteadyForces(system), system.free_index
+    colour, neighbours = distance2_colouring(net), node_graph(net)
+    step = FD_STEP * np.min(net.el_length)
+
+    def force(q):
+        return forces(0.0, q)[0]
+
+    relaxed = relax(force, lambda q: _jacobian(force, free, q, colour, step, neighbours), x[free], target)
+    x = x.copy()
+    x[free] = relaxed.position
+    return x, relaxed.steps
+
+
+def relaxation_note(info: dict) -> str:
+    """The run's note that its initial equilibrium came from the dynamic-relaxation fallback."""
+    return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
+            f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
+            f"stages; residual {info['residual']:.3g} N): Newton's method alone did not converge")
 
 
 def first_guess(net, case):
@@ -385,7 +475,13 @@ def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
     SolverError
         As :func:`equilibrium`.
     """
-    x = equilibrium(net, case, friction=False)[0]          # in the track's frame (_solve's default)
+    return starting_state_info(net, case, system)[:2]
+
+
+def starting_state_info(net, case, system) -> tuple[np.ndarray, np.ndarray, dict]:
+    """:func:`starting_state` and the info of its equilibrium (:func:`_solve`'s; ``fallback`` says
+    whether dynamic relaxation found it)."""
+    x, info = equilibrium(net, case, friction=False)          # in the track's frame (_solve's default)
     v = np.zeros_like(x)
     v[:] = system.frame_velocity()
     if system.motion is not None:
@@ -393,4 +489,4 @@ def starting_state(net, case, system) -> tuple[np.ndarray, np.ndarray]:
         ahead = equilibrium(net, case, x0=x, friction=False, time=delta)[0]
         behind = equilibrium(net, case, x0=x, friction=False, time=-delta)[0]
         v = (ahead - behind) / (2.0 * delta)
-    return x, v
+    return x, v, info

@@ -234,12 +234,24 @@ def solve_network_case(case, method: str = "catenary") -> NetworkResult:
         For a case with a current or a tow speed.
     CaseError
         For what the catenary network cannot take, at its key.
+    NeedsLumped
+        When it puts a line below the seabed, or finds no equilibrium of lines with inline bodies
+        (floats clamped along a line split it into catenaries whose start the load continuation
+        may not find: WHOI Cable's ``branch`` and ``horiz`` arrays).
     SolverError
-        When no equilibrium is found, or it puts a line below the seabed.
+        When no equilibrium is found.
     """
     _check_loaded(case)
     problem = network_problem(case)
-    solution = solve_network(problem, first_guess(problem))
+    try:
+        solution = solve_network(problem, first_guess(problem))
+    except NeedsLumped:
+        raise
+    except SolverError as error:
+        if not any(cable.attachments for cable in case.cables):
+            raise
+        raise NeedsLumped(f"network statics did not converge on lines with inline bodies ({error}); "
+                          "the lumped model's equilibrium solves them") from None
     return _result(case, method, solution)
 
 

@@ -1,0 +1,64 @@
+"""Dynamic relaxation (kanat.lumped.relaxation), the lumped equilibrium's fallback, against closed forms.
+
+Oracle: a chain of tension-only springs hanging from a fixed point under point weights, started
+stretched, bent and sideways; at rest each spring carries the weight below it, so node j (of n, counted
+from the top) hangs at z_j = -sum_{i <= j} (L + (n - i + 1) W / k), x_j = 0.
+"""
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from kanat.lumped.relaxation import fictitious_masses, relax
+
+N, L, W, K = 12, 2.0, 50.0, 1e5           # nodes, rest length [m], weight [N], stiffness [N/m]
+
+
+def chain_force(q):
+    """Forces (N, 3) on the free nodes of the hanging chain at positions ``q`` (N, 3)."""
+    x = np.vstack([np.zeros(3), q])
+    d = x[1:] - x[:-1]
+    length = np.linalg.norm(d, axis=1)
+    tension = K * np.maximum(length - L, 0.0)                 # tension only: slack springs push nothing
+    pull = (tension / length)[:, None] * d                   # on the lower end, towards the upper
+    F = -pull
+    F[:-1] += pull[1:]
+    F[:, 2] -= W
+    return F
+
+
+def chain_tangent(q):
+    """``dF/dq`` (3N square) by central differences: the solver needs only its size."""
+    n, h = q.size, 1e-6
+    J = np.zeros((n, n))
+    for c in range(n):
+        dq = np.zeros(n)
+        dq[c] = h
+        J[:, c] = (chain_force(q + dq.reshape(q.shape)) - chain_force(q - dq.reshape(q.shape))).ravel() / (2 * h)
+    return sp.csr_matrix(J)
+
+
+def test_relaxation_hangs_a_bent_chain_at_its_closed_form():
+    """From a zigzag swung 30 degrees aside, every spring stretched 1 %: it passes through slack
+    (the swing) on its way down."""
+    k = np.arange(1, N + 1)
+    step = 1.01 * L * np.column_stack([np.sin(np.radians(30 + 20 * (-1) ** k)), np.zeros(N),
+                                       -np.cos(np.radians(30 + 20 * (-1) ** k))])
+    start = np.cumsum(step, axis=0)
+    relaxed = relax(chain_force, chain_tangent, start, target=1e-6)
+    tension = (N - np.arange(N)) * W
+    z = -np.cumsum(L + tension / K)
+    assert relaxed.residual <= 1e-6
+    assert np.max(np.abs(relaxed.position[:, 2] - z)) < 1e-8 * N * L
+    # sideways, 1e-6 N over the lowest spring's transverse stiffness W / L (25 N/m), summed over N nodes
+    assert np.max(np.abs(relaxed.position[:, :2])) < N * 1e-6 / (W / L) * 2
+    assert relaxed.peaks > 0                                 # kinetic damping did the settling
+
+
+def test_fictitious_masses_bound_the_unit_step():
+    """Eq. (2): with these masses the explicit unit step is stable, h^2 lambda_max(M^-1 K) <= 4 / MASS_SAFETY."""
+    q = np.column_stack([np.zeros(N), np.zeros(N), -np.cumsum(np.full(N, L * 1.01))])
+    J = chain_tangent(q)
+    m = np.repeat(fictitious_masses(J, 1e-9), 3)
+    largest = np.max(np.abs(np.linalg.eigvals(J.toarray() / m[:, None])))
+    assert largest <= 2.0 + 1e-9
+    assert largest == pytest.approx(2.0, rel=0.6)             # and not far heavier than needed
