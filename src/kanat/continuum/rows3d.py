@@ -179,8 +179,19 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
     speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
     hd = p[k.JB_DRAG]
     cpa, cpb = np.cos(ka[4]), np.cos(kb[4])
+    buoy, dlift = p[k.JB_BUOY], 0.0
+    dz = np.zeros(6)                                  # d(z)/d(weighted k state of node a), z = up . (R + PRED V)
+    if p[k.JB_DIAMETER] > 0.0:                        # a float keeps its immersed share of its buoyancy
+        z = 0.0
+        for i in range(3):
+            z += up[i] * (env[a, k3.RX3 + i] + p[k.PRED] * (ka[1] * eka[0, i] + ka[2] * eka[1, i] + ka[3] * eka[2, i]))
+            for q in range(6):
+                dz[q] += up[i] * p[k.PRED] * dvk[q, i]
+        share, dshare = k.float_immersion(z, p[k.JB_ETA], p[k.JB_DIAMETER])
+        buoy += (share - 1.0) * p[k.JB_FULL]
+        dlift = p[k.JB_FULL] * dshare
     for i in range(3):
-        force = (kb[0] * ekb[0, i] - ka[0] * eka[0, i] + p[k.JB_BUOY] * up[i] + p[k.JB_F0 + i]
+        force = (kb[0] * ekb[0, i] - ka[0] * eka[0, i] + buoy * up[i] + p[k.JB_F0 + i]
                  + p[k.JB_WAVE] * env[a, k3.AX3 + i] + hd * speed * rel[i])
         accel = acc[0] * em[0, i] + acc[1] * em[1, i] + acc[2] * em[2, i]
         res[row + 3 + i] = mass * accel - force
@@ -195,7 +206,7 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
             for jj in range(3):
                 g = hd * ((speed if i == jj else 0.0) + (rel[i] * rel[jj] / speed if speed > 0.0 else 0.0))
                 drag -= g * dvk[q, jj]
-            dfa = drag
+            dfa = drag + dlift * dz[q] * up[i]
             if q == 0:
                 dfa -= eka[0, i]
             elif q == 4:

@@ -141,7 +141,7 @@ def stands_up(problem: CableBVP3) -> bool:
     from kanat.statics.guess3d import lift
 
     bodies = [e.load for e in (problem.start, problem.end) if isinstance(e, Body3)]
-    if not bodies or any(load.waterplane > 0 for load in bodies):      # a surface buoy's lift is its draft's
+    if not bodies or any(load.follows_height for load in bodies):      # a surface buoy's lift is its draft's
         return False
     return float(lift(problem)[2]) > sum(p.line.weight * p.length for p in problem.pieces)
 
@@ -167,7 +167,7 @@ def _shoot_from_body(problem: CableBVP3, s_out):
 
     y = shoot(target[2])
     z_body, evaluations = target[2] + (target[2] - y[2]), 1
-    if not problem.flow.is_uniform or load.waterplane > 0:
+    if not problem.flow.is_uniform or load.follows_height:
         result = root_scalar(lambda zb: shoot(zb)[2] - target[2], x0=z_body, x1=z_body + 1e-3 * problem.length,
                              method="secant", xtol=RESIDUAL_TOL * problem.length, maxiter=50)
         if not result.converged:
