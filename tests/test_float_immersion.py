@@ -1,8 +1,18 @@
 """Buoyancy of spherical floats that follows their immersion (``bodies.<name>.diameter``):
 the immersed share against the sphere's cap volume, the kernels' Jacobians against their
 complex-step oracles, and a float on a vertical tether against its closed-form waterline."""
+import math
+import warnings
+
 import numpy as np
 import pytest
+from scipy.optimize import brentq
+
+import kanat
+from kanat.errors import CaseError
+from kanat.model.case import Case
+from kanat.statics.setup3d import cable_problem3
+from kanat.statics.solve3d import solve_cable3
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
@@ -92,3 +102,82 @@ def test_spatial_jacobian_of_a_float_matches_complex_step(height):
     oracle_complex_step3d.jacobian_complex_step3(x, base, d, env, up, P, b0, b1, res2, band2)
     np.testing.assert_allclose(res, res2, rtol=1e-12, atol=1e-9)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
+
+
+# A 0.5 m spherical float (10 kg) clamped 20 m up a soft vertical tether from an anchor 20.25 m down, a
+# 0.5 m tail above it to a small body pulled up by 5 N: the tether's stretch puts the float at the
+# surface, where its immersed share balances the tension; eq. (1) and the stretch of the line give
+# its height in closed form (brentq on one equation).
+RHO, G = 1025.0, 9.81
+D, MF = 0.5, 10.0
+FULL = RHO * G * math.pi / 6 * D**3                  # buoyancy fully submerged [N]
+W, EA, DEPTH, SF, TOP = 5.0, 2.0e4, 20.25, 20.0, 0.5
+ME, FE = 0.1, 5.0
+
+
+def tether_case(duration=0.05, dt=0.05, waves=None):
+    environment = {"water_density": RHO, "gravity": G, "depth": 100.0}
+    if waves:
+        environment["waves"] = waves
+    return Case.model_validate({
+        "name": "tethered-float", "model": "continuum", "environment": environment,
+        "line_types": {"tether": {"diameter": 0.02, "mass": W / G + RHO * math.pi * 0.01**2, "weight_in_water": W,
+                                  "axial_stiffness": EA, "drag_normal": 1.2, "drag_tangential": 0.01}},
+        "bodies": {"float": {"mass": MF, "net_buoyancy": FULL - MF * G, "drag_area": 0.1, "diameter": D},
+                   "lift": {"mass": ME, "net_buoyancy": -ME * G, "force": [0, 0, FE], "drag_area": 0.01}},
+        "cables": [{"name": "tether", "line_type": "tether", "length": SF + TOP, "segments": 41,
+                    "from": f"anchor:[0, 0, {-DEPTH}]", "to": "lift", "attachments": [{"body": "float", "s": SF}]}],
+        "simulation": {"duration": duration, "dt": dt, "output_dt": min(1.0, duration), "dimensions": 2}})
+
+
+def waterline(eta=0.0):
+    """The float's height: ``z = -depth + s_f + (T_f s_f - w s_f^2 / 2) / EA`` with the tension under it
+    ``T_f = f(z) B_f - m g + T_top`` and ``T_top = F - m_e g - w l_top`` (the tail hangs from the pull)."""
+    top = FE - ME * G - W * TOP
+
+    def gap(z):
+        below = FULL * sphere_fraction(z, eta, D)[0] - MF * G + top
+        return -DEPTH + SF + (below * SF - W * SF**2 / 2) / EA - z
+    return brentq(gap, -2.0, 2.0)
+
+
+@pytest.mark.parametrize("method", ["auto", "collocation"])
+def test_statics_float_floats_at_its_waterline(method):
+    z = waterline()
+    assert 0.0 < sphere_fraction(z, 0.0, D)[0] < 1.0                 # at the surface, partly immersed
+    solution = solve_cable3(cable_problem3(tether_case()), method, np.array([0.0, SF, SF + TOP]))
+    assert solution.z[1] == pytest.approx(z, abs=1e-6)
+
+
+@pytest.mark.slow
+def test_continuum_steady_state_floats_at_its_waterline():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                    # the small pulling body above the water
+        ds = kanat.simulate(tether_case())
+    assert ds.attrs["status"] == "ok"
+    assert float(ds["body_position"].sel(body="float").values[0, 2]) == pytest.approx(waterline(), abs=1e-6)
+
+
+@pytest.mark.slow
+def test_continuum_float_follows_a_long_wave():
+    """A 0.1 m, 40 s wave: the float (heave period ~0.5 s) rides it quasi-statically, at the waterline
+    of the wave's elevation over it, ``eta = 0.05 cos(2 pi t / 40)`` at x = 0, once the start's
+    transient (the run starts from the still-water state) has died out."""
+    waves = {"type": "regular", "height": 0.1, "period": 40.0, "heading_deg": 0}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.simulate(tether_case(20.0, 0.05, waves))
+    assert ds.attrs["status"] == "ok"
+    z = ds["body_position"].sel(body="float").values[:, 2]
+    late = ds.time.values >= 15.0
+    expected = np.array([waterline(0.05 * math.cos(2 * math.pi * t / 40.0)) for t in ds.time.values[late]])
+    assert np.max(np.abs(z[late] - expected)) < 2e-3
+    assert np.ptp(expected) > 0.02                           # while the float moves 10x that
+
+
+def test_models_that_keep_full_buoyancy_refuse_a_diameter():
+    case = tether_case()
+    for model in ("lumped", "statics"):
+        with pytest.raises(CaseError, match=r"bodies\.float\.diameter"):
+            kanat.simulate(case.replace({"model": model})) if model == "lumped" else kanat.solve_statics(
+                case.replace({"model": model}))
