@@ -150,10 +150,17 @@ def test_statics_float_floats_at_its_waterline(method):
 
 
 @pytest.mark.slow
-def test_continuum_steady_state_floats_at_its_waterline():
+@pytest.mark.parametrize("dimensions, bending", [(2, 0.0), (3, 0.0), (2, 5.0), (3, 5.0)])
+def test_continuum_steady_state_floats_at_its_waterline(dimensions, bending):
+    """The planar and spatial kernels, with and without bending stiffness (which a straight line does
+    not load). Without the immersion in the kernels the float would sit 0.28 m higher."""
+    case = tether_case()
+    tether = {**case.line_types["tether"].model_dump(exclude_none=True), "bending_stiffness": bending}
+    case = case.replace({"simulation": {**case.simulation.model_dump(exclude_none=True), "dimensions": dimensions},
+                         "line_types": {"tether": tether}})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")                    # the small pulling body above the water
-        ds = kanat.simulate(tether_case())
+        ds = kanat.simulate(case)
     assert ds.attrs["status"] == "ok"
     assert float(ds["body_position"].sel(body="float").values[0, 2]) == pytest.approx(waterline(), abs=1e-6)
 

@@ -11,7 +11,10 @@ Each interval has its own parameter row (``P[j]``, layout below): a cable of sev
 changes properties at the node between two intervals and nothing is averaged across it (the
 nodal loads of an interval's two nodes are evaluated with that interval's row). An interval of
 kind ``JUNCTION`` joins two nodes at the same arclength and carries an inline body (an
-attachment): its rows are the body's equations, not the cable's.
+attachment): its rows are the body's equations, not the cable's. A spherical float's row holds
+its diameter, its buoyancy fully submerged and the wave elevation over it (filled per step,
+:func:`kanat.continuum.water.float_elevations`): its lift is the immersed share at its predicted
+height (:func:`float_immersion`, :mod:`kanat.physics.immersion`).
 
 Nodal loads per unstretched length (f_t, f_n), at the ``[ak]``-weighted state:
 

@@ -283,9 +283,10 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
         dfa[1, 1 + q] = g01 * dw[0, q] + g11 * dw[1, q]
     dfa[0, 3] += Ta * ska + Sa * cka
     dfa[1, 3] += -Ta * cka + Sa * ska
-    dfa[1, 1] += dlift * ska                   # the float's lift by z = R + PRED (u sin + v cos)
-    dfa[1, 2] += dlift * cka
-    dfa[1, 3] += dlift * (ua * cka - va * ska)
+    if dlift != 0.0:                           # the float's lift by z = R + PRED (u sin + v cos)
+        dfa[1, 1] += dlift * ska
+        dfa[1, 2] += dlift * cka
+        dfa[1, 3] += dlift * (ua * cka - va * ska)
     dfb[0, 0], dfb[1, 0] = ckb, skb
     dfb[0, 3], dfb[1, 3] = -Tb * skb - Sb * ckb, Tb * ckb - Sb * skb
     if bend:
