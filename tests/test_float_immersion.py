@@ -64,6 +64,7 @@ def test_planar_jacobian_of_a_float_matches_complex_step(height):
     d = rng.normal(0, 1, base.shape) * [20.0, 0.1, 0.1, 0.01]
     env = np.zeros((N + 1, k.NENV))
     env[:, [k.UX, k.UZ]] = rng.normal(0, 0.3, (N + 1, 2))
+    env[:, [k.AX, k.AZ]] = rng.normal(0, 0.5, (N + 1, 2))          # the waves' acceleration
     z = 0.1 + height - P[JUNCTION, k.PRED] * (np.sin(x[JUNCTION, 3]) * (2 / 3 * x[JUNCTION, 1] + base[JUNCTION, 1] / 3)
                                               + np.cos(x[JUNCTION, 3]) * (2 / 3 * x[JUNCTION, 2] + base[JUNCTION, 2] / 3))
     env[:, k.RZ] = z                                   # about ``height`` over the float's surface
@@ -92,6 +93,7 @@ def test_spatial_jacobian_of_a_float_matches_complex_step(height):
     up = np.array([0.2, -0.3, 0.93]) / np.linalg.norm([0.2, -0.3, 0.93])
     env = np.zeros((n, k3.NENV3))
     env[:, :3] = rng.normal(0, .3, (n, 3))
+    env[:, k3.AX3:k3.AX3 + 3] = rng.normal(0, .5, (n, 3))           # the waves' acceleration
     env[:, k3.RX3:k3.RX3 + 3] = (-0.2 + height) * up       # the float's centre about ``height`` above its surface
     pad = np.zeros(5)
     b0 = np.array([k.VELOCITY, 0.0, 0.0, 0.0, 0, 0, 0, 0, 0, 0.0, *pad])

@@ -119,7 +119,9 @@ def junction_residual(xa, xb, ya, yb, da, db, ea, p, out):
         + p[k.JB_WAVE] * ea[k.AZ]
     if p[k.JB_DIAMETER] > 0.0:
         z = ea[k.RZ] + p[k.PRED] * (ka[1] * ska + ka[2] * cka)
-        fz = fz - (1.0 - cap_share(z, p[k.JB_ETA], p[k.JB_DIAMETER])) * p[k.JB_FULL]
+        dry = 1.0 - cap_share(z, p[k.JB_ETA], p[k.JB_DIAMETER])
+        fx = fx - dry * p[k.JB_WAVE] * ea[k.AX]
+        fz = fz - dry * (p[k.JB_FULL] + p[k.JB_WAVE] * ea[k.AZ])
     mass = p[k.INERTIA] * p[k.JB_MASS]
     out[2] = mass * acc_x - fx
     out[3] = mass * acc_z - fz
