@@ -189,6 +189,8 @@ def _junction_row(base: np.ndarray, body, env) -> np.ndarray:
     p[[k.JB_MASS, k.JB_BUOY, k.JB_DRAG, k.JB_F0, k.JB_F1, k.JB_F2, k.JB_WAVE]] = (
         body.mass + body.added_mass, body.net_buoyancy, 0.5 * env.water_density * body.drag_area,
         *body.force, body.added_mass + (body.net_buoyancy + body.mass * env.gravity) / env.gravity)
+    if body.diameter is not None:                   # a spherical float: its buoyancy follows its immersion
+        p[[k.JB_DIAMETER, k.JB_FULL]] = body.diameter, body.buoyancy(env.gravity)
     return p
 
 

@@ -11,7 +11,10 @@ Each interval has its own parameter row (``P[j]``, layout below): a cable of sev
 changes properties at the node between two intervals and nothing is averaged across it (the
 nodal loads of an interval's two nodes are evaluated with that interval's row). An interval of
 kind ``JUNCTION`` joins two nodes at the same arclength and carries an inline body (an
-attachment): its rows are the body's equations, not the cable's.
+attachment): its rows are the body's equations, not the cable's. A spherical float's row holds
+its diameter, its buoyancy fully submerged and the wave elevation over it (filled per step,
+:func:`kanat.continuum.water.float_elevations`): its lift is the immersed share at its predicted
+height (:func:`float_immersion`, :mod:`kanat.physics.immersion`).
 
 Nodal loads per unstretched length (f_t, f_n), at the ``[ak]``-weighted state:
 
@@ -59,7 +62,7 @@ from kanat import aot
 from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module is the kernels' one import
     M, MA, W0, EA, DIAM, CN, CT, RHO, DS, AM, AK, GAMMA, DT, INERTIA, GRAV, EI, CONV, PRED, KIND, SECTION, SB_ON,
     SB_K, SB_C, SB_MUA, SB_MUL, SB_C0, SB_N0, SB_N1, SB_N2, JB_MASS, JB_BUOY, JB_DRAG, JB_F0, JB_F1, JB_F2, JB_WAVE,
-    TFLOOR,
+    TFLOOR, JB_DIAMETER, JB_FULL, JB_ETA,
     NPAR, LAW, CABLE, JUNCTION, UX, UZ, AX, AZ, RX, RZ, NENV, VELOCITY, BODY, FREE, B_KIND, B_V0, B_V1, B_MASS,
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
     CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
@@ -70,4 +73,4 @@ assemble = aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None
 
 from kanat.continuum.loads2d import (  # noqa: E402, F401  re-exported: numba's kernels (no numba imported)
     strain, compliance, transverse_tension, node_load, node_load_jacobian, smooth_sign, seabed_force,
-    seabed_force_jacobian, extra_load, extra_load_jacobian, weighted, surface_buoyancy, end_jacobian)
+    seabed_force_jacobian, extra_load, extra_load_jacobian, weighted, surface_buoyancy, float_immersion, end_jacobian)

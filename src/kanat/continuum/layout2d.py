@@ -18,7 +18,10 @@ SB_ON, SB_K, SB_C, SB_MUA, SB_MUL, SB_C0, SB_N0, SB_N1, SB_N2 = range(20, 29)
 JB_MASS, JB_BUOY, JB_DRAG, JB_F0, JB_F1, JB_F2, JB_WAVE = range(29, 36)
 # the tension floor T_f [N] of the normal momentum row (0: none; :func:`loads2d.transverse_tension`)
 TFLOOR = 36
-NPAR = 37
+# a spherical inline float (kanat.physics.immersion): its diameter (0: a constant net buoyancy), its
+# buoyancy fully submerged B_f [N] and the wave elevation over it [m] (filled per step)
+JB_DIAMETER, JB_FULL, JB_ETA = 37, 38, 39
+NPAR = 40
 # The elastic law follows the scalars: p[LAW] = n knots, then n tensions (ascending), then n strains.
 LAW = NPAR
 CABLE, JUNCTION = 0, 1

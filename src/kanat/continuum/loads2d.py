@@ -235,6 +235,18 @@ def surface_buoyancy(z, b):
 
 
 @inner
+def float_immersion(z, eta, diameter):
+    """Submerged share ``f`` of a spherical float centred at ``z`` and ``df/dz`` (the kernels' twin of
+    :func:`kanat.physics.immersion.sphere_fraction`, eqs. (1)-(2))."""
+    u = (eta - z) / diameter + 0.5
+    if u.real <= 0.0:
+        return 0.0 * z, 0.0
+    if u.real >= 1.0:
+        return 1.0 + 0.0 * z, 0.0
+    return u * u * (3.0 - 2.0 * u), (-6.0 * u.real * (1.0 - u.real) / diameter)
+
+
+@inner
 def end_jacobian(x, y, d, env, p, b, side, out, jac, extras):
     """The ``nv / 2`` rows of one end (module docstring) into ``out`` and their derivatives by
     the end node's unknowns ``x`` into ``jac`` (nv/2, nv), real.

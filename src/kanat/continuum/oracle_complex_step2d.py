@@ -83,6 +83,19 @@ def interval_residual(xl, xr, yl, yr, dl, dr, el, er, p, out):
 
 
 @kernel
+def cap_share(z, eta, diameter):
+    """Immersed volume share of a sphere centred at ``z``, complex-capable: the cap of height
+    ``h = clip(eta - z + a, 0, 2a)`` holds ``pi h^2 (3a - h) / 3`` of ``4 pi a^3 / 3``."""
+    a = 0.5 * diameter
+    h = eta - z + a
+    if h.real <= 0.0:
+        return 0.0 * z
+    if h.real >= diameter:
+        return 1.0 + 0.0 * z
+    return h * h * (3.0 * a - h) / (4.0 * a * a * a)
+
+
+@kernel
 def junction_residual(xa, xb, ya, yb, da, db, ea, p, out):
     """The rows of a junction interval (an inline body, :mod:`rows2d` docstring), complex-capable."""
     nv = xa.shape[0]
@@ -104,6 +117,11 @@ def junction_residual(xa, xb, ya, yb, da, db, ea, p, out):
     fx = (kb[0] * ckb - sb_ * skb) - (ka[0] * cka - sa_ * ska) + drag * wx + p[k.JB_F0] + p[k.JB_WAVE] * ea[k.AX]
     fz = (kb[0] * skb + sb_ * ckb) - (ka[0] * ska + sa_ * cka) + drag * wz + p[k.JB_F2] + p[k.JB_BUOY] \
         + p[k.JB_WAVE] * ea[k.AZ]
+    if p[k.JB_DIAMETER] > 0.0:
+        z = ea[k.RZ] + p[k.PRED] * (ka[1] * ska + ka[2] * cka)
+        dry = 1.0 - cap_share(z, p[k.JB_ETA], p[k.JB_DIAMETER])
+        fx = fx - dry * p[k.JB_WAVE] * ea[k.AX]
+        fz = fz - dry * (p[k.JB_FULL] + p[k.JB_WAVE] * ea[k.AZ])
     mass = p[k.INERTIA] * p[k.JB_MASS]
     out[2] = mass * acc_x - fx
     out[3] = mass * acc_z - fz

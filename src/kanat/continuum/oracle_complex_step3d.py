@@ -11,6 +11,7 @@ from kanat.jit import kernel
 
 from kanat.continuum import kernels2d as k
 from kanat.continuum import kernels3d as k3
+from kanat.continuum.oracle_complex_step2d import cap_share
 
 
 @kernel
@@ -109,8 +110,16 @@ def junction_residual3(xa, xb, ya, yb, da, db, ea, up, p, out):
     rel = (ea[0] - vel[0], ea[1] - vel[1], ea[2] - vel[2])
     drag = p[k.JB_DRAG] * np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
     mass = p[k.INERTIA] * p[k.JB_MASS]
+    buoy, wave = p[k.JB_BUOY] + 0.0 * vel[0], p[k.JB_WAVE] + 0.0 * vel[0]
+    if p[k.JB_DIAMETER] > 0.0:
+        z = 0.0 * vel[0]
+        for i in range(3):
+            z = z + up[i] * (ea[k3.RX3 + i] + p[k.PRED] * vel[i])
+        wet = cap_share(z, p[k.JB_ETA], p[k.JB_DIAMETER])
+        buoy = buoy - (1.0 - wet) * p[k.JB_FULL]
+        wave = wave * wet
     for i in range(3):
-        force = (kb[0] * tb[i] - ka[0] * ta[i] + p[k.JB_BUOY] * up[i] + p[k.JB_F0 + i] + p[k.JB_WAVE] * ea[k3.AX3 + i]
+        force = (kb[0] * tb[i] - ka[0] * ta[i] + buoy * up[i] + p[k.JB_F0 + i] + wave * ea[k3.AX3 + i]
                  + drag * rel[i])
         out[3 + i] = mass * acc[i] - force
 

@@ -29,7 +29,9 @@ the body's momentum in global components
     c0 (M_b + M_a) A_a^[am] - (T_b t_b + S_b n_b - T_a t_a - S_a n_a)^[ak] - B z - D - F - (M_a + rho Vol) a_w = 0
 
 (``A = (u_t - v phi_t) t + (v_t + u phi_t) n`` the acceleration of node ``a``, ``D`` the drag of
-the water relative to it), and with bending ``M_a = M_b = 0`` (a pinned connection). The
+the water relative to it; for a spherical float ``B = B_net - (1 - f(z)) B_f`` and the wave inertia
+``f(z) (M_a + rho Vol) a_w``, ``f`` its immersed share at the predicted height ``z = R + PRED V`` under
+the wave elevation, :mod:`kanat.physics.immersion`), and with bending ``M_a = M_b = 0`` (a pinned connection). The
 tension and angle jump across it by exactly the body's load.
 
 All derivatives are written out; :mod:`kanat.continuum.oracle_complex_step2d` checks them by complex step.
@@ -245,6 +247,14 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
     fx = (Tb * ckb - Sb * skb) - (Ta * cka - Sa * ska) + hd * speed * wx + p[k.JB_F0] + p[k.JB_WAVE] * env[a, k.AX]
     fz = (Tb * skb + Sb * ckb) - (Ta * ska + Sa * cka) + hd * speed * wz + p[k.JB_F2] + p[k.JB_BUOY] \
         + p[k.JB_WAVE] * env[a, k.AZ]
+    dlift = dwave = 0.0
+    if p[k.JB_DIAMETER] > 0.0:                 # a float keeps its immersed share of buoyancy and wave inertia
+        share, dshare = k.float_immersion(env[a, k.RZ] + p[k.PRED] * (ua * ska + va * cka), p[k.JB_ETA],
+                                          p[k.JB_DIAMETER])
+        fx += (share - 1.0) * p[k.JB_WAVE] * env[a, k.AX]
+        fz += (share - 1.0) * (p[k.JB_FULL] + p[k.JB_WAVE] * env[a, k.AZ])
+        dlift = (p[k.JB_FULL] + p[k.JB_WAVE] * env[a, k.AZ]) * dshare * p[k.PRED]
+        dwave = p[k.JB_WAVE] * env[a, k.AX] * dshare * p[k.PRED]
     res[row + 2] = mass * acc_x - fx
     res[row + 3] = mass * acc_z - fz
     # d(acc)/d(m1, m2, m3) and /d(q1, q2, q3)
@@ -276,6 +286,11 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
         dfa[1, 1 + q] = g01 * dw[0, q] + g11 * dw[1, q]
     dfa[0, 3] += Ta * ska + Sa * cka
     dfa[1, 3] += -Ta * cka + Sa * ska
+    if dlift != 0.0 or dwave != 0.0:           # the float's share by z = R + PRED (u sin + v cos)
+        for i, slope in ((0, dwave), (1, dlift)):
+            dfa[i, 1] += slope * ska
+            dfa[i, 2] += slope * cka
+            dfa[i, 3] += slope * (ua * cka - va * ska)
     dfb[0, 0], dfb[1, 0] = ckb, skb
     dfb[0, 3], dfb[1, 3] = -Tb * skb - Sb * ckb, Tb * ckb - Sb * skb
     if bend:

@@ -6,7 +6,9 @@ row ``P[j]`` (the winch's convective term ``+ c g / 2`` in the mean rate of the 
 and a junction interval carries an inline body: velocity continuity ``V_a = V_b`` (3 rows, new
 level) and the body's momentum in chart components (3 rows)
 
-    c0 (M_b + M_a) A_a^[am] - (T_b t_b - T_a t_a)^[ak] - B z - D - F - (M_a + rho Vol) a_w = 0.
+    c0 (M_b + M_a) A_a^[am] - (T_b t_b - T_a t_a)^[ak] - B z - D - F - (M_a + rho Vol) a_w = 0
+
+(a spherical float: ``B`` and the wave inertia keep their immersed share, :mod:`kanat.continuum.rows2d`).
 
 ``extras``: None for a plain cable (its branches compile away), as in :mod:`kanat.continuum.rows2d`.
 """
@@ -179,9 +181,21 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
     speed = np.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2])
     hd = p[k.JB_DRAG]
     cpa, cpb = np.cos(ka[4]), np.cos(kb[4])
+    buoy, dlift, wave, dshare = p[k.JB_BUOY], 0.0, p[k.JB_WAVE], 0.0
+    dz = np.zeros(6)                                  # d(z)/d(weighted k state of node a), z = up . (R + PRED V)
+    if p[k.JB_DIAMETER] > 0.0:                        # a float keeps its immersed share of its buoyancy
+        z = 0.0
+        for i in range(3):
+            z += up[i] * (env[a, k3.RX3 + i] + p[k.PRED] * (ka[1] * eka[0, i] + ka[2] * eka[1, i] + ka[3] * eka[2, i]))
+            for q in range(6):
+                dz[q] += up[i] * p[k.PRED] * dvk[q, i]
+        share, dshare = k.float_immersion(z, p[k.JB_ETA], p[k.JB_DIAMETER])
+        buoy += (share - 1.0) * p[k.JB_FULL]
+        wave *= share                                 # and its immersed share of the wave inertia
+        dlift = p[k.JB_FULL] * dshare
     for i in range(3):
-        force = (kb[0] * ekb[0, i] - ka[0] * eka[0, i] + p[k.JB_BUOY] * up[i] + p[k.JB_F0 + i]
-                 + p[k.JB_WAVE] * env[a, k3.AX3 + i] + hd * speed * rel[i])
+        force = (kb[0] * ekb[0, i] - ka[0] * eka[0, i] + buoy * up[i] + p[k.JB_F0 + i]
+                 + wave * env[a, k3.AX3 + i] + hd * speed * rel[i])
         accel = acc[0] * em[0, i] + acc[1] * em[1, i] + acc[2] * em[2, i]
         res[row + 3 + i] = mass * accel - force
         for q in range(6):
@@ -196,6 +210,8 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
                 g = hd * ((speed if i == jj else 0.0) + (rel[i] * rel[jj] / speed if speed > 0.0 else 0.0))
                 drag -= g * dvk[q, jj]
             dfa = drag
+            if dshare != 0.0:                         # the float's share by its height
+                dfa += (dlift * up[i] + p[k.JB_WAVE] * env[a, k3.AX3 + i] * dshare) * dz[q]
             if q == 0:
                 dfa -= eka[0, i]
             elif q == 4:

@@ -17,7 +17,7 @@ from kanat.continuum.chart import choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch, strain_of
 from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, solve_band, step_rows
-from kanat.continuum.water import elevation, kinematics_time, predictor_weight
+from kanat.continuum.water import elevation, float_elevations, has_floats, kinematics_time, predictor_weight
 
 UP = np.array([0.0, 0.0, 1.0])
 
@@ -218,6 +218,7 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
     env = spatial_water(cable, state.xyz, velocity, tangent, state.t, dt, coefficients, chart)
     payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, state.xyz[-1, :2], kinematics_time(state.t, dt, coefficients))
+    float_elevations(cable.sea, P, state.xyz[:, :2], kinematics_time(state.t, dt, coefficients))
     b0 = cable.start.array(v0, chart, rho, payout=payout)
     b1 = cable.end.array(v1, chart, rho, eta=eta)
     x, iterations = _solve(cable, y + dt * rate, y, rate, env, chart.T @ UP, P, b0, b1)
@@ -244,7 +245,7 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
     env = spatial_water(cable, xyz, np.zeros_like(xyz), frames(guess, chart)[0], 0.0, 0.0, (0.0, 0.0, 1.0), chart,
                         waves=False)
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
-    if not near_seabed(cable, xyz) and cable.end.waterplane == 0.0 and not anchored:
+    if not near_seabed(cable, xyz) and cable.end.waterplane == 0.0 and not anchored and not has_floats(rows):
         x, _ = _solve(cable, guess, guess, np.zeros_like(guess), env, up, P, b0, b1)
         return x
     from kanat.continuum.steady import steady_with_positions

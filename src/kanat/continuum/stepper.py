@@ -16,7 +16,7 @@ from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import PlanarCable, positions
 from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 from kanat.continuum.steady import steady_with_positions
-from kanat.continuum.water import elevation, kinematics_time, planar_water
+from kanat.continuum.water import elevation, float_elevations, has_floats, kinematics_time, planar_water
 
 MAX_CUTS = 4             # a failed step is retried as 2, 4, 8, 16 substeps
 
@@ -163,6 +163,8 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive, own_r
     env = planar_water(cable, state.xz, node_velocity(state.y), state.t, dt, coefficients)
     payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, (state.xz[-1, 0], 0.0), kinematics_time(state.t, dt, coefficients))
+    float_elevations(cable.sea, P, np.column_stack([state.xz[:, 0], np.zeros(len(state.xz))]),
+                     kinematics_time(state.t, dt, coefficients))
     b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
     x, iterations = solve(cable, state.y + dt * state.rate, state.y, state.rate, env, P, b0, b1)
     gamma = coefficients[2]
@@ -189,7 +191,7 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     env = planar_water(cable, xz, np.zeros_like(xz), 0.0, 0.0, (0.0, 0.0, 1.0), waves=False)
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
     if not near_seabed(cable, np.column_stack([xz[:, 0], np.zeros(len(xz)), xz[:, 1]])) and \
-            cable.end.waterplane == 0.0 and not anchored:
+            cable.end.waterplane == 0.0 and not anchored and not has_floats(rows):
         x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
         return x
 

@@ -58,3 +58,25 @@ def elevation(sea, point, t: float) -> float:
     if sea is None:
         return 0.0
     return float(sea.elevation(np.array([point[0]]), np.array([point[1]]), t)[0])
+
+
+def float_elevations(sea, P: np.ndarray, points: np.ndarray, t: float) -> None:
+    """Write into ``P[j, JB_ETA]`` the wave elevation over every spherical float's junction ``j`` at ``t``
+    (0 without waves): its immersion is measured from there (:mod:`kanat.physics.immersion`).
+
+    Parameters
+    ----------
+    P : ndarray, shape (N, n_par)
+        The step's interval rows; modified in place.
+    points : ndarray, shape (N + 1, 2)
+        Node positions (x, y) at the step's start [m].
+    """
+    floats = np.flatnonzero((P[:, k.KIND] == k.JUNCTION) & (P[:, k.JB_DIAMETER] > 0.0))
+    if sea is None or not len(floats):
+        return
+    P[floats, k.JB_ETA] = sea.elevation(points[floats, 0], points[floats, 1], t)
+
+
+def has_floats(rows: np.ndarray) -> bool:
+    """True when an interval row is a spherical float's junction (its lift depends on its height)."""
+    return bool(np.any((rows[:, k.KIND] == k.JUNCTION) & (rows[:, k.JB_DIAMETER] > 0.0)))

@@ -95,6 +95,9 @@ class Body(KanatModel):
         positive to port (lumped model, theory/lumped.md §4).
     surface_buoy : SurfaceBuoy or None
         Waterplane hydrostatics of a surface buoy (lumped model, 3-DOF bodies).
+    diameter : float or None
+        Diameter of a spherical float [m] (3-DOF bodies): its buoyancy ``net_buoyancy + mass g``
+        follows its immersion (:func:`kanat.physics.immersion.sphere_fraction`); None: constant.
     position : tuple of 3 float or None
         Initial position [m] (a guess for the equilibrium); the reference point of a
         6-DOF body.
@@ -123,6 +126,12 @@ class Body(KanatModel):
     surface_buoy: SurfaceBuoy | None = Field(
         None, description="a buoy riding the wave surface on its waterplane, at cable ends, not as an "
                           "attachment (lumped model; continuum model: the cable's far end)")
+    diameter: float | None = quantity(
+        None, unit="m", gt=0,
+        description="dof 3: diameter of a spherical float centred on its node, whose buoyancy (net_buoyancy + "
+                    "mass * g) follows its immersion: the submerged cap's share of the sphere's volume, so a "
+                    "float that reaches the surface floats there (continuum model and single-cable statics); "
+                    "none: the buoyancy is the same in and out of the water")
     position: Vector3 | None = quantity(
         None, unit="m", description="initial guess of the position for the network "
                                     "equilibrium (lumped model); None: guessed. For dof: 6, "
@@ -184,12 +193,17 @@ class Body(KanatModel):
     @model_validator(mode="after")
     def _rigid_body(self) -> Body:
         if self.dof == 3:
+            if self.diameter is not None and self.surface_buoy is not None:
+                raise ValueError("give either diameter (a spherical float) or surface_buoy (a waterplane), not both")
             used = [k for k in (*SIX_DOF_ONLY, "buoyancy_at") if getattr(self, k) not in (None, ZERO3)]
             if used:
                 verb = "is" if len(used) == 1 else "are"
                 raise ValueError(f"{', '.join(used)} {verb} for rigid bodies: add dof: 6 "
                                  "(a 3-DOF body is a point)")
             return self
+        if self.diameter is not None:
+            raise ValueError("diameter (a spherical float) is for point bodies (dof: 3); a dof: 6 body takes "
+                             "waterplane_area and metacentric_heights")
         if self.seabed_area > 0.0:
             raise ValueError("seabed_area is for point bodies (dof: 3); a dof: 6 body's seabed contact is not "
                              "modelled")

@@ -280,6 +280,14 @@ def _inline_surface_buoys(case: Case) -> list[Use]:
             for j, a in enumerate(c.attachments) if a.body in case.bodies and case.bodies[a.body].surface_buoy is not None]
 
 
+def _float_diameters(at_ends: bool) -> Callable[[Case], list[Use]]:
+    def uses(case: Case) -> list[Use]:
+        names = {e.name for c in case.cables for e in c.ends if e.kind == "body"}
+        return [(("bodies", name, "diameter"), "") for name, body in case.bodies.items()
+                if body.diameter is not None and (name in names) == at_ends]
+    return uses
+
+
 def _vessel_motion(case: Case) -> list[Use]:
     return [(("vessel", "motion"), "")] if case.vessel.motion.is_used else []
 
@@ -394,6 +402,15 @@ FEATURES: tuple[Feature, ...] = (
     Feature("inline_surface_buoy", "a surface buoy clamped inside a cable", _inline_surface_buoys,
             statics=NO, continuum=NO, lumped=NO,
             note="a surface buoy rides the waves at a cable's end; inline bodies have no waterplane"),
+    Feature("float_diameter", "a float whose buoyancy follows its immersion (diameter)", _float_diameters(False),
+            statics=NO, continuum=YES, lumped=NO,
+            note={"statics": "network statics keeps a float's full buoyancy in the air; the continuum model's "
+                             "initial state honours it (model: continuum)",
+                  "lumped": "the lumped model's point bodies keep their full buoyancy in the air; use model: "
+                            "continuum"}),
+    Feature("end_float_diameter", "a float with a diameter at a cable's end", _float_diameters(True),
+            statics=NO, continuum=NO, lumped=NO,
+            note="a body riding the surface at a cable's end is a surface_buoy (waterplane_area, height)"),
     Feature("vessel_pitch", "the vessel's pitch", _vessel_pitch,
             statics=IGNORED, continuum=YES, lumped=YES, note="its steady state is level"),
     Feature("consistent_mass", "the consistent mass matrix", _simulation("mass_matrix", "lumped"),

@@ -23,7 +23,8 @@ the umbilical 47 m above the surface). :func:`check_bodies` looks at every body'
    is above it: its waterplane holds nothing up (a failure). A buoyant body
    (``net_buoyancy > 0``, no waterplane) keeps its lift in the air in the model (a failure); a
    sinking one weighs ``m g`` in the air, not ``-net_buoyancy`` (a warning: the state is off
-   by its buoyancy). A rigid body with a waterplane (``waterplane_area`` or a heave stiffness)
+   by its buoyancy). A spherical float (``diameter``) keeps only its immersed share of its buoyancy,
+   so it may sit at or above the surface. A rigid body with a waterplane (``waterplane_area`` or a heave stiffness)
    is out of the water when it rose above its given ``position`` (none given: the origin, where
    network statics balances its hydrostatics, :func:`hydrostatic_reference`) by more than its
    wall-sided draft ``B / (rho g A_w)``, ``B = net_buoyancy + m g`` its buoyancy (a failure).
@@ -152,7 +153,7 @@ def _surface(case, name, position, attitude, cables, when, warnings) -> str | No
              f"in {when}")
     if body.dof == 6 and (body.waterplane_area is not None or body.hydrostatic_stiffness is not None):
         return _rigid_surface(case, name, position, when)
-    if height <= SURFACE_TOLERANCE:
+    if height <= SURFACE_TOLERANCE or body.diameter is not None:      # a float's buoyancy follows its immersion
         return None
     if body.surface_buoy is not None:
         return (f"{where}: its keel is out of the water, where its waterplane holds nothing up, so only its "

@@ -29,7 +29,8 @@ def body_load(case, name: str) -> Load:
     buoy = body.surface_buoy
     waterplane = 0.0 if buoy is None else env.water_density * env.gravity * buoy.waterplane_area
     return Load(body.net_buoyancy, body.drag_area, tuple(float(f) for f in body.force), waterplane,
-                0.0 if buoy is None else buoy.height)
+                0.0 if buoy is None else buoy.height, body.diameter or 0.0,
+                body.buoyancy(env.gravity) if body.diameter else 0.0)
 
 
 def line_properties(case, line_type: str) -> LineProperties:

@@ -141,7 +141,7 @@ def stands_up(problem: CableBVP3) -> bool:
     from kanat.statics.guess3d import lift
 
     bodies = [e.load for e in (problem.start, problem.end) if isinstance(e, Body3)]
-    if not bodies or any(load.waterplane > 0 for load in bodies):      # a surface buoy's lift is its draft's
+    if not bodies or any(load.follows_height for load in bodies):      # a surface buoy's lift is its draft's
         return False
     return float(lift(problem)[2]) > sum(p.line.weight * p.length for p in problem.pieces)
 
@@ -154,7 +154,7 @@ def _below_seabed(problem: CableBVP3, path: Path) -> bool:
 def _shoot_from_body(problem: CableBVP3, s_out):
     """Integrate from the body, where the force is its load at its height; the flow and the loads
     depend on height only, so the one unknown is the body's height (none in a uniform flow with no
-    surface buoy), and the cable is shifted horizontally onto the fixed end."""
+    surface buoy and no float whose buoyancy follows its immersion), and the cable is shifted horizontally onto the fixed end."""
     body = 0 if isinstance(problem.start, Body3) else 1
     s_body, s_fixed = (0.0, problem.length) if body == 0 else (problem.length, 0.0)
     target = np.asarray((problem.start, problem.end)[1 - body].position, dtype=float)
@@ -167,7 +167,7 @@ def _shoot_from_body(problem: CableBVP3, s_out):
 
     y = shoot(target[2])
     z_body, evaluations = target[2] + (target[2] - y[2]), 1
-    if not problem.flow.is_uniform or load.waterplane > 0:
+    if not problem.flow.is_uniform or load.follows_height or any(j.follows_height for _, j in problem.joints):
         result = root_scalar(lambda zb: shoot(zb)[2] - target[2], x0=z_body, x1=z_body + 1e-3 * problem.length,
                              method="secant", xtol=RESIDUAL_TOL * problem.length, maxiter=50)
         if not result.converged:

@@ -31,6 +31,7 @@ import numpy as np
 from kanat.errors import SolverError
 from kanat.statics import budget
 from kanat.physics.drag import body_drag, cable_drag
+from kanat.physics.immersion import float_buoyancy, sphere_fraction
 from kanat.statics.problem import LineProperties
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -53,18 +54,29 @@ class Piece:
 class Load:
     """What a body adds at a point: net buoyancy [N] (up), ``C_D S`` [m^2], a constant force [N] (3,)
     and, for a surface buoy, its waterplane ``rho g A_w`` [N/m] and height [m] (the buoyancy
-    ``rho g A_w clip(-z, 0, height)`` of its immersion below the still surface)."""
+    ``rho g A_w clip(-z, 0, height)`` of its immersion below the still surface); for a spherical
+    float, its ``diameter`` [m] and its ``buoyancy`` fully submerged [N], of which it keeps the
+    share under the still surface (:mod:`kanat.physics.immersion`, eq. (1))."""
 
     net_buoyancy: float = 0.0
     drag_area: float = 0.0
     force: tuple = (0.0, 0.0, 0.0)
     waterplane: float = 0.0
     height: float = 0.0
+    diameter: float = 0.0
+    buoyancy: float = 0.0
 
     def at(self, flow: Flow3, z: float, density: float) -> np.ndarray:
         """The body's external force at height ``z`` [N], shape (3,)."""
         lift = self.net_buoyancy + self.waterplane * min(max(-float(z), 0.0), self.height)
+        if self.diameter > 0.0:
+            lift = float_buoyancy(self.net_buoyancy, self.buoyancy, sphere_fraction(float(z), 0.0, self.diameter)[0])
         return np.asarray(self.force, dtype=float) + body_drag(flow.at(z), self.drag_area, density) + lift * UP
+
+    @property
+    def follows_height(self) -> bool:
+        """True when the load changes with the body's height (a waterplane or a float's immersion)."""
+        return self.waterplane > 0 or self.diameter > 0
 
     @property
     def inert(self) -> bool:
