@@ -18,8 +18,8 @@ matrix ``D`` minimising the mean square error of ``f(U + w) - f(U) - D w``:
   for ``w = a cos(theta)``, ``D = (1/pi) int_0^{2 pi} J(U + a cos theta) sin^2(theta) d theta``
   (the fundamental of ``f``, by parts), ``8/(3 pi) c |a|`` in one direction with ``U = 0``.
 
-The expectation is a Gauss–Hermite product rule (:data:`GAUSS_POINTS` per direction) on the
-principal axes of ``Sigma``; the describing function a rectangle rule in ``theta``
+Along the element the expectation is a folded normal's mean in closed form; across it, a
+quasi-Monte Carlo mean over the normal plane's Gaussian (:data:`NORMAL_SAMPLES`); the describing function a rectangle rule in ``theta``
 (:data:`PHASE_POINTS`) along the principal axis of the complex amplitude (an elliptic ``w`` is
 taken on its major axis' phase). The waves force node ``a`` with the same ``D`` on the water's
 velocity and with its inertia (kernels eq. 6)::
@@ -28,13 +28,15 @@ velocity and with its inertia (kernels eq. 6)::
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.polynomial.hermite_e import hermegauss
+from scipy.special import erf, ndtri
+from scipy.stats import qmc
 
-GAUSS_POINTS = 10     # per principal direction: E|x| of a Gaussian to 0.3 %, 1000 points in all
-PHASE_POINTS = 64     # over one period: the describing function of |x| x to 1e-4
+NORMAL_SAMPLES = 2048  # Sobol points in the normal plane (and as many mirrored): E|v| to ~1e-3
+PHASE_POINTS = 360    # over one period: the describing function of |x| x to 1e-4
 TINY = 1e-12          # m/s: a relative speed taken as zero
 
 
@@ -112,15 +114,42 @@ def jacobian(pairs: DragPairs, v: np.ndarray) -> np.ndarray:
 
 
 def stochastic(pairs: DragPairs, covariance: np.ndarray) -> np.ndarray:
-    """``D = E[J(U + w)]`` (p, 3, 3) for Gaussian ``w`` of covariance (p, 3, 3) (module docstring)."""
-    x, weight = hermegauss(GAUSS_POINTS)
-    weight = weight / weight.sum()
-    grid = np.stack(np.meshgrid(x, x, x, indexing="ij"), -1).reshape(-1, 3)
-    weights = np.prod(np.stack(np.meshgrid(weight, weight, weight, indexing="ij"), -1).reshape(-1, 3), axis=1)
-    values, vectors = np.linalg.eigh(0.5 * (covariance + np.swapaxes(covariance, 1, 2)))
+    """``D = E[J(U + w)]`` (p, 3, 3) for Gaussian ``w`` of covariance (p, 3, 3) (module docstring).
+
+    Along the element, ``E[2 |U_t + w_t|]`` in closed form (a folded normal's mean); across it, the
+    expectation over the normal plane's Gaussian by :data:`NORMAL_SAMPLES` scrambled Sobol points
+    and their mirror images (quasi-Monte Carlo; the kink of ``|v|`` rules out a Gauss rule)."""
+    t = pairs.tangent
+    sigma_t = np.sqrt(np.maximum(np.einsum("pr,prq,pq->p", t, covariance, t), 0.0))
+    mean_t = np.abs(np.einsum("pr,pr->p", pairs.mean, t))
+    folded = np.where(sigma_t > TINY, sigma_t * np.sqrt(2.0 / np.pi) * np.exp(-0.5 * (mean_t / np.maximum(sigma_t, TINY)) ** 2)
+                      + mean_t * erf(mean_t / (np.sqrt(2.0) * np.maximum(sigma_t, TINY))), mean_t)
+    tt = np.einsum("pr,pq->prq", t, t)
+    E = normal_basis(t)                                                   # (p, 3, 2)
+    plane = np.einsum("pra,prq,pqb->pab", E, covariance, E)
+    values, vectors = np.linalg.eigh(plane)
     scale = vectors * np.sqrt(np.maximum(values, 0.0))[:, None, :]
-    w = np.einsum("prq,sq->psr", scale, grid)
-    return np.einsum("psrq,s->prq", jacobian(pairs, pairs.mean[:, None, :] + w), weights)
+    v = np.einsum("pr,pra->pa", pairs.mean, E)[:, None, :] + np.einsum("pab,sb->psa", scale, _normal_samples())
+    speed = np.linalg.norm(v, axis=-1)
+    unit = v / np.maximum(speed, TINY)[..., None]
+    J = speed[..., None, None] * (np.eye(2) + np.einsum("psa,psb->psab", unit, unit))
+    across = np.einsum("pra,pab,pqb->prq", E, J.mean(axis=1), E)
+    return pairs.normal[:, None, None] * across + (2.0 * pairs.tangential * folded)[:, None, None] * tt
+
+
+def normal_basis(t: np.ndarray) -> np.ndarray:
+    """Two unit vectors (p, 3, 2) normal to the unit tangents ``t`` (p, 3) and to each other."""
+    axis = np.eye(3)[np.argmin(np.abs(t), axis=1)]
+    e1 = np.cross(t, axis)
+    e1 /= np.linalg.norm(e1, axis=1)[:, None]
+    return np.stack([e1, np.cross(t, e1)], -1)
+
+
+@functools.lru_cache(maxsize=1)
+def _normal_samples() -> np.ndarray:
+    """Standard normal points in the plane (2 x :data:`NORMAL_SAMPLES`, 2): Sobol, seed 0, mirrored."""
+    z = ndtri(qmc.Sobol(d=2, scramble=True, seed=0).random(NORMAL_SAMPLES))
+    return np.vstack([z, -z])
 
 
 def describing(pairs: DragPairs, amplitude: np.ndarray) -> np.ndarray:
