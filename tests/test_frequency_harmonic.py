@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import kanat
+import kanat.errors
 from kanat.model import Case
 
 from helpers import quiet
@@ -220,3 +221,10 @@ def test_chain_catenary_against_moordyn_side_by_side(tmp_path, moordyn, moordyn_
     keep = t >= t[-1] - 2 * period
     _, reference = harmonic_fit(t[keep], tension[keep], 2 * math.pi / period)
     assert_agrees(ds, reference[1:-1], rtol=0.05, atol_phase=0.05, nodes=slice(1, -1))
+
+
+def test_a_motion_table_is_refused_at_its_key():
+    """The frequency domain needs harmonics: a motion table is a case error naming vessel.motion."""
+    case = bar(segments=2).replace({"vessel.motion": {"rows": [[0.0, 0, 0, 0, 0, 0, 0], [1.0, 0.1, 0, 0, 0, 0, 0]]}})
+    with pytest.raises(kanat.errors.CaseError, match="vessel.motion.*motion table"):
+        kanat.solve_frequency(case)

@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
+DEFAULT_EXPOSURE = 10800.0   # s: a 3-hour storm, when the case has no simulation.duration
 LIFT_OFF_SHARE = 0.1       # of the element length: a grounded node moving up more than this lifts off
 
 
@@ -51,7 +52,8 @@ def _tension_swing(ds, ex, case) -> tuple[np.ndarray, str]:
     m0 = S.sum(axis=0) * ex.bandwidth
     m2 = (ex.omega[:, None] ** 2 * S).sum(axis=0) * ex.bandwidth
     tz = 2.0 * np.pi * np.sqrt(m0 / np.maximum(m2, 1e-300))
-    cycles = np.maximum(case.simulation.duration / np.maximum(tz, 1e-300), np.e)
+    exposure = case.simulation.duration if case.simulation is not None else DEFAULT_EXPOSURE
+    cycles = np.maximum(exposure / np.maximum(tz, 1e-300), np.e)
     return np.sqrt(m0) * np.sqrt(2.0 * np.log(cycles)), "most probable maximum over simulation.duration"
 
 

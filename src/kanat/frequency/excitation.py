@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kanat.errors import CaseError
+from kanat.errors import CaseError, Problem
 from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.rao import rao_harmonics
 from kanat.physics.waves import JONSWAP_BAND, LinearSea, jonswap_sea, sea_from_model, wavenumber
@@ -79,17 +79,22 @@ def excitation_of(case) -> Excitation:
     env, motion = case.environment, case.vessel.motion
     waves = env.waves
     if motion.rows is not None:
-        raise CaseError("simulation.method: frequency takes harmonic vessel.motion or RAOs, not a motion table "
-                        "(vessel.motion rows); give harmonics or run method: time")
+        raise _refused("vessel.motion", "simulation.method: frequency takes harmonic vessel.motion or RAOs, "
+                                        "not a motion table; give harmonics or run method: time")
     if waves is not None and waves.type == "jonswap":
         if motion.harmonics:
-            raise CaseError("simulation.method: frequency: harmonic vessel.motion in an irregular sea has no "
-                            "spectrum; drive the vessel by RAOs (vessel.motion: {rao: FILE}) or run method: time")
+            raise _refused("vessel.motion", "simulation.method: frequency: harmonic vessel.motion in an irregular "
+                                            "sea has no spectrum; drive the vessel by RAOs (vessel.motion: {rao: FILE}) "
+                                            "or run method: time")
         return _spectral(case)
     if waves is None and not motion.harmonics:
-        raise CaseError("simulation.method: frequency needs an excitation: environment.waves or harmonic "
-                        "vessel.motion")
+        raise _refused("simulation.method", "the frequency domain needs an excitation: environment.waves or "
+                                            "harmonic vessel.motion")
     return _harmonic(case)
+
+
+def _refused(key: str, message: str) -> CaseError:
+    return CaseError([Problem(key, message)])
 
 
 def _spectral(case) -> Excitation:
@@ -126,7 +131,7 @@ def _harmonic(case) -> Excitation:
     if isinstance(compiled, Harmonics):
         at = _slot(omega, compiled.omega)
         np.add.at(motion, (at, compiled.dof), compiled.amplitude * np.exp(1j * (compiled.phase - 0.5 * math.pi)))
-    reference = np.abs(wave) if sea is not None else np.max(np.abs(motion), axis=1)
+    reference = np.where(np.abs(wave) > 0.0, np.abs(wave), np.max(np.abs(motion), axis=1))
     return Excitation(omega, unit, wave, motion, None, 0.0, reference)
 
 
