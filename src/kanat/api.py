@@ -154,7 +154,7 @@ def _frequency(case: Case, method: str = "auto"):
     from kanat.frequency.solve import solve_frequency
 
     ds = solve_frequency(case)
-    text = (f"frequency domain: {ds.sizes['frequency']} frequencies, {ds.attrs['iterations']} drag "
+    text = (f"frequency domain: {ds.sizes['frequency']} frequency(ies), {ds.attrs['iterations']} drag "
             f"iteration(s); largest tension std {float(ds.tension_std.max()):.4g} N; {ds.attrs['notes']}")
     return ds, text, None
 
