@@ -6,20 +6,22 @@
   ``sigma sqrt(2 ln N)``, ``N = duration / T_z`` zero-upcrossings, ``T_z = 2 pi sqrt(m0/m2)``;
   Cartwright & Longuet-Higgins 1956) against the mean. Fails the result (``status``).
 * **drag iteration**: the equivalent linearisation did not reach its fixed point. Fails it.
-* **touchdown**: a node resting on the seabed whose vertical motion (amplitude or
-  :data:`EXTREME_SIGMAS` sigma) exceeds :data:`LIFT_OFF_SHARE` of its element's length lifts off
-  in the time domain, where the linear model keeps it grounded with the seabed's stiffness;
-  likewise a touchdown node (the last grounded one) whose horizontal motion exceeds its element's
-  length moves the touchdown point by more than one element. A note: the tension away from the
-  touchdown zone is often still sound.
+* **touchdown**: a node resting on the seabed whose contact force swings (``k A u_z``: seabed
+  stiffness, contact area, vertical motion as amplitude or :data:`EXTREME_SIGMAS` sigma) beyond its
+  static value ``N`` lifts off in the time domain, where the linear model keeps it grounded on the
+  seabed's stiffness; a suspended node whose downward motion reaches the seabed lands on it, which
+  the linear model does not see either; a touchdown node (the last grounded one) whose horizontal
+  motion exceeds its element's length moves the touchdown point by more than one element. A note:
+  the tension away from the touchdown zone is often still sound.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from kanat.physics.seabed import seabed_of
+
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
 DEFAULT_EXPOSURE = 10800.0   # s: a 3-hour storm, when the case has no simulation.duration
-LIFT_OFF_SHARE = 0.1       # of the element length: a grounded node moving up more than this lifts off
 
 
 def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
@@ -40,7 +42,7 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
                         "model does not represent; run method: time")
     else:
         notes.append(f"the largest dynamic tension ({what}) is {100 * ratio[worst]:.3g} % of the mean, at node {worst}")
-    notes += _touchdown(model, ex, ds)
+    notes += _touchdown(model, ex, ds, case)
     status = "ok" if not failures else "failed: " + "; ".join(failures)
     return status, "; ".join(notes)
 
@@ -61,7 +63,7 @@ def _excursion(ex, amplitude: np.ndarray, std: np.ndarray) -> np.ndarray:
     return EXTREME_SIGMAS * std if ex.spectral else amplitude.sum(axis=0)
 
 
-def _touchdown(model, ex, ds) -> list[str]:
+def _touchdown(model, ex, ds, case) -> list[str]:
     net = model.lin.net
     grounded_nodes = model.contact_force > 0.0
     if not np.any(grounded_nodes):
@@ -72,11 +74,20 @@ def _touchdown(model, ex, ds) -> list[str]:
     motion = _excursion(ex, amplitude, ds.motion_std.values)
     length = _adjacent_length(net)[idx]
     notes = []
-    lift = grounded & (motion[:, 2] > LIFT_OFF_SHARE * length)
+    stiffness = (case.environment.seabed.stiffness * net.node_contact_area)[idx]
+    static = model.contact_force[idx]
+    lift = grounded & (stiffness * motion[:, 2] > static)
     if np.any(lift):
-        notes.append(f"{int(lift.sum())} grounded node(s) move up by more than {LIFT_OFF_SHARE:g} of their element "
-                     f"length (up to {motion[lift, 2].max():.3g} m): they lift off in the time domain, where the "
-                     "linear model holds them on the seabed's stiffness; check the touchdown zone with method: time")
+        notes.append(f"{int(lift.sum())} grounded node(s) whose contact force swings beyond its static value "
+                     f"(node {int(np.flatnonzero(lift)[0])}): they lift off in the time domain, where the linear model "
+                     "holds them on the seabed's stiffness; check the touchdown zone with method: time")
+    clearance = _clearance(model, case)[idx]
+    landing = ~grounded & (clearance < motion[:, 2]) & np.isfinite(clearance)
+    if np.any(landing):
+        worst = np.flatnonzero(landing)[np.argmin(clearance[landing] - motion[landing, 2])]
+        notes.append(f"{int(landing.sum())} suspended node(s) move down to the seabed (node {worst}: "
+                     f"{motion[worst, 2]:.3g} m of motion, {clearance[worst]:.3g} m above it): they land in the "
+                     "time domain; check the touchdown zone with method: time")
     cable = ds.cable.values
     after = np.concatenate([cable[1:], [""]]) == cable            # the next node is on the same cable
     before = np.concatenate([[""], cable[:-1]]) == cable
@@ -87,6 +98,15 @@ def _touchdown(model, ex, ds) -> list[str]:
         notes.append(f"the touchdown point moves by more than one element ({across[moving].max():.3g} m against "
                      f"{length[moving].min():.3g} m elements): seabed contact is linearised at the equilibrium")
     return notes
+
+
+def _clearance(model, case) -> np.ndarray:
+    """Each node's height above the seabed plane at the equilibrium (n,) [m] (inf without a seabed)."""
+    x = model.lin.position
+    if case.environment.seabed is None:
+        return np.full(len(x), np.inf)
+    bed = seabed_of(case.environment)
+    return x[:, 2] - np.asarray(bed.height(x[:, 0], x[:, 1]), float)
 
 
 def _adjacent_length(net) -> np.ndarray:
