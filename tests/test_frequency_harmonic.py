@@ -65,15 +65,16 @@ def harmonic_fit(t, values, omega):
     return coef[0], coef[1] - 1j * coef[2]
 
 
-def bar(segments=20, amplitude=1e-3, omega=3.0, ea=1e5, mass=1.0, length=100.0, method="frequency", phase_deg=90.0):
-    """A weightless line from an anchor at the origin to a vessel point 0.1 % further, along x."""
+def bar(segments=20, amplitude=1e-3, omega=3.0, ea=1e5, mass=1.0, length=100.0, method="frequency", phase_deg=90.0,
+        z=-50.0, dof="surge", environment=None):
+    """A weightless line from an anchor at ``(0, 0, z)`` to a vessel point 0.1 % further, along x."""
     return Case.model_validate({
-        "name": "bar", "model": "lumped",
+        "name": "bar", "model": "lumped", "environment": environment or {},
         "line_types": {"bar": {"diameter": 0.01, "mass": mass, "weight_in_water": 0.0, "axial_stiffness": ea,
                                "added_mass": 0.0, "drag_normal": 0.0, "drag_tangential": 0.0}},
         "cables": [{"name": "bar", "line_type": "bar", "length": length, "segments": segments,
-                    "from": {"anchor": [0.0, 0.0, -50.0]}, "to": {"vessel": [1.001 * length, 0.0, -50.0]}}],
-        "vessel": {"motion": [{"dof": "surge", "amplitude": amplitude, "period": 2 * math.pi / omega,
+                    "from": {"anchor": [0.0, 0.0, z]}, "to": {"vessel": [1.001 * length, 0.0, z]}}],
+        "vessel": {"motion": [{"dof": dof, "amplitude": amplitude, "period": 2 * math.pi / omega,
                                "phase_deg": phase_deg}]},                       # 90 deg: a cos(omega t)
         "simulation": {"duration": 100.0, "method": method}})
 
@@ -235,3 +236,16 @@ def test_a_motion_table_is_refused_at_its_key():
         case = bar(segments=2).replace({"vessel.motion": {"rows": [[0.0, 0, 0, 0, 0, 0, 0], [1.0, 0.1, 0, 0, 0, 0, 0]]}})
         with pytest.raises(kanat.errors.CaseError, match="vessel.motion.*motion table"):
             kanat.solve_frequency(case)
+
+
+def test_a_node_moving_down_to_the_seabed_is_noted():
+    """A taut weightless line 0.4 m above the seabed, its vessel end heaving 1 m slowly: its nodes move
+    0, 0.25, 0.5, 0.75 and 1 m (the string's quasi-static shape), the last three beyond their
+    clearance, and the result's notes say they land (status stays ok: a note)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(bar(segments=4, amplitude=1.0, omega=0.03, z=-49.6, dof="heave", phase_deg=0.0,
+                                       environment={"depth": 50.0, "seabed": {"stiffness": 3e6}}))
+    assert float(ds.motion_amplitude[0, 2, 2]) == pytest.approx(0.5, rel=0.02)       # quasi-static: (omega/omega_1)^2 = 1 %
+    assert "3 suspended node(s) move down to the seabed" in ds.attrs["notes"]     # 0.5, 0.75, 1 m > 0.4 m
+    assert ds.attrs["status"] == "ok"

@@ -65,30 +65,27 @@ def _excursion(ex, amplitude: np.ndarray, std: np.ndarray) -> np.ndarray:
 
 def _touchdown(model, ex, ds, case) -> list[str]:
     net = model.lin.net
-    grounded_nodes = model.contact_force > 0.0
-    if not np.any(grounded_nodes):
-        return []
     idx = net.node_index
-    grounded = grounded_nodes[idx]
+    grounded = (model.contact_force > 0.0)[idx]
     amplitude = ds.motion_amplitude.values if not ex.spectral else None
     motion = _excursion(ex, amplitude, ds.motion_std.values)
-    length = _adjacent_length(net)[idx]
     notes = []
-    stiffness = (case.environment.seabed.stiffness * net.node_contact_area)[idx]
-    static = model.contact_force[idx]
-    lift = grounded & (stiffness * motion[:, 2] > static)
-    if np.any(lift):
-        notes.append(f"{int(lift.sum())} grounded node(s) whose contact force swings beyond its static value "
-                     f"(node {int(np.flatnonzero(lift)[0])}): they lift off in the time domain, where the linear model "
-                     "holds them on the seabed's stiffness; check the touchdown zone with method: time")
     clearance = _clearance(model, case)[idx]
-    landing = ~grounded & (clearance < motion[:, 2]) & np.isfinite(clearance)
+    landing = ~grounded & np.isfinite(clearance) & (clearance < motion[:, 2])
     if np.any(landing):
         worst = np.flatnonzero(landing)[np.argmin(clearance[landing] - motion[landing, 2])]
         notes.append(f"{int(landing.sum())} suspended node(s) move down to the seabed (node {worst}: "
                      f"{motion[worst, 2]:.3g} m of motion, {clearance[worst]:.3g} m above it): they land in the "
                      "time domain; check the touchdown zone with method: time")
-    cable = ds.cable.values
+    if not np.any(grounded):
+        return notes
+    stiffness = (case.environment.seabed.stiffness * net.node_contact_area)[idx]
+    lift = grounded & (stiffness * motion[:, 2] > model.contact_force[idx])
+    if np.any(lift):
+        notes.append(f"{int(lift.sum())} grounded node(s) whose contact force swings beyond its static value "
+                     f"(node {int(np.flatnonzero(lift)[0])}): they lift off in the time domain, where the linear model "
+                     "holds them on the seabed's stiffness; check the touchdown zone with method: time")
+    cable, length = ds.cable.values, _adjacent_length(net)[idx]
     after = np.concatenate([cable[1:], [""]]) == cable            # the next node is on the same cable
     before = np.concatenate([[""], cable[:-1]]) == cable
     touchdown = grounded & ((after & ~np.r_[grounded[1:], False]) | (before & ~np.r_[False, grounded[:-1]]))
