@@ -26,6 +26,9 @@ linearize(case) -> Linearization
     Mass, damping and stiffness (sparse) of the lumped system about its equilibrium.
 modes(case, n=10) -> xarray.Dataset
     Natural frequencies and mode shapes (:mod:`kanat.frequency`).
+solve_frequency(case) -> xarray.Dataset
+    The linear response to the sea and the vessel's motion: tension and motion RAOs, spectra and
+    standard deviations (``simulation.method: frequency``).
 
 The names are loaded on first use, so ``import kanat`` stays light.
 """
@@ -33,7 +36,7 @@ from kanat.version import __version__
 
 _API = ("load_case", "solve_statics", "offsets", "simulate", "run", "read_result", "Outcome", "RunFailedWarning", "MODELS")
 __all__ = ["__version__", *_API, "report", "Coupling", "design"]
-_FREQUENCY = ("linearize", "modes")     # the lumped system about its equilibrium (kanat.frequency)
+_FREQUENCY = ("linearize", "modes", "solve_frequency")     # the lumped system about its equilibrium (kanat.frequency)
 __all__ += list(_FREQUENCY)
 
 

@@ -152,6 +152,16 @@ def _continuum(case: Case, scheme=None, start=None):
     return ContinuumModel(case, scheme, start_from=start)
 
 
+def _frequency(case: Case, method: str = "auto"):
+    """The linear response of ``simulation.method: frequency`` (:func:`kanat.frequency.solve_frequency`)."""
+    from kanat.frequency.solve import solve_frequency
+
+    ds = solve_frequency(case)
+    text = (f"frequency domain: {ds.sizes['frequency']} frequency(ies), {ds.attrs['iterations']} drag "
+            f"iteration(s); largest tension std {float(ds.tension_std.max()):.4g} N; {ds.attrs['notes']}")
+    return ds, text, None
+
+
 def _lumped(case: Case, scheme=None, start=None):
     from kanat.lumped.adapter import LumpedModel
 
@@ -182,6 +192,10 @@ MODELS: dict[str, Steady | Dynamic] = {
 }
 """Every model by its case-file name (``model:``). Each entry imports its model when it is
 used, so a statics solve does not load the dynamic models' compiled kernels."""
+
+FREQUENCY = Steady(_frequency)
+"""A dynamic case with ``simulation.method: frequency``: its lumped model linearised about the
+equilibrium and solved per frequency (docs/frequency.md)."""
 
 
 def schemes() -> dict:
@@ -404,6 +418,8 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     """
     name = model or case.model
     entry = MODELS.get(name)
+    if model is None and isinstance(entry, Dynamic) and _frequency_method(case):
+        entry = FREQUENCY
     if entry is None:
         hint = (" To get the steady (initial) state of this case, run: kanat statics CASE -o OUT.nc"
                 if "statics" in MODELS else "")
@@ -418,6 +434,9 @@ def run(case: Case, *, scheme=None, output=None, resume: bool = False, progress=
     if isinstance(start, Case):
         require_supported(start, name)
     if name == "lumped" and any(fix.release_at is not None for c in case.cables for fix in (c.end_a, c.end_b)):
+        if entry is FREQUENCY:
+            raise KanatError("simulation.method: frequency linearises about one equilibrium; a release_at "
+                             "changes the system during the run: use method: time")
         if resume:
             raise KanatError("resume: a run with release_at writes its result at the end and keeps no "
                              "checkpoint; run it again")
@@ -469,6 +488,11 @@ def _shifted(progress, start: float):
     if progress is None:
         return None
     return lambda t, info: progress(t + start, info)
+
+
+def _frequency_method(case: Case) -> bool:
+    """Whether a case asks for the frequency domain (``simulation.method: frequency``)."""
+    return case.simulation is not None and case.simulation.method == "frequency"
 
 
 def _check_checkpoint_every(every) -> None:

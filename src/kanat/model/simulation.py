@@ -17,6 +17,11 @@ class Simulation(KanatModel):
 
     Attributes
     ----------
+    method : {"time", "frequency"}
+        ``time``: integrate the model in time. ``frequency``: the lumped model linearised about its
+        equilibrium, solved per frequency of the sea and the vessel's harmonic or RAO motion, drag by
+        equivalent linearisation (docs/frequency.md); ``duration`` is then the exposure of the
+        spectral extreme in the slack check.
     scheme : str or None
         Scheme name from the model's scheme registry (theory/time-schemes.md §1–3, theory/lumped.md; checked against
         :data:`kanat.schemes.SCHEME_NAMES`); None: the model's default.
@@ -55,6 +60,7 @@ class Simulation(KanatModel):
         rows the true tension); None: 1 % of the cable's weight in water, at least 1 N; 0: none.
     """
 
+    method: Literal["time", "frequency"] = "time"
     scheme: str | None = None
     lambda_inf: float = quantity(-0.5, unit="-", ge=-1, le=0)
     gamma: float | None = quantity(None, unit="-", ge=0.5, le=1)

@@ -1,0 +1,175 @@
+"""Drag and fluid inertia of the lines in the frequency domain: equivalent linearisation.
+
+The time domain lumps to each end ``a`` of element ``k`` the drag (:mod:`kanat.lumped.kernels`
+eqs. 4-7)::
+
+    (1)  f_a = h (c_n |v_n| v_n + c_t |v . t| (v . t) t),   v = u_w - v_a,  v_n = (I - t t) v,
+         h = phi s L0 / 2
+
+with ``u_w`` the water's velocity at the element's middle. About the mean relative flow ``U``
+(current less the steady frame's velocity) the fluctuation ``w`` of ``v`` is replaced by the
+matrix ``D`` minimising the mean square error of ``f(U + w) - f(U) - D w``:
+
+* **irregular seas** (stochastic linearisation; Borgman 1967, Atalik & Utku 1976): for a
+  Gaussian ``w`` of covariance ``Sigma``, ``D = E[J(U + w)]`` with ``J`` the Jacobian of (1),
+  ``J(v) = h (c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v . t| t t^T)``. In one direction with
+  ``U = 0`` this is ``c sqrt(8/pi) sigma_v``;
+* **regular waves** (describing function; Krylov & Bogoliubov 1947, Gelb & Vander Velde 1968):
+  for ``w = a cos(theta)``, ``D = (1/pi) int_0^{2 pi} J(U + a cos theta) sin^2(theta) d theta``
+  (the fundamental of ``f``, by parts), ``8/(3 pi) c |a|`` in one direction with ``U = 0``.
+
+Along the element the expectation is a folded normal's mean in closed form; across it, a
+quasi-Monte Carlo mean over the normal plane's Gaussian (:data:`NORMAL_SAMPLES`); the describing function a rectangle rule in ``theta``
+(:data:`PHASE_POINTS`) along the principal axis of the complex amplitude (an elliptic ``w`` is
+taken on its major axis' phase). The waves force node ``a`` with the same ``D`` on the water's
+velocity and with its inertia (kernels eq. 6)::
+
+    (2)  F_a = D u_w + h' [(rho A + m_a) (I - t t) + (rho A + m_at) t t] a_w,   h' = phi L0 / 2
+"""
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.special import erf, ndtri
+from scipy.stats import qmc
+
+NORMAL_SAMPLES = 2048  # Sobol points in the normal plane (and as many mirrored): E|v| to ~1e-3
+PHASE_POINTS = 360    # over one period: the describing function of |x| x to 1e-4
+TINY = 1e-12          # m/s: a relative speed taken as zero
+
+
+@dataclass(frozen=True, eq=False)
+class DragPairs:
+    """Each free line node ``a`` with each element ``k`` it ends (eq. 1).
+
+    Attributes
+    ----------
+    node, element : ndarray of int, shape (p,)
+        The node and the element.
+    dof : ndarray of int, shape (p,)
+        The node's first degree of freedom in the linear system (``3 x`` its free index).
+    tangent : ndarray, shape (p, 3)
+        The element's unit tangent ``t`` at the equilibrium.
+    normal, tangential : ndarray, shape (p,)
+        ``h c_n`` and ``h c_t`` [N s^2/m^2].
+    inertia_normal, inertia_tangential : ndarray, shape (p,)
+        ``h' (rho A + m_a)`` and ``h' (rho A + m_at)`` [kg].
+    mean : ndarray, shape (p, 3)
+        The mean relative flow ``U`` [m/s].
+    middle : ndarray, shape (p, 3)
+        The element's middle (where the water's kinematics are taken) [m].
+    """
+
+    node: np.ndarray
+    element: np.ndarray
+    dof: np.ndarray
+    tangent: np.ndarray
+    normal: np.ndarray
+    tangential: np.ndarray
+    inertia_normal: np.ndarray
+    inertia_tangential: np.ndarray
+    mean: np.ndarray
+    middle: np.ndarray
+
+
+def drag_pairs(net, x: np.ndarray, free: np.ndarray, wet: np.ndarray, strain: np.ndarray,
+               current, frame_velocity: np.ndarray) -> DragPairs:
+    """:class:`DragPairs` of a network at positions ``x`` (n, 3); ``free`` the free nodes in DOF
+    order, ``wet`` and ``strain`` (m,) the elements' wetted fraction and strain,
+    ``current(points) -> (k, 3)`` the current [m/s]."""
+    position = -np.ones(net.n_nodes, dtype=np.int64)
+    position[free] = np.arange(len(free))
+    node = np.r_[net.el_i, net.el_j]
+    element = np.r_[np.arange(net.n_elements), np.arange(net.n_elements)]
+    keep = position[node] >= 0
+    node, element = node[keep], element[keep]
+    d = x[net.el_j] - x[net.el_i]
+    t = d / np.linalg.norm(d, axis=1)[:, None]
+    stretch = np.where(net.el_stretch_drag > 0, np.sqrt(np.maximum(1.0 + strain, 0.0)), 1.0)
+    h = 0.5 * net.el_length * wet
+    middle = 0.5 * (x[net.el_i] + x[net.el_j])
+    mean = current(middle) - frame_velocity
+    e = element
+    return DragPairs(node=node, element=e, dof=3 * position[node], tangent=t[e],
+                     normal=(h * stretch * net.el_cn)[e], tangential=(h * stretch * net.el_ct)[e],
+                     inertia_normal=(h * (net.el_displaced + net.el_added_mass))[e],
+                     inertia_tangential=(h * (net.el_displaced + net.el_added_tangential))[e],
+                     mean=mean[e], middle=middle[e])
+
+
+def jacobian(pairs: DragPairs, v: np.ndarray) -> np.ndarray:
+    """``J(v)`` of eq. (1) at relative velocities ``v`` (p, s, 3): shape (p, s, 3, 3)."""
+    t = pairs.tangent[:, None, :]
+    along = np.einsum("psr,psr->ps", v, np.broadcast_to(t, v.shape))
+    vn = v - along[..., None] * t
+    speed = np.linalg.norm(vn, axis=-1)
+    unit = vn / np.maximum(speed, TINY)[..., None]
+    P = np.eye(3) - np.einsum("pr,pq->pqr", pairs.tangent, pairs.tangent)[:, None]
+    tt = np.einsum("pr,pq->pqr", pairs.tangent, pairs.tangent)[:, None]
+    normal = speed[..., None, None] * (P + np.einsum("psr,psq->psrq", unit, unit))
+    tangential = 2.0 * np.abs(along)[..., None, None] * tt
+    return (pairs.normal[:, None, None, None] * normal + pairs.tangential[:, None, None, None] * tangential)
+
+
+def stochastic(pairs: DragPairs, covariance: np.ndarray) -> np.ndarray:
+    """``D = E[J(U + w)]`` (p, 3, 3) for Gaussian ``w`` of covariance (p, 3, 3) (module docstring).
+
+    Along the element, ``E[2 |U_t + w_t|]`` in closed form (a folded normal's mean); across it, the
+    expectation over the normal plane's Gaussian by :data:`NORMAL_SAMPLES` scrambled Sobol points
+    and their mirror images (quasi-Monte Carlo; the kink of ``|v|`` rules out a Gauss rule)."""
+    t = pairs.tangent
+    sigma_t = np.sqrt(np.maximum(np.einsum("pr,prq,pq->p", t, covariance, t), 0.0))
+    mean_t = np.abs(np.einsum("pr,pr->p", pairs.mean, t))
+    folded = np.where(sigma_t > TINY, sigma_t * np.sqrt(2.0 / np.pi) * np.exp(-0.5 * (mean_t / np.maximum(sigma_t, TINY)) ** 2)
+                      + mean_t * erf(mean_t / (np.sqrt(2.0) * np.maximum(sigma_t, TINY))), mean_t)
+    tt = np.einsum("pr,pq->prq", t, t)
+    E = normal_basis(t)                                                   # (p, 3, 2)
+    plane = np.einsum("pra,prq,pqb->pab", E, covariance, E)
+    values, vectors = np.linalg.eigh(plane)
+    scale = vectors * np.sqrt(np.maximum(values, 0.0))[:, None, :]
+    v = np.einsum("pr,pra->pa", pairs.mean, E)[:, None, :] + np.einsum("pab,sb->psa", scale, _normal_samples())
+    speed = np.linalg.norm(v, axis=-1)
+    unit = v / np.maximum(speed, TINY)[..., None]
+    J = speed[..., None, None] * (np.eye(2) + np.einsum("psa,psb->psab", unit, unit))
+    across = np.einsum("pra,pab,pqb->prq", E, J.mean(axis=1), E)
+    return pairs.normal[:, None, None] * across + (2.0 * pairs.tangential * folded)[:, None, None] * tt
+
+
+def normal_basis(t: np.ndarray) -> np.ndarray:
+    """Two unit vectors (p, 3, 2) normal to the unit tangents ``t`` (p, 3) and to each other."""
+    axis = np.eye(3)[np.argmin(np.abs(t), axis=1)]
+    e1 = np.cross(t, axis)
+    e1 /= np.linalg.norm(e1, axis=1)[:, None]
+    return np.stack([e1, np.cross(t, e1)], -1)
+
+
+@functools.lru_cache(maxsize=1)
+def _normal_samples() -> np.ndarray:
+    """Standard normal points in the plane (2 x :data:`NORMAL_SAMPLES`, 2): Sobol, seed 0, mirrored."""
+    z = ndtri(qmc.Sobol(d=2, scramble=True, seed=0).random(NORMAL_SAMPLES))
+    return np.vstack([z, -z])
+
+
+def describing(pairs: DragPairs, amplitude: np.ndarray) -> np.ndarray:
+    """``D`` (p, 3, 3) of the describing function for ``w = Re(W e^{i theta})``, ``W`` the complex
+    amplitudes (p, 3) (module docstring)."""
+    square = np.einsum("pr,pr->p", amplitude, amplitude)
+    B = amplitude * np.exp(-0.5j * np.angle(square))[:, None]          # mostly real: the major axis
+    theta = 2.0 * np.pi * np.arange(PHASE_POINTS) / PHASE_POINTS
+    w = B.real[:, None, :] * np.cos(theta)[None, :, None] - B.imag[:, None, :] * np.sin(theta)[None, :, None]
+    weights = 2.0 * np.sin(theta) ** 2 / PHASE_POINTS
+    return np.einsum("psrq,s->prq", jacobian(pairs, pairs.mean[:, None, :] + w), weights)
+
+
+def tangent_at_mean(pairs: DragPairs) -> np.ndarray:
+    """``J(U)`` (p, 3, 3): the drag's slope about the mean flow, which the linearisation's ``C``
+    already holds (:mod:`kanat.frequency.linearize`)."""
+    return jacobian(pairs, pairs.mean[:, None, :])[:, 0]
+
+
+def inertia(pairs: DragPairs) -> np.ndarray:
+    """The matrices of eq. (2) on the water's acceleration, shape (p, 3, 3) [kg]."""
+    tt = np.einsum("pr,pq->prq", pairs.tangent, pairs.tangent)
+    return pairs.inertia_normal[:, None, None] * (np.eye(3) - tt) + pairs.inertia_tangential[:, None, None] * tt

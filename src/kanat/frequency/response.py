@@ -1,0 +1,140 @@
+"""The frequency-domain response: the linear system solved frequency by frequency, with the drag's
+equivalent linearisation iterated to a fixed point (docs/frequency.md).
+
+At each frequency ``omega`` of the excitation (:mod:`kanat.frequency.excitation`)::
+
+    (1)  (K + i omega (C - J_U + D) - omega^2 M) X = f_p + sum_pairs (D_k u_w,k + I_k a_w,k) eta_hat
+
+``K, C, M`` the linearisation (:mod:`kanat.frequency.linearize`), ``J_U`` the drag's slope about
+the mean flow which ``C`` holds and ``D`` replaces (:mod:`kanat.frequency.drag`), ``f_p`` the
+vessel's forcing (:mod:`kanat.frequency.assembly` eq. 1), ``u_w, a_w`` the waves' velocity and
+acceleration at the elements' middles per unit amplitude (:mod:`kanat.physics.waves` eqs. 3-5 as
+complex amplitudes: horizontal ``omega C(z) e^{-i psi}``, vertical ``i omega S(z) e^{-i psi}``,
+``a_w = i omega u_w``, ``psi = k (x cos beta + y sin beta)``). ``D`` depends on the relative
+velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
+repeated with ``D`` the mean of the last two until it changes by less than
+:data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from kanat.frequency import drag
+from kanat.frequency.assembly import LinearModel, assemble
+from kanat.frequency.excitation import Excitation, vessel_displacement
+
+TOLERANCE = 1e-4        # relative change of the equivalent drag at which the iteration stops
+MAX_ITERATIONS = 200
+
+
+@dataclass(frozen=True, eq=False)
+class Response:
+    """The solution of eq. (1).
+
+    Attributes
+    ----------
+    free : ndarray of complex, shape (nf, n_dof)
+        ``X`` per frequency (per unit wave amplitude for a spectral excitation).
+    prescribed : ndarray of complex, shape (nf, p, 3)
+        The vessel nodes' displacements.
+    iterations : int
+    converged : bool
+    change : float
+        The last iteration's relative change of ``D``.
+    """
+
+    free: np.ndarray
+    prescribed: np.ndarray
+    iterations: int
+    converged: bool
+    change: float
+
+
+def water_kinematics(model: LinearModel, ex: Excitation) -> np.ndarray:
+    """The waves' velocity at the pairs' element middles per unit amplitude, (nf, p, 3) complex."""
+    nf, p = len(ex.omega), len(model.pairs.node)
+    if ex.sea is None:
+        return np.zeros((nf, p, 3), complex)
+    sea, middle = ex.sea, model.pairs.middle
+    c, s = sea._profiles(middle[:, 2])                              # (p, nf)
+    cb, sb = np.cos(sea.direction), np.sin(sea.direction)
+    psi = np.multiply.outer(middle[:, 0], sea.k * cb) + np.multiply.outer(middle[:, 1], sea.k * sb)
+    phase = np.exp(-1j * psi) * sea.omega
+    u = np.empty((nf, p, 3), complex)
+    u[..., 0] = (c * phase * cb).T
+    u[..., 1] = (c * phase * sb).T
+    u[..., 2] = (1j * s * phase).T
+    return u
+
+
+def solve(model: LinearModel, ex: Excitation) -> Response:
+    """Eq. (1) at every frequency of ``ex``, iterated on the equivalent drag."""
+    pairs, omega = model.pairs, ex.omega
+    size = model.size
+    water = water_kinematics(model, ex) * ex.wave[:, None, None]
+    prescribed = vessel_displacement(ex.motion, model.arms, model.heading)
+    vessel = prescribed.reshape(len(omega), -1)
+    inertia = drag.inertia(pairs)
+    fixed = np.stack([(model.coupling @ vessel[f] + 1j * omega[f] * (model.coupling_rate @ vessel[f])
+                       + omega[f] ** 2 * (model.coupling_mass @ vessel[f])) for f in range(len(omega))])
+    fixed += _on_pairs(pairs, 1j * omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water), size)
+    lin = model.lin
+    base = lin.damping - model.drag_at_mean
+    D = _equivalent(pairs, water, np.zeros((len(omega), size), complex), ex)
+    change, iterations = np.inf, 0
+    while iterations < MAX_ITERATIONS:
+        X = _solve_all(lin, base + assemble(pairs, D, size), omega,
+                       fixed + _on_pairs(pairs, np.einsum("prq,fpq->fpr", D, water), size))
+        iterations += 1
+        new = _equivalent(pairs, water, X, ex)
+        scale = max(float(np.max(np.abs(new))), float(np.max(np.abs(D))), 1e-300)
+        change = float(np.max(np.abs(new - D))) / scale
+        if change < TOLERANCE:
+            break
+        D = 0.5 * (D + new)
+    return Response(X, prescribed, iterations, change < TOLERANCE, change)
+
+
+def _on_pairs(pairs: drag.DragPairs, values: np.ndarray, size: int) -> np.ndarray:
+    """The pairs' nodal vectors (nf, p, 3) summed into the system's DOFs, (nf, size)."""
+    out = np.zeros((values.shape[0], size), complex)
+    for r in range(3):
+        np.add.at(out, (slice(None), pairs.dof + r), values[..., r])
+    return out
+
+
+def _solve_all(lin, damping: sp.csr_matrix, omega: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """``X`` (nf, n_dof) of eq. (1), one sparse LU per frequency."""
+    K, M = lin.stiffness.astype(complex), lin.mass.astype(complex)
+    out = np.empty_like(rhs)
+    for f, w in enumerate(omega):
+        A = (K + 1j * w * damping - w * w * M).tocsc()
+        out[f] = spla.splu(A).solve(rhs[f])
+    return out
+
+
+def _equivalent(pairs: drag.DragPairs, water: np.ndarray, X: np.ndarray, ex: Excitation) -> np.ndarray:
+    """``D`` (p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module)."""
+    nodes = X.reshape(X.shape[0], -1, 3)[:, pairs.dof // 3]
+    W = water - 1j * ex.omega[:, None, None] * nodes                    # (nf, p, 3)
+    if not ex.spectral and len(ex.omega) == 1:
+        return drag.describing(pairs, W[0])
+    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(len(ex.omega), 0.5)
+    covariance = np.einsum("f,fpr,fpq->prq", weight, W, W.conj()).real
+    return _chunked(drag.stochastic, pairs, covariance)
+
+
+CHUNK = 64      # pairs per batch of the Gauss–Hermite expectation (memory: CHUNK x 1000 x 9 doubles)
+
+
+def _chunked(function, pairs: drag.DragPairs, covariance: np.ndarray) -> np.ndarray:
+    out = np.empty((len(pairs.node), 3, 3))
+    for start in range(0, len(pairs.node), CHUNK):
+        part = slice(start, start + CHUNK)
+        sub = drag.DragPairs(*(getattr(pairs, name)[part] for name in drag.DragPairs.__dataclass_fields__))
+        out[part] = function(sub, covariance[part])
+    return out
