@@ -52,10 +52,6 @@ FATIGUE_COLUMNS = ("line", "s", "damage_per_year", "life_years")
 EXCURSION_COLUMNS = ("condition", "sea_state", "item", "quantity", "largest")
 """Rows of the offsets and uplifts table: ``item`` a body (``quantity`` ``offset`` [m]) or an
 anchor (``uplift`` [N]); ``largest`` over the seeds' records (not an extreme-value estimate)."""
-FREQUENCY_NOT_WIRED = ("the frequency-domain design check takes its tension spectra from a spectral "
-                       "analysis, and kanat's frequency-domain solver is not wired in yet; use analysis: "
-                       "dynamic (or, from Python, kanat.design(case, spectral_analysis=...))")
-
 
 @dataclass
 class DesignResult:
@@ -108,8 +104,6 @@ def check_supported(case: Case, spectral_analysis: SpectralAnalysis | None = Non
     if design is None:
         raise KanatError("the case has no 'design' block (standard, sea_states, conditions, ...); "
                          "see docs/design.md")
-    if design.analysis == "frequency" and spectral_analysis is None:
-        raise KanatError(f"design.analysis: frequency: {FREQUENCY_NOT_WIRED}")
     check_standard(design.standard, design.analysis, design.consequence_class)
     if design.fatigue is not None and design.fatigue.curve not in TN_CURVES:
         raise KanatError(f"design.fatigue.curve: '{design.fatigue.curve}' is not a T-N curve; known: "
@@ -380,7 +374,7 @@ def design(case: Case, output: str | Path | None = None, progress: Callable[[str
         _quasi_static_tables(case, result, progress, pd)
         return result
     if case.design.analysis == "frequency":
-        _spectral_tables(case, result, spectral_analysis, progress, pd)
+        _spectral_tables(case, result, spectral_analysis or spectral_check.frequency_domain, progress, pd)
         return result
     with tempfile.TemporaryDirectory(prefix="kanat-design-") as scratch:
         folder = Path(output) if output is not None else Path(scratch)

@@ -12,8 +12,9 @@ its nodes. From it, per line and sea state:
 * at every node, Dirlik's fatigue damage per second on the design's T-N curve
   (:func:`kanat.analysis.spectral.tension_damage_rate`), times ``probability x YEAR``.
 
-``kanat.design(case, spectral_analysis=...)`` takes one; ``kanat design`` refuses
-``analysis: frequency`` until the frequency-domain solver is wired in as the default.
+``kanat.design(case, spectral_analysis=...)`` takes one; by default (and in ``kanat design``) it
+is :func:`frequency_domain`, kanat's frequency-domain solution of the lumped model
+(:func:`kanat.frequency.solve_frequency`).
 """
 from __future__ import annotations
 
@@ -96,3 +97,32 @@ def annual_damage(variant: Case, cable: str, spectra: LineSpectra, probability: 
     rates = [tension_damage_rate(spectra.moments(k), ref, curve, float(spectra.mean[k]))
              for k, ref in enumerate(strength)]
     return np.array(rates) * probability * records.YEAR
+
+
+def frequency_domain(case: Case) -> "dict[str, LineSpectra]":
+    """The spectral analysis of ``design.analysis: frequency``: :func:`kanat.frequency.solve_frequency`
+    of the case (the lumped model linearised about its equilibrium, drag by stochastic
+    linearisation in the sea state's JONSWAP sea), per cable its nodes' mean tension and tension
+    spectrum in the order of ``s``.
+
+    A solution that fails its own checks (a node whose expected largest peak exceeds its mean
+    tension goes slack; the drag linearisation did not converge) is a failure of that sea state
+    (:class:`kanat.errors.KanatError` with the solver's status), never a row of numbers. A node
+    where cables meet (a body) counts for the cable the lumped network gives it; the fairlead
+    of a cable is its end node with the larger mean tension (:attr:`LineSpectra.fairlead`).
+    """
+    from kanat.frequency import solve_frequency
+
+    ds = solve_frequency(case)
+    status = str(ds.attrs.get("status", ""))
+    if status != "ok":
+        raise KanatError(f"the frequency-domain solution failed its own checks: {status}")
+    cables = ds["cable"].values.astype(str)
+    spectra = {}
+    for cable in case.cables:
+        nodes = np.flatnonzero(cables == cable.name)
+        nodes = nodes[np.argsort(ds["s"].values[nodes], kind="stable")]
+        spectra[cable.name] = LineSpectra(s=ds["s"].values[nodes], mean=ds["mean_tension"].values[nodes],
+                                          omega=ds["frequency"].values,
+                                          density=ds["tension_spectrum"].values[:, nodes])
+    return spectra

@@ -73,11 +73,17 @@ def excitation_of(case) -> Excitation:
     Raises
     ------
     CaseError
-        For what the frequency domain cannot take: a motion table (not harmonic), harmonic motion
-        in an irregular sea, or nothing that moves.
+        For what the frequency domain cannot take: bodies in waves (no wave loads on bodies yet),
+        a motion table (not harmonic), harmonic motion in an irregular sea, or nothing that moves.
     """
     env, motion = case.environment, case.vessel.motion
     waves = env.waves
+    if waves is not None and case.bodies:
+        name = next(iter(case.bodies))
+        raise _refused(f"bodies.{name}", "simulation.method: frequency puts the waves' loads on the lines only: "
+                                         "a body in waves would get no wave force, Froude-Krylov or linearised "
+                                         "drag of its own, so its motion and the tensions it drives would be "
+                                         "missing; run method: time (or drive the body as the vessel, by RAOs)")
     if motion.rows is not None:
         raise _refused("vessel.motion", "simulation.method: frequency takes harmonic vessel.motion or RAOs, "
                                         "not a motion table; give harmonics or run method: time")

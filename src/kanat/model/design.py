@@ -93,7 +93,8 @@ class Design(KanatModel):
     analysis: Literal[ANALYSES] = Field(  # type: ignore[valid-type]
         "dynamic", description="dynamic: lumped-model runs in each sea state; quasi-static: the statics "
                                "at the vessel's mean offset plus its most probable maximum wave-frequency "
-                               "motion from the RAOs (vessel.motion.rao); frequency: refused (not wired yet)")
+                               "motion from the RAOs (vessel.motion.rao); frequency: the lumped model linearised about its "
+                               "equilibrium, tension spectra per sea state (simulation.method: frequency)")
     mean_offset: float | dict[str, float] | None = quantity(
         None, unit="m", description="quasi-static analysis: the vessel's mean offset along each sea state's "
                                     "heading (from the mean wind, current and wave-drift loads), to which the "
