@@ -23,6 +23,7 @@ import numpy as np
 import xarray as xr
 
 from kanat.errors import CaseWarning
+from kanat.io.provenance import provenance
 from kanat.frequency.assembly import element_tension, linear_model, node_displacements, node_tension
 from kanat.frequency.checks import trust_checks
 from kanat.frequency.excitation import excitation_of
@@ -58,8 +59,9 @@ def solve_frequency(case) -> xr.Dataset:
     tension = node_tension(model, element_tension(model, U, ex.omega))
     ds = _dataset(model, ex, U, tension)
     status, notes = trust_checks(model, ex, ds, response, case)
-    ds.attrs.update(status=status, notes=notes, iterations=response.iterations,
-                    wall_time_s=time.perf_counter() - start)
+    ds.attrs.update(provenance(case, model="frequency", scheme="frequency-domain", status=status,
+                               wall_time_s=time.perf_counter() - start),
+                    notes=notes, iterations=response.iterations)
     return ds
 
 

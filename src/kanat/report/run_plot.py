@@ -151,7 +151,8 @@ def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
     ----------
     ds : xarray.Dataset
         A dynamic result (names of :mod:`kanat.io.schema`); a statics result (no ``time``)
-        is drawn by :func:`kanat.report.statics_plot.plot_statics`.
+        is drawn by :func:`kanat.report.statics_plot.plot_statics`, a frequency-domain one by
+        :func:`kanat.report.frequency_plot.plot_frequency`.
     path : path-like, optional
     snapshots : int
         Outputs drawn in the geometry views, evenly spaced, first and last included.
@@ -160,6 +161,10 @@ def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
     -------
     matplotlib.figure.Figure
     """
+    if "frequency" in ds.coords and "time" not in ds.dims:
+        from kanat.report.frequency_plot import plot_frequency
+
+        return plot_frequency(ds, path)
     if "time" not in ds.dims:
         from kanat.report.statics_plot import plot_statics
 
