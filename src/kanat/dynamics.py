@@ -533,8 +533,9 @@ def _non_finite(layout: Layout, point: Point) -> str | None:
     sum is not finite (which an overflow of finite values can also make).
     """
     try:
-        if math.isfinite(sum(float(np.sum(values)) for values in point.values.values())):
-            return None
+        with np.errstate(over="ignore", invalid="ignore"):
+            if math.isfinite(sum(float(np.sum(values)) for values in point.values.values())):
+                return None
     except (TypeError, ValueError):           # values that do not sum (text): checked one by one
         pass
     for name, values in point.values.items():
