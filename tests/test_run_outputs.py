@@ -58,6 +58,7 @@ def chain_case():
         simulation={"duration": 2.0, "output_dt": 0.5, "dt": 0.05}))
 
 
+@pytest.mark.slow
 def test_mooring_outputs_of_a_run_are_those_worked_out_from_scratch():
     case = chain_case()
     recorder, models = Recorder(), []
