@@ -1,6 +1,6 @@
 """The run loop's output checks and the lumped model's mooring outputs, worked out once a run:
 
-* the non-finite check (:func:`kanat.dynamics._non_finite`) screens an output with one sum: finite values
+* the non-finite check (:func:`kanat.dynamics._non_finite`): finite values
   whose sum overflows still pass, a NaN or an infinity anywhere is found and named with its node;
 * :class:`kanat.lumped.mooring_outputs.MooringOutputs` of a run gives at every output the numbers the
   module's functions give from scratch, and the anchor force of a chain resting on the seabed is the end
