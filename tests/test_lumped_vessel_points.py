@@ -92,3 +92,22 @@ def test_a_rotation_takes_the_general_path():
                                                                     "period": 9.0}]).vessel.motion))
     assert not translational(compile_motion(two_legs({"rows": [[0, 0, 0, 0, 0, 0, 0],
                                                                 [5, 0, 0, 0, 0, 0, 1]]}).vessel.motion))
+
+
+def test_single_time_samples_keep_up_with_the_time_asked():
+    """An output samples the vessel twice at one time (its nodes, then the tow point): the motion's sample
+    of that time is kept. Asked at other times in turn, every sample is still the motion at the time asked
+    (written out), and bit for bit the one a fresh system gives."""
+    case = two_legs(MOTION)
+    system, fresh = LumpedSystem(build_network(case), case), LumpedSystem(build_network(case), case)
+    arms = system.net.vessel_offset
+    for t in (0.0, 0.7, 0.7, 2.1, 0.7, 13.4):
+        pos, vel, _ = system.vessel_points([t])
+        tow = system.vessel(t)
+        d, dv = analytic(t)
+        np.testing.assert_allclose(pos[0], arms + d, atol=1e-12)
+        np.testing.assert_allclose(vel[0], np.broadcast_to(dv, arms.shape), atol=1e-12)
+        np.testing.assert_allclose(tow[0], np.asarray(case.vessel.tow_point) + d, atol=1e-12)
+        again = LumpedSystem(build_network(case), case)
+        np.testing.assert_array_equal(pos, again.vessel_points([t])[0])
+        np.testing.assert_array_equal(vel, fresh.vessel_points(np.array([t, t + 1.0]))[1][:1])

@@ -35,12 +35,11 @@ from kanat.model.run_cost import check_node_steps
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, SchemeState, state_positions
 from kanat.lumped.mooring_outputs import (
+    MooringOutputs,
     allowed_penetration,
-    anchor_forces,
     anchors_on_seabed,
     attitudes,
-    contact_length,
-    line_forces,
+    held_under_water,
     out_of_water,
 )
 from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
@@ -93,7 +92,11 @@ class LumpedModel:
         self._seen = None                  # (t, free nodes' x, all nodes' x) of the last outputs()
         self.penetration = allowed_penetration(self.net, case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
-        self._anchors_on_seabed = anchors_on_seabed(self.net, case.environment)
+        self._mooring = MooringOutputs(self.net, anchors_on_seabed(self.net, case.environment))
+        self._held = held_under_water(case, self.net)
+        self._cable_node = np.zeros(self.net.n_nodes, dtype=bool)
+        self._cable_node[self.net.node_index] = True
+        self._seabed = seabed_of(case.environment)
         self.start_from = start_from
 
     def _choose(self, scheme):
@@ -239,9 +242,9 @@ class LumpedModel:
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
                 "vessel_heading": heading, "vessel_pitch": pitch,
-                "seabed_contact_length": contact_length(net, system.normal_force, self._anchors_on_seabed),
-                "anchor_force": anchor_forces(net, F, system.normal_force, self._anchors_on_seabed, self._friction),
-                "body_force": line_forces(net, x, T), "body_attitude": attitudes(net, x)}
+                "seabed_contact_length": self._mooring.contact_length(system.normal_force),
+                "anchor_force": self._mooring.anchor_forces(F, system.normal_force, self._friction),
+                "body_force": self._mooring.line_forces(x, T), "body_attitude": attitudes(net, x)}
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:
@@ -253,16 +256,14 @@ class LumpedModel:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
                     f"{t:.6g} s in {net.element_where(k)} (tension {values['segment_tension'][k]:.4g} N); check "
                     "axial_stiffness and the loads, or reduce dt, or set line_types.<name>.max_strain")
-        return self._below_seabed(x, t) or out_of_water(self.case, self.net, x, self.system.sea, t)
+        return self._below_seabed(x, t) or out_of_water(self.case, self.net, x, self.system.sea, t, self._held)
 
     def _below_seabed(self, x, t) -> str | None:
-        seabed = seabed_of(self.case.environment)
+        seabed = self._seabed
         if seabed is None:
             return None
         net = self.net
-        cable = np.zeros(net.n_nodes, dtype=bool)
-        cable[net.node_index] = True
-        depth = np.where(cable, seabed.penetration(x), -np.inf)
+        depth = np.where(self._cable_node, seabed.penetration(x), -np.inf)
         excess = depth - self.penetration
         worst = int(np.argmax(excess))
         if excess[worst] <= 0.0:

@@ -29,40 +29,27 @@ SURFACE_MARGIN = 1.0
 def contact_length(net, normal_force: np.ndarray, anchors_on_seabed=None) -> np.ndarray:
     """Unstretched length of each cable resting on the seabed (n_cables,) [m]; anchors on the
     seabed (``anchors_on_seabed`` (n_anchor,)) count as touching."""
-    touching = (normal_force > 0.0).astype(float)
-    if anchors_on_seabed is not None:
-        touching[net.anchors[np.asarray(anchors_on_seabed, bool)]] = 1.0
-    per_element = net.el_length * 0.5 * (touching[net.el_i] + touching[net.el_j])
-    out = np.zeros(len(net.cable_names))
-    for c, first in enumerate(net.cable_first_element):
-        last = net.cable_first_element[c + 1] if c + 1 < len(out) else net.n_elements
-        out[c] = per_element[first:last].sum()
-    return out
+    return MooringOutputs(net, anchors_on_seabed).contact_length(normal_force)
 
 
-def _node_pull(net, x, T, node) -> np.ndarray:
-    """The lines' force on ``node``: its elements' end tensions and half weights."""
+def _node_elements(net, node) -> list[tuple[int, float]]:
+    """The elements ending at ``node`` with the sign of their pull on it, ``el_i`` ends first."""
+    return [(int(k), sign) for ends, sign in ((net.el_i, 1.0), (net.el_j, -1.0)) for k in np.flatnonzero(ends == node)]
+
+
+def _node_pull(net, x, T, elements) -> np.ndarray:
+    """The lines' force on a node: its elements' (:func:`_node_elements`) end tensions and half weights."""
     out = np.zeros(3)
-    for ends, sign in ((net.el_i, 1.0), (net.el_j, -1.0)):
-        for k in np.flatnonzero(ends == node):
-            d = x[net.el_j[k]] - x[net.el_i[k]]
-            out += sign * T[k] * d / np.linalg.norm(d)
-            out[2] -= 0.5 * net.el_weight[k] * net.el_length[k]
+    for k, sign in elements:
+        d = x[net.el_j[k]] - x[net.el_i[k]]
+        out += sign * T[k] * d / np.linalg.norm(d)
+        out[2] -= 0.5 * net.el_weight[k] * net.el_length[k]
     return out
 
 
 def line_forces(net, x, T) -> np.ndarray:
     """Resultant force of the lines on each body (n_body, 3) [N]."""
-    out = np.zeros((len(net.body_names), 3))
-    rigid = net.rigid
-    for b, (name, node) in enumerate(zip(net.body_names, net.body_node)):
-        if name in rigid.names:
-            r = rigid.names.index(name)
-            for f in rigid.fairlead_node[rigid.fairlead_body == r]:
-                out[b] += _node_pull(net, x, T, f)
-        else:
-            out[b] = _node_pull(net, x, T, node)
-    return out
+    return MooringOutputs(net).line_forces(x, T)
 
 
 def attitudes(net, x) -> np.ndarray:
@@ -78,22 +65,74 @@ def anchor_forces(net, F, normal_force, on_seabed, friction: float = 0.0) -> np.
     (n_anchor,) whether each anchor lies on the seabed; ``friction`` the axial coefficient, which
     on a resting half element also relieves the anchor of up to ``mu w L0 / 2`` of horizontal pull. The
     bending force on a clamped anchor's guide node (:mod:`kanat.lumped.clamps`) is the anchor's too."""
-    out = F[net.anchors].reshape(-1, 3).copy()
-    for guide in net.anchor_nodes[len(net.anchor_names):]:
-        owner = _clamped_node(net, guide)
-        out[np.flatnonzero(net.anchors == owner)] += F[guide]
-    for a, node in enumerate(net.anchors):
-        if not on_seabed[a]:
-            continue
-        for ends, others in ((net.el_i, net.el_j), (net.el_j, net.el_i)):
-            for k in np.flatnonzero(ends == node):
-                if normal_force[others[k]] > 0.0:
-                    half = 0.5 * net.el_weight[k] * net.el_length[k]
+    return MooringOutputs(net, on_seabed).anchor_forces(F, normal_force, friction)
+
+
+class MooringOutputs:
+    """The mooring outputs of one network (module docstring), its element lists worked out once for
+    the outputs of a whole run; the same numbers as the functions of this module.
+
+    Parameters
+    ----------
+    net : kanat.lumped.network.Network
+    on_seabed : ndarray of bool, shape (n_anchor,), optional
+        Whether each anchor lies on the seabed (:func:`anchors_on_seabed`); none when not given.
+    """
+
+    def __init__(self, net, on_seabed=None):
+        self.net = net
+        on_seabed = np.zeros(len(net.anchor_names), bool) if on_seabed is None else np.asarray(on_seabed, bool)
+        self.resting_anchors = net.anchors[on_seabed]
+        self.cable_bounds = [(first, net.cable_first_element[c + 1] if c + 1 < len(net.cable_names)
+                              else net.n_elements) for c, first in enumerate(net.cable_first_element)]
+        self.guides = [(np.flatnonzero(net.anchors == _clamped_node(net, guide)), guide)
+                       for guide in net.anchor_nodes[len(net.anchor_names):]]
+        self.anchor_elements = [(a, [(int(k), int(others[k]), 0.5 * net.el_weight[k] * net.el_length[k])
+                                     for ends, others in ((net.el_i, net.el_j), (net.el_j, net.el_i))
+                                     for k in np.flatnonzero(ends == node)])
+                                for a, node in enumerate(net.anchors) if on_seabed[a]]
+        rigid = net.rigid
+        self.body_elements = []
+        for name, node in zip(net.body_names, net.body_node):
+            nodes = (rigid.fairlead_node[rigid.fairlead_body == rigid.names.index(name)] if name in rigid.names
+                     else [node])
+            self.body_elements.append([_node_elements(net, f) for f in nodes])
+
+    def contact_length(self, normal_force: np.ndarray) -> np.ndarray:
+        """Unstretched length of each cable resting on the seabed (n_cables,) [m] (module docstring)."""
+        net = self.net
+        touching = (normal_force > 0.0).astype(float)
+        touching[self.resting_anchors] = 1.0
+        per_element = net.el_length * 0.5 * (touching[net.el_i] + touching[net.el_j])
+        out = np.zeros(len(self.cable_bounds))
+        for c, (first, last) in enumerate(self.cable_bounds):
+            out[c] = per_element[first:last].sum()
+        return out
+
+    def line_forces(self, x, T) -> np.ndarray:
+        """Resultant force of the lines on each body (n_body, 3) [N]."""
+        out = np.zeros((len(self.body_elements), 3))
+        for b, nodes in enumerate(self.body_elements):
+            if len(nodes) == 1:
+                out[b] = _node_pull(self.net, x, T, nodes[0])
+                continue
+            for elements in nodes:
+                out[b] += _node_pull(self.net, x, T, elements)
+        return out
+
+    def anchor_forces(self, F, normal_force, friction: float = 0.0) -> np.ndarray:
+        """Force of the lines on each anchor (n_anchor, 3) [N] (:func:`anchor_forces`)."""
+        out = F[self.net.anchors].reshape(-1, 3).copy()
+        for rows, guide in self.guides:
+            out[rows] += F[guide]
+        for a, elements in self.anchor_elements:
+            for k, other, half in elements:
+                if normal_force[other] > 0.0:
                     out[a, 2] += half
                     pull = np.hypot(out[a, 0], out[a, 1])
                     if pull > 0.0:
                         out[a, :2] *= max(pull - friction * half, 0.0) / pull
-    return out
+        return out
 
 
 def _clamped_node(net, guide: int) -> int:
@@ -124,18 +163,24 @@ def allowed_penetration(net, environment) -> np.ndarray:
     return PENETRATION_MARGIN * static + PENETRATION_FLOOR
 
 
-def out_of_water(case, net, x, sea, t: float) -> str | None:
-    """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
-    gives it its full buoyancy wherever it is (only a ``surface_buoy`` or a 6-DOF body has a
-    waterplane), so its center more than :data:`SURFACE_MARGIN` (or its diameter, from
-    ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
-    is refused; None when every one is in the water."""
+def held_under_water(case, net) -> list[tuple[str, int, float]]:
+    """The bodies and points :func:`out_of_water` watches: ``(label, node, radius [m])``."""
     held = [(f"body '{name}'", node, np.sqrt(case.bodies[name].drag_area / np.pi))
             for name, node in zip(net.body_names, net.body_node)
             if case.bodies[name].surface_buoy is None and name not in net.rigid.names]
     held += [(f"point '{name}'", net.names[name], np.cbrt(0.75 * point.volume / np.pi))
              for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
-    for label, node, radius in held:
+    return held
+
+
+def out_of_water(case, net, x, sea, t: float, held=None) -> str | None:
+    """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
+    gives it its full buoyancy wherever it is (only a ``surface_buoy`` or a 6-DOF body has a
+    waterplane), so its center more than :data:`SURFACE_MARGIN` (or its diameter, from
+    ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
+    is refused; None when every one is in the water. ``held``: :func:`held_under_water` of the
+    case, if already worked out."""
+    for label, node, radius in held_under_water(case, net) if held is None else held:
         r = x[node]
         eta = float(sea.elevation(np.array([r[0]]), np.array([r[1]]), t)[0]) if sea is not None else 0.0
         if r[2] - eta > max(SURFACE_MARGIN, 2.0 * radius):

@@ -96,6 +96,7 @@ class LumpedSystem:
         self.rigid_acc = np.zeros((net.rigid.count, 2, 3))
         self._steady_points: dict = {}
         self._steady_vessel = None
+        self._last_motion: tuple | None = None      # (t, q, q_dot) of the last single-time sample
 
     def _contact(self, case, net) -> tuple:
         """``(area, bed, params, laid)`` for :func:`kanat.physics.contact.contact_forces`, or empty."""
@@ -141,9 +142,9 @@ class LumpedSystem:
             for j, arm in enumerate(arms):
                 pos[:, j], vel[:, j], heading[:] = self.track_series(times, arm)
         if self.motion is not None and p:
-            q, qd = motion_series(self.motion, times)
+            q, qd = self._motion(times)
             if self.steady_velocity is not None:        # the equilibrium: at the motion's t = 0 place
-                qd[:] = 0.0
+                qd = np.zeros_like(qd)
             disp, dvel = point_series(arms, q, qd)
             c, s = np.cos(heading)[:, None], np.sin(heading)[:, None]
             turned = np.stack([c * disp[..., 0] - s * disp[..., 1], s * disp[..., 0] + c * disp[..., 1],
@@ -163,12 +164,23 @@ class LumpedSystem:
         pos, vel = np.empty((k, p, 3)), np.zeros((k, p, 3))
         pos[:] = arms
         if self.motion is not None and p:
-            q, qd = motion_series(self.motion, times)
+            q, qd = self._motion(times)
             if self.steady_velocity is not None:
-                qd[:] = 0.0
+                qd = np.zeros_like(qd)
             pos += (q[:, None, :3] + arms) - arms
             vel += qd[:, None, :3]
         return pos, vel, np.zeros(k)
+
+    def _motion(self, times):
+        """The prescribed motion's ``q, q_dot`` (k, 6) at ``times`` (k,) (:func:`motion_series`; not to be
+        modified). A single time's sample is kept: an output samples the vessel nodes and the tow
+        point at the same time, and the result's numbers are the same either way."""
+        if len(times) != 1:
+            return motion_series(self.motion, times)
+        last = self._last_motion
+        if last is None or last[0] != times[0]:
+            last = self._last_motion = (float(times[0]), *motion_series(self.motion, times))
+        return last[1], last[2]
 
     def track_series(self, times, arm):
         """Position, velocity (k, 3) and heading (k,) of the vessel point ``arm`` along the track:
