@@ -1,6 +1,6 @@
 """Bending stiffness in the planar continuum model (Gobat & Grosenbaugh's curvature term, theory/moorings.md §6):
 a cantilever's deflection, a beam-string's natural frequencies, the flexible limit, and what the
-model does with compression (3-D: tests/test_bending3d.py)."""
+model does with compression (3-D: tests/continuum/test_bending3d.py)."""
 import warnings
 
 import numpy as np

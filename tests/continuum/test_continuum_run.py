@@ -64,7 +64,7 @@ def test_grid_convergence_in_space_is_second_order(tmp_path):
 def test_failure_stops_once_keeps_results_and_explains(tmp_path):
     """A tow stopped dead (10 kn to 0 in one step) drives the top into compression: with
     ``simulation.slack: stop`` the run stops there (with the default ``continue`` it records the
-    event and goes on: tests/test_continuum_slack.py)."""
+    event and goes on: tests/continuum/test_continuum_slack.py)."""
     text = case_text(duration=60, before=20, to_kn=0).replace("speed_kn: 6", "speed_kn: 10").replace(
         "simulation:\n", "simulation:\n  slack: stop\n")
     assert "slack: stop" in text

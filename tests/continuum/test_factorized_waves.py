@@ -5,8 +5,8 @@
   ``g(t - s/c)``): every scheme converges with its order — 1 for the upwind sweeps, 2 for
   the Crank–Nicolson wave blocks — and the sweeps stay monotone (no new extrema) across
   every step; Crank–Nicolson does not, and the test records by how much.
-- The wave-speed oracles of tests/test_continuum_waves.py, within 3 % (2 % there).
-- The steady tow of tests/test_continuum_run.py: the wave-factorized scheme keeps the full
+- The wave-speed oracles of tests/continuum/test_continuum_waves.py, within 3 % (2 % there).
+- The steady tow of tests/continuum/test_continuum_run.py: the wave-factorized scheme keeps the full
   scheme's steady state to 1e-6 (its blocks are exact there); the factorized schemes settle
   on their own first-order steady state, whose error falls at first order with the grid.
 - A towed-body speed step (Kaliukh & Vusatiuk's accelerating vehicle): factorized and full runs

@@ -58,7 +58,7 @@ def test_a_cantilever_deflects_as_euler_bernoulli(tmp_path, segments):
     """Tip deflection ``w L^4 / (8 EI)`` (Timoshenko & Gere, Mechanics of Materials, cantilever under a
     uniform load). The clamp's spring ``2 EI / l0`` converges at second order: measured +0.99 %, +0.24 %,
     +0.050 % at 10, 20, 40 segments (and +0.003 % at 80: Richardson's limit -1.3e-4, the geometric
-    nonlinearity of a 1.25 % deflection, as the continuum model's cantilever in tests/test_bending.py);
+    nonlinearity of a 1.25 % deflection, as the continuum model's cantilever in tests/continuum/test_bending.py);
     the spring ``EI / l0`` of an interior node would give +21 %, +10 %, +5 %."""
     net, x, _ = solved(cantilever(tmp_path, segments))
     exact = WEIGHT * LENGTH**4 / (8 * EI)

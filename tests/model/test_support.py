@@ -91,8 +91,9 @@ def test_table_is_complete_and_consistent():
 
 STATICS_KEYS = ("seabed", "seabed_friction", "seabed_slope", "sections", "attachments", "six_dof_bodies",
                 "body_fairleads", "vessel_fairleads", "point_properties", "bending_stiffness")
-"""New keys that network statics models (tests/test_network_statics*.py), and bending stiffness, which
-statics solves by the lumped equilibrium (tests/test_lumped_bending.py)."""
+"""New keys that network statics models (tests/statics/test_network_statics.py,
+tests/peers/test_network_statics_moorpy.py), and bending stiffness, which statics solves by the
+lumped equilibrium (tests/lumped/test_lumped_bending.py)."""
 
 
 @pytest.mark.parametrize("name", NEW_KEYS)

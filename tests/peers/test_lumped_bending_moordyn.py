@@ -1,7 +1,7 @@
 """Bending stiffness in the lumped model beside MoorDyn-C's (PyPI ``moordyn``), the same MoorDyn file
 (its line type's ``EI`` column is kanat's ``bending_stiffness``).
 
-The line is the steep jumper of tests/test_lumped_driven.py (170 m, d 0.396 m, 165 kg/m, EA 5e8 N,
+The line is the steep jumper of tests/lumped/test_lumped_driven.py (170 m, d 0.396 m, 165 kg/m, EA 5e8 N,
 damping ratio 0.8, Cd 1, Ca 1, 34 segments, from an anchor 100 m away at 55 m depth to a fairlead 5 m
 down, in 100 m of water) with EI 2e6 or 2e7 N m^2 (pinned ends in both codes: MoorDyn clamps a line
 only where it meets a rod).
@@ -134,7 +134,7 @@ def test_moordyn_holds_the_equilibrium_kanat_finds_for_a_line_with_bending(tmp_p
 
 def test_a_driven_line_with_bending_moves_as_moordyn_s(tmp_path):
     """EI 2e6 N m^2, the fairlead surging 10 m in 27 s from rest, both codes from kanat's equilibrium,
-    54 s; MoorDyn coupled every 2 ms (tests/test_lumped_driven.py's jumper). Top tension over the second
+    54 s; MoorDyn coupled every 2 ms (tests/lumped/test_lumped_driven.py's jumper). Top tension over the second
     period: mean within 1 %, range and maximum within 3 %; the middle node's path within 0.5 % of its
     excursion at every output (0.1 s). Measured (the default scheme): mean -0.02 %, range +0.60 %,
     maximum +0.04 % (42.1 kN, range 10.4 kN); every node within 1.0 cm of MoorDyn's all along, the

@@ -1,7 +1,7 @@
 """Waves on steep and slack lines near the surface: kanat's lumped model (its default scheme)
 beside MoorDyn-C (PyPI ``moordyn``), both fed the same Airy kinematics — kanat's own
 (:func:`kanat.physics.waves.sea_from_model`), passed to MoorDyn with ``ExternalWaveKinSet`` at its
-nodes every 0.02 s coupling step (as tests/test_moordyn_waves.py does).
+nodes every 0.02 s coupling step (as tests/peers/test_moordyn_waves.py does).
 
 The cases, each one MoorDyn file that kanat imports:
 
@@ -9,7 +9,7 @@ The cases, each one MoorDyn file that kanat imports:
   40 segments, from an anchor at 55 m depth to a point fixed 5 m under the still surface, 100 m
   away horizontally along the wave heading (0, 45 or 90 deg) in 100 m of water; regular waves of
   H 10 m, T 10 s: the troughs reach the top end. About 42 kN at the top.
-* **taut** (tests/test_moordyn_waves.py's line): 0.25 m, 120 kg/m, EA 2e7 N, BA 2e4 N s, Cd 1.2,
+* **taut** (tests/peers/test_moordyn_waves.py's line): 0.25 m, 120 kg/m, EA 2e7 N, BA 2e4 N s, Cd 1.2,
   from 100 m depth to a point 10 m off, its length set for a strain of 0.75 % (about 150 kN).
 * **catenary**: a 90 m line of 0.1 m, 60 kg/m, EA 1e8 N, damping ratio 1, Cd 1.2, Ca 1, 20
   segments, from a point 60 m deep (40 m above the seabed) to a point 60 m off, hanging in a

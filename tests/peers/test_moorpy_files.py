@@ -130,7 +130,7 @@ def test_shared_line_between_coupled_bodies_has_moorpys_geometry(shared):
 def test_each_coupled_body_has_moorpys_stiffness(shared):
     """Each coupled body its own (no longer one vessel): its 6x6 about its reference point is the
     diagonal block of MoorPy's coupled 12x12 (the other body held); the whole matrix, and more
-    layouts, in tests/test_shared_bodies.py."""
+    layouts, in tests/peers/test_shared_bodies.py."""
     ms = _reread(shared)
     K12 = _quiet(ms.getCoupledStiffnessA, lines_only=True)
     result = solve_network_case(_load(shared))

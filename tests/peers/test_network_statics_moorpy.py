@@ -1,6 +1,6 @@
 """Network statics side by side with MoorPy 1.3 (PyPI, the ``peers`` extra), run live.
 
-Skipped when ``moorpy`` cannot be imported; tests/test_network_statics.py checks the same
+Skipped when ``moorpy`` cannot be imported; tests/statics/test_network_statics.py checks the same
 numbers, stored in tests/data/moorpy/reference.json, in every run. Here MoorPy solves the
 systems again (so the stored numbers are MoorPy's), and its friction catenary is compared
 with kanat's line over a grid of configurations.

@@ -1,11 +1,11 @@
 """Two coupled bodies sharing a line, each driven by its own six components through
 ``kanat.Coupling(file, rigid_vessel=True)`` (eq. (2b) of :mod:`kanat.coupling`, MoorDyn-C's
-coupled bodies), the file written by MoorPy (tests/test_shared_bodies.py).
+coupled bodies), the file written by MoorPy (tests/peers/test_shared_bodies.py).
 
 Oracles:
 
 * the same coupling driven point by point (``rigid_vessel=False``, itself the prescribed-motion run
-  to round-off: tests/test_coupling.py) with the points placed by eq. (2b) in the test: the same
+  to round-off: tests/lumped/test_coupling.py) with the points placed by eq. (2b) in the test: the same
   forces, and each body's resultant and moment, to round-off: at an equilibrium with both bodies
   turned, and over steps of each body drifting on its own;
 * MoorDyn-C's own coupling of the same file (PyPI ``moordyn``, RK2 at the file's 1 ms) driven by the

@@ -1,7 +1,7 @@
 """Exports, reports and studies on a disk that cannot hold them: refused before anything is
 written, or, when the disk fills up during the write, one sentence and no partial file.
 
-The same techniques as tests/test_disk_full.py: the free space the writers see is patched
+The same techniques as tests/robustness/test_disk_full.py: the free space the writers see is patched
 (:func:`kanat.io.space._free_bytes`), and a small tmpfs (mounted by the test; skipped where
 mounting is not permitted) fills up for real while its free space is reported as plenty.
 Oracles: the sizes of the files written on a roomy disk (the estimates must cover them), the

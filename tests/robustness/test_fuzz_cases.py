@@ -19,7 +19,7 @@ the data and 2000 of the text, in about a minute; and 2500 mutants of the data o
 dynamic examples (some 450 of them valid, each then set up by its model) in about 30 s.
 More, with a random seed (N mutants for the reader, 3 N / 10 more for the models)::
 
-    KANAT_FUZZ_EXAMPLES=100000 python -m pytest -q tests/test_fuzz_cases.py
+    KANAT_FUZZ_EXAMPLES=100000 python -m pytest -q tests/robustness/test_fuzz_cases.py
 """
 from __future__ import annotations
 

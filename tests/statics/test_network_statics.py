@@ -2,7 +2,7 @@
 
 Oracles: the closed-form elastic catenary with seabed (kanat.statics.catenary); MoorPy 1.3's
 answers stored in tests/data/moorpy/reference.json (how they were made: README.md there;
-tests/test_network_statics_moorpy.py runs MoorPy live); finite differences of the
+tests/peers/test_network_statics_moorpy.py runs MoorPy live); finite differences of the
 equations and of the equilibrium; force balance with the friction drop of Jonkman's
 grounded line; one system written two ways; the lumped model's equilibrium converging to
 network statics at second order where nothing touches the seabed.

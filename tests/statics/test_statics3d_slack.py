@@ -49,7 +49,7 @@ def test_the_still_water_surface_mooring_is_refused_before_any_solver_runs(metho
 def test_the_continuum_run_starts_from_a_small_pull_and_says_so():
     """The refused steady state does not stop a continuum run any more (simulation.slack: continue):
     it starts from the steady state under a small pull on its body, released at t = 0, and its notes
-    say so (tests/test_continuum_slack.py checks that start against the catenary)."""
+    say so (tests/continuum/test_continuum_slack.py checks that start against the catenary)."""
     model = api.dynamic_model(still_mooring())
     model.initial()
     assert any("pull" in note for note in model.notes)
