@@ -1,6 +1,8 @@
-"""What several test modules share: the examples folder, case builders, runs, output cleaning.
+"""What several test modules share: the repository's folders, case builders, runs, output cleaning.
 
-Test modules import from here, never from each other.
+Test modules import from here, never from each other. The test modules sit one folder down, by
+area (tests/README.md); ``pythonpath = ["tests"]`` in pyproject.toml's pytest options puts this
+folder on ``sys.path`` so that ``from helpers import ...`` works from any of them.
 """
 import os
 import re
@@ -15,7 +17,11 @@ from kanat.continuum.stepper import step
 from kanat.io.results import case_sha256
 from kanat.io.stream import ResultStream
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+ROOT = Path(__file__).resolve().parents[1]
+"""The repository's root: every path a test reads is written from here, never from its own file."""
+EXAMPLES = ROOT / "examples"
+DATA = ROOT / "tests" / "data"
+"""Reference data of the tests, with its source written beside it."""
 STEP_CASE = (EXAMPLES / "speed_step_2d.yaml").read_text()
 
 

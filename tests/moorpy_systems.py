@@ -11,7 +11,7 @@ volume; a sloped seabed is MoorPy's uniform slope (``xSlope``). MoorPy 1.3's ``S
 resets ``cb``), so comparisons of systems are frictionless; friction is compared on single
 lines with ``moorpy.Catenary.catenary``.
 
-Used by tests/test_network_statics_moorpy.py, tests/data/moorpy/make_reference.py and
+Used by tests/peers/test_network_statics_moorpy.py, tests/data/moorpy/make_reference.py and
 benchmarks/bench_network_statics.py.
 """
 from __future__ import annotations
