@@ -37,7 +37,7 @@ Both codes see the same sea and the same motion:
   (:func:`fairlead_motion`: :func:`kanat.physics.motion.compile_motion`,
   :func:`~kanat.physics.motion.motion_at`, :func:`~kanat.physics.motion.rigid_point_motion`) and
   the mean velocity over the step, so that MoorDyn's points (moved linearly within a step) pass
-  through kanat's at every coupling instant. tests/test_storm_motion.py checks the positions
+  through kanat's at every coupling instant. tests/peers/test_storm_motion.py checks the positions
   against kanat's own vessel nodes in a run to 1e-9 m.
 
 Each configuration runs as its own process, interleaved, ``--repeats`` times; the table gives

@@ -1,7 +1,7 @@
 """The continuum model driven at its top (``vessel.motion``) and through slack, against its oracles.
 
-Prints the figures docs/continuum.md quotes, from the cases of the tests (tests/test_continuum_motion.py,
-tests/test_continuum_slack.py):
+Prints the figures docs/continuum.md quotes, from the cases of the tests (tests/continuum/test_continuum_motion.py,
+tests/continuum/test_continuum_slack.py):
 
 * a 160 m wire from a tow point 5 m deep to an anchor, driven in surge and heave, and in surge and
   sway (3-D): top tension mean and range against the lumped model's ``rk4``;

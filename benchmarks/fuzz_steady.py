@@ -26,7 +26,7 @@ Run the full round (2,400 cases, 27 min on a 2-core machine under a load of 10) 
 
     python benchmarks/fuzz_steady.py --cases 2400 --seed 22 --limit 60
 
-The test suite runs a sample (tests/test_fuzz_steady.py). The full round with seed 22
+The test suite runs a sample (tests/robustness/test_fuzz_steady.py). The full round with seed 22
 (benchmarks/RESULTS.md): 1,479 clear errors, 140 failed steady states, 779 ok ones all passing the
 checks, 0 exceptions; 2 cases past the 60 s limit (one ok in 65 s alone, one a continuum model's
 steady state on the seabed of 6,000 segments that outgrew 7 GiB).

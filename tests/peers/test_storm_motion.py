@@ -10,7 +10,7 @@ Oracles:
 * MoorDyn-C itself, driven as the benchmark drives it: after each coupling step its coupled
   points are at the positions kanat's motion gives at that instant, to 1e-9 m, and its waves
   (``WaveKin 7`` from the benchmark's ``wave_frequencies.txt``) are kanat's sea, elevation and
-  stretched kinematics to 1e-6 (1.7e-7 m seen; tests/test_wave_stretching.py holds the two codes'
+  stretched kinematics to 1e-6 (1.7e-7 m seen; tests/physics/test_wave_stretching.py holds the two codes'
   WaveKin 7 seas to 1e-7).
 
 The RAO table is the benchmark's closed-form cylinder: its long-wave limits are checked too
@@ -24,7 +24,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from helpers import ROOT
+
+sys.path.insert(0, str(ROOT / "benchmarks"))
 import bench_storm_moordyn as bench  # noqa: E402
 
 from kanat.api import simulate  # noqa: E402

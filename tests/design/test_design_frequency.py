@@ -24,7 +24,9 @@ from kanat.design_checks import design
 from kanat.design_checks.conditions import sea_state_case, wave_seed
 from kanat.errors import KanatError
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "design" / "quasi_static.yaml"
+from helpers import EXAMPLES
+
+EXAMPLE = EXAMPLES / "design" / "quasi_static.yaml"
 SEA_STATES = """name,hs,tp,gamma,heading_deg,probability,duration
 moderate,2.0,8.0,3.3,0,0.7,10800
 rough,4.0,10.0,3.3,30,0.3,10800
