@@ -5,7 +5,7 @@
 writes ``docs/reference/case-format.md`` (every case key and result name, from the
 pydantic models and ``kanat.io.schema``), ``docs/reference/support.md`` (the support table
 of ``kanat.model.support``) and ``docs/schemes.md`` (the scheme registry). The functions
-that make them are in ``kanat.cli_docs``; ``tests/test_reference.py`` fails when a
+that make them are in ``kanat.cli_docs``; ``tests/model/test_reference.py`` fails when a
 committed page differs from what they make now.
 """
 from __future__ import annotations

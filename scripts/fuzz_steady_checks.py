@@ -5,7 +5,7 @@
 solves N random mutations (log-uniform speeds, depths, lengths, buoyancies and tangential
 drag) of ``towed_body.yaml``, ``subsurface_buoy.yaml`` and ``mooring_3leg.yaml``, counts the
 statuses (``ok``, each failed check, refused or no steady state, over 20 s) and recomputes
-every check on each ``ok`` result with the oracle of ``tests/test_steady_checks.py``
+every check on each ``ok`` result with the oracle of ``tests/statics/test_steady_checks.py``
 (``independent_checks``). ``--unchecked`` solves as the statics did before their checks
 (every solved state ``ok``), to count the impossible states the checks now catch.
 """

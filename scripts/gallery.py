@@ -9,7 +9,7 @@ with its own model, and drawn with the pictures of ``kanat.report`` -- the same 
 ``NAME_3d.png``, for systems of several cables or that leave the x–z plane). Long runs are
 cut short (:data:`SHORT`), and the page says so. A case no model runs yet is drawn as
 written (:func:`kanat.report.overview.plot_layout`), with the reason. The page
-``docs/gallery.md`` is written last; ``tests/test_docs_site.py`` checks that it shows
+``docs/gallery.md`` is written last; ``tests/cli/test_docs_site.py`` checks that it shows
 every example.
 """
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Every use kanat makes of another library's private API, in one place (docs/kernels.md).
 
-Three touch points, each tested on its own (tests/test_private_api.py), so that a release of
+Three touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
 numba or h5netcdf that changes one fails one test whose message names the library and version:
 
 * :func:`compile_object_files` — ``numba.pycc.CC._compile_object_files``: the install compiles

@@ -20,7 +20,7 @@ Two guards keep it honest:
 
 When the module is stale or missing (no C compiler at install), or a call's arguments do not
 match, the run uses numba's just-in-time kernels, which give the same numbers bit for bit
-(tests/test_aot.py). ``KANAT_AOT=0`` (or ``KANAT_KERNELS=numba``) in the environment makes a
+(tests/kernels/test_aot.py). ``KANAT_AOT=0`` (or ``KANAT_KERNELS=numba``) in the environment makes a
 process use numba's kernels throughout (to compare, or to debug a kernel); so does
 :meth:`Lookup.numba_only` within a block. ``KANAT_KERNELS=python`` or :meth:`Lookup.python_only`
 runs the plain twins instead, without numba (:data:`KERNEL_MODES`; docs/kernels.md).

@@ -103,7 +103,7 @@ def schemes_page() -> str:
              "Generated from the scheme registry (`kanat.api.SCHEMES`) by `python scripts/docs_reference.py`. "
              "A case names its scheme in `simulation.scheme`; `kanat run --scheme NAME` overrides it; from "
              "Python a scheme object works wherever a name does (`kanat.simulate(case, scheme=...)`). The "
-             "order is measured for every scheme by one test (`tests/test_scheme_order.py`); explicit "
+             "order is measured for every scheme by one test (`tests/schemes/test_scheme_order.py`); explicit "
              "schemes have a stable step of their own.", "",
              "| name | model | order | explicit | parameters (default) | what it is |", "|---|---|---|---|---|---|"]
     for name, cls in SCHEMES.items():

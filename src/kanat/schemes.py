@@ -12,7 +12,7 @@ its parameters, and whose class attributes say what it is:
 1. ``name`` — the name used in case files (``simulation.scheme``);
 2. ``model`` — ``"continuum"`` or ``"lumped"`` (for a listed name: from :data:`SCHEME_NAMES`);
 3. ``order`` — its order of accuracy in time, measured by one parametrized test
-   (``tests/test_scheme_order.py``) for every registered scheme;
+   (``tests/schemes/test_scheme_order.py``) for every registered scheme;
 4. ``explicit`` — whether its step is bounded by a stability limit (for a listed name: from
    :data:`SCHEME_NAMES`).
 

@@ -6,7 +6,7 @@ compile time measured on the reference machine; :func:`pending` says, without co
 whether a family is still to be compiled (so a run can print "compiling kernels once, ~N s"
 first), and :func:`warmup` compiles families by running a tiny case of each (``kanat
 warmup``). The tiny cases go through the same run path as any case, so what they compile is
-exactly what a run needs (tests/test_jit.py checks that a run after them compiles nothing).
+exactly what a run needs (tests/kernels/test_jit.py checks that a run after them compiles nothing).
 """
 from __future__ import annotations
 

@@ -38,7 +38,7 @@ cannot express (a warning gives it).
 MoorDyn stretches the kinematics to the instantaneous surface (Wheeler: a node at ``z`` takes
 those at ``h (z + h) / (h + eta) - h``, a node above the surface those of the surface): the
 importer writes ``stretching: wheeler``, which does the same (:mod:`kanat.physics.waves` eq. 7;
-tests/test_wave_stretching.py checks it against MoorDyn's ``WaveKin 7`` to 1e-7). Where kanat
+tests/physics/test_wave_stretching.py checks it against MoorDyn's ``WaveKin 7`` to 1e-7). Where kanat
 differs: in modes 2 and 3 MoorDyn interpolates the kinematics linearly in a grid of points and
 times (holding them at the grid's edges), kanat sums the components at each node. The importer
 says so in a warning, and warns when the structure reaches beyond the grid in x or y, where

@@ -299,7 +299,7 @@ class LumpedModel:
         axial period, so a longer step does not follow the rise and the peak is not converged in the
         step. Measured: a released 20 m wire (axial period 3.6 ms) falling through its own slack peaks
         at 2.16 kN with rk4 at 10 ms and with the implicit scheme at 2 ms, at 25 kN with the implicit
-        scheme at 10 ms, its top node 10 m from rk4's (``tests/test_lumped_snap_step.py``)."""
+        scheme at 10 ms, its top node 10 m from rk4's (``tests/lumped/test_lumped_snap_step.py``)."""
         if self.scheme.explicit or not len(events["time"]) or self.dt <= self.info.axial_period:
             return None
         k = int(np.argmax(events["peak_tension"]))

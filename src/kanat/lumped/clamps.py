@@ -20,7 +20,7 @@ with the turning angle ``theta`` between ``c`` and the end element's tangent ``t
 ``t_0`` is the line's direction at the middle of the end element, ``l0 / 2`` from the clamp, so the
 curvature there is ``2 theta / l0``: the half cell's spring, as MoorDyn v2 takes a line end clamped
 to a rod (``Line.cpp``, curvature ``4 sin(theta / 2) / l0`` at a cantilevered end). With ``EI / l0``
-instead the cantilever's tip deflection converges at first order (tests/test_lumped_clamped.py).
+instead the cantilever's tip deflection converges at first order (tests/lumped/test_lumped_clamped.py).
 
 The direction ``c`` is the case's ``direction`` (global at an anchor, vessel or body axes), or by
 default the end element's direction in the network's first guess (the line straight or sagging

@@ -25,7 +25,7 @@ of the undisturbed wave on the displaced volume (MoorDyn, OrcaFlex).
 Each end's half of the drag takes that end's own velocity (4), as MoorDyn's nodal drag does:
 drag on the element's mean velocity ``(v_i + v_j) / 2`` leaves the mode in which neighbouring
 nodes move opposite ways (the mesh's highest transverse mode) without hydrodynamic damping, and
-waves excite it. A jumper in regular waves (tests/test_moordyn_jumper.py, 20 segments) then rang
+waves excite it. A jumper in regular waves (tests/peers/test_moordyn_jumper.py, 20 segments) then rang
 at 0.6 Hz and its top tension's range came out 26 % above MoorDyn's; with each end's own
 velocity it is within 3 %, and the two discretizations converge to each other with the segments.
 The added-mass matrix is taken at the current tangent (its ``dM/dq`` terms in Lagrange's

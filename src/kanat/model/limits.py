@@ -101,7 +101,7 @@ EXPLICIT_SAFETY = 0.8
 MAX_HARMONICS = 10_000
 """Most harmonics of the pitch problem's Fourier series: the rectangular law's coefficients
 fall as 1/n, so N harmonics leave an error near 1/N of the moment; 50 (the default) give
-1e-3 in pitch (``tests/test_pitch.py``)."""
+1e-3 in pitch (``tests/vessel/test_pitch.py``)."""
 
 MAX_TIME_POINTS = 1_000_001
 """Most samples of the steady pitch period (401 by default)."""

@@ -7,7 +7,7 @@ direction from the x axis towards y; at each offset the network statics
 every free point and body re-balanced. At offset ``d`` the vessel's ends are at ``d + R a``
 (:func:`displaced`, ``R = Rz(yaw) Ry(pitch) Rx(roll)``; no rotation along the curve). The
 slope of the force against offset is the coupled stiffness of :mod:`kanat.statics.coupled`
-(tests/test_offsets.py checks one against the other).
+(tests/statics/test_offsets.py checks one against the other).
 """
 from __future__ import annotations
 

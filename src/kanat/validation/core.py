@@ -128,6 +128,6 @@ NOT_IN_SUITE = [
     ("7.8", "Zhang, Zhang & Liu 2012: the 375° turn with the four time schemes (kanat study compare-schemes)", "a 740 s 3-D run per scheme"),
     ("7.9", "Gaisha: the M0 surfaces", "a scan over M0 (kanat pitch --plot)"),
     ("7.10", "Bezverkhyi 2006: the branched trawl findings; energy conservation of the lumped model over 100 periods",
-     "tests/test_lumped_oracles.py (slow marker), examples/trawl_*"),
+     "tests/lumped/test_lumped_oracles.py (slow marker), examples/trawl_*"),
 ]
 """theory/validation-cases.md cases too slow for the suite: (case, what, where it is checked instead)."""
