@@ -215,7 +215,7 @@ def test_chain_catenary_against_moordyn_side_by_side(tmp_path, moordyn, moordyn_
     surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 2.3 % on the
     seabed, 3.4 % in the suspended span) but the touchdown node's, within 6 % (measured 5.3 %: where
     the seabed contact is linearised), and phase within 0.05 rad. (At 10 s MoorDyn agrees only when
-    called every few ms: tests/test_moordyn_chain_dynamic.py, docs/frequency.md.)"""
+    called every few ms: tests/frequency/test_moordyn_chain_dynamic.py, docs/frequency.md.)"""
     period = 60.0
     case = chain(tmp_path, "frequency", period)
     ds = kanat.solve_frequency(case)

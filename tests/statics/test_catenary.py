@@ -333,7 +333,7 @@ def test_matches_solve_bvp_with_seabed_contact():
     assert sol.vertical_tension_upper == pytest.approx(V_U, rel=1e-8)
 
 
-# MoorPy's tests/test_catenary.py (NREL/MoorPy, cases 2, 4 and 5; catenary(XF, ZF, L, EA, W, CB)),
+# MoorPy's tests/statics/test_catenary.py (NREL/MoorPy, cases 2, 4 and 5; catenary(XF, ZF, L, EA, W, CB)),
 # solved there to an absolute end tolerance of 1e-6 m, hence the 1e-6 relative comparison.
 # columns: span, rise, length, weight, axial_stiffness, seabed, H, V_lower, V_upper, grounded_length
 MOORPY_CASES = [

@@ -1,6 +1,6 @@
 """A chain catenary's dynamic tension under a surging fairlead, kanat against MoorDyn-C side by side.
 
-The MoorDyn input file of tests/test_frequency_harmonic.py (300 m of 76 mm chain, 20 segments, 60 m
+The MoorDyn input file of tests/frequency/test_frequency_harmonic.py (300 m of 76 mm chain, 20 segments, 60 m
 of water, ``BA = -1``), the fairlead surging ``-0.1 cos(omega t)`` m. MoorDyn is driven through its
 coupling interface (``moordyn.Step``), which moves a coupled point at the constant velocity it is
 given until the next call: the fairlead's path is piecewise linear and its velocity jumps at every
