@@ -13,11 +13,6 @@ tests compare them.
 It applies to the lumped mass matrix and the built-in ``rk4`` and ``abm4`` schemes
 (:func:`supports`); the driver falls back to the Python path otherwise. The vessel's
 tow point is sampled on the half-step grid of each call by :func:`track_samples`.
-
-The kernels read their inputs by field name from the records of :mod:`kanat.lumped.entries`
-(``nodes``: :class:`~kanat.lumped.entries.Nodes`, ``el``: ``Elements``, ``bodies``: ``Bodies``,
-``env``: ``Environment``, ``work``: ``Work``, ``snap``: ``Snap``), built once per run by
-:class:`kanat.lumped.advance.FusedArrays`.
 """
 from __future__ import annotations
 
