@@ -79,16 +79,40 @@ def record(name: str, module: str, **fields) -> type:
     Kernels read a record's fields by name (``elements.length[k]``); numba types it as a named
     tuple (``types.NamedTuple`` of the fields' types, with the class), which both its just-in-time
     and its ahead-of-time compilers take, so adding a field is adding it here and filling it where
-    the record is built. The class's ``SPECIFICATION`` holds the fields' specifications.
+    the record is built. The class's ``SPECIFICATION`` holds the fields' specifications;
+    ``narrowed(field=spec, ...)`` is a :class:`Record` specification with some fields' specifications
+    replaced (an optional part given as None, whose code numba then prunes).
     """
     kind = collections.namedtuple(name, tuple(fields), module=module)
     kind.SPECIFICATION = tuple(fields.values())
+    kind.narrowed = classmethod(_narrowed)
     return kind
 
 
+@dataclass(frozen=True)
+class Record:
+    """The specification of a :func:`record` of class ``kind`` whose fields are ``specification``
+    (the class's own ``SPECIFICATION``, or a narrowed one: ``kind.narrowed(...)``)."""
+
+    kind: type
+    specification: tuple
+
+
+def _narrowed(kind, **fields) -> Record:
+    unknown = set(fields) - set(kind._fields)
+    if unknown:
+        raise ValueError(f"{kind.__name__} has no field {', '.join(sorted(unknown))}")
+    return Record(kind, tuple(fields.get(name, spec) for name, spec in zip(kind._fields, kind.SPECIFICATION)))
+
+
 def is_record(spec) -> bool:
-    """Whether ``spec`` is a :func:`record` class."""
-    return isinstance(spec, type) and hasattr(spec, "SPECIFICATION")
+    """Whether ``spec`` is a :func:`record` class or a :class:`Record`."""
+    return isinstance(spec, Record) or isinstance(spec, type) and hasattr(spec, "SPECIFICATION")
+
+
+def as_record(spec) -> Record:
+    """The :class:`Record` of a :func:`record` class or :class:`Record` ``spec``."""
+    return spec if isinstance(spec, Record) else Record(spec, spec.SPECIFICATION)
 
 
 MODULES = ("_continuum", "_lumped", "_lumped_explicit")
@@ -160,20 +184,27 @@ def _installed_fingerprint() -> int:
     return fingerprint(Path(__file__).parent)
 
 
+RECENT = 16
+"""Records a record checker remembers as checked (:func:`checker`); more are checked again."""
+
+
 def checker(spec) -> Callable[[object], bool]:
     """A test of whether a value is what ``spec`` (an :class:`Array`, a scalar type name, None, a
-    :func:`record` class or a tuple of them) describes, exactly as the compiled code reads it
-    (NumPy's ``flags.carray``: C order, aligned, writeable; a record of its own class only). Made
-    once per entry version: a call checks its arguments in about 0.15 us each."""
+    :func:`record` class, a :class:`Record` or a tuple of them) describes, exactly as the compiled
+    code reads it (NumPy's ``flags.carray``: C order, aligned, writeable; a record of its own class
+    only). Made once per entry version.
+
+    A record's fields are checked the first time the checker sees it; after that, the record itself
+    (its identity: a named tuple's fields cannot be replaced, and an array's type and layout are
+    fixed when it is made) is enough, for the last :data:`RECENT` records it passed. A record built
+    once per run (the network's elements, nodes, work arrays) so costs one ``is`` per call.
+    """
     if spec is None:
-        return lambda value: value is None
+        return _is_none
     if is_record(spec):
-        fields = checker(spec.SPECIFICATION)
-        return lambda value: type(value) is spec and fields(tuple(value))
+        return _record_checker(as_record(spec))
     if isinstance(spec, tuple):
-        items, n = tuple(map(checker, spec)), len(spec)
-        return lambda value: (type(value) is tuple and len(value) == n
-                              and all(check(item) for check, item in zip(items, value)))
+        return _tuple_checker(tuple(map(checker, spec)))
     if isinstance(spec, Array):
         dtype, ndim = np.dtype(spec.dtype), spec.ndim
         return lambda value: (type(value) is np.ndarray and value.dtype is dtype and value.ndim == ndim
@@ -185,6 +216,42 @@ def checker(spec) -> Callable[[object], bool]:
     if spec == BOOL:
         return lambda value: isinstance(value, (bool, np.bool_))
     raise ValueError(f"no such specification: {spec!r}")
+
+
+def _is_none(value) -> bool:
+    return value is None
+
+
+def _tuple_checker(items: tuple) -> Callable[[object], bool]:
+    """:func:`checker` of a tuple of ``items`` checkers: a plain loop (no generator to create)."""
+    n = len(items)
+
+    def check(value) -> bool:
+        if type(value) is not tuple or len(value) != n:
+            return False
+        for item, part in zip(items, value):
+            if not item(part):
+                return False
+        return True
+    return check
+
+
+def _record_checker(spec: Record) -> Callable[[object], bool]:
+    """:func:`checker` of a record: its class, then its fields once (see :func:`checker`)."""
+    kind, fields, passed = spec.kind, _tuple_checker(tuple(map(checker, spec.specification))), {}
+
+    def check(value) -> bool:
+        if type(value) is not kind:
+            return False
+        if passed.get(id(value)) is value:                 # checked before (held here: its id is not reused)
+            return True
+        if not fields(tuple(value)):
+            return False
+        if len(passed) >= RECENT:
+            passed.clear()
+        passed[id(value)] = value
+        return True
+    return check
 
 
 def matches(value, spec) -> bool:
@@ -331,16 +398,17 @@ def _kernel(name: str, compiled) -> Callable:
 
     if compiled is None:
         return numba_kernel()
-    candidates = [(getattr(compiled, f"{name}__{i}"), checker(spec)) for i, spec in enumerate(entry.versions)]
+    candidates = [(getattr(compiled, f"{name}__{i}"), checker(tuple(spec))) for i, spec in enumerate(entry.versions)]
 
-    last = [0]                                       # the version that matched last: tried first
+    order = list(candidates)                         # the version that matched last first
 
     def run(*args):
-        for k in range(len(candidates)):
-            index = (last[0] + k) % len(candidates)
-            function, check = candidates[index]
+        for candidate in order:
+            function, check = candidate
             if check(args):
-                last[0] = index
+                if candidate is not order[0]:
+                    order.remove(candidate)
+                    order.insert(0, candidate)
                 return function(*args)
         _numba_used.add(name)                        # other types: numba compiles for them (kanat.jit says so)
         return numba_kernel()(*args)

@@ -26,7 +26,8 @@ def numba_type(spec):
     if spec is None:
         return types.none
     if aot.is_record(spec):                 # a named tuple of the record's class, as numba types its instances
-        return types.BaseTuple.from_types([numba_type(item) for item in spec.SPECIFICATION], spec)
+        spec = aot.as_record(spec)
+        return types.BaseTuple.from_types([numba_type(item) for item in spec.specification], spec.kind)
     if isinstance(spec, tuple):
         return types.Tuple(tuple(numba_type(item) for item in spec))
     if isinstance(spec, aot.Array):

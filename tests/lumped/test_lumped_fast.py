@@ -79,7 +79,7 @@ def test_fused_acceleration_matches_the_system(waves, depth, profile, stretching
         fast.derivative_at(t, y, 0, samples, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work, dy)
         want = system.rhs(t, y)
         np.testing.assert_allclose(dy, want, rtol=1e-11, atol=1e-11 * np.max(np.abs(want)))
-        np.testing.assert_allclose(arrays.work[4], system.tension, rtol=1e-12, atol=1e-9)   # and the tensions
+        np.testing.assert_allclose(arrays.work.tension, system.tension, rtol=1e-12, atol=1e-9)   # and the tensions
 
 
 def test_track_samples_match_the_vessel_track():

@@ -38,46 +38,55 @@ def supports(system, scheme) -> bool:
 
 
 class FusedArrays:
-    """The typed-array tuples :mod:`kanat.lumped.fast` takes, built once from a system.
+    """The named records :mod:`kanat.lumped.fast` takes (:mod:`kanat.lumped.entries`), built once
+    from a system: their one builder.
 
     Attributes
     ----------
-    nodes, el, bodies, env, work : tuple
-        See :func:`kanat.lumped.fast.loads`: ``nodes`` (free, vessel, anchor nodes, anchor
-        positions, nodal loads and masses, free flags, 6-DOF pseudo-nodes' free-local rows),
-        ``el`` the element arrays, ``bodies`` (load nodes, drag, spreading, fluid inertia, buoys,
-        rigid bodies, seabed contact), ``env`` (rho, g, current table, sea, still, elevation
-        bound, current ramp [s]), ``work`` the scratch arrays.
+    nodes : kanat.lumped.entries.Nodes
+    el : kanat.lumped.entries.Elements
+        The system's (:meth:`kanat.lumped.network.Network.elements`).
+    bodies : kanat.lumped.entries.Bodies
+    env : kanat.lumped.entries.Environment
+    work : kanat.lumped.entries.Work
+        The scratch arrays, their water kinematics set once where the water is still.
     """
 
     def __init__(self, system):
         net = system.net
         n, m, nl, nb = net.n_nodes, net.n_elements, len(net.load_node), net.rigid.count
         local = np.searchsorted(system.free_index, np.stack([net.rigid.ref_node, net.rigid.rot_node], -1))
-        self.nodes = (system.free_index.astype(np.int64), net.vessel_nodes.astype(np.int64),
-                      net.anchor_nodes.astype(np.int64), np.ascontiguousarray(net.anchor_position, float),
-                      np.ascontiguousarray(net.node_force, float), system.node_mass, net.free.copy(),
-                      np.ascontiguousarray(local.reshape(nb, 2), dtype=np.int64))
+        self.nodes = entries.Nodes(
+            free=system.free_index.astype(np.int64), vessel=net.vessel_nodes.astype(np.int64),
+            anchor=net.anchor_nodes.astype(np.int64), anchor_position=np.ascontiguousarray(net.anchor_position, float),
+            force=np.ascontiguousarray(net.node_force, float), mass=system.node_mass, is_free=net.free.copy(),
+            rigid_rows=np.ascontiguousarray(local.reshape(nb, 2), dtype=np.int64))
         self.el = system.el_args
         buoys = net.body_node[net.buoy_body] if len(net.buoy_body) else np.zeros(0, np.int64)
-        self.bodies = (net.load_node.astype(np.int64), net.load_drag_area.astype(float),
-                       net.load_spreading.astype(float), net.node_fluid_inertia.astype(float), buoys.astype(np.int64),
-                       net.buoy_area.astype(float), net.buoy_height.astype(float),
-                       system.rig if net.rigid.count else None,                     # None: pruned from the kernels
-                       system.contact if len(system.contact[0]) else None)
+        self.bodies = entries.Bodies(
+            load_node=net.load_node.astype(np.int64), drag_area=net.load_drag_area.astype(float),
+            spreading=net.load_spreading.astype(float), fluid_inertia=net.node_fluid_inertia.astype(float),
+            buoy_node=buoys.astype(np.int64), buoy_area=net.buoy_area.astype(float),
+            buoy_height=net.buoy_height.astype(float),
+            rig=system.rig if net.rigid.count else None,                          # None: pruned from the kernels
+            contact=system.contact if len(system.contact[0]) else None)
         cz, cu = system.current.table()
         ramp = float(system.current.ramp)
         still = system.sea is None and len(cz) == 1 and ramp == 0.0   # water kinematics constant in space and time
-        self.env = (system.rho, system.g, cz, cu, sea_arrays(system.sea), still, system.eta_bound, ramp)
-        self.work = (np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 6)), np.zeros(m),
-                     np.zeros(m), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((m, 3)), np.zeros((nl, 3)),
-                     np.zeros((nl, 3)), np.zeros((nl, 3)), np.zeros((n, 3)), np.ones(m), np.zeros((nb, 2, 3)),
-                     np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros(nb), np.zeros(n), np.zeros((n, 3)),
-                     np.zeros((nb, 3)))
-        if still:                                                     # set once: uw (m, 3), bu (nl, 3)
-            self.work[7][:], self.work[10][:] = cu[0], cu[0]
+        self.env = entries.Environment(
+            rho=system.rho, g=system.g, current_depths=cz, current_velocities=cu, sea=sea_arrays(system.sea),
+            still=still, elevation_bound=system.eta_bound, current_ramp=ramp)
+        self.work = entries.Work(
+            x=np.zeros((n, 3)), v=np.zeros((n, 3)), force=np.zeros((n, 3)), mass=np.zeros((n, 6)),
+            tension=np.zeros(m), strain=np.zeros(m), midpoint=np.zeros((m, 3)), water_velocity=np.zeros((m, 3)),
+            water_acceleration=np.zeros((m, 3)), load_position=np.zeros((nl, 3)), load_velocity=np.zeros((nl, 3)),
+            load_acceleration=np.zeros((nl, 3)), wet=np.ones(m), body_acceleration=np.zeros((nb, 2, 3)),
+            body_velocity=np.zeros((nb, 3)), body_water_acceleration=np.zeros((nb, 3)), body_elevation=np.zeros(nb),
+            normal_force=np.zeros(n), line_tangent=np.zeros((n, 3)), body_position=np.zeros((nb, 3)))
+        if still:                                                     # set once: the uniform current
+            self.work.water_velocity[:], self.work.load_velocity[:] = cu[0], cu[0]
             if nb:
-                self.work[15][:] = cu[0]
+                self.work.body_velocity[:] = cu[0]
         self.events = np.zeros((max(fast.EVENT_BUFFER_MIN, 4 * m), 4))
         self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),

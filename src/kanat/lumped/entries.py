@@ -5,8 +5,9 @@ Python code calls them from here (``entries.element_forces(...)``): each name is
 the arguments match it, numba's kernel otherwise (made on first use, so a run that needs none of
 numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
-The argument specifications below are the layouts the Python side builds (``FusedArrays`` in
-:mod:`kanat.lumped.advance`, ``LumpedSystem`` in :mod:`kanat.lumped.system`); the stepping
+The argument specifications below are the layouts the Python side builds, each group of arrays a
+named record (:func:`kanat.aot.record`) with one builder (``FusedArrays`` in
+:mod:`kanat.lumped.advance`, ``Network.elements`` in :mod:`kanat.lumped.network`); the stepping
 kernels come in one version per combination of the optional 6-DOF bodies and seabed contact
 (None when a network has none, which prunes their code).
 """
@@ -18,7 +19,17 @@ from kanat import aot
 from kanat.aot import B1, BOOL, F1, F2, F3, F4, FLOAT, I1, I2, INT
 
 SAMPLES = (F3, F3, F1)                                   # vessel points' positions, velocities, headings
-NODES = (I1, I1, I1, F2, F2, F1, B1, I2)                 # free, prescribed, ... (kanat.lumped.advance)
+Nodes = aot.record(
+    "Nodes", "kanat.lumped.entries",
+    free=I1,                                # the free nodes (their order is that of the state vector)
+    vessel=I1, anchor=I1,                   # the nodes moved by the vessel, the anchored nodes
+    anchor_position=F2,                     # the anchored nodes' positions [m]
+    force=F2,                               # constant nodal loads (weights, body forces) [N]
+    mass=F1,                                # nodal masses of bodies and points [kg]
+    is_free=B1,                             # per node: free
+    rigid_rows=I2,                          # 6-DOF bodies' two pseudo-nodes: rows among the free nodes
+)
+"""The nodes of a network as the kernels read them, built by :class:`kanat.lumped.advance.FusedArrays`."""
 Elements = aot.record(
     "Elements", "kanat.lumped.entries",
     first_node=I1, second_node=I1,          # element k joins nodes first_node[k] and second_node[k]
@@ -42,26 +53,73 @@ property, filled by :meth:`kanat.lumped.network.Network.elements` and nowhere el
 (theory/lumped.md §2; docs/contributing.md, adding a line property)."""
 RIG = (I1, I1, F3, F3, F3, F3, F3, F2, F2, F2, F2, F2, F2, I1, I1, F2)   # 6-DOF bodies (kanat.lumped.rigid)
 CONTACT = (F2, F2, F1)                                   # seabed: plane, tangents, parameters
-SEABED = (F1, F1, F1, CONTACT)
-SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1, FLOAT, FLOAT)
-ENV = (FLOAT, FLOAT, F1, F2, SEA, BOOL, FLOAT, FLOAT)
-WORK = (F2, F2, F2, F2, F1, F1, F2, F2, F2, F2, F2, F2, F2, F1, F3, F2, F2, F1, F1, F2, F2)
-SNAP = (B1, B1, F1, F1, F1, F1, F1)
+SEABED = (F1, F1, F1, CONTACT)                           # contact areas, seabed, parameters, where laid
+SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1, FLOAT, FLOAT)  # kanat.lumped.advance.sea_arrays
+Environment = aot.record(
+    "Environment", "kanat.lumped.entries",
+    rho=FLOAT, g=FLOAT,                     # water density [kg/m^3], gravity [m/s^2]
+    current_depths=F1, current_velocities=F2,   # the current table: depths z [m], velocities (k, 3) [m/s]
+    sea=SEA,                                # the linear sea's components (kanat.lumped.advance.sea_arrays)
+    still=BOOL,                             # water kinematics constant in space and time
+    elevation_bound=FLOAT,                  # >= the largest surface elevation [m] (0: no waves)
+    current_ramp=FLOAT,                     # the current's ramp-up time [s]
+)
+"""The water as the kernels read it, built by :class:`kanat.lumped.advance.FusedArrays`."""
+Bodies = aot.record(
+    "Bodies", "kanat.lumped.entries",
+    load_node=I1,                           # nodes carrying a 3-DOF body's or point's drag and fluid inertia
+    drag_area=F1,                           # 0.5 rho C_d A per loaded node [kg/m]
+    spreading=F1,                           # otter boards' spreading force coefficient per loaded node
+    fluid_inertia=F1,                       # added mass and Froude-Krylov per loaded node [kg]
+    buoy_node=I1, buoy_area=F1, buoy_height=F1,   # surface buoys: keel node, waterplane area [m^2], height [m]
+    rig=RIG,                                # 6-DOF bodies (kanat.lumped.rigid), or None
+    contact=SEABED,                         # seabed contact (kanat.physics.contact), or None
+)
+"""Bodies, buoys and the seabed as the kernels read them, built by
+:class:`kanat.lumped.advance.FusedArrays`; ``rig`` and ``contact`` are None in a network without
+6-DOF bodies or seabed contact, which prunes their code from the kernels (:data:`BODIES`)."""
+Work = aot.record(
+    "Work", "kanat.lumped.entries",
+    x=F2, v=F2,                             # all nodes' positions [m] and velocities [m/s] (n, 3)
+    force=F2,                               # nodal forces [N] (n, 3)
+    mass=F2,                                # packed symmetric nodal mass blocks xx, yy, zz, xy, xz, yz [kg] (n, 6)
+    tension=F1, strain=F1,                  # element tensions [N], strains (m,)
+    midpoint=F2,                            # element midpoints [m] (m, 3)
+    water_velocity=F2, water_acceleration=F2,   # at element midpoints [m/s], [m/s^2] (m, 3)
+    load_position=F2, load_velocity=F2, load_acceleration=F2,   # water at loaded nodes (nl, 3)
+    wet=F1,                                 # wetted fraction of each element (m,)
+    body_acceleration=F3,                   # 6-DOF bodies' pseudo-nodes' accelerations [m/s^2] (nb, 2, 3)
+    body_velocity=F2, body_water_acceleration=F2,   # water at the bodies' reference points (nb, 3)
+    body_elevation=F1,                      # surface elevation over each body [m] (nb,)
+    normal_force=F1,                        # seabed normal force per node [N] (n,)
+    line_tangent=F2,                        # the line's direction at each node (seabed friction) (n, 3)
+    body_position=F2,                       # the bodies' reference points [m] (nb, 3)
+)
+"""The scratch arrays of the lumped right-hand side, built by :class:`kanat.lumped.advance.FusedArrays`
+(its results are read from them: ``work.tension`` after a call)."""
+Snap = aot.record(
+    "Snap", "kanat.lumped.entries",
+    taut=B1, active=B1,                     # per element: taut now, in an open event
+    start=F1, peak=F1, rate=F1,             # the open events' start [s], peak tension [N], rise rate [N/s]
+    previous_tension=F1,                    # the tensions of the last update [N]
+    previous_time=F1,                       # the time of the last update [s] (1,)
+)
+"""The snap tracker's live arrays, updated in place by :func:`kanat.lumped.fast.snap_update`,
+built by :meth:`kanat.lumped.snap.SnapTracker.kernel_arrays`."""
 register = partial(aot.register, module="_lumped")       # the lumped model's own extension module
-BODIES = tuple((I1, F1, F1, F1, I1, F1, F1, rig, seabed)
-               for rig in (None, RIG) for seabed in (None, SEABED))
+BODIES = tuple(Bodies.narrowed(rig=rig, contact=seabed) for rig in (None, RIG) for seabed in (None, SEABED))
 """The ``bodies`` argument with and without 6-DOF bodies and seabed contact."""
 
 register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
 register("rk4_steps", "kanat.lumped.fast",
-         *((FLOAT, FLOAT, INT, F1, SAMPLES, NODES, Elements, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, F1, SAMPLES, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
          returns=(INT, INT), module="_lumped_explicit")
 register("abm4_steps", "kanat.lumped.fast",
-         *((FLOAT, FLOAT, INT, F1, F2, SAMPLES, NODES, Elements, bodies, ENV, WORK, SNAP, F2) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, F1, F2, SAMPLES, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
          returns=(INT, INT), module="_lumped_explicit")
 register("implicit_steps", "kanat.lumped.fast_implicit",
-         *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, NODES, Elements,
-            bodies, ENV, WORK, (F3,) * 5, F4, F1, B1, F2, SNAP, F2) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, Nodes, Elements,
+            bodies, Environment, Work, (F3,) * 5, F4, F1, B1, F2, Snap, F2) for bodies in BODIES),
          returns=(INT, INT, INT, BOOL), function="steps")
 register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
 register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, Elements, F2, F2, F1, F1),

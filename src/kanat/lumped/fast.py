@@ -163,7 +163,7 @@ def track_states(times, phases, arm, position, velocity, heading):
 def place(y, vpos, vvel, nodes, x, v):
     """All nodes' positions and velocities from ``y = (q, q_dot)`` (flat, free nodes) and the
     prescribed motion (``vpos, vvel`` (k, 3): the vessel nodes')."""
-    free_index, vessel_nodes, anchor_nodes, anchor_pos = nodes[0], nodes[1], nodes[2], nodes[3]
+    free_index, vessel_nodes, anchor_nodes, anchor_pos = nodes.free, nodes.vessel, nodes.anchor, nodes.anchor_position
     nf = free_index.shape[0]
     for k in range(nf):
         for r in range(3):
@@ -207,15 +207,15 @@ def place_rigid(x, v, rig):
 
 @inner
 def seabed_loads(x, v, el_i, el_j, contact, work):
-    """Seabed contact forces into ``work[2]``; nothing (and nothing compiled) when ``contact`` is None."""
+    """Seabed contact forces into ``work.force``; nothing (and nothing compiled) when ``contact`` is None."""
     if contact is not None:
         area, bed, params, laid = contact
-        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work[19], work[2], work[18])
+        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work.line_tangent, work.force, work.normal_force)
 
 
 @inner
 def rigid_loads(t, rig, env, work):
-    """6-DOF body accelerations into ``work[14]`` (rigid.rigid_accelerations), water at their
+    """6-DOF body accelerations into ``work.body_acceleration`` (rigid.rigid_accelerations), water at their
     reference points; nothing (and nothing compiled) when ``rig`` is None."""
     if rig is not None:
         rigid_water_and_loads(t, rig, env, work)
@@ -223,29 +223,33 @@ def rigid_loads(t, rig, env, work):
 
 @inner
 def rigid_water_and_loads(t, rig, env, work):
-    rho, cz, cu, sea = env[0], env[2], env[3], env[4]
-    x, v, F, M, acc, ru, ra, reta, rx = work[0], work[1], work[2], work[3], work[14], work[15], work[16], \
-        work[17], work[20]
+    rho, cz, cu, sea = env.rho, env.current_depths, env.current_velocities, env.sea
+    x, v, F, M, acc = work.x, work.v, work.force, work.mass, work.body_acceleration
+    ru, ra, reta, rx = work.body_velocity, work.body_water_acceleration, work.body_elevation, work.body_position
     ref = rig[0]
     for b in range(ref.shape[0]):
         for r in range(3):
             rx[b, r] = x[ref[b], r]
-        reta[b] = sea_elevation(rx[b, 0], rx[b, 1], t, sea) if env[6] > 0.0 else 0.0
-    water(rx, t, cz, cu, env[7], sea, ru, ra)
+        reta[b] = sea_elevation(rx[b, 0], rx[b, 1], t, sea) if env.elevation_bound > 0.0 else 0.0
+    water(rx, t, cz, cu, env.current_ramp, sea, ru, ra)
     rigid.rigid_accelerations(x, v, F, M, ru, ra, reta, rho, rig, acc)
 
 
 @inner
 def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
-    — system eqs. (1)-(2); seabed contact and 6-DOF bodies included (``bodies[7]``, ``bodies[8]``
+    — system eqs. (1)-(2); seabed contact and 6-DOF bodies included (``bodies.rig``, ``bodies.contact``
     None when a network has neither: their code is then pruned from the compiled kernels)."""
-    node_force, node_mass = nodes[4], nodes[5]
-    x, v, F, M, T, strain, mid, uw, aw = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7], \
-        work[8]
-    bx, bu, ba, wet = work[9], work[10], work[11], work[13]
-    rho, g, cz, cu, sea, still, bound, current_ramp = env
-    body_node, drag_area, spreading, fluid_inertia, buoy_node, buoy_area, buoy_height, rig, contact = bodies
+    node_force, node_mass = nodes.force, nodes.mass
+    x, v, F, M, T, strain = work.x, work.v, work.force, work.mass, work.tension, work.strain
+    mid, uw, aw, wet = work.midpoint, work.water_velocity, work.water_acceleration, work.wet
+    bx, bu, ba = work.load_position, work.load_velocity, work.load_acceleration
+    rho, g, cz, cu, sea = env.rho, env.g, env.current_depths, env.current_velocities, env.sea
+    still, bound, current_ramp = env.still, env.elevation_bound, env.current_ramp
+    body_node, drag_area, spreading, fluid_inertia = bodies.load_node, bodies.drag_area, bodies.spreading, \
+        bodies.fluid_inertia
+    buoy_node, buoy_area, buoy_height = bodies.buoy_node, bodies.buoy_area, bodies.buoy_height
+    rig, contact = bodies.rig, bodies.contact
     place(y, vpos, vvel, nodes, x, v)
     place_rigid(x, v, rig)
     el_i, el_j = el.first_node, el.second_node
@@ -276,12 +280,12 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
 @inner
 def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
     """``dy/dt`` of ``y = (q, q_dot)`` (flat) with the vessel at sample ``s`` — system eq. (1),
-    lumped mass; leaves the element tensions at ``y`` in ``work[4]``."""
-    nf = nodes[0].shape[0]
+    lumped mass; leaves the element tensions at ``y`` in ``work.tension``."""
+    nf = nodes.free.shape[0]
     loads(t, y, samples[0][s], samples[1][s], samples[2][s], nodes, el, bodies, env, work)
     for i in range(3 * nf):
         dy[i] = y[3 * nf + i]
-    M, F, free_index = work[3], work[2], nodes[0]
+    M, F, free_index = work.mass, work.force, nodes.free
     for k in range(nf):
         n = free_index[k]
         xx, yy, zz, xy, xz, yz = M[n, 0], M[n, 1], M[n, 2], M[n, 3], M[n, 4], M[n, 5]
@@ -292,7 +296,7 @@ def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
         dy[3 * nf + 3 * k] = (c00 * b0 + c01 * b1 + c02 * b2) * inv
         dy[3 * nf + 3 * k + 1] = (c01 * b0 + c11 * b1 + c12 * b2) * inv
         dy[3 * nf + 3 * k + 2] = (c02 * b0 + c12 * b1 + c22 * b2) * inv
-    local, acc = nodes[7], work[14]
+    local, acc = nodes.rigid_rows, work.body_acceleration
     for b in range(local.shape[0]):
         for q in range(2):
             for r in range(3):
@@ -310,7 +314,8 @@ def derivative_at(t, y, s, samples, nodes, el, bodies, env, work, dy):
 def snap_update(t, T, snap, events, count):
     """One step of :meth:`kanat.lumped.snap.SnapTracker.update` on its arrays; closed events are
     appended to ``events`` (time, element, peak, rate) from row ``count``; returns the new count."""
-    taut, active, start, peak, rate, prev_T, prev_time = snap
+    taut, active, start, peak, rate = snap.taut, snap.active, snap.start, snap.peak, snap.rate
+    prev_T, prev_time = snap.previous_tension, snap.previous_time
     dt = max(t - prev_time[0], 1e-300)
     for k in range(T.shape[0]):
         r = (T[k] - prev_T[k]) / dt
@@ -334,10 +339,10 @@ def snap_update(t, T, snap, events, count):
 
 @kernel
 def tensions_at(y, s, samples, nodes, el, bodies, work):
-    """Element tensions at ``y`` into ``work[4]`` (vessel at sample ``s``)."""
-    x, v, T = work[0], work[1], work[4]
+    """Element tensions at ``y`` into ``work.tension`` (vessel at sample ``s``)."""
+    x, v, T = work.x, work.v, work.tension
     place(y, samples[0][s], samples[1][s], nodes, x, v)
-    place_rigid(x, v, bodies[7])
+    place_rigid(x, v, bodies.rig)
     kernels.tensions(x, v, el, T)
 
 
@@ -359,7 +364,7 @@ def rk4_steps(t0, h, steps, y, samples, nodes, el, bodies, env, work, snap, even
     (steps done, events)."""
     n = y.shape[0]
     k1, k2, k3, k4, tmp = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-    count, T = np.int64(0), work[4]            # not a literal 0: see kanat.jit
+    count, T = np.int64(0), work.tension       # not a literal 0: see kanat.jit
     for step in range(steps):
         t = t0 + step * h
         derivative(t, y, 2 * step, samples, nodes, el, bodies, env, work, k1)
@@ -391,7 +396,7 @@ def abm4_steps(t0, h, steps, y, history, samples, nodes, el, bodies, env, work, 
     fp, yp = np.empty(n), np.empty(n)
     count = np.int64(0)                       # not a literal 0: see kanat.jit
     for step in range(steps):
-        if count + work[4].shape[0] > events.shape[0]:
+        if count + work.tension.shape[0] > events.shape[0]:
             return step, count
         t1 = t0 + (step + 1) * h
         for i in range(n):
@@ -403,7 +408,7 @@ def abm4_steps(t0, h, steps, y, history, samples, nodes, el, bodies, env, work, 
             for r in range(3, 0, -1):
                 history[r, i] = history[r - 1, i]
         derivative(t1, y, 2 * step + 2, samples, nodes, el, bodies, env, work, history[0])
-        count = snap_update(t1, work[4], snap, events, count)    # the corrector's evaluation is at y
+        count = snap_update(t1, work.tension, snap, events, count)    # the corrector's evaluation is at y
         if not finite(y):
             return step + 1, count
     return steps, count

@@ -147,11 +147,11 @@ def band_substitute(A, bw, b):
 def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c_stiff):
     """The seabed contact's blocks in the band tangent; nothing (nor compiled) when ``contact`` is None."""
     if contact is not None:
-        x, v = work[0], work[1]
-        contact_tangent(x, v, contact[0], contact[1], contact[2], work[18], work[19], Kc, Cc)
+        x, v, normal_force = work.x, work.v, work.normal_force
+        contact_tangent(x, v, contact[0], contact[1], contact[2], normal_force, work.line_tangent, Kc, Cc)
         for f in range(free_index.shape[0]):
             node = free_index[f]
-            if work[18][node] > 0.0:
+            if normal_force[node] > 0.0:
                 band_add(A, bw, position[node], position[node], Kc[node], c_stiff)
                 band_add(A, bw, position[node], position[node], Cc[node], c_damp)
 
@@ -180,7 +180,7 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
     """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
     (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
     :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``."""
-    x, v, M, uw, bu = work[0], work[1], work[3], work[7], work[10]
+    x, v, M, uw, bu = work.x, work.v, work.mass, work.water_velocity, work.load_velocity
     K, C, D, Kc, Cc = blocks
     A[:, :, :, :] = 0.0
     kernels.tangent_blocks(x, v, uw, el, K, C, D)
@@ -194,11 +194,11 @@ def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_da
                 if a == b:                                    # each end's drag on its own velocity
                     band_add(A, bw, a, b, D[k], c_damp)
     bending_tangent(A, bw, position, x, el, c_stiff)
-    free_index = nodes[0]
+    free_index = nodes.free
     for f in range(free_index.shape[0]):
         band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
-    seabed_tangent(A, bw, position, free_index, bodies[8], work, Kc, Cc, c_damp, c_stiff)
-    body_node, drag_area, rho = bodies[0], bodies[1], env[0]
+    seabed_tangent(A, bw, position, free_index, bodies.contact, work, Kc, Cc, c_damp, c_stiff)
+    body_node, drag_area, rho = bodies.load_node, bodies.drag_area, env.rho
     block = np.empty((3, 3))
     for b in range(body_node.shape[0]):
         node = body_node[b]
@@ -267,10 +267,10 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     Optimization, 1983, §6.3, with the simple decrease test)."""
     am, af, gamma, beta = coefficients
     nf = x0.shape[0]
-    free_index = nodes[0]
+    free_index = nodes.free
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
     last = np.empty((nf, 3))                               # the last increment, for the line search
-    F, M = work[2], work[3]
+    F, M = work.force, work.mass
     a1 = out_a                                             # holds the predictor on entry
     tm = t + (1.0 - af) * h
     refresh = tangent[0] != h or tangent[4] >= FACTOR_AGE
@@ -298,7 +298,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
         if not fast.finite(rhs):
             tangent[0] = 0.0
             return -iteration
-        if contact_changed(bodies[8], work[18], in_contact):
+        if contact_changed(bodies.contact, work.normal_force, in_contact):
             refresh = True
         if norm > norm_before and backtracks < LINE_SEARCH_HALVINGS:
             backtracks += 1                                # the residual grew: halve the last increment
@@ -362,7 +362,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     y = np.empty(6 * nf)
     iterations, n_events = 0, np.int64(0)      # not a literal 0: see kanat.jit
     for step in range(count):
-        if n_events + work[4].shape[0] > events.shape[0]:
+        if n_events + work.tension.shape[0] > events.shape[0]:
             return step, iterations, n_events, False
         t = t0 + step * h
         extrapolate = tangent[1] == t and tangent[2] == h        # previous holds a(t - h)
@@ -382,7 +382,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
         tangent[1], tangent[2], tangent[4] = t + h, h, tangent[4] + 1.0
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
-        n_events = fast.snap_update(t0 + (step + 1) * h, work[4], snap, events, n_events)
+        n_events = fast.snap_update(t0 + (step + 1) * h, work.tension, snap, events, n_events)
         if not fast.finite(y):
             return step + 1, iterations, n_events, False
     return count, iterations, n_events, False

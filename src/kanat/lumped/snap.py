@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from kanat.lumped.entries import Snap
+
 EVENT_FIELDS = ("time", "element", "peak_tension", "rise_rate")
 
 
@@ -73,11 +75,12 @@ class SnapTracker:
                 a[f"done_{k}"] = np.concatenate([a[f"done_{k}"], column])
             self._pending, self._pending_rows = [], 0
 
-    def kernel_arrays(self) -> tuple:
-        """The live per-element arrays ``(taut, active, start, peak, rate, prev_tension,
-        prev_time)`` that :func:`kanat.lumped.fast.snap_update` updates in place."""
+    def kernel_arrays(self) -> Snap:
+        """The live per-element arrays as the record :func:`kanat.lumped.fast.snap_update` updates
+        in place (:class:`kanat.lumped.entries.Snap`)."""
         a = self._arrays
-        return tuple(a[k] for k in ("taut", "active", "start", "peak", "rate", "prev_tension", "prev_time"))
+        return Snap(taut=a["taut"], active=a["active"], start=a["start"], peak=a["peak"], rate=a["rate"],
+                    previous_tension=a["prev_tension"], previous_time=a["prev_time"])
 
     def absorb(self, events: np.ndarray) -> None:
         """Record events closed by the compiled update: rows (time, element, peak, rate)."""
