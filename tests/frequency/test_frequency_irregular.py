@@ -18,7 +18,7 @@ import pytest
 import yaml
 
 import kanat
-from kanat.physics.waves import sea_from_model
+from kanat.physics.waves import JONSWAP_BAND, sea_from_model
 
 from helpers import quiet
 
@@ -92,7 +92,8 @@ def test_the_spectral_run_keeps_the_seas_variance_and_rao_motion(tmp_path):
         warnings.simplefilter("ignore")
         ds = kanat.solve_frequency(irregular(tmp_path, "polyester", 2.0, "frequency", segments=4))
     w = ds.frequency.values
-    width = w[1] - w[0]
+    width = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * np.pi / 8.0 / len(w)   # each component's band (Tp 8 s)
+    assert np.all(np.diff(w) > 0) and w[0] > JONSWAP_BAND[0] * 2.0 * np.pi / 8.0
     assert 4.0 * np.sqrt(ds.wave_spectrum.sum() * width) == pytest.approx(2.0, rel=1e-9)
     fairlead = int(np.argmax(ds.s.values))
     surge = 0.3 / (1 + (w / 0.6) ** 2)

@@ -168,3 +168,19 @@ def test_raos_on_a_moving_vessel_are_refused(tmp_path):
     track = "  track: [{straight: {speed: 2.0, duration: 10.0}}]"
     with pytest.raises(CaseError, match="zero forward speed"):
         load_case(write_case(tmp_path, case_yaml("{rao: raos.csv}", track=track)))
+
+
+def test_a_sea_along_a_table_heading_takes_that_headings_raos_whatever_the_gaps():
+    """RAOs given at 0 and 90 deg only (a 270 deg gap beyond 90): a sea travelling at exactly
+    90 deg takes the 90 deg column (it was refused: the gap past the last heading was chosen);
+    one at 45 deg interpolates halfway; one at 180 deg, inside the gap, is still refused."""
+    from kanat.errors import KanatError
+    from kanat.physics.rao import _along_heading
+
+    values = np.array([[1.0, 3.0], [2.0, 6.0]])                # (frequencies, headings)
+    headings = np.array([0.0, 90.0])
+    np.testing.assert_array_equal(_along_heading(headings, values, 90.0, "surge"), [3.0, 6.0])
+    np.testing.assert_array_equal(_along_heading(headings, values, 360.0, "surge"), [1.0, 2.0])
+    np.testing.assert_allclose(_along_heading(headings, values, 45.0, "surge"), [2.0, 4.0], rtol=1e-15)
+    with pytest.raises(KanatError, match="270 deg gap"):
+        _along_heading(headings, values, 180.0, "surge")

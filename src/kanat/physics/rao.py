@@ -54,6 +54,9 @@ def _along_heading(headings, values, beta_deg, dof):
             raise KanatError(f"the {dof} RAOs are given for one heading ({headings[0]:g} deg) and the "
                              f"waves travel at {beta_deg:g} deg: give the RAOs at that heading")
         return values[:, 0]
+    on = np.flatnonzero(np.abs((headings - beta + 180.0) % 360.0 - 180.0) <= 1e-9)
+    if len(on):                                  # a heading of the table: its own column, whatever the gaps
+        return values[:, on[0]]
     ring = np.concatenate([headings, [headings[0] + 360.0]])
     cols = np.concatenate([values, values[:, :1]], axis=1)
     if beta < ring[0]:
