@@ -7,8 +7,9 @@ The joint distribution is the Weibull-lognormal model of DNV-RP-C205 (2010) sect
   ``sigma(h) = b0 + b1 exp(b2 h)``.
 
 The parameters are the Northern North Sea fit quoted in DNV-RP-C205 (after Haver and Nyhus,
-1986). The heading is uniform over ``headings`` equally spaced directions from 0 to 90 deg (the
-span of the RAO table of ``examples/design/raos.csv``; one heading is 0 deg).
+1986). The heading is uniform over ``headings`` directions ``90 k / headings`` deg (0, 22.5, 45, 67.5
+for 4), inside the span of the RAO table of ``examples/design/raos.csv`` (0 and 90 deg; the time
+domain's RAO interpolation refuses a heading of exactly 90 deg there).
 
 The grid: ``n_hs`` Hs classes of equal width from ``gamma`` to the Hs exceeded with probability
 ``HS_TOP_EXCEEDANCE`` (the last class open above), each represented by the Hs at its middle
@@ -88,7 +89,7 @@ def scatter_diagram(sea_states: int = 100, model: WeibullLognormal = WeibullLogn
         for j in range(n_tp):
             tp = math.exp(mu + sigma * norm.ppf((j + 0.5) / n_tp))
             for h in range(headings):
-                cells.append(SeaStateCell(hs, tp, 90.0 * h / max(headings - 1, 1),
+                cells.append(SeaStateCell(hs, tp, 90.0 * h / headings,
                                           float(p_edges[k + 1] - p_edges[k]) / (n_tp * headings)))
     return cells
 
