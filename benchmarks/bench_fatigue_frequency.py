@@ -128,8 +128,16 @@ def main() -> None:
     args = parser.parse_args()
     cells = scatter_diagram(args.sea_states)
     picked = np.unique(np.linspace(0, len(cells) - 1, args.time_sea_states).round().astype(int))
+    if args.keep is not None:
+        assess(args, cells, picked, args.keep)
+        return
+    with tempfile.TemporaryDirectory(prefix="kanat-bench-fatigue-") as scratch:
+        assess(args, cells, picked, Path(scratch))
+
+
+def assess(args: argparse.Namespace, cells: list, picked: np.ndarray, scratch: Path) -> None:
+    """Run the three design processes in ``scratch`` and print the tables."""
     subset = [cells[k] for k in picked]
-    scratch = args.keep or Path(tempfile.mkdtemp(prefix="kanat-bench-fatigue-"))
     full = run_design(write_case(scratch / "frequency", "frequency", cells, STORM, 1, args.ramp),
                       scratch / "frequency" / "out")
     part = run_design(write_case(scratch / "frequency_subset", "frequency", subset, STORM, 1, args.ramp),
