@@ -6,8 +6,9 @@ The joint distribution is the Weibull-lognormal model of DNV-RP-C205 (2010) sect
 * ln Tp given Hs = h is normal with mean ``mu(h) = a0 + a1 h**a2`` and standard deviation
   ``sigma(h) = b0 + b1 exp(b2 h)``.
 
-The parameters are the Northern North Sea fit quoted in DNV-RP-C205 (after Haver and Nyhus,
-1986). The heading is uniform over ``headings`` directions ``90 k / headings`` deg (0, 22.5, 45, 67.5
+The default parameters are the Northern North Sea set commonly quoted with this model (after
+Haver and Nyhus, 1986); they were not checked against a copy of the standard here, and any site's
+fit can be passed as a :class:`WeibullLognormal`. The heading is uniform over ``headings`` directions ``90 k / headings`` deg (0, 22.5, 45, 67.5
 for 4), inside the span of the RAO table of ``examples/design/raos.csv`` (0 and 90 deg; the time
 domain's RAO interpolation refuses a heading of exactly 90 deg there).
 
