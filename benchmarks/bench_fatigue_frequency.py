@@ -1,0 +1,174 @@
+"""Fatigue assessment over a scatter diagram: frequency domain against time domain (issue 26).
+
+The mooring is ``examples/design/quasi_static.yaml`` (a vessel on three 620 m legs of 76 mm
+studless R3 chain in 120 m of water, fairleads moved by the displacement RAOs of ``raos.csv``),
+checked intact with fatigue on API's studless chain T-N curve. The sea states are a scatter
+diagram of ``--sea-states`` cells written from the DNV-RP-C205 Weibull-lognormal Hs-Tp model
+(``fatigue_scatter.py``: Hs x Tp x heading classes with their probabilities, summing to 1).
+
+Each analysis runs as a user runs it, ``kanat design CASE -o DIR --scheduler serial`` in a fresh
+process (whole-process wall and CPU time, the load average before it):
+
+1. ``design.analysis: frequency`` over all ``--sea-states`` cells (the assessment);
+2. ``design.analysis: frequency`` over the ``--time-sea-states`` cells the time domain runs
+   (evenly spread through the diagram), to put the two domains' lives side by side;
+3. ``design.analysis: dynamic`` over the same cells, ``--seeds`` seeds of ``--duration`` s each
+   (a signed assessment runs 3-hour storms, 10,800 s), rainflow-counted.
+
+The time domain's cost per sea state (per simulated second) is measured on the subset and
+extrapolated, **as an extrapolation**, to ``--sea-states`` x 10,800 s x ``--seeds``; the ratio
+is that extrapolation over the frequency domain's measured wall time. Fatigue lives per line
+(the shortest along the line) are printed side by side for the subset, and with several seeds
+the time domain's own spread over seeds (each seed's record alone, same weights).
+
+Run small on a loaded machine, e.g. ``--sea-states 10 --time-sea-states 3 --duration 1800``;
+the full one is ``--sea-states 100 --time-sea-states 100 --duration 10800 --seeds 3`` (hours).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import yaml
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fatigue_scatter import scatter_diagram, sea_state_table  # noqa: E402
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "design" / "quasi_static.yaml"
+STORM = 10800.0     # s: a signed assessment's storm length
+
+
+def write_case(folder: Path, analysis: str, cells, duration: float, seeds: int, ramp: float) -> Path:
+    """The example, intact only with fatigue, in ``analysis``, over ``cells``, in ``folder``."""
+    folder.mkdir(parents=True, exist_ok=True)
+    data = yaml.safe_load(EXAMPLE.read_text())
+    data["design"] = {"standard": "api-rp-2sk", "analysis": analysis, "sea_states": "sea_states.csv",
+                      "storm_duration": STORM, "conditions": ["intact"], "extremes": "rayleigh",
+                      "fatigue": {"curve": "api-chain-studless", "design_life": 25}}
+    if analysis == "dynamic":
+        data["design"]["seeds"] = seeds
+        data["environment"]["waves"].update(seed=1, ramp=ramp)
+    (folder / "sea_states.csv").write_text(sea_state_table(cells, duration))
+    shutil.copy(EXAMPLE.parent / "raos.csv", folder / "raos.csv")
+    path = folder / "case.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    return path
+
+
+def kanat_command() -> list[str]:
+    """The installed ``kanat`` script (as a user runs it), else ``python -m kanat``."""
+    script = shutil.which("kanat") or str(Path(sys.executable).with_name("kanat"))
+    return [script] if Path(script).exists() else [sys.executable, "-m", "kanat"]
+
+
+def run_design(case: Path, out: Path) -> dict:
+    """One ``kanat design`` process: wall and CPU time, load before, its fatigue table."""
+    command = kanat_command() + ["design", str(case), "-o", str(out), "--scheduler", "serial"]
+    load = os.getloadavg()[0]
+    before = os.times()
+    start = time.perf_counter()
+    done = subprocess.run(command, capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    after = os.times()
+    if done.returncode not in (0, 1) or not (out / "fatigue.csv").exists():   # 1: a check fails
+        raise RuntimeError(f"{' '.join(command)} failed:\n{done.stdout}\n{done.stderr}")
+    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+    return {"wall": wall, "cpu": cpu, "load": load, "fatigue": pd.read_csv(out / "fatigue.csv"),
+            "stdout": done.stdout.strip().splitlines()[-1:]}
+
+
+def line_lives(fatigue: pd.DataFrame) -> pd.Series:
+    """Shortest fatigue life along each line [years]."""
+    return fatigue.groupby("line")["life_years"].min()
+
+
+def seed_lives(out: Path, case: Path, seeds: int) -> pd.DataFrame:
+    """Each seed's lives per line, from the kept runs, as the design weights them."""
+    import kanat
+    from kanat.design_checks import records
+    from kanat.design_checks.check import annual_damage
+    from kanat.design_checks.conditions import sea_state_case, wave_seed
+
+    loaded = kanat.load_case(case)
+    found = {}
+    for k in range(seeds):
+        total: dict[str, float] = {}
+        for sea_state in loaded.design.sea_state_rows:
+            run = kanat.read_result(out / "runs" / "intact" / f"{sea_state.name}_seed{k}.nc").load()
+            run = records.analysed(run, sea_state_case(loaded, sea_state, wave_seed(loaded, k)))
+            for line, damage in annual_damage(loaded, sea_state, [run]).items():
+                total[line] = total.get(line, np.zeros_like(damage)) + damage
+        found[f"seed {k}"] = {line: 1.0 / float(np.max(d)) for line, d in total.items()}
+    return pd.DataFrame(found)
+
+
+def markdown(table: pd.DataFrame) -> str:
+    """``table`` as a markdown table, numbers to 4 significant digits."""
+    rows = ["| line | " + " | ".join(table.columns) + " |", "|---" * (len(table.columns) + 1) + "|"]
+    rows += [f"| {index} | " + " | ".join(f"{v:.4g}" for v in row) + " |" for index, row in table.iterrows()]
+    return "\n".join(rows)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sea-states", type=int, default=100, help="cells of the scatter diagram")
+    parser.add_argument("--time-sea-states", type=int, default=3, help="cells the time domain runs")
+    parser.add_argument("--duration", type=float, default=1800.0, help="simulated s per time-domain run")
+    parser.add_argument("--seeds", type=int, default=1)
+    parser.add_argument("--ramp", type=float, default=60.0, help="s: waves ramped in (time domain)")
+    parser.add_argument("--keep", type=Path, help="keep the cases and outputs in this folder")
+    args = parser.parse_args()
+    cells = scatter_diagram(args.sea_states)
+    picked = np.unique(np.linspace(0, len(cells) - 1, args.time_sea_states).round().astype(int))
+    if args.keep is not None:
+        assess(args, cells, picked, args.keep)
+        return
+    with tempfile.TemporaryDirectory(prefix="kanat-bench-fatigue-") as scratch:
+        assess(args, cells, picked, Path(scratch))
+
+
+def assess(args: argparse.Namespace, cells: list, picked: np.ndarray, scratch: Path) -> None:
+    """Run the three design processes in ``scratch`` and print the tables."""
+    subset = [cells[k] for k in picked]
+    full = run_design(write_case(scratch / "frequency", "frequency", cells, STORM, 1, args.ramp),
+                      scratch / "frequency" / "out")
+    part = run_design(write_case(scratch / "frequency_subset", "frequency", subset, STORM, 1, args.ramp),
+                      scratch / "frequency_subset" / "out")
+    dyn_case = write_case(scratch / "dynamic", "dynamic", subset, args.duration, args.seeds, args.ramp)
+    dyn = run_design(dyn_case, scratch / "dynamic" / "out")
+    per_second = dyn["wall"] / (len(subset) * args.seeds * args.duration)
+    extrapolated = per_second * args.sea_states * STORM * args.seeds
+    print(f"scatter diagram: {args.sea_states} cells (DNV-RP-C205 Weibull-lognormal), probability sum "
+          f"{sum(c.probability for c in cells):.12f}; time domain on cells {picked.tolist()}, "
+          f"{args.seeds} seed(s) x {args.duration:g} s; {os.cpu_count()} cores\n")
+    print("| analysis, whole process | sea states | wall [s] | CPU [s] | per sea state [s] | load before |"
+          "\n|---|---|---|---|---|---|")
+    for name, r, n in (("frequency, all cells", full, args.sea_states), ("frequency, subset", part, len(subset)),
+                       (f"dynamic, {args.seeds} seed(s) x {args.duration:g} s", dyn, len(subset))):
+        print(f"| {name} | {n} | {r['wall']:.1f} | {r['cpu']:.1f} | {r['wall'] / n:.2f} | {r['load']:.2f} |")
+    print(f"\ntime domain: {per_second * 3600:.0f} s wall per simulated hour per seed (measured); "
+          f"EXTRAPOLATED full assessment ({args.sea_states} x {STORM:g} s x {args.seeds} seed(s)): "
+          f"{extrapolated:.0f} s = {extrapolated / 3600:.1f} h; ratio to the frequency domain's "
+          f"{full['wall']:.1f} s: {extrapolated / full['wall']:.0f}x (extrapolated)\n")
+    lives = pd.DataFrame({"frequency (Dirlik)": line_lives(part["fatigue"]),
+                          "time domain (rainflow)": line_lives(dyn["fatigue"])})
+    lives["time / frequency"] = lives.iloc[:, 1] / lives.iloc[:, 0]
+    if args.seeds > 1:
+        lives = lives.join(seed_lives(scratch / "dynamic" / "out", dyn_case, args.seeds))
+    print(f"fatigue lives [years] on the {len(subset)}-cell subset (weights as in the diagram):\n")
+    print(markdown(lives))
+    print(f"\nfrequency domain, all {args.sea_states} cells: "
+          + ", ".join(f"{k} {v:.4g} y" for k, v in line_lives(full["fatigue"]).items()))
+    print(f"load average after: {os.getloadavg()[0]:.2f}")
+
+
+if __name__ == "__main__":
+    main()
