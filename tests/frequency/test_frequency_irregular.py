@@ -102,6 +102,7 @@ def test_the_spectral_run_keeps_the_seas_variance_and_rao_motion(tmp_path):
     assert ds.attrs["excitation"] == "spectral" and ds.attrs["status"] == "ok"
 
 
+@pytest.mark.long
 @pytest.mark.slow
 @pytest.mark.parametrize("line", ["chain", "polyester"])
 def test_tension_std_against_time_domain_runs(tmp_path, line):
@@ -113,6 +114,7 @@ def test_tension_std_against_time_domain_runs(tmp_path, line):
         np.testing.assert_allclose(spectral, np.sqrt(np.mean(pairs[:, 0] ** 2, axis=0)), rtol=0.10)
 
 
+@pytest.mark.long
 @pytest.mark.slow
 def test_the_error_grows_with_the_sea_state(tmp_path):
     """The chain at Hs 1 m and 8 m: the frequency domain's largest same-window error over the nodes
@@ -125,6 +127,7 @@ def test_the_error_grows_with_the_sea_state(tmp_path):
     assert np.max(errors[1]) > 2.0 * np.max(errors[0])
 
 
+@pytest.mark.long
 @pytest.mark.slow
 def test_polyester_spectral_std_against_long_time_domain_runs(tmp_path):
     """Hs 1 m, two seeds of 1060 s: the spectral ``tension_std`` within 10 % of the seeds' pooled

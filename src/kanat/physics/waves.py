@@ -58,7 +58,7 @@ from kanat.physics.ramp import ramp_factor
 STRETCHINGS = ("none", "wheeler")
 """Ways of taking the kinematics up to the instantaneous surface (module docstring, eq. 7)."""
 
-JONSWAP_COMPONENTS = 200      # components of an irregular sea: 200 repeat after > 1 h at Tp 8 s
+JONSWAP_COMPONENTS = 200      # components of an irregular sea: equally spaced, their groups repeat every 200 Tp / 3.5 (457 s at Tp 8 s)
 JONSWAP_BAND = (0.5, 4.0)     # frequency band in multiples of the peak frequency (holds > 99.5 % of m0)
 SIGMA_LOW, SIGMA_HIGH = 0.07, 0.09   # JONSWAP peak widths below and above wp
 DEEP_KH = 20.0                # k h beyond which tanh(k h) = 1 to 1e-17
