@@ -56,7 +56,8 @@ def _body_curves(curves: list) -> dict:
     """The variables of each body's own curve, stacked along ``body``."""
     return {
         "body_restoring_force": (("body", "offset", "xyz"), np.array([c.force for c in curves], dtype=float),
-                                 {"units": "N", "long_name": "force of the lines on each body, that body alone offset"}),
+                                 {"units": "N",
+                                  "long_name": "force of the lines on each body, that body alone offset"}),
         "body_restoring_moment": (("body", "offset", "xyz"), np.array([c.moment for c in curves], dtype=float),
                                   {"units": "N m", "long_name": "moment of the lines' force about each body's moved "
                                    "reference point, that body alone offset"}),
