@@ -96,6 +96,7 @@ def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
             output: Path = typer.Option(..., "-o", "--output", help="Result file: netCDF, or CSV for a .csv name."),
             each_body: bool = typer.Option(True, "--each-body/--system-only",
                                            help="With several coupled bodies, also move each alone, the others held."),
+            plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the curves to this PNG."),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Restoring force and every line's end tensions against the vessel's offset, written to OUTPUT;
     with several coupled bodies, also each body's own curve, that body moved alone."""
@@ -112,6 +113,11 @@ def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
     for one in (curve, *bodies.values()):
         _show_offset_curve(one, direction)
     show(f"wrote {output}")
+    if plot is not None:
+        from kanat.report.offsets_plot import plot_offsets
+
+        plot_offsets(table.to_dataset(), plot)
+        show(f"wrote {plot}")
 
 
 def _show_offset_curve(curve, direction: float) -> None:

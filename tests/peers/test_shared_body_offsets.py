@@ -153,9 +153,10 @@ def test_the_command_writes_each_body_or_the_system_only(tmp_path, curves):
 
     runner = CliRunner()
     args = ["offsets", str(FILE), "--direction", str(DIRECTION), "--to", str(TO), "--steps", str(STEPS)]
-    done = runner.invoke(app, [*args, "-o", str(tmp_path / "curve.csv")])
+    done = runner.invoke(app, [*args, "-o", str(tmp_path / "curve.csv"), "--plot", str(tmp_path / "curve.png")])
     assert done.exit_code == 0, done.output
     assert "body2 alone, the other bodies held" in done.output
+    assert (tmp_path / "curve.png").stat().st_size > 20_000
     rows = np.genfromtxt(tmp_path / "curve.csv", delimiter=",", names=True)
     np.testing.assert_allclose(rows["body2_restoring_force_x"],
                                curves.body_restoring_force.sel(body="body2", xyz="x").values)
@@ -167,3 +168,28 @@ def test_the_command_writes_each_body_or_the_system_only(tmp_path, curves):
     assert not any(name.startswith("body") for name in head)
     np.testing.assert_allclose(np.genfromtxt(tmp_path / "system.csv", delimiter=",", names=True)["restoring_force_y"],
                                curves.restoring_force.sel(xyz="y").values)
+
+
+def test_the_picture_draws_the_system_and_each_body(curves, tmp_path):
+    """What was drawn, read back from the figure: each curve's force along the direction and its largest
+    tension, against the dataset's vectors projected by hand."""
+    from kanat.report.run_plot import plot_run
+
+    fig = plot_run(curves, tmp_path / "curve.png")
+    assert (tmp_path / "curve.png").stat().st_size > 20_000
+    force_ax, tension_ax = fig.axes
+    drawn = {line.get_gid(): line for ax in fig.axes for line in ax.get_lines() if line.get_gid()}
+    assert set(drawn) == {f"{what}/{name}" for what in ("force", "tension") for name in ("system", *BODIES)}
+    unit = _unit()[:2]
+    expected = {"system": (curves.restoring_force.values[:, :2] @ unit, curves.end_tension.values)}
+    for name in BODIES:
+        own = curves.sel(body=name)
+        expected[name] = (own.body_restoring_force.values[:, :2] @ unit, own.body_end_tension.values)
+    for name, (force, tension) in expected.items():
+        np.testing.assert_allclose(drawn[f"force/{name}"].get_xdata(), curves.offset.values)
+        np.testing.assert_allclose(drawn[f"force/{name}"].get_ydata(), force / 1e3, rtol=1e-12)
+        np.testing.assert_allclose(drawn[f"tension/{name}"].get_ydata(), tension.max(axis=(1, 2)) / 1e3, rtol=1e-12)
+    legend = [t.get_text() for t in force_ax.get_legend().get_texts()]
+    assert legend == ["all moved together", "body1 alone, the others held", "body2 alone, the others held"]
+    assert force_ax.get_xlabel() == f"offset along {DIRECTION:g} deg [m]"
+    assert tension_ax.get_ylabel() == "largest end tension [kN]"
