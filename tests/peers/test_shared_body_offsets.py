@@ -193,3 +193,29 @@ def test_the_picture_draws_the_system_and_each_body(curves, tmp_path):
     assert legend == ["all moved together", "body1 alone, the others held", "body2 alone, the others held"]
     assert force_ax.get_xlabel() == f"offset along {DIRECTION:g} deg [m]"
     assert tension_ax.get_ylabel() == "largest end tension [kN]"
+
+
+def test_the_report_draws_the_system_and_each_body(curves, tmp_path):
+    """The HTML report of the offsets file: one trace per curve, its force along the direction read back."""
+    import base64
+    import json
+    import re
+
+    from kanat.report.html_report import write_report
+
+    path = tmp_path / "curve.nc"
+    curves.to_netcdf(path)
+    html = write_report(path, tmp_path / "curve.html").read_text()
+    figures = json.loads(re.search(r'<script type="application/json" id="kanat-figures">(.*?)</script>', html,
+                                   re.S).group(1))
+    traces = figures["plot-offsets"]["data"]
+    assert [t["name"] for t in traces] == ["all moved together", "body1 alone, the others held",
+                                          "body2 alone, the others held"]
+
+    def values(array):
+        return np.frombuffer(base64.b64decode(array["bdata"]), array["dtype"]) if isinstance(array, dict) else array
+
+    unit = _unit()[:2]
+    np.testing.assert_allclose(values(traces[0]["y"]), curves.restoring_force.values[:, :2] @ unit / 1e3, rtol=1e-12)
+    np.testing.assert_allclose(values(traces[2]["y"]),
+                               curves.body_restoring_force.sel(body="body2").values[:, :2] @ unit / 1e3, rtol=1e-12)

@@ -19,7 +19,7 @@ from matplotlib.figure import Figure
 
 from kanat.report.geometry import KN
 
-__all__ = ["along", "plot_offsets"]
+__all__ = ["along", "offset_curves", "plot_offsets"]
 
 DPI = 120
 SYSTEM = "system"
@@ -31,8 +31,9 @@ def along(force: np.ndarray, direction_deg: float) -> np.ndarray:
     return force[..., 0] * math.cos(theta) + force[..., 1] * math.sin(theta)
 
 
-def _curves(ds) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    """``label -> (force along the direction, largest end tension)``, each shape (offsets,) [N]."""
+def offset_curves(ds) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """What the picture draws: ``name -> (force along the direction, largest end tension)``, each
+    shape (offsets,) [N]; ``system`` first, then each body of ``body_restoring_force``."""
     direction = float(ds.attrs.get("direction_deg", 0.0))
     found = {SYSTEM: (along(ds["restoring_force"].values, direction),
                       ds["end_tension"].values.reshape(ds.sizes["offset"], -1).max(axis=1))}
@@ -60,7 +61,7 @@ def plot_offsets(ds, path=None) -> Figure:
     offset = ds["offset"].values
     fig = Figure(figsize=(12, 4.8), layout="constrained")
     force_ax, tension_ax = fig.subplots(1, 2)
-    for k, (name, (force, tension)) in enumerate(_curves(ds).items()):
+    for k, (name, (force, tension)) in enumerate(offset_curves(ds).items()):
         label = "all moved together" if name == SYSTEM else f"{name} alone, the others held"
         style = {"color": f"C{k}", "lw": 2.2 if name == SYSTEM else 1.6, "ls": "-" if name == SYSTEM else "--",
                  "marker": "o", "ms": 3, "label": label}
