@@ -127,6 +127,8 @@ def _collocate_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -
                                    (y_far[0:2] * scale[0:2] - target) / length])
         return solve_bvp(fun, bc, mesh, y0, p=p0, tol=TOL, max_nodes=MAX_NODES)
 
+    if guess is None:                                   # no grounded catenary: as shooting starts
+        guess = (*straight_guess(problem), 0.01 * length)
     s_guess, y_guess, grounded_guess = guess
     sigma = np.linspace(0.0, 1.0, 101)
     s_suspended = s_of(sigma, grounded_guess)
