@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from kanat.io.results import read_result
-from helpers import run
+from helpers import run, scatter_of_mean_square
 from kanat.model import Case
 from kanat.physics.waves import sea_from_model
 from kanat.statics import solve_cable
@@ -173,18 +173,6 @@ def test_a_dropped_buoy_flies_ballistically_then_bounces_on_its_waterplane(tmp_p
 # --- irregular sea -------------------------------------------------------------------------------
 def jonswap_waves(seed, hs=2.0, tp=4.0):
     return {"type": "jonswap", "hs": hs, "tp": tp, "gamma": 3.3, "heading_deg": 0.0, "seed": seed}
-
-
-def scatter_of_mean_square(b, omega, t):
-    """Standard deviation of the record mean of ``(sum b cos(w t - phi))^2`` over the times
-    ``t`` when the phases ``phi`` are independent and uniform: each product of components
-    averages to ``b_j b_k / 2`` times the record mean of ``cos(W t - psi)``, ``W = w_j +- w_k``,
-    whose variance is ``|mean exp(i W t)|^2 / 2``; different products are uncorrelated."""
-    power = lambda w: np.abs(np.mean(np.exp(1j * np.multiply.outer(w, t)), axis=-1)) ** 2  # noqa: E731
-    var = np.sum((b**2 / 2) ** 2 * 0.5 * power(2 * omega))
-    j, k = np.triu_indices(len(b), 1)
-    var += np.sum((b[j] * b[k]) ** 2 * 0.5 * (power(omega[j] - omega[k]) + power(omega[j] + omega[k])))
-    return math.sqrt(var)
 
 
 @pytest.mark.slow
