@@ -104,6 +104,9 @@ def test_the_spectral_run_keeps_the_seas_variance_and_rao_motion(tmp_path):
     assert np.all(np.diff(w) > 0) and w[0] > JONSWAP_BAND[0] * 2.0 * np.pi / 8.0
     assert np.ptp(np.diff(w)) > 0.5 * width                     # the gaps are not the bins' width
     assert 4.0 * np.sqrt(ds.wave_spectrum.sum() * width) == pytest.approx(2.0, rel=1e-9)
+    np.testing.assert_allclose(ds.frequency_width.values, width, rtol=1e-12)
+    np.testing.assert_allclose(ds.tension_std.values ** 2, ds.frequency_width.values @ ds.tension_spectrum.values,
+                               rtol=1e-12)
     fairlead = int(np.argmax(ds.s.values))
     surge = 0.3 / (1 + (w / 0.6) ** 2)
     np.testing.assert_allclose(ds.motion_spectrum.values[:, fairlead, 0], surge**2 * ds.wave_spectrum.values,
