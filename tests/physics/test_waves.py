@@ -141,10 +141,10 @@ def test_drawn_frequencies_sample_the_spectrum_without_bias():
     hs, tp, gamma = 3.0, 8.0, 3.3
     edges = bin_edges(tp)
     d_omega = edges[1] - edges[0]
-    integral = sum(quad(lambda w: jonswap_spectrum(w, hs, tp, gamma), a, b)[0] for a, b in zip(edges[:-1], edges[1:]))
-    square = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma) ** 2, a, b)[0] for a, b in zip(edges[:-1], edges[1:])])
-    each = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma), a, b)[0] for a, b in zip(edges[:-1], edges[1:])])
-    sigma = math.sqrt(np.sum(d_omega * square - each**2))
+    bins = list(zip(edges[:-1], edges[1:]))
+    each = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma), a, b)[0] for a, b in bins])
+    square = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma) ** 2, a, b)[0] for a, b in bins])
+    integral, sigma = each.sum(), math.sqrt(np.sum(d_omega * square - each**2))
     estimates = []
     for seed in range(40):
         sea = jonswap_sea(hs, tp, gamma, seed=seed)

@@ -61,7 +61,8 @@ from kanat.physics.ramp import ramp_factor
 STRETCHINGS = ("none", "wheeler")
 """Ways of taking the kinematics up to the instantaneous surface (module docstring, eq. 7)."""
 
-JONSWAP_COMPONENTS = 200      # components of an irregular sea, one per equal bin at a random frequency in it (never repeats)
+JONSWAP_COMPONENTS = 200      # components of an irregular sea, one per equal bin at a frequency drawn in it
+                              # (at the bins' centres the sea would repeat every 200 Tp / 3.5 s: jonswap_sea)
 JONSWAP_BAND = (0.5, 4.0)     # frequency band in multiples of the peak frequency (holds > 99.5 % of m0)
 SIGMA_LOW, SIGMA_HIGH = 0.07, 0.09   # JONSWAP peak widths below and above wp
 DEEP_KH = 20.0                # k h beyond which tanh(k h) = 1 to 1e-17
