@@ -4,6 +4,7 @@ Test modules import from here, never from each other. The test modules sit one f
 area (tests/README.md); ``pythonpath = ["tests"]`` in pyproject.toml's pytest options puts this
 folder on ``sys.path`` so that ``from helpers import ...`` works from any of them.
 """
+import math
 import os
 import re
 import signal
@@ -208,3 +209,26 @@ def zero_crossing_period(t, signal) -> float:
     idx = np.nonzero(sign[1:] != sign[:-1])[0]
     times = t[idx] - signal[idx] * (t[idx + 1] - t[idx]) / (signal[idx + 1] - signal[idx])
     return 2.0 * np.mean(np.diff(times))
+
+
+def scatter_of_mean_square(b, omega, t):
+    """Standard deviation of the record mean of ``(sum b cos(w t - phi))^2`` over the equally
+    spaced times ``t`` when the phases ``phi`` are independent and uniform: each product of
+    components averages to ``b_j b_k / 2`` times the record mean of ``cos(W t - psi)``,
+    ``W = w_j +- w_k``, whose variance is ``|mean exp(i W t)|^2 / 2``; different products are
+    uncorrelated. Over ``N`` samples ``dt`` apart ``|mean exp(i W t)| = |sin(N W dt / 2) /
+    (N sin(W dt / 2))|`` (Dirichlet's kernel), whatever the spacing of the frequencies."""
+    t = np.asarray(t, float)
+    dt, count = (t[-1] - t[0]) / (len(t) - 1), len(t)
+    np.testing.assert_allclose(np.diff(t), dt, rtol=1e-6, atol=1e-9)
+
+    def power(w):
+        half = 0.5 * np.asarray(w) * dt
+        den = count * np.sin(half)
+        tiny = np.abs(den) < 1e-12
+        return np.where(tiny, 1.0, np.sin(count * half) / np.where(tiny, 1.0, den)) ** 2
+
+    var = np.sum((b**2 / 2) ** 2 * 0.5 * power(2 * omega))
+    j, k = np.triu_indices(len(b), 1)
+    var += np.sum((b[j] * b[k]) ** 2 * 0.5 * (power(omega[j] - omega[k]) + power(omega[j] + omega[k])))
+    return math.sqrt(var)
