@@ -178,6 +178,46 @@ def jonswap_waves(seed, hs=2.0, tp=4.0, ramp=0.0):
 RIDER_RAMP = 20.0      # s of the waves' ramp: the buoy starts at rest in still water, on its forced response
 
 
+@pytest.mark.parametrize("keel, flies", [(1.5, False), (2.5, True)], ids=["dropped-in", "thrown-clear"])
+def test_a_surface_buoy_thrown_clear_of_the_water_fails(keel, flies, tmp_path):
+    """A surface buoy's keel more than its height (2 m) above the water is outside its waterplane
+    model: refused at once, the height named; dropped from 1.5 m it falls in, its keel reaching the
+    water at ``sqrt(2 h / g)`` (free fall, no buoyancy and no drag in the air)."""
+    case = buoy_case(200.0, 20.0, keel, duration=1.0, dt=0.001, height=2.0, output_dt=0.01)
+    summary = run(case, tmp_path / "drop.nc")
+    if flies:
+        assert summary.status.startswith("failed: surface buoy 'buoy''s keel is 2.5 m above the water surface at t = 0 s")
+        return
+    assert summary.status == "ok"
+    ds = read_result(tmp_path / "drop.nc")
+    z = ds["body_position"].values[:, 0, 2]
+    t = ds["time"].values
+    wet = int(np.argmax(z <= 0.0))
+    assert t[wet - 1] < math.sqrt(2 * keel / G) <= t[wet]
+
+
+@pytest.mark.slow
+def test_a_wave_rider_started_off_its_forced_heave_bounces_clear_and_fails(tmp_path):
+    """The wave rider of the test below started abruptly (no ramp): at rest on a sea surface
+    that moves, it oscillates freely at its waterplane frequency three times its 1 cm draft, bounces
+    on the surface and gains energy from it until it is thrown clear, which no floating buoy does
+    (no radiation or slamming damping in the model): the run fails there instead of going on
+    (it once reached 27 m with ``status: ok``)."""
+    mass, area, tether = 200.0, 20.0, 400.0
+    sea = sea_from_model(lumped_case(environment={"waves": jonswap_waves(11)}, line_types={"c": {
+        "diameter": 0.01, "mass": 1, "axial_stiffness": 1}}, cables=[dict(
+            name="c", line_type="c", length=1, segments=1, **{"from": "anchor:[0,0,0]"}, to="free")]).environment)
+    omega0 = math.sqrt(RHO * G * area / (mass + BUOY_MASS_EFFECTIVE * tether / 20.0))
+    b = sea.amplitude / (1.0 - (sea.omega / omega0) ** 2)
+    start = -mass / (RHO * area) + np.sum(b * np.cos(sea.phase))     # on the forced heave, at rest
+    case = buoy_case(mass, area, start, jonswap_waves(11), duration=400.0, dt=0.01, height=2.0,
+                     output_dt=0.25, tether_length=tether, tether_to="anchor:[0, 0, -300]")
+    summary = run(case, tmp_path / "bounce.nc")
+    assert "surface buoy 'buoy''s keel is" in summary.status and "thrown clear of the water" in summary.status
+    keel = float(summary.status.split("keel is ")[1].split(" m above")[0])
+    assert 2.0 < keel < 2.5                                     # caught as it passes its height
+
+
 @pytest.mark.slow
 def test_jonswap_run_is_reproducible_and_a_wave_rider_measures_its_hs(tmp_path):
     """A light buoy on a stiff waterplane (w0 = 31.7 rad/s, 5x the highest sea component)

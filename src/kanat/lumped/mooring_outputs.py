@@ -163,28 +163,44 @@ def allowed_penetration(net, environment) -> np.ndarray:
     return PENETRATION_MARGIN * static + PENETRATION_FLOOR
 
 
-def held_under_water(case, net) -> list[tuple[str, int, float]]:
-    """The bodies and points :func:`out_of_water` watches: ``(label, node, radius [m])``."""
-    held = [(f"body '{name}'", node, np.sqrt(case.bodies[name].drag_area / np.pi))
-            for name, node in zip(net.body_names, net.body_node)
-            if case.bodies[name].surface_buoy is None and name not in net.rigid.names]
-    held += [(f"point '{name}'", net.names[name], np.cbrt(0.75 * point.volume / np.pi))
+def held_under_water(case, net) -> list[tuple[str, int, float, bool]]:
+    """The bodies and points :func:`out_of_water` watches: ``(label, node, limit [m], surface)``, the
+    height above the local wave surface at which each is out of the water (``surface``: a
+    ``surface_buoy``, whose node is its keel)."""
+    held = []
+    for name, node in zip(net.body_names, net.body_node):
+        buoy = case.bodies[name].surface_buoy
+        if name in net.rigid.names:
+            continue
+        if buoy is None:
+            held.append((f"body '{name}'", node, max(SURFACE_MARGIN, 2.0 * np.sqrt(case.bodies[name].drag_area / np.pi)), False))
+        else:
+            held.append((f"surface buoy '{name}'", node, max(SURFACE_MARGIN, buoy.height), True))
+    held += [(f"point '{name}'", net.names[name], max(SURFACE_MARGIN, 2.0 * np.cbrt(0.75 * point.volume / np.pi)), False)
              for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
     return held
 
 
 def out_of_water(case, net, x, sea, t: float, held=None) -> str | None:
     """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
-    gives it its full buoyancy wherever it is (only a ``surface_buoy`` or a 6-DOF body has a
-    waterplane), so its center more than :data:`SURFACE_MARGIN` (or its diameter, from
-    ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
-    is refused; None when every one is in the water. ``held``: :func:`held_under_water` of the
-    case, if already worked out."""
-    for label, node, radius in held_under_water(case, net) if held is None else held:
+    gives a body or point its full buoyancy wherever it is, so its center more than
+    :data:`SURFACE_MARGIN` (or its diameter, from ``drag_area`` or ``volume``) above the local wave
+    surface (``sea``, None for still water) is refused; a ``surface_buoy`` (a waterplane, no
+    radiation or slamming damping) whose keel is thrown clear of the water by more than its height
+    is refused too: measured, a 1-cm-draft buoy started off its forced heave bounced on the surface
+    and gained energy until it flew 27 m high, which no floating buoy does. None when every one is
+    in the water. ``held``: :func:`held_under_water` of the case, if already worked out."""
+    for label, node, limit, surface in held_under_water(case, net) if held is None else held:
         r = x[node]
         eta = float(sea.elevation(np.array([r[0]]), np.array([r[1]]), t)[0]) if sea is not None else 0.0
-        if r[2] - eta > max(SURFACE_MARGIN, 2.0 * radius):
-            return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
-                    "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
-                    "to ride the surface, or lines that hold it under water")
+        if r[2] - eta <= limit:
+            continue
+        if surface:
+            return (f"{label}'s keel is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, more than "
+                    f"its height: thrown clear of the water, where its waterplane model (no radiation or "
+                    "slamming damping) does not hold; a free heave started at its waterplane frequency (start "
+                    "the waves with a ramp) or a line that snaps it up are the usual causes")
+        return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
+                "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
+                "to ride the surface, or lines that hold it under water")
     return None
