@@ -13,11 +13,18 @@
   the linear model does not see either; a touchdown node (the last grounded one) whose horizontal
   motion exceeds its element's length moves the touchdown point by more than one element. A note:
   the tension away from the touchdown zone is often still sound.
+* **offset nonlinearity**: the catenary's quasi-static tension re-solved at the vessel's mean
+  place +- its excursion (the harmonics' amplitude, or :data:`kanat.frequency.nonlinearity.SIGMAS`
+  sigma of a sea state) departs from the linear model's straight line by ``r``
+  (:mod:`kanat.frequency.nonlinearity` eq. 1); beyond :data:`~kanat.frequency.nonlinearity.LIMIT`
+  the motion is outside the linear range: fails the result, with the measured ``r``.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from kanat.errors import SolverError
+from kanat.frequency import nonlinearity
 from kanat.physics.seabed import seabed_of
 
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
@@ -43,8 +50,35 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
     else:
         notes.append(f"the largest dynamic tension ({what}) is {100 * ratio[worst]:.3g} % of the mean, at node {worst}")
     notes += _touchdown(model, ex, ds, case)
+    failure, note = _offset(model, ex, response, ds, case)
+    failures += [failure] if failure else []
+    notes += [note] if note else []
     status = "ok" if not failures else "failed: " + "; ".join(failures)
     return status, "; ".join(notes)
+
+
+def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
+    """``(failure, note)`` of the offset nonlinearity check (module docstring)."""
+    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(len(ex.omega), 0.5)
+    excursion = nonlinearity.vessel_excursion(response.prescribed, weight, ex.spectral)
+    if excursion is None:
+        return None, None
+    how = f"{nonlinearity.SIGMAS:g} sigma" if ex.spectral else "amplitude"
+    try:
+        check = nonlinearity.offset_check(model, case, excursion)
+    except SolverError as error:
+        return (f"outside the linear range: the static equilibrium with the vessel offset by its excursion "
+                f"({how}) did not converge ({error}); run method: time"), None
+    ratio = check.ratio
+    worst = int(np.argmax(ratio))
+    where = f"node {worst} (cable {ds.cable.values[worst]}, s = {float(ds.s.values[worst]):.4g} m)"
+    measured = (f"the quasi-static tension at the vessel's mean place +- {check.distance:.3g} m ({how}) departs "
+                f"from the linear model's by {100 * ratio[worst]:.3g} % at {where}: {check.mean[worst]:.4g} N "
+                f"moves to {check.up[worst]:.4g} and {check.down[worst]:.4g} N")
+    if ratio[worst] > nonlinearity.LIMIT:
+        return (f"outside the linear range: {measured}, beyond the {100 * nonlinearity.LIMIT:g} % the "
+                "linearisation holds to (the line's stiffness changes over the motion); run method: time"), None
+    return None, measured
 
 
 def _tension_swing(ds, ex, case) -> tuple[np.ndarray, str]:

@@ -1,0 +1,110 @@
+"""How far the vessel's motion carries the lines out of their linear range (docs/frequency.md).
+
+The linear model holds the lines' stiffness at the mean position. A catenary's is not constant: a
+chain stiffens as the vessel moves away from its anchor and softens as it moves towards it. The
+check re-solves the static equilibrium (:func:`kanat.lumped.equilibrium.equilibrium`, the lumped
+model's own) with every vessel point displaced by ``+d`` and by ``-d`` from its mean place, ``d``
+the vessel's largest excursion (below), and compares each node's quasi-static tension
+``T(+d)``, ``T(-d)`` with the mean's ``T(0)``. Written ``T(+-d) = T(0) +- a + b``, the linear model
+keeps ``a`` and drops ``b``, so its relative error at the excursion is::
+
+    (1)  r = |T(+d) + T(-d) - 2 T(0)| / |T(+d) - T(-d)|
+
+(for a tension quadratic in the offset, ``T = T0 + k d + c d^2``, ``r = |c d / k|``: the
+change of the tangent stiffness ``(k(+d) - k(-d)) / (k(+d) + k(-d))`` across the excursion).
+The denominator is floored at :data:`FLOOR` of the largest over the nodes, so that a node the
+offset barely loads (a leg across the motion) is judged against the system's swing, not its own.
+
+The excursion ``d`` (p, 3) of the p vessel points is along the principal axis ``e`` of their
+displacements' covariance ``C = sum_f w_f Re(u_f u_f^H)`` (``w_f = S d omega`` for a spectral
+excitation, ``1/2`` for a harmonic one): ``d = SIGMAS sqrt(lambda_max) e`` for a sea state, and
+``d = sum_f |e . u_f| e`` (the harmonics' amplitudes summed) for a harmonic excitation.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from kanat.lumped.equilibrium import equilibrium
+from kanat.lumped.system import LumpedSystem
+
+LIMIT = 0.05        # r of eq. (1) beyond which the result is refused: calibrated on the time-domain
+                    # comparisons of tests/frequency (agreeing cases r <= 0.034, the 12-49 % ones >= 0.08)
+SIGMAS = 2.0        # a sea state's excursion in standard deviations of the vessel's motion
+FLOOR = 0.1         # of the largest quasi-static swing: the least denominator of eq. (1)
+
+
+@dataclass(frozen=True)
+class OffsetCheck:
+    """The quasi-static tensions at the vessel's mean place and excursion (module docstring).
+
+    Attributes
+    ----------
+    excursion : ndarray, shape (p, 3)
+        ``d`` of every vessel point [m], global axes.
+    mean, up, down : ndarray, shape (node,)
+        ``T(0)``, ``T(+d)``, ``T(-d)`` at the output nodes [N].
+    """
+
+    excursion: np.ndarray
+    mean: np.ndarray
+    up: np.ndarray
+    down: np.ndarray
+
+    @property
+    def ratio(self) -> np.ndarray:
+        """``r`` (node,) of eq. (1), its denominator floored at :data:`FLOOR` of the largest."""
+        swing = np.abs(self.up - self.down)
+        return np.abs(self.up + self.down - 2.0 * self.mean) / np.maximum(swing, FLOOR * max(swing.max(), 1e-300))
+
+    @property
+    def distance(self) -> float:
+        """The largest vessel point's excursion ``|d|`` [m]."""
+        return float(np.max(np.linalg.norm(self.excursion, axis=1)))
+
+
+def vessel_excursion(prescribed: np.ndarray, weight: np.ndarray, spectral: bool) -> np.ndarray | None:
+    """``d`` (p, 3) of the module docstring from the vessel points' complex displacements (nf, p, 3)
+    and the variance weights (nf,); None when the vessel does not move."""
+    nf, p = prescribed.shape[:2]
+    if p == 0:
+        return None
+    u = prescribed.reshape(nf, -1)
+    covariance = np.einsum("f,fa,fb->ab", weight, u, u.conj()).real
+    values, vectors = np.linalg.eigh(covariance)
+    if values[-1] <= 0.0:
+        return None
+    axis = vectors[:, -1]
+    size = SIGMAS * math.sqrt(values[-1]) if spectral else float(np.abs(u @ axis).sum())
+    return (size * axis).reshape(p, 3)
+
+
+def offset_check(model, case, excursion: np.ndarray) -> OffsetCheck:
+    """The quasi-static tensions at the vessel's mean place and ``+- excursion`` (p, 3) [m].
+
+    Raises
+    ------
+    SolverError
+        If the equilibrium at an offset place does not converge.
+    """
+    net = model.lin.net
+    c, s = math.cos(model.heading), math.sin(model.heading)
+    local = np.stack([c * excursion[:, 0] + s * excursion[:, 1], -s * excursion[:, 0] + c * excursion[:, 1],
+                      excursion[:, 2]], -1)                          # the arms are in vessel axes
+    tensions = [_static_tension(model, case, dataclasses.replace(net, vessel_offset=net.vessel_offset + sign * local))
+                for sign in (1.0, -1.0)]
+    return OffsetCheck(excursion, model.node_tension(model.mean_tension), *tensions)
+
+
+def _static_tension(model, case, net) -> np.ndarray:
+    """The output nodes' tension (node,) of ``net``'s equilibrium, from the mean one's positions."""
+    x, _ = equilibrium(net, case, x0=model.lin.position, friction=False)
+    moving = LumpedSystem(net, case, waves=False, friction=False)
+    system = LumpedSystem(net, case, waves=False, steady_velocity=moving.frame_velocity(), friction=False)
+    free = system.free_index
+    full, velocity, _, heading = system.full(0.0, x[free], np.zeros_like(x[free]))
+    system.loads(0.0, full, velocity, heading)
+    return model.node_tension(system.tension.copy())
