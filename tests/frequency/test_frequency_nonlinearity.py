@@ -54,7 +54,7 @@ def test_the_measure_of_a_fine_chain_is_the_catenarys(tmp_path):
     20-segment chain's is 0.129, its touchdown moving node by node)."""
     case = chain(tmp_path, 1.0, segments=160)
     model = linear_model(case)
-    check = nonlinearity.offset_check(model, case, np.array([[1.0, 0.0, 0.0]]))
+    check = nonlinearity.offset_check(model, case, np.array([[1.0, 0.0, 0.0]]), np.zeros(161))
     line = case.line_types["chain"]
     weight = (line.mass - case.environment.water_density * math.pi / 4 * line.diameter ** 2) * case.environment.gravity
     mean, up, down = (catenary_top_tension(SPAN - 1.0 + d, weight) for d in (0.0, 1.0, -1.0))
@@ -78,7 +78,7 @@ def test_a_chain_surge_outside_the_linear_range_is_refused(tmp_path, amplitude, 
 @pytest.mark.slow
 @pytest.mark.parametrize("hs, ok", [(3.0, True), (8.0, False)])
 def test_a_sea_state_outside_the_linear_range_is_refused(tmp_path, hs, ok):
-    """The chain driven by RAOs in a JONSWAP sea: Hs 3 m ok (3.4 %), Hs 8 m failed (8.9 %); the
+    """The chain driven by RAOs in a JONSWAP sea: Hs 3 m ok (3.3 %), Hs 8 m failed (6.4 %); the
     excursion is 2 sigma of the fairlead's motion along its principal axis, at most the 2 sigma of
     its total motion (equal when surge and heave are in phase)."""
     ds = kanat.solve_frequency(irregular(tmp_path, "chain", hs, "frequency"))
@@ -89,4 +89,4 @@ def test_a_sea_state_outside_the_linear_range_is_refused(tmp_path, hs, ok):
     excursion = float(text.split("mean place +- ")[1].split(" m (2 sigma)")[0])
     assert 0.9 * 2 * sigma <= excursion <= 2 * sigma * 1.001
     assert float(text.split("departs from the linear model's by ")[1].split(" %")[0]) == pytest.approx(
-        3.35 if ok else 8.94, rel=0.05)
+        3.28 if ok else 6.41, rel=0.05)

@@ -65,7 +65,9 @@ def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
         return None, None
     how = f"{nonlinearity.SIGMAS:g} sigma" if ex.spectral else "amplitude"
     try:
-        check = nonlinearity.offset_check(model, case, excursion)
+        dynamic = (nonlinearity.SIGMAS * ds.tension_std.values if ex.spectral
+                   else ds.tension_amplitude.values.sum(axis=0))
+        check = nonlinearity.offset_check(model, case, excursion, dynamic)
     except SolverError as error:
         return (f"outside the linear range: the static equilibrium with the vessel offset by its excursion "
                 f"({how}) did not converge ({error}); run method: time"), None

@@ -18,6 +18,9 @@ over a distance-2 colouring of the node graph (``3 x colours`` pairs of force ev
 equilibrium's Newton iteration sees it. ``C`` is the axial (Kelvin–Voigt) damping and the tangent
 of drag about the mean relative flow: zero in still water, where drag is quadratic
 (``|u| u`` has no slope at ``u = 0``); drag's equivalent linearisation is not in ``C``.
+
+The equilibrium is that of the steady state the run settles to: a current with a start-up
+``ramp`` is taken at its full speed (:func:`after_ramps`), not at its ramp's zero at t = 0.
 """
 from __future__ import annotations
 
@@ -89,6 +92,7 @@ def linearize(case) -> Linearization:
     SolverError
         If the equilibrium does not converge (:func:`kanat.lumped.equilibrium.equilibrium`).
     """
+    case = after_ramps(case)
     net = build_network(case)
     x, _ = equilibrium(net, case, friction=False)
     base = LumpedSystem(net, case, waves=False, friction=False)
@@ -119,6 +123,16 @@ def linearize(case) -> Linearization:
         mass, damping, stiffness = rigid_rows(net.rigid, free, x, blocks, mass, damping, stiffness)
     return Linearization(mass=mass.tocsr(), damping=damping.tocsr(), stiffness=stiffness.tocsr(),
                          node=np.repeat(free, 3), xyz=np.tile(np.arange(3), len(free)), position=x, net=net)
+
+
+def after_ramps(case):
+    """The case with its current at full speed from t = 0 (``environment.current.ramp`` 0): the
+    steady state about which the system is linearised, where the current's ramp has ended."""
+    current = case.environment.current
+    if current.ramp == 0.0:
+        return case
+    environment = case.environment.model_copy(update={"current": current.model_copy(update={"ramp": 0.0})})
+    return case.model_copy(update={"environment": environment})
 
 
 def mass_matrix(system: LumpedSystem, x: np.ndarray, consistent: bool) -> sp.csr_matrix:
