@@ -68,11 +68,11 @@ def linear_series(fd, case, times):
     return np.real(np.exp(1j * np.outer(times, sea.omega)) @ (H * eta[:, None]))
 
 
-def compare_std(tmp_path, line, hs, seeds, duration, status="ok"):
+def compare_std(tmp_path, line, hs, seeds, duration):
     """Per seed, the time domain's and the frequency domain's tension standard deviations (node,) over
-    the same window; and the spectral ``tension_std``. The frequency domain's status starts with ``status``."""
+    the same window; and the spectral ``tension_std``."""
     fd = kanat.solve_frequency(irregular(tmp_path, line, hs, "frequency"))
-    assert fd.attrs["status"].startswith(status), fd.attrs["status"]
+    assert fd.attrs["status"] == "ok", fd.attrs["status"]
     pairs = []
     for seed in range(seeds):
         case = irregular(tmp_path, line, hs, "time", seed, duration)
@@ -119,10 +119,10 @@ def test_tension_std_against_time_domain_runs(tmp_path, line):
 def test_the_error_grows_with_the_sea_state(tmp_path):
     """The chain at Hs 1 m and 8 m: the frequency domain's largest same-window error over the nodes
     grows (measured 1.9 % and 9.8 %, on the seabed), the fairlead's stays within 5 % (0.7 %, 1.5 %);
-    the Hs 8 m result says it is outside the linear range (tests/frequency/test_frequency_nonlinearity.py)."""
+    the Hs 8 m result warns that it is outside the linear range (tests/frequency/test_frequency_nonlinearity.py)."""
     errors = []
-    for hs, status in ((1.0, "ok"), (8.0, "failed: outside the linear range")):
-        pairs, _ = compare_std(tmp_path, "chain", hs, seeds=2, duration=260.0, status=status)
+    for hs in (1.0, 8.0):
+        pairs, _ = compare_std(tmp_path, "chain", hs, seeds=2, duration=260.0)
         errors.append(np.abs(pairs[:, 1] / pairs[:, 0] - 1.0))
         assert np.max(errors[-1][:, -1]) < 0.05
     assert np.max(errors[1]) > 2.0 * np.max(errors[0])

@@ -17,13 +17,17 @@
   place +- its excursion (the harmonics' amplitude, or :data:`kanat.frequency.nonlinearity.SIGMAS`
   sigma of a sea state) departs from the linear model's straight line by ``r``
   (:mod:`kanat.frequency.nonlinearity` eq. 1); beyond :data:`~kanat.frequency.nonlinearity.LIMIT`
-  the motion is outside the linear range: fails the result, with the measured ``r``.
+  the motion is outside the linear range: a warning (in ``notes`` and as a
+  :class:`~kanat.errors.CaseWarning`) with the measured ``r``; beyond
+  :data:`~kanat.frequency.nonlinearity.REFUSE` it fails the result.
 """
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
-from kanat.errors import SolverError
+from kanat.errors import CaseWarning, SolverError
 from kanat.frequency import nonlinearity
 from kanat.physics.seabed import seabed_of
 
@@ -77,9 +81,13 @@ def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
     measured = (f"the quasi-static tension at the vessel's mean place +- {check.distance:.3g} m ({how}) departs "
                 f"from the linear model's by {100 * ratio[worst]:.3g} % at {where}: {check.mean[worst]:.4g} N "
                 f"moves to {check.up[worst]:.4g} and {check.down[worst]:.4g} N")
+    beyond = (f"outside the linear range: {measured}, beyond the {100 * nonlinearity.LIMIT:g} % the linearisation "
+              "holds to (the line's stiffness changes over the motion); run method: time")
+    if ratio[worst] > nonlinearity.REFUSE:
+        return beyond, None
     if ratio[worst] > nonlinearity.LIMIT:
-        return (f"outside the linear range: {measured}, beyond the {100 * nonlinearity.LIMIT:g} % the "
-                "linearisation holds to (the line's stiffness changes over the motion); run method: time"), None
+        warnings.warn(f"the frequency-domain result is {beyond}", CaseWarning, stacklevel=3)
+        return None, "warning: " + beyond
     return None, measured
 
 
