@@ -22,7 +22,8 @@ def frequency(path, **changes):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         case = kanat.load_case(path)
-        return case.replace({"simulation.method": "frequency", **changes})
+        simulation = {} if case.simulation is not None else {"simulation.duration": 600.0}
+        return case.replace({"simulation.method": "frequency", **simulation, **changes})
 
 
 @pytest.mark.slow
@@ -32,7 +33,6 @@ def test_the_examples_with_an_excitation_run(name):
         warnings.simplefilter("ignore")
         ds = kanat.solve_frequency(frequency(EXAMPLES / name))
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
-    assert "departs from the linear model's by" in ds.attrs["notes"]
     assert float(ds.tension_std.max()) > 0.0
 
 

@@ -240,11 +240,12 @@ def test_a_motion_table_is_refused_at_its_key():
 def test_a_node_moving_down_to_the_seabed_is_noted():
     """A taut weightless line 0.4 m above the seabed, its vessel end heaving 1 m slowly: its nodes move
     0, 0.25, 0.5, 0.75 and 1 m (the string's quasi-static shape), the last three beyond their
-    clearance, and the result's notes say they land (status stays ok: a note)."""
+    clearance, and the result's notes say they land (a note). The string's tension is quadratic in
+    its transverse motion, which the linear model drops: the offset check fails the result."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         ds = kanat.solve_frequency(bar(segments=4, amplitude=1.0, omega=0.03, z=-49.6, dof="heave", phase_deg=0.0,
                                        environment={"depth": 50.0, "seabed": {"stiffness": 3e6}}))
     assert float(ds.motion_amplitude[0, 2, 2]) == pytest.approx(0.5, rel=0.02)       # quasi-static: (omega/omega_1)^2 = 1 %
     assert "3 suspended node(s) move down to the seabed" in ds.attrs["notes"]     # 0.5, 0.75, 1 m > 0.4 m
-    assert ds.attrs["status"] == "ok"
+    assert ds.attrs["status"].startswith("failed: outside the linear range")

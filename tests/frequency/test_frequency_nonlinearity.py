@@ -64,13 +64,13 @@ def test_the_measure_of_a_fine_chain_is_the_catenarys(tmp_path):
 
 @pytest.mark.parametrize("amplitude, ok", [(0.1, True), (1.0, False)])
 def test_a_chain_surge_outside_the_linear_range_is_refused(tmp_path, amplitude, ok):
-    """0.1 m: ok with the measured departure in the notes (1.4 %); 1 m: failed, 12.9 % > 5 %."""
+    """0.1 m: ok with the measured departure in the notes (1.37 %); 1 m: failed, 12.9 % > 5 %."""
     ds = kanat.solve_frequency(chain(tmp_path, amplitude))
     assert (ds.attrs["status"] == "ok") is ok
     text = ds.attrs["notes"] if ok else ds.attrs["status"]
     assert "departs from the linear model's by" in text
     measured = float(text.split("departs from the linear model's by ")[1].split(" %")[0])
-    assert measured == pytest.approx(1.44 if ok else 12.9, rel=0.05)
+    assert measured == pytest.approx(1.37 if ok else 12.9, rel=0.05)
     if not ok:
         assert ds.attrs["status"].startswith("failed: outside the linear range")
 

@@ -16,8 +16,9 @@ The denominator is floored at :data:`FLOOR` of the largest over the nodes, so th
 offset barely loads (a leg across the motion) is judged against the system's swing, not its own,
 and at twice the linear result's own tension swing at the node (the harmonics' amplitudes summed,
 or :data:`SIGMAS` sigma), so that the dropped term is weighed against the tension the result
-predicts, and a system the offset does not load at all (a tow translated with its vessel in a
-uniform flow) is not judged by its equilibria's round-off.
+predicts, and at :data:`QUIET` of the node's mean tension, so that a system the offset hardly
+loads (a tow heaved with its vessel in a uniform flow: 2.7 N of 12 kN) is not judged by a term
+that does not matter against its tension.
 
 The excursion ``d`` (p, 3) of the p vessel points is along the principal axis ``e`` of their
 displacements' covariance ``C = sum_f w_f Re(u_f u_f^H)`` (``w_f = S d omega`` for a spectral
@@ -40,6 +41,7 @@ LIMIT = 0.05        # r of eq. (1) beyond which the result is warned of: calibra
 REFUSE = 0.10       # r beyond which the result fails (the 1 m chain surge, 17-49 % off: r = 0.129)
 SIGMAS = 2.0        # a sea state's excursion in standard deviations of the vessel's motion
 FLOOR = 0.1         # of the largest quasi-static swing: the least denominator of eq. (1)
+QUIET = 0.01        # of the node's mean tension: the least denominator of eq. (1)
 
 
 @dataclass(frozen=True)
@@ -66,7 +68,7 @@ class OffsetCheck:
     def ratio(self) -> np.ndarray:
         """``r`` (node,) of eq. (1), its denominator floored (module docstring)."""
         swing = np.abs(self.up - self.down)
-        least = np.maximum(FLOOR * swing.max(), 2.0 * self.dynamic)
+        least = np.maximum(np.maximum(FLOOR * swing.max(), 2.0 * self.dynamic), QUIET * np.abs(self.mean))
         return np.abs(self.up + self.down - 2.0 * self.mean) / np.maximum(np.maximum(swing, least), 1e-300)
 
     @property
