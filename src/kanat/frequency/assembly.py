@@ -102,7 +102,8 @@ def linear_model(case) -> LinearModel:
     step = POSITION_STEP * float(np.min(net.el_length))
     G = _coupling(lambda xx: steady.loads(0.0, xx, vs, heading)[0][free], xs, prescribed, step)
     Gv = _coupling(lambda vv: moving.loads(0.0, xm, vv, heading_m)[0][free], vm, prescribed, VELOCITY_STEP)
-    pairs = drag.drag_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]), frame)
+    pairs = drag.drag_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]), frame,
+                            rho=case.environment.water_density)
     slope = _slope(lambda xx: steady.loads(0.0, xx, vs, heading), lambda: steady.tension, xs, STRETCH_STEP)
     rate = _slope(lambda vv: moving.loads(0.0, xm, vv, heading_m), lambda: moving.tension, vm, VELOCITY_STEP,
                   about=xm)

@@ -135,6 +135,7 @@ def _chunked(function, pairs: drag.DragPairs, covariance: np.ndarray) -> np.ndar
     out = np.empty((len(pairs.node), 3, 3))
     for start in range(0, len(pairs.node), CHUNK):
         part = slice(start, start + CHUNK)
-        sub = drag.DragPairs(*(getattr(pairs, name)[part] for name in drag.DragPairs.__dataclass_fields__))
+        sub = drag.DragPairs(*(None if getattr(pairs, name) is None else getattr(pairs, name)[part]
+                               for name in drag.DragPairs.__dataclass_fields__))
         out[part] = function(sub, covariance[part])
     return out
