@@ -68,9 +68,8 @@ def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
     if excursion is None:
         return None, None
     how = f"{nonlinearity.SIGMAS:g} sigma" if ex.spectral else "amplitude"
+    dynamic = nonlinearity.SIGMAS * ds.tension_std.values if ex.spectral else ds.tension_amplitude.values.sum(axis=0)
     try:
-        dynamic = (nonlinearity.SIGMAS * ds.tension_std.values if ex.spectral
-                   else ds.tension_amplitude.values.sum(axis=0))
         check = nonlinearity.offset_check(model, case, excursion, dynamic)
     except SolverError as error:
         return (f"outside the linear range: the static equilibrium with the vessel offset by its excursion "
