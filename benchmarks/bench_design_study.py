@@ -25,17 +25,18 @@ from __future__ import annotations
 
 import argparse
 import os
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import yaml
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fatigue_scatter import SeaStateCell  # noqa: E402
+from studies import SEA_STATES, kanat_command, timed_process, write_study  # noqa: E402
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "design" / "mooring_design.yaml"
 DASK = ("import sys; import kanat; from kanat.design_checks import design, write_tables\n"
@@ -50,21 +51,10 @@ ENGINES = {"serial": ["--scheduler", "serial"], "2 workers": ["--workers", "2"],
 def study_case(folder: Path, sea_states: int, seeds: int, duration: float) -> Path:
     """The example with ``sea_states`` sea states of ``duration`` s and ``seeds`` seeds, in ``folder``."""
     data = yaml.safe_load(EXAMPLE.read_text())
-    data["design"].update(seeds=seeds, conditions=["intact", "damaged"], sea_states="sea_states.csv")
-    hs = np.linspace(1.0, 6.0, sea_states)
-    tp = np.linspace(6.0, 12.0, sea_states)
-    rows = ["name,hs,tp,gamma,heading_deg,probability,duration"]
-    rows += [f"ss{k:02d},{h:.3f},{t:.3f},3.3,0,{0.9 / sea_states:.6f},{duration:g}" for k, (h, t) in enumerate(zip(hs, tp))]
-    (folder / "sea_states.csv").write_text("\n".join(rows) + "\n")
-    path = folder / "study.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return path
-
-
-def kanat_command() -> list[str]:
-    """The installed ``kanat`` script (as a user runs it), else ``python -m kanat``."""
-    script = shutil.which("kanat") or str(Path(sys.executable).with_name("kanat"))
-    return [script] if Path(script).exists() else [sys.executable, "-m", "kanat"]
+    data["design"].update(seeds=seeds, conditions=["intact", "damaged"], sea_states=SEA_STATES)
+    cells = [SeaStateCell(hs, tp, 0.0, 0.9 / sea_states)
+             for hs, tp in zip(np.linspace(1.0, 6.0, sea_states), np.linspace(6.0, 12.0, sea_states))]
+    return write_study(folder, data, cells, duration, "study.yaml")
 
 
 def whole_check(case: Path, out: Path, options: list[str] | None) -> dict:
@@ -73,16 +63,8 @@ def whole_check(case: Path, out: Path, options: list[str] | None) -> dict:
         command = [sys.executable, "-c", DASK, str(case), str(out)]
     else:
         command = kanat_command() + ["design", str(case), "-o", str(out), *options]
-    load = os.getloadavg()[0]
-    before = os.times()
-    start = time.perf_counter()
-    done = subprocess.run(command, capture_output=True, text=True)
-    wall = time.perf_counter() - start
-    after = os.times()
-    if done.returncode not in (0, 1):         # 1: a line fails its check, which is a result
-        raise RuntimeError(f"{' '.join(command)} failed:\n{done.stdout}\n{done.stderr}")
-    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
-    return {"wall": wall, "cpu": cpu, "load": load, "table": pd.read_csv(out / "utilisation.csv")}
+    timed = timed_process(command, accepted=(0, 1))         # 1: a line fails its check, which is a result
+    return {**timed, "table": pd.read_csv(out / "utilisation.csv")}
 
 
 def main() -> None:

@@ -29,10 +29,8 @@ from __future__ import annotations
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
@@ -40,7 +38,8 @@ import pandas as pd
 import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fatigue_scatter import scatter_diagram, sea_state_table  # noqa: E402
+from fatigue_scatter import scatter_diagram  # noqa: E402
+from studies import SEA_STATES, kanat_command, timed_process, write_study  # noqa: E402
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "design" / "quasi_static.yaml"
 STORM = 10800.0     # s: a signed assessment's storm length
@@ -48,41 +47,25 @@ STORM = 10800.0     # s: a signed assessment's storm length
 
 def write_case(folder: Path, analysis: str, cells, duration: float, seeds: int, ramp: float) -> Path:
     """The example, intact only with fatigue, in ``analysis``, over ``cells``, in ``folder``."""
-    folder.mkdir(parents=True, exist_ok=True)
     data = yaml.safe_load(EXAMPLE.read_text())
-    data["design"] = {"standard": "api-rp-2sk", "analysis": analysis, "sea_states": "sea_states.csv",
+    data["design"] = {"standard": "api-rp-2sk", "analysis": analysis, "sea_states": SEA_STATES,
                       "storm_duration": STORM, "conditions": ["intact"], "extremes": "rayleigh",
                       "fatigue": {"curve": "api-chain-studless", "design_life": 25}}
     if analysis == "dynamic":
         data["design"]["seeds"] = seeds
         data["environment"]["waves"].update(seed=1, ramp=ramp)
-    (folder / "sea_states.csv").write_text(sea_state_table(cells, duration))
+    path = write_study(folder, data, cells, duration)
     shutil.copy(EXAMPLE.parent / "raos.csv", folder / "raos.csv")
-    path = folder / "case.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
     return path
-
-
-def kanat_command() -> list[str]:
-    """The installed ``kanat`` script (as a user runs it), else ``python -m kanat``."""
-    script = shutil.which("kanat") or str(Path(sys.executable).with_name("kanat"))
-    return [script] if Path(script).exists() else [sys.executable, "-m", "kanat"]
 
 
 def run_design(case: Path, out: Path) -> dict:
     """One ``kanat design`` process: wall and CPU time, load before, its fatigue table."""
     command = kanat_command() + ["design", str(case), "-o", str(out), "--scheduler", "serial"]
-    load = os.getloadavg()[0]
-    before = os.times()
-    start = time.perf_counter()
-    done = subprocess.run(command, capture_output=True, text=True)
-    wall = time.perf_counter() - start
-    after = os.times()
-    if done.returncode not in (0, 1) or not (out / "fatigue.csv").exists():   # 1: a check fails
-        raise RuntimeError(f"{' '.join(command)} failed:\n{done.stdout}\n{done.stderr}")
-    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
-    return {"wall": wall, "cpu": cpu, "load": load, "fatigue": pd.read_csv(out / "fatigue.csv"),
-            "stdout": done.stdout.strip().splitlines()[-1:]}
+    timed = timed_process(command, accepted=(0, 1))                       # 1: a check fails
+    if not (out / "fatigue.csv").exists():
+        raise RuntimeError(f"{' '.join(command)} wrote no fatigue table:\n{timed['stdout']}\n{timed['stderr']}")
+    return {**timed, "fatigue": pd.read_csv(out / "fatigue.csv")}
 
 
 def line_lives(fatigue: pd.DataFrame) -> pd.Series:

@@ -25,9 +25,7 @@ Markdown tables recorded in benchmarks/RESULTS.md (about 5 minutes).
 from __future__ import annotations
 
 import argparse
-import contextlib
 import math
-import os
 import sys
 import tempfile
 import time
@@ -48,6 +46,9 @@ from kanat.lumped.system import LumpedSystem
 from kanat.model import Case
 from kanat.lumped.integrators import SCHEMES
 from kanat.schemes import get_scheme
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from console import quiet  # noqa: E402
 
 DURATION = 20.0       # s simulated
 SAMPLE = 0.05         # s between compared samples (and MoorDyn coupling steps)
@@ -166,20 +167,6 @@ def run_kanat(p, scheme_name, h):
 
 def _node_tension(T):
     return 0.5 * (T[-1] + T[-2])                   # node N-1: mean of its two segments (as MoorDyn)
-
-
-@contextlib.contextmanager
-def quiet():
-    """Silence MoorDyn's console output (C-level stdout and stderr)."""
-    sys.stdout.flush()
-    saved = [os.dup(1), os.dup(2)]
-    with open(os.devnull, "w") as null:
-        os.dup2(null.fileno(), 1), os.dup2(null.fileno(), 2)
-        try:
-            yield
-        finally:
-            os.dup2(saved[0], 1), os.dup2(saved[1], 2)
-            [os.close(fd) for fd in saved]
 
 
 def run_moordyn(path, scheme, dt):

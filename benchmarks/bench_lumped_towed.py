@@ -31,9 +31,7 @@ extra); prints the Markdown table recorded in benchmarks/RESULTS.md.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import math
-import os
 import sys
 import tempfile
 import time
@@ -47,6 +45,9 @@ from kanat.lumped.network import build_network
 from kanat.lumped.stepping import step_info
 from kanat.lumped.integrators import SCHEMES
 from kanat.schemes import get_scheme
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from console import quiet  # noqa: E402
 
 DURATION = 300.0      # s simulated
 SAMPLE = 1.0          # s between compared samples (kanat's output interval)
@@ -141,20 +142,6 @@ def run_kanat(scheme=None, dt=None):
     relative = ds.body_position.values[:, 0, :] - ds.vessel_position.values
     top = 0.5 * (ds.segment_tension.values[:, 0] + ds.segment_tension.values[:, 1])   # node 1, as MoorDyn
     return np.column_stack([relative, top]), s.solver_time_s, s.setup_time_s, s.scheme, s.dt
-
-
-@contextlib.contextmanager
-def quiet():
-    """Silence MoorDyn's console output (C-level stdout and stderr)."""
-    sys.stdout.flush()
-    saved = [os.dup(1), os.dup(2)]
-    with open(os.devnull, "w") as null:
-        os.dup2(null.fileno(), 1), os.dup2(null.fileno(), 2)
-        try:
-            yield
-        finally:
-            os.dup2(saved[0], 1), os.dup2(saved[1], 2)
-            [os.close(fd) for fd in saved]
 
 
 def run_moordyn(path, scheme, dt):

@@ -30,9 +30,7 @@ from __future__ import annotations
 import json
 import os
 import platform
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -43,6 +41,9 @@ import xarray as xr
 
 from kanat.io.results import write_result
 from kanat.report.html_report import write_report
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from studies import kanat_command, timed_process  # noqa: E402
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 VARY = ["vessel.track[1].to_speed_kn=8,9,10,11", "line_types.towcable.drag_normal=1.2,1.5"]
@@ -62,12 +63,6 @@ def base_case(folder: Path) -> Path:
     return path
 
 
-def kanat_command() -> list[str]:
-    """The installed ``kanat`` script (as a user runs it), else ``python -m kanat``."""
-    script = shutil.which("kanat") or str(Path(sys.executable).with_name("kanat"))
-    return [script] if Path(script).exists() else [sys.executable, "-m", "kanat"]
-
-
 def whole_study(base: Path, out: Path, options: list[str] | None) -> dict:
     """One study process: wall and CPU time (its children included), cases' own time, workers."""
     if options is None:
@@ -75,22 +70,14 @@ def whole_study(base: Path, out: Path, options: list[str] | None) -> dict:
     else:
         command = kanat_command() + ["sweep", str(base), *sum((["--vary", v] for v in VARY), []), "-o", str(out),
                                      *options]
-    load = os.getloadavg()[0]
-    before = os.times()
-    start = time.perf_counter()
-    done = subprocess.run(command, capture_output=True, text=True)
-    wall = time.perf_counter() - start
-    after = os.times()
-    if done.returncode != 0:
-        raise RuntimeError(f"{' '.join(command)} failed:\n{done.stdout}\n{done.stderr}")
+    timed = timed_process(command)
     records = [json.loads(p.read_text()) for p in (out / "records").glob("*.json")]
     assert len(records) == 8 and all(r["status"] == "ok" for r in records), [r.get("message") for r in records]
-    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
-    cases = sum(r["cpu_time_s"] for r in records)
+    cpu, cases = timed["cpu"], sum(r["cpu_time_s"] for r in records)
     per_worker = {}
     for r in records:
         per_worker[r["worker"]] = per_worker.get(r["worker"], 0.0) + r["cpu_time_s"]
-    return {"wall": wall, "cpu": cpu, "busy": sum(r["wall_time_s"] for r in records), "load": load,
+    return {"wall": timed["wall"], "cpu": cpu, "busy": sum(r["wall_time_s"] for r in records), "load": timed["load"],
             "processes": len(per_worker), "cases_cpu": cases, "projected": cpu - cases + max(per_worker.values())}
 
 

@@ -305,29 +305,34 @@ def solve_statics(case: Case, method: str = "auto"):
     return table.to_dataset()
 
 
-def offset_table(case: Case, direction: float, to: float, steps: int = 20):
-    """The offset curve of ``case`` (:func:`offsets`) as the table ``kanat offsets`` writes, and the curve."""
+def offset_table(case: Case, direction: float, to: float, steps: int = 20, each_body: bool = True):
+    """The offset curves of ``case`` (:func:`offsets`) as the table ``kanat offsets`` writes, the
+    system curve and each coupled body's own (dict by name, empty unless ``each_body`` and the case
+    has several coupled bodies)."""
     from kanat.io.offsets_table import offsets_table
     from kanat.statics import NeedsLumped
-    from kanat.statics.offsets import offset_curve
+    from kanat.statics.offsets import body_offset_curves, offset_curve
 
     require_supported(case, "statics")
     start = time.perf_counter()
     try:
         curve = offset_curve(case, direction, to, steps)
+        bodies = body_offset_curves(case, direction, to, steps) if each_body else {}
     except NeedsLumped as reason:
         raise SolverError(f"offsets re-solve the catenary network statics, which this case is beyond: {reason}; "
                           "remove the current and the lines' bending stiffness for the offset curve") from None
-    return offsets_table(curve, case, wall_time_s=time.perf_counter() - start), curve
+    return offsets_table(curve, case, wall_time_s=time.perf_counter() - start, bodies=bodies), curve, bodies
 
 
 @_naming_its_file
-def offsets(case: Case, direction: float, to: float, steps: int = 20):
+def offsets(case: Case, direction: float, to: float, steps: int = 20, each_body: bool = True):
     """Restoring force and line tensions of a moored vessel against its offset.
 
-    The vessel (every cable end ``{vessel: [x, y, z]}``) moves rigidly by ``steps`` even
-    steps from 0 to ``to`` metres along ``direction`` degrees (from x towards y); the network
-    statics is solved again at each offset (:mod:`kanat.statics.offsets`).
+    The vessel (every cable end ``{vessel: [x, y, z]}``, and every coupled body of a MoorDyn
+    file) moves rigidly by ``steps`` even steps from 0 to ``to`` metres along ``direction``
+    degrees (from x towards y); the network statics is solved again at each offset
+    (:mod:`kanat.statics.offsets`). With several coupled bodies, each body is also moved alone,
+    the others held (MoorPy's ``setPosition`` of one body and ``solveEquilibrium``).
 
     Parameters
     ----------
@@ -338,20 +343,28 @@ def offsets(case: Case, direction: float, to: float, steps: int = 20):
     to : float
         Largest offset [m].
     steps : int
+    each_body : bool
+        Also each coupled body's own curve when the case has several (``steps + 1`` statics
+        solutions per body); False: the system curve only.
 
     Returns
     -------
     xarray.Dataset
         ``restoring_force(offset, xyz)`` [N], ``restoring_moment(offset, xyz)`` [N m] about
-        the vessel's moved origin, ``end_tension(offset, cable, end)`` [N].
+        the vessel's moved origin, ``end_tension(offset, cable, end)`` [N]; with several
+        coupled bodies, each body alone offset: ``body_restoring_force(body, offset, xyz)``,
+        ``body_restoring_moment(body, offset, xyz)`` about its moved reference point,
+        ``body_end_tension(body, offset, cable, end)``.
 
     Examples
     --------
     >>> case = kanat.load_case("examples/moordyn/three_leg_vessel_v1.dat")   # doctest: +SKIP
     >>> ds = kanat.offsets(case, direction=0.0, to=30.0, steps=15)         # doctest: +SKIP
     >>> ds.restoring_force.sel(xyz="x").plot(x="offset")                   # doctest: +SKIP
+    >>> two = kanat.load_case("examples/moordyn/shared_two_bodies.dat")      # doctest: +SKIP
+    >>> kanat.offsets(two, 0.0, 20.0).body_restoring_force.sel(body="body2", xyz="x")  # doctest: +SKIP
     """
-    return offset_table(case, direction, to, steps)[0].to_dataset()
+    return offset_table(case, direction, to, steps, each_body)[0].to_dataset()
 
 
 @_naming_its_file

@@ -94,23 +94,40 @@ def offsets(case: Path = typer.Argument(..., help="Case file (YAML or MoorDyn in
             to: float = typer.Option(..., "--to", help="Largest offset [m]."),
             steps: int = typer.Option(20, "--steps", min=1, help="Offsets after 0, evenly spaced."),
             output: Path = typer.Option(..., "-o", "--output", help="Result file: netCDF, or CSV for a .csv name."),
+            each_body: bool = typer.Option(True, "--each-body/--system-only",
+                                           help="With several coupled bodies, also move each alone, the others held."),
+            plot: Optional[Path] = typer.Option(None, "--plot", help="Also draw the curves to this PNG."),
             debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-    """Restoring force and every line's end tensions against the vessel's offset, written to OUTPUT."""
+    """Restoring force and every line's end tensions against the vessel's offset, written to OUTPUT;
+    with several coupled bodies, also each body's own curve, that body moved alone."""
     from kanat import api
     from kanat.io.offsets_table import write_offsets_csv
 
     loaded = load(case, debug, solver="statics")
     _check_outputs(output, None, case, debug)
     try:
-        table, curve = api.offset_table(loaded, direction, to, steps)
-        write_offsets_csv(curve, output) if output.suffix.lower() == ".csv" else table.write(output)
+        table, curve, bodies = api.offset_table(loaded, direction, to, steps, each_body)
+        write_offsets_csv(curve, output, bodies) if output.suffix.lower() == ".csv" else table.write(output)
     except Exception as error:  # noqa: BLE001 - reported by fail
         fail(error, debug, "offsets failed")
+    for one in (curve, *bodies.values()):
+        _show_offset_curve(one, direction)
+    show(f"wrote {output}")
+    if plot is not None:
+        from kanat.report.offsets_plot import plot_offsets
+
+        plot_offsets(table.to_dataset(), plot)
+        show(f"wrote {plot}")
+
+
+def _show_offset_curve(curve, direction: float) -> None:
+    """The offset curve's force along ``direction`` and largest tension, one line per offset."""
+    if curve.body is not None:
+        show(f"{curve.body} alone, the other bodies held:")
     show(f"offset [m]  force along {direction:g} deg [kN]  largest tension [kN]")
     unit = (math.cos(math.radians(direction)), math.sin(math.radians(direction)))
     for d, f, T in zip(curve.offset, curve.force, curve.tension):
         show(f"{d:10.3f}  {(f[0] * unit[0] + f[1] * unit[1]) / 1e3:26.3f}  {T.max() / 1e3:20.3f}")
-    show(f"wrote {output}")
 
 
 SCHEME_HELP = "Override simulation.scheme"

@@ -65,7 +65,9 @@ def test_frequency_design_rows_are_the_spectra_of_the_frequency_domain(tmp_path)
             nodes = np.flatnonzero(cables == cable.name)
             ends = nodes[[np.argmin(ds["s"].values[nodes]), np.argmax(ds["s"].values[nodes])]]
             fairlead = ends[int(np.argmax(ds["mean_tension"].values[ends]))]   # the end holding more
-            moments = spectral_moments(ds["frequency"].values, ds["tension_spectrum"].values[:, fairlead])
+            moments = spectral_moments(ds["frequency"].values, ds["tension_spectrum"].values[:, fairlead],
+                                       ds["frequency_width"].values)
+            assert moments.std == pytest.approx(float(ds["tension_std"].values[fairlead]), rel=1e-12)
             expected = most_probable_maximum(moments, case.design.storm_duration,
                                              ds["mean_tension"].values[fairlead], "rayleigh")
             row = table[(table.sea_state == sea_state.name) & (table.line == cable.name)]

@@ -18,6 +18,9 @@ from scipy import integrate, optimize, special, stats
 from kanat.analysis import fatigue, spectral
 from kanat.catalog import chain_reference_breaking_load
 from kanat.errors import KanatError
+from kanat.physics.waves import JONSWAP_BAND, jonswap_sea
+
+from helpers import scatter_of_mean_square
 
 OMEGA = np.linspace(0.05, 3.0, 3000)
 
@@ -185,3 +188,23 @@ def test_a_welch_spectrum_in_hertz_gives_the_records_variance_and_damage(records
     assert moments.m0 == pytest.approx(np.var(x), rel=0.03)   # measured 1.4 % (Welch estimate)
     counted = rainflow_rate(x, 3.0, 1.0, 3 * 3600.0)
     assert spectral.dirlik_damage_rate(moments, 3.0, 1.0) == pytest.approx(counted, rel=0.05)   # measured 0.994
+
+
+def test_a_line_spectrum_has_the_moments_of_its_components():
+    """A JONSWAP sea's 200 components (:func:`kanat.physics.waves.jonswap_sea`: unequally spaced,
+    one drawn in each bin of width ``d omega``) as the line spectrum ``S_j = a_j^2 / (2 d omega)``
+    with ``width = d omega``: ``m_0`` and ``m_2`` are ``sum a_j^2 / 2`` and ``sum (a_j omega_j)^2 / 2``
+    to round-off, and a 3-hour record's mean squares of the elevation and of its rate agree with
+    them within 3 standard deviations of their sampling scatter (``scatter_of_mean_square``)."""
+    sea = jonswap_sea(3.0, 9.0, 3.3, seed=4)
+    d_omega = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * np.pi / 9.0 / len(sea.omega)
+    moments = spectral.spectral_moments(sea.omega, sea.amplitude**2 / (2.0 * d_omega), d_omega)
+    assert moments.m0 == pytest.approx(np.sum(sea.amplitude**2) / 2, rel=1e-12)
+    assert moments.m2 == pytest.approx(np.sum((sea.amplitude * sea.omega) ** 2) / 2, rel=1e-12)
+    t = np.arange(0.0, 10800.0, 1.0)
+    phase = np.multiply.outer(t, sea.omega) - sea.phase
+    x, rate = np.cos(phase) @ sea.amplitude, -np.sin(phase) @ (sea.amplitude * sea.omega)
+    assert abs(np.mean(x**2) - moments.m0) < 3 * scatter_of_mean_square(sea.amplitude, sea.omega, t)
+    assert abs(np.mean(rate**2) - moments.m2) < 3 * scatter_of_mean_square(sea.amplitude * sea.omega, sea.omega, t)
+    with pytest.raises(KanatError, match="widths must be positive"):
+        spectral.spectral_moments(sea.omega, sea.amplitude**2, 0.0)

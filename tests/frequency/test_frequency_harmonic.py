@@ -20,6 +20,7 @@ import kanat.errors
 from kanat.model import Case
 
 from helpers import quiet
+from helpers_moordyn import node_tensions, run_moordyn
 
 CHAIN_FILE = """--------------------- MoorDyn Input File ------------------------------------
 A 300 m chain from an anchor 270 m away in 60 m of water to a fairlead 5 m down, no friction
@@ -191,22 +192,9 @@ def moordyn_node_tensions(moordyn, path, duration, omega, coupling=0.05, dt=0.00
     def point(t):
         return start + np.array([-AMPLITUDE * math.cos(omega * t), 0.0, 0.0])
 
-    times, rows, per = [], [], int(round(every / coupling))
-    with quiet():
-        system = moordyn.Create(str(path))
-        moordyn.SetTimeScheme(system, "RK2")
-        moordyn.SetDt(system, dt)
-        moordyn.Init(system, list(point(0.0)), [0.0] * 3)
-        line = moordyn.GetLine(system, 1)
-        n = moordyn.GetLineN(line)
-        for k in range(int(round(duration / coupling))):
-            t = k * coupling
-            moordyn.Step(system, list(point(t)), list((point(t + coupling) - point(t)) / coupling), t, coupling)
-            if (k + 1) % per == 0:
-                times.append((k + 1) * coupling)
-                rows.append([np.linalg.norm(moordyn.GetLineNodeTen(line, i)) for i in range(n + 1)])
-        moordyn.Close(system)
-    return np.array(times), np.array(rows)
+    _, rows = run_moordyn(moordyn, path, duration, coupling, node_tensions(moordyn), int(round(every / coupling)),
+                          point=point, scheme="RK2", dt=dt)
+    return rows[:, 0], rows[:, 1:]
 
 
 @pytest.mark.slow

@@ -4,11 +4,13 @@ A vessel moving by its RAOs (surge ``0.3 / (1 + (w/0.6)^2)`` m/m, heave ``0.3 / 
 m/m, phases growing with frequency) in a JONSWAP sea (Tp 8 s, gamma 3.3) drives a catenary chain
 (300 m of 76 mm chain in 60 m of water) and a taut polyester line (137 m in 100 m of water, 0.5 MN);
 waves act along the lines too. The frequency domain's tension standard deviation at every node is
-compared with the time domain's over several seeds (the same 200 components, other phases; the
-first 60 s, the ramp's, left out), window by window: the frequency domain's series for the seed's
-own phases, ``T(t) = sum_j |H_j| a_j cos(omega_j t + arg H_j - phi_j)``, has the time domain's
-standard deviation within 10 % at every node (the same window: no sampling error between the two),
-and the spectral ``tension_std`` is the mean of those series'. The error grows with the sea state
+compared with the time domain's over several seeds (each seed its own phases and its own 200
+frequencies, one drawn in each of the same bins; the first 60 s, the ramp's, left out), window by
+window: the frequency domain's series for the seed's own sea (the frequency domain of the same
+case, seed included, solves at that sea's frequencies),
+``T(t) = sum_j |H_j| a_j cos(omega_j t + arg H_j - phi_j)``, has the time domain's standard
+deviation within 10 % at every node (the same window: no sampling error between the two), and the
+spectral ``tension_std`` is the mean of those series'. The error grows with the sea state
 (docs/frequency.md).
 """
 import warnings
@@ -70,11 +72,13 @@ def linear_series(fd, case, times):
 
 def compare_std(tmp_path, line, hs, seeds, duration):
     """Per seed, the time domain's and the frequency domain's tension standard deviations (node,) over
-    the same window; and the spectral ``tension_std``."""
-    fd = kanat.solve_frequency(irregular(tmp_path, line, hs, "frequency"))
-    assert fd.attrs["status"] == "ok", fd.attrs["status"]
-    pairs = []
+    the same window; and the spectral ``tension_std`` (the root mean square of the seeds', each
+    at its own sea's frequencies)."""
+    pairs, spectral = [], []
     for seed in range(seeds):
+        fd = kanat.solve_frequency(irregular(tmp_path, line, hs, "frequency", seed))
+        assert fd.attrs["status"] == "ok", fd.attrs["status"]
+        spectral.append(fd.tension_std.values)
         case = irregular(tmp_path, line, hs, "time", seed, duration)
         with quiet(), warnings.catch_warnings():
             warnings.simplefilter("ignore")
@@ -82,19 +86,27 @@ def compare_std(tmp_path, line, hs, seeds, duration):
         assert ds.attrs["status"] == "ok", ds.attrs["status"]
         keep = ds.time.values >= SETTLE
         pairs.append((ds.tension.values[keep].std(axis=0), linear_series(fd, case, ds.time.values[keep]).std(axis=0)))
-    return np.array(pairs), fd.tension_std.values
+    return np.array(pairs), np.sqrt(np.mean(np.square(spectral), axis=0))
 
 
 def test_the_spectral_run_keeps_the_seas_variance_and_rao_motion(tmp_path):
-    """The spectrum's variance is the time domain's sea's (``Hs = 4 sqrt(m0)``), and the fairlead
-    moves as the RAOs say: its surge spectrum is ``|RAO|^2 S``."""
+    """The frequency domain solves at the frequencies of the time domain's sea for the case's seed
+    (drawn in their bins, unequally spaced); the spectrum's variance is that sea's (``Hs = 4
+    sqrt(m0)``) with every line weighted by its bin's width, and the fairlead moves as the RAOs
+    say: its surge spectrum is ``|RAO|^2 S``."""
+    case = irregular(tmp_path, "polyester", 2.0, "frequency", seed=5, segments=4)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        ds = kanat.solve_frequency(irregular(tmp_path, "polyester", 2.0, "frequency", segments=4))
+        ds = kanat.solve_frequency(case)
     w = ds.frequency.values
-    width = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * np.pi / 8.0 / len(w)   # each component's band (Tp 8 s)
+    np.testing.assert_array_equal(w, sea_from_model(case.environment).omega)
+    width = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * np.pi / 8.0 / len(w)   # each component's bin (Tp 8 s)
     assert np.all(np.diff(w) > 0) and w[0] > JONSWAP_BAND[0] * 2.0 * np.pi / 8.0
+    assert np.ptp(np.diff(w)) > 0.5 * width                     # the gaps are not the bins' width
     assert 4.0 * np.sqrt(ds.wave_spectrum.sum() * width) == pytest.approx(2.0, rel=1e-9)
+    np.testing.assert_allclose(ds.frequency_width.values, width, rtol=1e-12)
+    np.testing.assert_allclose(ds.tension_std.values ** 2, ds.frequency_width.values @ ds.tension_spectrum.values,
+                               rtol=1e-12)
     fairlead = int(np.argmax(ds.s.values))
     surge = 0.3 / (1 + (w / 0.6) ** 2)
     np.testing.assert_allclose(ds.motion_spectrum.values[:, fairlead, 0], surge**2 * ds.wave_spectrum.values,

@@ -20,6 +20,7 @@ from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem
 
 from helpers import DATA, quiet
+from helpers_moordyn import run_moordyn, secant
 
 MOORDYN_DATA = DATA / "moordyn"
 WD0050 = MOORDYN_DATA / "wd0050_chain.dat"
@@ -236,18 +237,11 @@ def test_the_coupling_agrees_with_moordyns_own_coupling(tmp_path):
                                      -math.cos(2 * math.pi * t / 10.0)])
 
     coupling = kanat.Coupling(THREE)
-    ours = [coupling.initialize(path(0.0))]
-    with quiet():
-        system = moordyn.Create(str(copy))
-        moordyn.Init(system, list(path(0.0).ravel()), [0.0] * 9)
-        theirs = []
-        for k in range(steps):
-            t = k * dt
-            secant = (path(t + dt) - path(t)) / dt
-            ours.append(coupling.step(t, dt, path(t), secant))
-            theirs.append(moordyn.Step(system, list(path(t).ravel()), list(secant.ravel()), t, dt))
-        moordyn.Close(system)
-    ours, theirs = np.array(ours[1:]), np.array(theirs).reshape(-1, 3, 3)
+    coupling.initialize(path(0.0))
+    rate = secant(path, dt)
+    ours = np.array([coupling.step(k * dt, dt, path(k * dt), rate(k * dt)) for k in range(steps)])
+    _, theirs = run_moordyn(moordyn, copy, steps * dt, dt, point=lambda t: path(t).ravel(), forces=True)
+    theirs = theirs[:, 1:].reshape(-1, 3, 3)
     largest = np.max(np.abs(theirs), axis=(0, 2))
     assert np.all(np.max(np.abs(ours - theirs), axis=(0, 2)) < 0.02 * largest)
     mine, ref = np.linalg.norm(ours, axis=2), np.linalg.norm(theirs, axis=2)
@@ -275,17 +269,10 @@ def test_a_coupled_body_agrees_with_moordyns_own_coupling(tmp_path):
         coupling = kanat.Coupling(BODY, rigid_vessel=True)
     assert coupling.points == ["body1"]
     coupling.initialize([q(0.0)])
-    ours, theirs = [], []
-    with quiet():
-        system = moordyn.Create(str(copy))
-        moordyn.Init(system, list(q(0.0)), [0.0] * 6)
-        for k in range(steps):
-            t = k * dt
-            rate = (q(t + dt) - q(t)) / dt
-            ours.append(coupling.step(t, dt, [q(t)], [rate])[0])
-            theirs.append(moordyn.Step(system, list(q(t)), list(rate), t, dt))
-        moordyn.Close(system)
-    ours, theirs = np.array(ours), np.array(theirs)
+    rate = secant(q, dt)
+    ours = np.array([coupling.step(k * dt, dt, [q(k * dt)], [rate(k * dt)])[0] for k in range(steps)])
+    _, theirs = run_moordyn(moordyn, copy, steps * dt, dt, point=q, forces=True)
+    theirs = theirs[:, 1:]
     force, moment = np.max(np.abs(theirs[:, :3])), np.max(np.abs(theirs[:, 3:]))
     scale = np.array([force] * 3 + [moment] * 3)
     assert np.all(np.max(np.abs(ours - theirs), axis=0) < 0.02 * scale)

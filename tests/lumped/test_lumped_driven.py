@@ -207,31 +207,6 @@ def test_a_heaving_three_chain_mooring_runs_with_the_implicit_scheme(tmp_path):
     np.testing.assert_allclose(mine, theirs, rtol=5e-3)
 
 
-JUMPER = """--------------------- MoorDyn Input File ------------------------------------
-A steep flexible jumper: 170 m from an anchor 100 m away at 55 m depth to a fairlead 5 m down
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-flex       0.396   165        5.0e8      -0.8        0          1.0    1.0    0.0     0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     100.0   0.0     -55.0   0      0       0      0
-2     Vessel    0.0     0.0     -5.0    0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     flex       1        2         170       34      -
----------------------- OPTIONS -----------------------------------------
-0.0005        dtM                  time step to use in mooring integration (s)
-3.0e6         kBot                 bottom stiffness (Pa/m)
-3.0e5         cBot                 bottom damping (Pa-s/m)
-1025.0        WtrDnsty             water density (kg/m^3)
-100           WtrDpth              water depth (m)
-------------------------- need this line --------------------------------------
-"""
-
-
 @pytest.mark.slow
 def test_a_steep_jumper_surged_agrees_with_moordyn_side_by_side(moordyn, case_file):
     """The steep jumper whose fairlead surges 10 m in 27 s (it stopped the default scheme at t = 0.03 s):
@@ -240,7 +215,7 @@ def test_a_steep_jumper_surged_agrees_with_moordyn_side_by_side(moordyn, case_fi
     3 %. MoorDyn is coupled every 2 ms: at the 0.05 s of the chain tests its piecewise-linear fairlead
     (a constant velocity per coupling step) rings the stiff line, and its own range comes out 35 %
     lower than with 1-5 ms (measured)."""
-    path = case_file(JUMPER, "jumper.dat")
+    path = case_file(helpers_moordyn.jumper_file(), "jumper.dat")
     duration = 81.0
 
     def surge(t):

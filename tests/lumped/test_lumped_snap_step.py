@@ -18,32 +18,15 @@ import numpy as np
 import pytest
 
 import kanat
-from kanat.io import load_case
 
-FALL = """
-name: slack-fall
-model: lumped
-environment: {water_density: 1000, gravity: 10}
-line_types:
-  wire: {diameter: 0.01, mass: 0.5, weight_in_water: 2.0, axial_stiffness: 1.0e6,
-         drag_normal: 1.2, drag_tangential: 0.0}
-bodies:
-  weight: {mass: 200, net_buoyancy: -1000, drag_area: 0.5}
-vessel: {tow_point: [0, 0, -5]}
-cables:
-  - {name: wire, line_type: wire, length: 20, segments: 10, from: vessel, to: weight,
-     end_a: {release_at: 5}}
-simulation: {duration: 9, dt: 0.01, output_dt: 0.5}
-"""
+from helpers import released_fall
 
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
-    path = tmp_path_factory.mktemp("fall") / "fall.yaml"
-    path.write_text(FALL)
+    case = released_fall(tmp_path_factory.mktemp("fall"), drag_tangential=0.0, duration=9, dt=0.01, output_dt=0.5)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        case = load_case(path)
         out = {}
         for name, keys in {"rk4": {"simulation.scheme": "rk4"}, "implicit 10 ms": {},
                            "implicit 2 ms": {"simulation.dt": 0.002}}.items():

@@ -1,7 +1,7 @@
 """Bending stiffness in the lumped model beside MoorDyn-C's (PyPI ``moordyn``), the same MoorDyn file
 (its line type's ``EI`` column is kanat's ``bending_stiffness``).
 
-The line is the steep jumper of tests/lumped/test_lumped_driven.py (170 m, d 0.396 m, 165 kg/m, EA 5e8 N,
+The line is the steep jumper of tests/lumped/test_lumped_driven.py (``helpers_moordyn.jumper_file``: 170 m, d 0.396 m, 165 kg/m, EA 5e8 N,
 damping ratio 0.8, Cd 1, Ca 1, 34 segments, from an anchor 100 m away at 55 m depth to a fairlead 5 m
 down, in 100 m of water) with EI 2e6 or 2e7 N m^2 (pinned ends in both codes: MoorDyn clamps a line
 only where it meets a rod).
@@ -29,32 +29,11 @@ from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.equilibrium import starting_state
 
 from helpers import quiet
-from helpers_moordyn import run_moordyn
+from helpers_moordyn import jumper_file, run_moordyn
 
 pytestmark = pytest.mark.slow
 
 SEGMENTS, MIDDLE, PERIOD = 34, 17, 27.0
-JUMPER = """--------------------- MoorDyn Input File ------------------------------------
-A steep jumper with bending stiffness, 170 m from an anchor 100 m away at 55 m depth to a fairlead 5 m down
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-flex       0.396   165        5.0e8      -0.8        {ei:g}     1.0    1.0    0.0     0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     100.0   0.0     -55.0   0      0       0      0
-2     Vessel    0.0     0.0     -5.0    0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     flex       1        2         170       {segments}      -
----------------------- OPTIONS -----------------------------------------
-0.0005        dtM                  time step to use in mooring integration (s)
-1025.0        WtrDnsty             water density (kg/m^3)
-100           WtrDpth              water depth (m)
-------------------------- need this line --------------------------------------
-"""
 
 
 def surge(t: float) -> np.ndarray:
@@ -114,7 +93,7 @@ def test_moordyn_holds_the_equilibrium_kanat_finds_for_a_line_with_bending(tmp_p
     lies 1.2 m and 5.5 m away and a line without EI would lie 0.9 m and 3.7 m away."""
     moordyn = pytest.importorskip("moordyn")
     path = tmp_path / "jumper.dat"
-    path.write_text(JUMPER.format(ei=stiffness, segments=SEGMENTS))
+    path.write_text(jumper_file(stiffness, SEGMENTS))
     case = kanat_case(path, 1.0, motion=False)
     model = LumpedModel(case)
     x = starting_state(model.net, case, model.system)[0][model.net.node_index]
@@ -144,7 +123,7 @@ def test_a_driven_line_with_bending_moves_as_moordyn_s(tmp_path):
     (docs/lumped.md)."""
     moordyn = pytest.importorskip("moordyn")
     path = tmp_path / "jumper.dat"
-    path.write_text(JUMPER.format(ei=2e6, segments=SEGMENTS))
+    path.write_text(jumper_file(2e6, SEGMENTS))
     duration = 2 * PERIOD
     case = kanat_case(path, duration, motion=True)
     model = LumpedModel(case)
@@ -173,7 +152,7 @@ def test_a_line_with_bending_whose_sag_goes_slack_says_so(tmp_path):
     notes = {}
     for stiffness in (2e6, 2e7):
         path = tmp_path / f"jumper_{stiffness:g}.dat"
-        path.write_text(JUMPER.format(ei=stiffness, segments=SEGMENTS))
+        path.write_text(jumper_file(stiffness, SEGMENTS))
         with quiet():
             ds = api.run(kanat_case(path, 20.0, motion=True), scheme="rk4").dataset
         slack = ds.segment_tension.values.min()

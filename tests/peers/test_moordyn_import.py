@@ -89,7 +89,19 @@ def test_examples_import_validate_and_round_trip_through_yaml(name, tmp_path):
     assert text.startswith(f"# Imported from {name} (MoorDyn v{result.version}) by kanat import.")
     again, problems = validate_data(load_yaml(text).data)
     assert problems == [] and again == case
-    assert [c.name for c in case.cables] == ["line1", "line2", "line3"]
+    assert [c.name for c in case.cables] == [f"line{k + 1}" for k in range(_line_rows(FOLDER / name))]
+
+
+def _line_rows(path) -> int:
+    """The rows of the LINES (v2) or LINE PROPERTIES (v1) table of a MoorDyn file."""
+    rows, inside = 0, False
+    for line in path.read_text().splitlines():
+        if line.lstrip().startswith("--"):
+            title = " ".join(line.upper().replace("-", " ").split())
+            inside = title in ("LINES", "LINE PROPERTIES")
+        elif inside and line.split() and line.split()[0].isdigit():
+            rows += 1
+    return rows
 
 
 def test_spread_mooring_numbers():

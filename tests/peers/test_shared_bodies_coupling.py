@@ -25,7 +25,7 @@ import kanat  # noqa: E402
 from kanat.coupling import moordyn_rotations  # noqa: E402
 from kanat.errors import KanatError  # noqa: E402
 
-from helpers import quiet  # noqa: E402
+from helpers_moordyn import run_moordyn, secant  # noqa: E402
 from test_shared_bodies import LAYOUTS, write_shared_array  # noqa: E402
 
 OFFSETS = {"body1": np.array([[8.0, 2.0, -12.0], [-8.0, 0.0, -12.0]]),      # the points in each body's axes,
@@ -129,17 +129,10 @@ def test_two_bodies_agree_with_moordyns_own_coupling(turned, tmp_path):
 
     coupling = _coupling(turned, rigid=True)
     coupling.initialize(q(0.0))
-    ours, theirs = [], []
-    with quiet():
-        system = moordyn.Create(str(copy))
-        moordyn.Init(system, list(q(0.0).ravel()), [0.0] * 12)
-        for k in range(steps):
-            t = k * dt
-            rate = (q(t + dt) - q(t)) / dt
-            ours.append(coupling.step(t, dt, q(t), rate))
-            theirs.append(moordyn.Step(system, list(q(t).ravel()), list(rate.ravel()), t, dt))
-        moordyn.Close(system)
-    ours, theirs = np.array(ours), np.array(theirs).reshape(-1, 2, 6)
+    rate = secant(q, dt)
+    ours = np.array([coupling.step(k * dt, dt, q(k * dt), rate(k * dt)) for k in range(steps)])
+    _, theirs = run_moordyn(moordyn, copy, steps * dt, dt, point=lambda t: q(t).ravel(), forces=True)
+    theirs = theirs[:, 1:].reshape(-1, 2, 6)
     force, moment = np.max(np.abs(theirs[..., :3])), np.max(np.abs(theirs[..., 3:]))
     difference = np.max(np.abs(ours - theirs), axis=0)
     assert np.all(difference[:, :3] < 0.01 * force)

@@ -1,5 +1,6 @@
 """Wave kinematics against the equations they must satisfy (Laplace, surface conditions,
-dispersion) and the JONSWAP spectrum against its moments."""
+dispersion) and the JONSWAP spectrum against its moments; a JONSWAP sea's records against the
+spectrum within their sampling error, and against repeating within a storm."""
 import math
 
 import numpy as np
@@ -7,7 +8,9 @@ import pytest
 from scipy.integrate import quad
 
 from kanat.errors import KanatError
-from kanat.physics.waves import jonswap_sea, jonswap_spectrum, regular_wave, wavenumber
+from kanat.physics.waves import JONSWAP_BAND, jonswap_sea, jonswap_spectrum, regular_wave, wavenumber
+
+from helpers import scatter_of_mean_square
 
 G = 9.81
 
@@ -70,6 +73,7 @@ def test_jonswap_has_the_requested_hs_peak_and_is_reproducible():
     assert 2 * math.pi / sea.omega[np.argmax(sea.amplitude)] == pytest.approx(8.0, rel=0.03)
     again = jonswap_sea(3.0, 8.0, 3.3, seed=7)
     np.testing.assert_array_equal(sea.phase, again.phase)
+    np.testing.assert_array_equal(sea.omega, again.omega)
     assert not np.array_equal(sea.phase, jonswap_sea(3.0, 8.0, 3.3, seed=8).phase)
     # DNV's normalization A = 1 - 0.287 ln(gamma) gives m0 = Hs^2/16 to within a few percent
     m0, _ = quad(lambda w: jonswap_spectrum(w, 3.0, 8.0, 3.3), 0.05, 20.0, limit=200)
@@ -85,3 +89,67 @@ def test_bad_waves_are_refused():
         regular_wave(-1.0, 5.0)
     with pytest.raises(KanatError, match="gamma"):
         jonswap_sea(2.0, 8.0, 0.5)
+
+
+def bin_edges(tp: float, components: int = 200) -> np.ndarray:
+    return np.linspace(JONSWAP_BAND[0], JONSWAP_BAND[1], components + 1) * 2 * math.pi / tp
+
+
+def test_a_jonswap_sea_does_not_repeat_within_a_storm():
+    """Equally spaced components (the same 200 bins, at their centres) repeat their envelope
+    every 2 pi / d_omega = 200 Tp / 3.5 = 629 s at Tp 11 s (each component turns a whole number
+    of times plus one common angle, so the wave groups and their maxima come back to round-off).
+    The sea's frequencies are drawn in their bins: a period later its envelope is uncorrelated
+    with itself, as a 3-hour storm's must be; the phases are those the seed gave before."""
+    sea = jonswap_sea(6.0, 11.0, 3.3, seed=7)
+    edges = bin_edges(11.0)
+    period = 2 * math.pi / (edges[1] - edges[0])
+    assert period == pytest.approx(200 * 11.0 / 3.5, rel=1e-12)
+    t = np.arange(0.0, 1800.0, 0.5)
+
+    def envelope(omega, time):                     # |sum a exp(i (omega t - phase))|
+        return np.abs(np.exp(1j * (np.multiply.outer(time, omega) - sea.phase)) @ sea.amplitude)
+
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    np.testing.assert_allclose(envelope(centres, t + period), envelope(centres, t), atol=1e-9)
+    assert np.all((sea.omega > edges[:-1]) & (sea.omega < edges[1:]))
+    np.testing.assert_array_equal(sea.phase, np.random.default_rng(7).uniform(0.0, 2 * math.pi, 200))
+    now, later = envelope(sea.omega, t), envelope(sea.omega, t + period)
+    assert abs(np.corrcoef(now, later)[0, 1]) < 0.2
+    assert np.corrcoef(envelope(centres, t), envelope(centres, t + period))[0, 1] > 0.999
+
+
+@pytest.mark.parametrize("seed", [0, 7, 12])
+def test_a_storms_record_has_the_spectrums_zeroth_moment(seed):
+    """The mean square of a 3-hour elevation record (1 s samples) is ``m0 = Hs^2 / 16`` within
+    3 standard deviations of the record mean of a sum of components at these frequencies
+    (``scatter_of_mean_square``: exact for independent uniform phases, whatever the spacing)."""
+    sea = jonswap_sea(4.0, 9.0, 3.3, seed=seed)
+    t = np.arange(0.0, 10800.0, 1.0)
+    eta = np.cos(np.multiply.outer(t, -sea.omega) + sea.phase) @ sea.amplitude
+    m0, sigma = np.mean(eta**2), scatter_of_mean_square(sea.amplitude, sea.omega, t)
+    assert abs(m0 - 4.0**2 / 16) < 3 * sigma, f"m0 {m0:.4f} m^2 vs {1.0:.4f} m^2 (sigma {sigma:.4f})"
+    assert sigma < 0.01                               # the test can tell: 3 sigma is < 3 % of m0
+
+
+def test_drawn_frequencies_sample_the_spectrum_without_bias():
+    """Before the amplitudes' scaling, ``sum S(omega_j) d_omega`` with ``omega_j`` uniform in bin
+    ``j`` is an unbiased estimate of the band's ``integral S d_omega`` whose variance is
+    ``sum_j (d_omega integral_bin S^2 - (integral_bin S)^2)``; over 40 seeds the estimates agree
+    with the integral (quad) within 3 standard deviations of their mean. The scaled sea's own
+    zeroth moment is Hs^2 / 16 to round-off."""
+    hs, tp, gamma = 3.0, 8.0, 3.3
+    edges = bin_edges(tp)
+    d_omega = edges[1] - edges[0]
+    bins = list(zip(edges[:-1], edges[1:]))
+    each = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma), a, b)[0] for a, b in bins])
+    square = np.array([quad(lambda w: jonswap_spectrum(w, hs, tp, gamma) ** 2, a, b)[0] for a, b in bins])
+    integral, sigma = each.sum(), math.sqrt(np.sum(d_omega * square - each**2))
+    estimates = []
+    for seed in range(40):
+        sea = jonswap_sea(hs, tp, gamma, seed=seed)
+        assert 0.5 * np.sum(sea.amplitude**2) == pytest.approx(hs**2 / 16, rel=1e-12)
+        estimates.append(np.sum(jonswap_spectrum(sea.omega, hs, tp, gamma)) * d_omega)
+    assert abs(np.mean(estimates) - integral) < 3 * sigma / math.sqrt(40)
+    assert np.std(estimates) == pytest.approx(sigma, rel=0.35)      # the spread the bins predict
+

@@ -118,8 +118,16 @@ class SpectralMoments:
         return SpectralMoments(self.m0 * f2, self.m1 * f2, self.m2 * f2, self.m4 * f2)
 
 
-def spectral_moments(omega, spectrum) -> SpectralMoments:
-    """The moments of a one-sided spectrum (trapezoidal rule on the given frequencies).
+def spectral_moments(omega, spectrum, width=None) -> SpectralMoments:
+    """The moments of a one-sided spectrum: a density sampled at ``omega`` (trapezoidal rule), or
+    a line spectrum whose line ``j`` stands for a band of width ``width_j``.
+
+    A line spectrum's moments are the sums ``m_n = sum_j omega_j^n S_j width_j``: those of the sum of
+    components ``a_j cos(omega_j t + phi_j)`` with ``a_j^2 / 2 = S_j width_j`` the spectrum was made
+    from (a JONSWAP sea's, :func:`kanat.physics.waves.jonswap_sea`, and the frequency domain's
+    responses to it), whatever the spacing of the lines. The trapezoidal rule would weigh each line
+    by half the gaps to its neighbours instead, which differs from ``width_j`` wherever the lines
+    are unequally spaced (as the JONSWAP sea's, drawn in their bins, are).
 
     Parameters
     ----------
@@ -127,6 +135,8 @@ def spectral_moments(omega, spectrum) -> SpectralMoments:
         Angular frequencies [rad/s], increasing, >= 0.
     spectrum : array_like, shape (n,)
         One-sided spectral density ``S(omega)`` [units^2 s/rad], >= 0.
+    width : float or array_like of shape (n,), optional
+        The band each line stands for [rad/s], > 0; None: ``spectrum`` samples a continuous density.
 
     Returns
     -------
@@ -143,7 +153,13 @@ def spectral_moments(omega, spectrum) -> SpectralMoments:
         raise KanatError("the spectrum's frequencies must be non-negative and increasing")
     if np.any(s < 0):
         raise KanatError("a spectral density cannot be negative")
-    m0, m1, m2, m4 = (float(trapezoid(w**n * s, w)) for n in (0, 1, 2, 4))
+    if width is None:
+        m0, m1, m2, m4 = (float(trapezoid(w**n * s, w)) for n in (0, 1, 2, 4))
+    else:
+        band = np.broadcast_to(np.asarray(width, dtype=float), w.shape)
+        if not np.all(band > 0):
+            raise KanatError("a line spectrum's widths must be positive")
+        m0, m1, m2, m4 = (float(np.sum(w**n * s * band)) for n in (0, 1, 2, 4))
     if not (m0 > 0 and m2 > 0 and m4 > 0):
         raise KanatError("the spectrum holds no energy away from zero frequency; its moments m0, m2, m4 "
                          "must be positive")

@@ -137,6 +137,7 @@ def design_offset(case: Case, sea_state, kind: str = "intact") -> DesignOffset:
 
 def line_tensions(variant: Case, offset: DesignOffset) -> dict[str, float]:
     """Each cable's larger end tension [N] with the vessel at ``offset.total`` along its heading."""
-    curve = api.offsets(variant, direction=offset.heading_deg, to=offset.total, steps=OFFSET_STEPS)
+    curve = api.offsets(variant, direction=offset.heading_deg, to=offset.total, steps=OFFSET_STEPS,
+                         each_body=False)                 # the tensions only: no per-body curves
     last = curve["end_tension"].isel(offset=-1)
     return {str(cable): float(last.sel(cable=cable).max()) for cable in curve["cable"].values}

@@ -47,12 +47,17 @@ class LineSpectra:
         Angular frequencies [rad/s], increasing.
     density : ndarray, shape (n_freq, n_nodes)
         One-sided spectral density of the tension [N^2 s/rad].
+    width : ndarray, shape (n_freq,), or None
+        The band each frequency stands for [rad/s] (a line spectrum, such as the frequency domain's
+        at a JONSWAP sea's unequally spaced components); None: ``density`` samples a continuous
+        spectrum (:func:`kanat.analysis.spectral.spectral_moments`).
     """
 
     s: np.ndarray
     mean: np.ndarray
     omega: np.ndarray
     density: np.ndarray
+    width: np.ndarray | None = None
 
     def __post_init__(self):
         n = np.shape(self.s)[0]
@@ -67,7 +72,7 @@ class LineSpectra:
 
     def moments(self, node: int):
         """:class:`kanat.analysis.spectral.SpectralMoments` at ``node``."""
-        return spectral_moments(self.omega, self.density[:, node])
+        return spectral_moments(self.omega, self.density[:, node], self.width)
 
 
 SpectralAnalysis = Callable[[Case], "dict[str, LineSpectra]"]
@@ -103,7 +108,8 @@ def frequency_domain(case: Case) -> "dict[str, LineSpectra]":
     """The spectral analysis of ``design.analysis: frequency``: :func:`kanat.frequency.solve_frequency`
     of the case (the lumped model linearised about its equilibrium, drag by stochastic
     linearisation in the sea state's JONSWAP sea), per cable its nodes' mean tension and tension
-    spectrum in the order of ``s``.
+    spectrum in the order of ``s``, a line spectrum whose lines weigh their bins' width
+    (``frequency_width``), so that its ``m_0`` is the solution's ``tension_std`` squared.
 
     A solution that fails its own checks (a node whose expected largest peak exceeds its mean
     tension goes slack; the drag linearisation did not converge) is a failure of that sea state
@@ -124,5 +130,6 @@ def frequency_domain(case: Case) -> "dict[str, LineSpectra]":
         nodes = nodes[np.argsort(ds["s"].values[nodes], kind="stable")]
         spectra[cable.name] = LineSpectra(s=ds["s"].values[nodes], mean=ds["mean_tension"].values[nodes],
                                           omega=ds["frequency"].values,
-                                          density=ds["tension_spectrum"].values[:, nodes])
+                                          density=ds["tension_spectrum"].values[:, nodes],
+                                          width=ds["frequency_width"].values)
     return spectra

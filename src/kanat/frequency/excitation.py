@@ -11,10 +11,13 @@ Two kinds of excitation (DNV-RP-C205 §3.5 for the spectral one):
 
 * **harmonic**: a regular wave, a sea of listed components, or harmonic ``vessel.motion``: the
   actual amplitudes at their frequencies (``eta_hat`` as the sea has it);
-* **spectral**: a JONSWAP sea, at the centres of the time domain's own bands
-  (:func:`kanat.physics.waves.jonswap_sea`), with unit amplitudes (transfer functions) and the
-  discrete spectrum ``S(omega_j) = a_j^2 / (2 d omega)`` whose variance is exactly that of the
-  time domain's sea.
+* **spectral**: a JONSWAP sea, at the frequencies of the time domain's own components for the
+  case's seed (:func:`kanat.physics.waves.jonswap_sea`: one per equal bin of width ``d omega``,
+  drawn in its bin), with unit amplitudes (transfer functions) and the discrete spectrum
+  ``S(omega_j) = a_j^2 / (2 d omega)``, each line standing for its bin, whose variance
+  ``sum S(omega_j) d omega`` is exactly that of the time domain's sea. The lines are unequally
+  spaced; their weight is the bin's width, never the gap between neighbours, so a response's
+  variance ``sum |H(omega_j)|^2 S(omega_j) d omega`` is the time domain's for the same seed.
 """
 from __future__ import annotations
 
@@ -48,7 +51,8 @@ class Excitation:
     spectrum : ndarray, shape (nf,) or None
         The sea's spectral density [m^2 s/rad] (spectral excitation), None for a harmonic one.
     bandwidth : float
-        The spectral lines' width ``d omega`` [rad/s] (0 for a harmonic excitation).
+        The spectral lines' width ``d omega`` [rad/s]: that of the bin each stands for, the same
+        for all, whatever the lines' spacing (0 for a harmonic excitation).
     reference : ndarray, shape (nf,)
         The amplitude a response is divided by for its RAO: ``|eta_hat|`` with waves, else the
         largest vessel harmonic at that frequency [m or rad].
@@ -118,8 +122,9 @@ def _refused(key: str, message: str) -> CaseError:
 
 def _spectral(case) -> Excitation:
     env, waves = case.environment, case.environment.waves
-    sea = jonswap_sea(waves.hs, waves.tp, waves.gamma, waves.heading_deg, depth=env.depth, gravity=env.gravity)
-    width = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * math.pi / waves.tp / len(sea.omega)
+    sea = jonswap_sea(waves.hs, waves.tp, waves.gamma, waves.heading_deg, seed=waves.seed, depth=env.depth,
+                      gravity=env.gravity)
+    width = (JONSWAP_BAND[1] - JONSWAP_BAND[0]) * 2.0 * math.pi / waves.tp / len(sea.omega)   # a bin's
     spectrum = sea.amplitude**2 / (2.0 * width)
     unit = LinearSea(np.ones_like(sea.omega), sea.omega, sea.k, sea.direction, np.zeros_like(sea.omega), sea.depth)
     motion = _rao_motion(case, unit)

@@ -9,7 +9,11 @@ Outputs (docs/frequency.md; ``X`` a complex amplitude, ``|X| cos(omega t + arg X
 * a harmonic excitation's own amplitudes: ``tension_amplitude(frequency, node)`` [N],
   ``tension_phase`` [rad], ``motion_amplitude(frequency, node, xyz)`` [m], ``motion_phase``;
 * a spectral one's spectra: ``wave_spectrum(frequency)`` [m^2 s/rad], ``tension_spectrum(frequency,
-  node)`` [N^2 s/rad] ``= |H_T|^2 S``, ``motion_spectrum(frequency, node, xyz)`` [m^2 s/rad];
+  node)`` [N^2 s/rad] ``= |H_T|^2 S``, ``motion_spectrum(frequency, node, xyz)`` [m^2 s/rad], and
+  ``frequency_width(frequency)`` [rad/s], the band each line stands for (the sea's bin width
+  ``d omega``; the lines are unequally spaced, :mod:`kanat.frequency.excitation`): a spectrum's
+  moments are ``sum omega^n S frequency_width``
+  (:func:`kanat.analysis.spectral.spectral_moments` with ``width``);
 * ``tension_std(node)`` [N], ``motion_std(node, xyz)`` [m], ``body_motion_std(body, dof)``: the
   square roots of ``sum S d omega`` (spectral) or ``sum |X|^2 / 2`` (harmonic);
 * ``mean_tension(node)`` [N] and ``position(node, xyz)`` [m]: the equilibrium.
@@ -100,6 +104,7 @@ def _dataset(model, ex, U: np.ndarray, tension: np.ndarray) -> xr.Dataset:
     }
     if ex.spectral:
         data["wave_spectrum"] = ("frequency", ex.spectrum, {"units": "m^2 s/rad"})
+        data["frequency_width"] = ("frequency", np.full(len(ex.omega), ex.bandwidth), {"units": "rad/s"})
         data["tension_spectrum"] = (("frequency", "node"), np.abs(tension) ** 2 * ex.spectrum[:, None],
                                     {"units": "N^2 s/rad"})
         data["motion_spectrum"] = (("frequency", "node", "xyz"), np.abs(motion) ** 2 * ex.spectrum[:, None, None],

@@ -98,14 +98,7 @@ class Row:
         """
         if column not in self.cells:
             return default
-        text = self.cells[column]
-        try:
-            value = float(text)
-        except ValueError:
-            raise TableError(f"{self.where(column)}: {text[:QUOTED_CHARACTERS]!r} is not a number") from None
-        if not math.isfinite(value):
-            raise TableError(f"{self.where(column)}: {text[:QUOTED_CHARACTERS]!r} is not a finite number")
-        return value
+        return finite_number(self.cells[column], self.where(column))
 
 
 def check_csv_file(path: FilePath, spec: TableSpec) -> None:
@@ -119,6 +112,24 @@ def check_csv_file(path: FilePath, spec: TableSpec) -> None:
     if size > spec.max_bytes:
         raise TableError(f"{path.name}: {size / 1024**2:.0f} MiB, more than the "
                          f"{spec.max_bytes / 1024**2:.0f} MiB a {spec.what} may hold")
+
+
+def finite_number(text: str, where: str, error: type[TableError] = TableError) -> float:
+    """``text`` as a finite number.
+
+    Raises
+    ------
+    TableError
+        Or its subclass ``error``: at ``where`` (file, line and column), quoting the text's first
+        :data:`QUOTED_CHARACTERS` characters, when it is no finite number.
+    """
+    try:
+        value = float(text)
+    except ValueError:
+        raise error(f"{where}: {text.strip()[:QUOTED_CHARACTERS]!r} is not a number") from None
+    if not math.isfinite(value):
+        raise error(f"{where}: {text.strip()[:QUOTED_CHARACTERS]!r} is not a finite number")
+    return value
 
 
 def read_rows(path: str | FilePath, spec: TableSpec) -> list[Row]:
@@ -192,4 +203,5 @@ def _header(cells: list[str], name: str, spec: TableSpec) -> list[str]:
     return names
 
 
-__all__ = ["MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "Row", "TableError", "TableSpec", "check_csv_file", "read_rows"]
+__all__ = ["MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "Row", "TableError", "TableSpec", "check_csv_file", "finite_number",
+           "read_rows"]

@@ -28,7 +28,7 @@ import math
 from pathlib import Path as FilePath
 
 from ..model.operations import DOFS
-from .csv_rows import TableError, TableSpec, read_rows
+from .csv_rows import TableError, TableSpec, finite_number, read_rows
 
 RAO_COLUMNS = ("omega", "heading_deg", "dof", "amplitude", "phase_deg")
 """Columns of a RAO CSV file."""
@@ -72,16 +72,6 @@ def read_raos(path: str | FilePath, ulen: float = 1.0) -> list[tuple[float, floa
     return rows
 
 
-def _number(text: str, where: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise RaoError(f"{where}: {text.strip()[:20]!r} is not a number") from None
-    if not math.isfinite(value):
-        raise RaoError(f"{where}: {text.strip()[:20]!r} is not a finite number")
-    return value
-
-
 def _read_csv(path: FilePath) -> list:
     rows = []
     for row in read_rows(path, RAO_TABLE):
@@ -116,7 +106,7 @@ def _read_wamit(path: FilePath, ulen: float) -> list:
                 raise RaoError(f"{path.name}, line {number}: {len(words)} values; a WAMIT .4 row is "
                                "PER BETA I MOD PHA RE IM")
             where = f"{path.name}, line {number}"
-            period, heading, mode, modulus, phase = (_number(w, where) for w in words[:5])
+            period, heading, mode, modulus, phase = (finite_number(w, where, RaoError) for w in words[:5])
             if period <= 0.0:
                 continue
             if mode not in (1, 2, 3, 4, 5, 6):

@@ -12,8 +12,9 @@ from typing import Any
 
 from ..errors import Problem
 from ..model.design import SEA_STATE_COLUMNS
-from ..model.paths import Path, key_path, line_of
-from .csv_rows import TableError, TableSpec, read_rows
+from ..model.paths import Path
+from .csv_rows import TableSpec, read_rows
+from .tables import read_named_table
 
 OPTIONAL = {"gamma": 3.3, "heading_deg": 0.0}
 """Columns a table may leave out, and their values."""
@@ -52,18 +53,8 @@ def resolve_sea_states(data: Any, base: FilePath, file: str | None,
     if not isinstance(design, dict) or not isinstance(design.get("sea_states"), str) \
             or design.get("sea_state_rows") is not None:
         return []
-    where: Path = ("design", "sea_states")
-    name = design["sea_states"]
-    try:
-        design["sea_state_rows"] = read_sea_states(base / name)
-        return []
-    except OSError as error:
-        message = (f"cannot read the sea-state table '{name}' ({error.strerror or error}); the "
-                   f"path is relative to the case file's folder {base}")
-    except TableError as error:
-        message = str(error)
-    del design["sea_states"]
-    return [Problem(key_path(where), message, file, line_of(lines, where))]
+    return read_named_table(design, "sea_states", "sea_state_rows", ("design", "sea_states"), read_sea_states,
+                            "sea-state table", base, file, lines)
 
 
 __all__ = ["OPTIONAL", "SEA_STATE_TABLE", "read_sea_states", "resolve_sea_states"]

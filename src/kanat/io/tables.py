@@ -69,36 +69,41 @@ def resolve_tables(data: Any, base: FilePath, file: str | None,
     if not isinstance(motion, dict) or not isinstance(motion.get("table"), str) \
             or motion.get("rows") is not None:
         return []
-    where: Path = ("vessel", "motion", "table")
-    name = motion["table"]
-    try:
-        motion["rows"] = read_motion_table(base / name)
-        return []
-    except OSError as error:
-        message = (f"cannot read the motion table '{name}' ({error.strerror or error}); the path "
-                   f"is relative to the case file's folder {base}")
-    except TableError as error:
-        message = str(error)
-    del motion["table"]            # reported here; the rest of the case is still checked
-    return [Problem(key_path(where), message, file, line_of(lines, where))]
+    return read_named_table(motion, "table", "rows", ("vessel", "motion", "table"), read_motion_table,
+                            "motion table", base, file, lines)
 
 
 def _resolve_raos(motion: dict, base: FilePath, file: str | None, lines: dict[Path, int]) -> list[Problem]:
     """``motion['rao_rows']`` from the RAO file ``motion['rao']`` (:mod:`kanat.io.raos`)."""
-    where: Path = ("vessel", "motion", "rao")
-    name = motion["rao"]
     ulen = motion.get("ulen", 1.0)
+    ulen = ulen if isinstance(ulen, (int, float)) and ulen > 0 else 1.0
+    return read_named_table(motion, "rao", "rao_rows", ("vessel", "motion", "rao"), lambda path: read_raos(path, ulen),
+                            "RAO file", base, file, lines)
+
+
+def read_named_table(section: dict, key: str, into: str, where: Path, read, what: str, base: FilePath,
+                     file: str | None, lines: dict[Path, int]) -> list[Problem]:
+    """Read the file named at ``section[key]`` (relative to ``base``) by ``read(path)`` into ``section[into]``.
+
+    Returns
+    -------
+    list of Problem
+        Empty once read; else the problem at the key path ``where``, naming the ``what`` (``"motion
+        table"``) and why it cannot be read. The key is then dropped (reported here; the rest of the
+        case is still checked).
+    """
+    name = section[key]
     try:
-        motion["rao_rows"] = read_raos(base / name, ulen if isinstance(ulen, (int, float)) and ulen > 0 else 1.0)
+        section[into] = read(base / name)
         return []
     except OSError as error:
-        message = (f"cannot read the RAO file '{name}' ({error.strerror or error}); the path "
+        message = (f"cannot read the {what} '{name}' ({error.strerror or error}); the path "
                    f"is relative to the case file's folder {base}")
     except TableError as error:                    # RaoError is one
         message = str(error)
-    del motion["rao"]
+    del section[key]
     return [Problem(key_path(where), message, file, line_of(lines, where))]
 
 
 __all__ = ["DOFS", "MAX_TABLE_BYTES", "MAX_TABLE_ROWS", "MOTION_TABLE", "TableError", "read_motion_table",
-           "resolve_tables"]
+           "read_named_table", "resolve_tables"]

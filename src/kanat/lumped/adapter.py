@@ -299,7 +299,9 @@ class LumpedModel:
         axial period, so a longer step does not follow the rise and the peak is not converged in the
         step. Measured: a released 20 m wire (axial period 3.6 ms) falling through its own slack peaks
         at 2.16 kN with rk4 at 10 ms and with the implicit scheme at 2 ms, at 25 kN with the implicit
-        scheme at 10 ms, its top node 10 m from rk4's (``tests/lumped/test_lumped_snap_step.py``)."""
+        scheme at 10 ms, its top node 10 m from rk4's (``tests/lumped/test_lumped_snap_step.py``); the
+        slack free end of WHOI's breaking tow stepped at 0.25 s (axial period 23 ms) falls 10 % deeper in
+        300 s than rk4's (``tests/whoi/test_whoi_events.py``)."""
         if self.scheme.explicit or not len(events["time"]) or self.dt <= self.info.axial_period:
             return None
         k = int(np.argmax(events["peak_tension"]))
@@ -308,7 +310,7 @@ class LumpedModel:
                 f"{self.net.element_where(int(events['element'][k]))}) under {self.scheme.name} at dt "
                 f"{self.dt:.4g} s, longer than the shortest axial nodal period {self.info.axial_period:.3g} s: "
                 "snap peaks are not converged in the step (they can be several times too high or too low) "
-                f"and the motion after them may differ; rerun with dt <= {self.info.axial_period:.3g} s or "
+                f"and the motion after them may differ (a slack free end by several per cent); rerun with dt <= {self.info.axial_period:.3g} s or "
                 "scheme rk4 to resolve them")
 
     # 6. finish ---------------------------------------------------------------------------

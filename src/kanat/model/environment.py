@@ -123,14 +123,16 @@ class RegularWaves(SeaOptions):
 
 
 class JonswapWaves(SeaOptions):
-    """Irregular waves from a JONSWAP spectrum with seeded random phases."""
+    """Irregular waves from a JONSWAP spectrum with seeded random phases and frequencies (one drawn in
+    each of 200 equal bins, so the sea never repeats: :func:`kanat.physics.waves.jonswap_sea`)."""
 
     type: Literal["jonswap"] = "jonswap"
     hs: float = quantity(unit="m", gt=0, description="significant wave height")
     tp: float = quantity(unit="s", gt=0, description="peak period")
     gamma: float = quantity(3.3, unit="-", ge=1, description="peak enhancement factor")
     heading_deg: float = quantity(0.0, unit="deg")
-    seed: int = Field(0, ge=0, description="random seed of the phases (numpy takes no negative seed)")
+    seed: int = Field(0, ge=0, description="random seed of the phases and of the frequencies drawn in their bins "
+                      "(numpy takes no negative seed)")
 
 
 def _as_component(value: Any) -> Any:

@@ -41,9 +41,12 @@ The JONSWAP spectrum (DNV-RP-C205 §3.5.5; Hasselmann et al. 1973)::
 
 with ``s = 0.07`` below the peak and ``0.09`` above; ``A`` is set so that the discrete
 components give exactly ``4 sqrt(m0) = Hs`` (DNV's ``1 - 0.287 ln gamma`` is its
-approximation). Components sit at the centres of equal bands between ``0.5 wp`` and
-``4 wp``, ``a_j = sqrt(2 S(w_j) dw)``, with phases uniform in ``[0, 2 pi)`` from a
-seeded generator, so a seed always gives the same sea.
+approximation). The band ``0.5 wp`` to ``4 wp`` is cut into equal bins of width ``dw``; component
+``j`` takes a frequency ``w_j`` drawn uniformly in its bin, ``a_j = sqrt(2 S(w_j) dw)`` and a phase
+uniform in ``[0, 2 pi)``, all from a seeded generator, so a seed always gives the same sea.
+Frequencies at the bins' centres would repeat the sea every ``2 pi / dw`` (``200 Tp / 3.5``, 630 s
+at Tp 11 s); drawn ones are incommensurate and it never repeats (Tucker, Challenor & Carter 1984,
+Appl. Ocean Res. 6(2), 118; :func:`jonswap_sea`).
 """
 from __future__ import annotations
 
@@ -58,7 +61,8 @@ from kanat.physics.ramp import ramp_factor
 STRETCHINGS = ("none", "wheeler")
 """Ways of taking the kinematics up to the instantaneous surface (module docstring, eq. 7)."""
 
-JONSWAP_COMPONENTS = 200      # components of an irregular sea: equally spaced, their groups repeat every 200 Tp / 3.5 (457 s at Tp 8 s)
+JONSWAP_COMPONENTS = 200      # components of an irregular sea, one per equal bin at a frequency drawn in it
+                              # (at the bins' centres the sea would repeat every 200 Tp / 3.5 s: jonswap_sea)
 JONSWAP_BAND = (0.5, 4.0)     # frequency band in multiples of the peak frequency (holds > 99.5 % of m0)
 SIGMA_LOW, SIGMA_HIGH = 0.07, 0.09   # JONSWAP peak widths below and above wp
 DEEP_KH = 20.0                # k h beyond which tanh(k h) = 1 to 1e-17
@@ -229,18 +233,53 @@ def jonswap_spectrum(omega, hs: float, tp: float, gamma: float = 3.3) -> np.ndar
 def jonswap_sea(hs: float, tp: float, gamma: float = 3.3, heading_deg: float = 0.0, *, seed: int = 0,
                 depth: float | None = None, gravity: float = 9.81,
                 components: int = JONSWAP_COMPONENTS) -> LinearSea:
-    """An irregular long-crested sea from the JONSWAP spectrum with seeded phases.
+    """An irregular long-crested sea from the JONSWAP spectrum (6) with seeded phases and frequencies.
 
-    The amplitudes are scaled so that ``4 sqrt(sum a^2 / 2) = hs`` exactly.
+    The band ``JONSWAP_BAND`` (in multiples of ``wp = 2 pi / tp``) is cut into ``components``
+    equal bins of width ``dw``. Component ``j`` takes a frequency ``omega_j`` drawn uniformly in
+    its bin, the amplitude ``a_j = sqrt(2 S(omega_j) dw)`` of the bin it stands for, and a phase
+    uniform in ``[0, 2 pi)``; the generator is seeded by ``seed``, the phases drawn first (so they
+    are those the same seed gave when the components sat at the bins' centres), then the
+    positions in the bins. The amplitudes are then scaled so that ``4 sqrt(sum a^2 / 2) = hs``
+    exactly.
+
+    Why drawn frequencies: components at the bins' centres are ``omega_0 + j dw``, so after
+    ``2 pi / dw = components tp / 3.5`` seconds (630 s at Tp 11 s) every one has turned a whole
+    number of times plus one common angle and the wave groups come back: a 3-hour storm would be
+    one 10-minute sea 17 times over, and the maxima of a long record those of 10 minutes.
+    Frequencies drawn in their bins are incommensurate and the sea never repeats (Tucker,
+    Challenor & Carter 1984, "Numerical simulation of a random sea: a common error and its effect
+    upon wave group statistics", Appl. Ocean Res. 6(2), 118-122). Every
+    component still stands for a bin of width ``dw``: a spectrum built from the components is
+    ``a_j^2 / (2 dw)`` at ``omega_j`` (what :mod:`kanat.frequency` does), whatever their spacing.
+
+    Parameters
+    ----------
+    hs, tp, gamma : float
+        Significant height [m], peak period [s], peak enhancement [-] of eq. (6).
+    heading_deg : float
+        The direction the waves travel to [deg], from ``+x``, counter-clockwise.
+    seed : int
+        Seed of the phases and frequencies: the same seed, the same sea, bit for bit.
+    depth, gravity : float
+        Water depth [m] (None: deep water) and gravity [m/s^2] of the dispersion relation (1).
+    components : int
+        Number of components (and bins).
+
+    Returns
+    -------
+    LinearSea
+        ``components`` components in increasing frequency.
     """
     if hs <= 0 or tp <= 0 or gamma < 1:
         raise KanatError(f"JONSWAP needs hs > 0, tp > 0, gamma >= 1 (got {hs}, {tp}, {gamma})")
     wp = 2.0 * math.pi / tp
     edges = np.linspace(JONSWAP_BAND[0] * wp, JONSWAP_BAND[1] * wp, components + 1)
-    omega = 0.5 * (edges[1:] + edges[:-1])
+    rng = np.random.default_rng(seed)
+    phase = rng.uniform(0.0, 2.0 * math.pi, components)
+    omega = edges[:-1] + rng.uniform(0.0, 1.0, components) * np.diff(edges)
     amplitude = np.sqrt(2.0 * jonswap_spectrum(omega, hs, tp, gamma) * np.diff(edges))
     amplitude *= hs / (4.0 * math.sqrt(0.5 * np.sum(amplitude**2)))
-    phase = np.random.default_rng(seed).uniform(0.0, 2.0 * math.pi, components)
     return LinearSea(amplitude, omega, wavenumber(omega, gravity, depth),
                      np.full(components, math.radians(heading_deg)), phase, depth)
 

@@ -230,8 +230,26 @@ def static_page(ds: xr.Dataset, source: str) -> Page:
         fig.update_layout(title={"text": "shape (hover: tension)"}, xaxis_title="x [m]", yaxis_title="z [m]",
                           yaxis_scaleanchor="x")
         page.section("shape", "Shape and tension", page.figure(fig, "plot-shape"))
+    elif "restoring_force" in ds and "offset" in ds.dims:
+        page.section("offsets", "Offset curve", _offset_curve(page, ds))
     page.section("statistics", "Summary", summary_table(summary_statistics(ds)))
     return page
+
+
+def _offset_curve(page: Page, ds: xr.Dataset):
+    """Restoring force along the offset direction against offset, the system curve and each coupled
+    body's own (:func:`kanat.report.offsets_plot.offset_curves`, as ``kanat offsets --plot``)."""
+    import plotly.graph_objects as go
+
+    from kanat.report.offsets_plot import SYSTEM, offset_curves
+
+    direction = float(ds.attrs.get("direction_deg", 0.0))
+    fig = go.Figure([go.Scatter(x=ds["offset"].values, y=force / 1e3, mode="lines+markers",
+                                name="all moved together" if name == SYSTEM else f"{name} alone, the others held")
+                     for name, (force, _) in offset_curves(ds).items()])
+    fig.update_layout(title={"text": "restoring force of the lines"}, xaxis_title=f"offset along {direction:g} deg [m]",
+                      yaxis_title=f"restoring force along {direction:g} deg [kN]")
+    return page.figure(fig, "plot-offsets")
 
 
 def result_report(ds: xr.Dataset, output, source: str = "", nodes=None, window=None, bodies=None) -> Path:

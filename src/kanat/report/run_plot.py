@@ -152,7 +152,8 @@ def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
     ds : xarray.Dataset
         A dynamic result (names of :mod:`kanat.io.schema`); a statics result (no ``time``)
         is drawn by :func:`kanat.report.statics_plot.plot_statics`, a frequency-domain one by
-        :func:`kanat.report.frequency_plot.plot_frequency`.
+        :func:`kanat.report.frequency_plot.plot_frequency`, an offset curve (``kanat offsets``)
+        by :func:`kanat.report.offsets_plot.plot_offsets`.
     path : path-like, optional
     snapshots : int
         Outputs drawn in the geometry views, evenly spaced, first and last included.
@@ -165,6 +166,10 @@ def plot_run(ds, path=None, snapshots: int = 6) -> Figure:
         from kanat.report.frequency_plot import plot_frequency
 
         return plot_frequency(ds, path)
+    if "offset" in ds.dims and "restoring_force" in ds:
+        from kanat.report.offsets_plot import plot_offsets
+
+        return plot_offsets(ds, path)
     if "time" not in ds.dims:
         from kanat.report.statics_plot import plot_statics
 

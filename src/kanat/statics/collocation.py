@@ -15,7 +15,7 @@ import numpy as np
 from scipy.integrate import solve_bvp
 
 from kanat.errors import SolverError
-from kanat.statics.guess import catenary_states, straight_guess
+from kanat.statics.guess import between_fixed_points, catenary_states, straight_guess
 from kanat.statics.problem import CableBVP, FixedEnd, Grounding, check_solvable, end_residual, steady_rhs
 from kanat.statics.solution import CableSolution
 
@@ -40,21 +40,7 @@ def solve_collocation(problem: CableBVP, s_out=None) -> CableSolution:
     """
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
     check_solvable(problem)
-    grounding = problem.grounding()
-    if grounding is not None:
-        guess = catenary_states(problem, seabed=True)
-        if guess is not None and guess[2] > 0.0:
-            try:
-                solution = _collocate_grounded(problem, s_out, grounding, guess)
-                if solution.grounded_length >= 0.0:
-                    return solution
-            except SolverError:
-                pass                              # the flow may lift the line off the seabed
-    solution, fine_z = _collocate_suspended(problem, s_out)
-    if grounding is not None and np.min(fine_z) < problem.seabed_z - 1e-9 * problem.length:
-        guess = catenary_states(problem, seabed=True)
-        return _collocate_grounded(problem, s_out, grounding, guess)
-    return solution
+    return between_fixed_points(problem, s_out, _collocate_grounded, _collocate_suspended)
 
 
 def _scales(problem: CableBVP) -> np.ndarray:
@@ -62,25 +48,30 @@ def _scales(problem: CableBVP) -> np.ndarray:
     return np.array([problem.length, problem.length, force, force])
 
 
-def _continued(solve_at, mesh, guess, label):
-    """Run ``solve_at(factor, mesh, guess)`` at full flow, or continue up from no flow."""
-    result = solve_at(1.0, mesh, guess)
+def _continued(solve_at, guess, label: str, name: str = "collocation"):
+    """Run ``solve_at(factor, guess)`` at full flow, or continue up from no flow in steps.
+
+    ``guess`` is ``(mesh, y, p)`` as ``solve_bvp`` takes them (``p`` None without parameters); each
+    step starts from the last converged result. ``name`` and ``label`` name the solver and the part
+    of the line in the error raised when no step is left.
+    """
+    result = solve_at(1.0, guess)
     if result.success:
         return result
     factor, step, halvings = 0.0, 1.0 / CONTINUATION_STEPS, 0
-    result = solve_at(0.0, mesh, guess)
+    result = solve_at(0.0, guess)
     if not result.success:
-        raise SolverError(f"collocation ({label}) failed even without current: {result.message}; "
+        raise SolverError(f"{name} ({label}) failed even without current: {result.message}; "
                           "check the end positions against the cable length")
     while factor < 1.0:
         trial = min(1.0, factor + step)
-        attempt = solve_at(trial, result.x, result.y if result.p is None else (result.y, result.p))
+        attempt = solve_at(trial, (result.x, result.y, result.p))
         if attempt.success:
             result, factor = attempt, trial
             continue
         step, halvings = step / 2, halvings + 1
         if halvings > MAX_HALVINGS:
-            raise SolverError(f"collocation ({label}) lost the solution at {100 * trial:.1f} % of the flow "
+            raise SolverError(f"{name} ({label}) lost the solution at {100 * trial:.1f} % of the flow "
                               f"speed ({attempt.message}); the steady state may not exist")
     return result
 
@@ -90,8 +81,9 @@ def _collocate_suspended(problem: CableBVP, s_out):
     length = problem.length
     end_scale = [scale[0] if isinstance(e, FixedEnd) else scale[2] for e in (problem.start, problem.end)]
 
-    def solve_at(factor, mesh, guess):
+    def solve_at(factor, guess):
         flow_problem = problem.with_flow(factor)
+        mesh, y0 = guess[0], guess[1]
 
         def fun(sigma, y):
             return steady_rhs(flow_problem, y * scale[:, None]) * length / scale[:, None]
@@ -99,13 +91,13 @@ def _collocate_suspended(problem: CableBVP, s_out):
         def bc(ya, yb):
             return np.concatenate([end_residual(flow_problem, 0, ya * scale) / end_scale[0],
                                    end_residual(flow_problem, 1, yb * scale) / end_scale[1]])
-        return solve_bvp(fun, bc, mesh, guess, tol=TOL, max_nodes=MAX_NODES)
+        return solve_bvp(fun, bc, mesh, y0, tol=TOL, max_nodes=MAX_NODES)
 
     guess = None
     if all(isinstance(e, FixedEnd) for e in (problem.start, problem.end)):
         guess = catenary_states(problem, seabed=False)
     s_guess, y_guess = guess[:2] if guess is not None else straight_guess(problem)
-    result = _continued(solve_at, s_guess / length, y_guess / scale[:, None], "suspended line")
+    result = _continued(solve_at, (s_guess / length, y_guess / scale[:, None], None), "suspended line")
     y = result.sol(s_out / length) * scale[:, None]
     fine_z = result.sol(np.linspace(0.0, 1.0, 2001))[1] * length
     return CableSolution(s_out, y[0], y[1], y[2:4].T.copy(), "collocation", 0.0, int(result.niter)), fine_z
@@ -120,9 +112,9 @@ def _collocate_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -
     def s_of(sigma, grounded):
         return grounded + sigma * (length - grounded) if touchdown_at_start else sigma * (length - grounded)
 
-    def solve_at(factor, mesh, guess_yp):
+    def solve_at(factor, guess):
         flow_problem = problem.with_flow(factor)
-        y0, p0 = guess_yp
+        mesh, y0, p0 = guess
 
         def fun(sigma, y, p):
             return steady_rhs(flow_problem, y * scale[:, None]) * (length * (1.0 - p[0])) / scale[:, None]
@@ -135,11 +127,13 @@ def _collocate_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -
                                    (y_far[0:2] * scale[0:2] - target) / length])
         return solve_bvp(fun, bc, mesh, y0, p=p0, tol=TOL, max_nodes=MAX_NODES)
 
+    if guess is None:                                   # no grounded catenary: as shooting starts
+        guess = (*straight_guess(problem), 0.01 * length)
     s_guess, y_guess, grounded_guess = guess
     sigma = np.linspace(0.0, 1.0, 101)
     s_suspended = s_of(sigma, grounded_guess)
     y0 = np.vstack([np.interp(s_suspended, s_guess, row) for row in y_guess]) / scale[:, None]
-    result = _continued(solve_at, sigma, (y0, np.array([grounded_guess / length])), "line on the seabed")
+    result = _continued(solve_at, (sigma, y0, np.array([grounded_guess / length])), "line on the seabed")
     grounded = float(result.p[0] * length)
     sigma_out = np.clip((s_out - (grounded if touchdown_at_start else 0.0)) / (length - grounded), 0.0, 1.0)
     y = result.sol(sigma_out) * scale[:, None]

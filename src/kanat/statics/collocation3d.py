@@ -18,37 +18,14 @@ import numpy as np
 from scipy.integrate import solve_bvp
 
 from kanat.errors import SolverError
+from kanat.statics.collocation import MAX_NODES, TOL, _continued
 from kanat.statics.guess3d import grounding_guess, still_water_force
-from kanat.statics.shooting3d import Path, _integrate, _solution, stands_up
+from kanat.statics.shooting3d import Path, _integrate, _solution, anchored_or_suspended
 from kanat.statics.solution import CableSolution
 from kanat.statics.spatial import CableBVP3, Fixed3, Piece, check_solvable, end_residual, grounded_states, jump, rhs
 
-TOL = 1e-8
-MAX_NODES = 5_000        # finer means no smooth solution (a slack line): fail in seconds, not minutes
-CONTINUATION_STEPS = 4
-MAX_HALVINGS = 6
 MESH = 41
-
-
-def _continued(solve_at, guess, label):
-    result = solve_at(1.0, guess)
-    if result.success:
-        return result
-    factor, step, halvings = 0.0, 1.0 / CONTINUATION_STEPS, 0
-    result = solve_at(0.0, guess)
-    if not result.success:
-        raise SolverError(f"3-D collocation ({label}) failed even without current: {result.message}")
-    while factor < 1.0:
-        trial = min(1.0, factor + step)
-        attempt = solve_at(trial, (result.x, result.y, result.p))
-        if attempt.success:
-            result, factor = attempt, trial
-            continue
-        step, halvings = step / 2, halvings + 1
-        if halvings > MAX_HALVINGS:
-            raise SolverError(f"3-D collocation ({label}) lost the solution at {100 * trial:.1f} % of the flow speed "
-                              f"({attempt.message}); the steady state may not exist")
-    return result
+NAME = "3-D collocation"
 
 
 class _System:
@@ -103,21 +80,7 @@ def solve_collocation3(problem: CableBVP3, s_out=None) -> CableSolution:
     """Solve the 3-D steady cable by collocation (module docstring); same stations as shooting."""
     check_solvable(problem)
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
-    anchor = problem.grounding_anchor()
-    if anchor is not None and not stands_up(problem):
-        try:
-            return _grounded(problem, s_out, anchor)
-        except SolverError:
-            pass
-    try:
-        solution, fine_z, fine_x = _suspended(problem, s_out)
-    except SolverError:
-        if anchor is None:
-            raise
-        return _grounded(problem, s_out, anchor)
-    if anchor is not None and np.any(fine_z < problem.seabed.height(fine_x) - 1e-9 * problem.length):
-        return _grounded(problem, s_out, anchor)
-    return solution
+    return anchored_or_suspended(problem, s_out, _grounded, _suspended)
 
 
 def _oriented(problem: CableBVP3) -> CableBVP3:
@@ -131,6 +94,7 @@ def _oriented(problem: CableBVP3) -> CableBVP3:
 
 
 def _suspended(problem: CableBVP3, s_out):
+    """The line off the seabed, collocated from its fixed end; its profile ``() -> (x, z)`` [m]."""
     reverse = not isinstance(problem.start, Fixed3)
     work = _oriented(problem)
     system = _System(work, work.pieces)
@@ -149,7 +113,7 @@ def _suspended(problem: CableBVP3, s_out):
         return solve_bvp(lambda s, y: system.fun(flowed, s, y, None), bc, mesh, y0, tol=TOL, max_nodes=MAX_NODES)
 
     sigma, y0 = _guess(work, system, np.concatenate([origin, still_water_force(work, 0)]), 0.0)
-    result = _continued(solve_at, (sigma, y0, None), "suspended line")
+    result = _continued(solve_at, (sigma, y0, None), "suspended line", NAME)
     y = _sample(work, system, result, np.linspace(0.0, work.length, 2001))
     fine_x, fine_z = y[0], y[2]
     stations = work.length - s_out[::-1] if reverse else s_out
@@ -157,7 +121,7 @@ def _suspended(problem: CableBVP3, s_out):
     if reverse:
         out = out[:, ::-1]
         out[3:6] *= -1.0                    # F = T t with t reversed
-    return _solution(s_out, out, "collocation", 0.0, int(result.niter)), fine_z, fine_x
+    return _solution(s_out, out, "collocation", 0.0, int(result.niter)), lambda: (fine_x, fine_z)
 
 
 def _sample(problem, system: _System, result, s_out, start_s: float = 0.0):
@@ -229,4 +193,4 @@ def _grounded_solve(work: CableBVP3, system: _System, tension, grounded, psi):
     _, touchdown = grounded_states(work.with_flow(0.0), 0, tension, grounded, psi, [0.0])
     sigma, y0 = _guess(work, system, touchdown, grounded)
     p0 = np.array([tension / reference, grounded / length, psi])
-    return _continued(solve_at, (sigma, y0, p0), "line on the seabed")
+    return _continued(solve_at, (sigma, y0, p0), "line on the seabed", NAME)

@@ -58,6 +58,33 @@ def catenary_states(problem: CableBVP, seabed: bool, s=None):
     return s, y, cat.grounded_length
 
 
+def between_fixed_points(problem: CableBVP, s_out, grounded, suspended, missing=None) -> CableSolution:
+    """A line between two fixed points, resting on the seabed where it must: the order in which the
+    shooting and the collocation solvers try their two problems.
+
+    1. Where the seabed is within reach (``problem.grounding()``) and the grounded catenary rests a
+       length on it: ``grounded(problem, s_out, grounding, guess)`` from that catenary, kept if it
+       solves with a grounded length >= 0 (the flow may lift the line off the seabed);
+    2. else ``suspended(problem, s_out) -> (solution, fine_z)``, kept unless its profile ``fine_z``
+       [m] dips below the seabed;
+    3. then ``grounded`` from the grounded catenary, or from ``missing`` where there is none.
+    """
+    grounding = problem.grounding()
+    if grounding is not None:
+        guess = catenary_states(problem, seabed=True)
+        if guess is not None and guess[2] > 0.0:
+            try:
+                solution = grounded(problem, s_out, grounding, guess)
+                if solution.grounded_length >= 0.0:
+                    return solution
+            except SolverError:
+                pass                              # the flow may lift the line off the seabed
+    solution, fine_z = suspended(problem, s_out)
+    if grounding is not None and np.min(fine_z) < problem.seabed_z - 1e-9 * problem.length:
+        return grounded(problem, s_out, grounding, catenary_states(problem, seabed=True) or missing)
+    return solution
+
+
 def solve_catenary(problem: CableBVP, s_out=None) -> CableSolution:
     """The fast path: closed-form elastic catenary for a line between two fixed points, no flow."""
     if not all(isinstance(e, FixedEnd) for e in (problem.start, problem.end)):

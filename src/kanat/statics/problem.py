@@ -64,8 +64,40 @@ class LineProperties:
 
 
 @dataclass(frozen=True)
-class FlowProfile:
-    """Water velocity relative to the cable, piecewise linear in ``z``.
+class PiecewiseFlow:
+    """Water velocity relative to the cable, piecewise linear in ``z``, in any number of components.
+
+    Attributes
+    ----------
+    z : ndarray, shape (k,)
+        Increasing heights of the rows [m]; one row means a uniform flow.
+    velocity : ndarray, shape (k, c)
+        The velocity's ``c`` components at each row [m/s]; constant beyond the first and last row.
+    """
+
+    z: np.ndarray
+    velocity: np.ndarray
+
+    @property
+    def is_uniform(self) -> bool:
+        return bool(np.all(self.velocity == self.velocity[0]))
+
+    def at(self, z):
+        """Velocity at heights ``z`` (any shape) -> shape ``z.shape + (c,)``."""
+        z = np.asarray(z, dtype=float)
+        components = self.velocity.shape[1]
+        if self.is_uniform:
+            return np.broadcast_to(self.velocity[0], z.shape + (components,)).copy()
+        return np.stack([np.interp(z, self.z, self.velocity[:, k]) for k in range(components)], axis=-1)
+
+    def scaled(self, factor: float):
+        """The same flow with every velocity times ``factor``."""
+        return type(self)(self.z, self.velocity * factor)
+
+
+@dataclass(frozen=True)
+class FlowProfile(PiecewiseFlow):
+    """Water velocity relative to the cable in the plane, piecewise linear in ``z``.
 
     Attributes
     ----------
@@ -81,20 +113,6 @@ class FlowProfile:
     @classmethod
     def uniform(cls, ux: float = 0.0, uz: float = 0.0) -> FlowProfile:
         return cls(np.zeros(1), np.array([[ux, uz]], dtype=float))
-
-    @property
-    def is_uniform(self) -> bool:
-        return bool(np.all(self.velocity == self.velocity[0]))
-
-    def at(self, z):
-        """Velocity at heights ``z`` (any shape) -> shape ``z.shape + (2,)``."""
-        z = np.asarray(z, dtype=float)
-        if self.is_uniform:
-            return np.broadcast_to(self.velocity[0], z.shape + (2,)).copy()
-        return np.stack([np.interp(z, self.z, self.velocity[:, k]) for k in range(2)], axis=-1)
-
-    def scaled(self, factor: float) -> FlowProfile:
-        return FlowProfile(self.z, self.velocity * factor)
 
 
 @dataclass(frozen=True)

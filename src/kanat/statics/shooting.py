@@ -23,7 +23,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import root, root_scalar
 
 from kanat.errors import SolverError
-from kanat.statics.guess import catenary_states, straight_guess
+from kanat.statics.guess import between_fixed_points, catenary_states, straight_guess
 from kanat.statics.problem import BodyEnd, CableBVP, Grounding, check_solvable, steady_rhs
 from kanat.statics.solution import CableSolution
 
@@ -160,21 +160,8 @@ def _solve_continued(residual, unknowns, scale, label: str, name: str = "shootin
 
 def _shoot_between_points(problem: CableBVP, s_out) -> CableSolution:
     """A line between two fixed points, resting on the seabed where it must."""
-    grounding = problem.grounding()
-    if grounding is not None:
-        guess = catenary_states(problem, seabed=True)
-        if guess is not None and guess[2] > 0.0:
-            try:
-                solution = _shoot_grounded(problem, s_out, grounding, guess)
-                if solution.grounded_length >= 0.0:
-                    return solution
-            except SolverError:
-                pass                              # the flow may lift the line off the seabed
-    solution, fine_z = _shoot_suspended(problem, s_out)
-    if grounding is not None and np.min(fine_z) < problem.seabed_z - 1e-9 * problem.length:
-        guess = catenary_states(problem, seabed=True) or (None, None, 0.01 * problem.length)
-        return _shoot_grounded(problem, s_out, grounding, guess)
-    return solution
+    missing = (None, None, 0.01 * problem.length)
+    return between_fixed_points(problem, s_out, _shoot_grounded, _shoot_suspended, missing)
 
 
 def _shoot_suspended(problem: CableBVP, s_out):

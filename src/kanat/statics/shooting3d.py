@@ -115,23 +115,35 @@ def solve_shooting3(problem: CableBVP3, s_out=None) -> CableSolution:
     """
     check_solvable(problem)
     s_out = np.linspace(0.0, problem.length, 101) if s_out is None else np.asarray(s_out, dtype=float)
+    return anchored_or_suspended(problem, s_out, _shoot_grounded, _shoot_suspended)
+
+
+def anchored_or_suspended(problem: CableBVP3, s_out, grounded, suspended) -> CableSolution:
+    """A line that may rest on the seabed from its anchor: the order in which the 3-D shooting and
+    collocation solvers try their two problems.
+
+    1. Where the line can rest on the seabed from an anchor (``problem.grounding_anchor()``) and does
+       not stand up from it (:func:`stands_up`): ``grounded(problem, s_out, anchor)``, kept if it solves;
+    2. else ``suspended(problem, s_out) -> (solution, profile)``, kept unless, with an anchor, it fails
+       or the line's profile ``profile() -> (x, z)`` [m] dips below the seabed;
+    3. then ``grounded``.
+    """
     anchor = problem.grounding_anchor()
     if anchor is not None and not stands_up(problem):
         try:
-            return _shoot_grounded(problem, s_out, anchor)
+            return grounded(problem, s_out, anchor)
         except SolverError:
             pass                                   # the line may not touch the seabed after all
     try:
-        if any(isinstance(e, Body3) for e in (problem.start, problem.end)):
-            solution, path = _shoot_from_body(problem, s_out)
-        else:
-            solution, path = _shoot_free(problem, s_out)
+        solution, profile = suspended(problem, s_out)
     except SolverError:
         if anchor is None:
             raise
-        return _shoot_grounded(problem, s_out, anchor)
-    if anchor is not None and _below_seabed(problem, path):
-        return _shoot_grounded(problem, s_out, anchor)
+        return grounded(problem, s_out, anchor)
+    if anchor is not None:
+        x, z = profile()
+        if np.any(z < problem.seabed.height(x) - 1e-9 * problem.length):
+            return grounded(problem, s_out, anchor)
     return solution
 
 
@@ -146,9 +158,17 @@ def stands_up(problem: CableBVP3) -> bool:
     return float(lift(problem)[2]) > sum(p.line.weight * p.length for p in problem.pieces)
 
 
-def _below_seabed(problem: CableBVP3, path: Path) -> bool:
-    fine = path.sample(problem, np.linspace(0.0, problem.length, 2001))
-    return bool(np.any(fine[2] < problem.seabed.height(fine[0]) - 1e-9 * problem.length))
+def _shoot_suspended(problem: CableBVP3, s_out):
+    """The line off the seabed, shot from its body end or between its fixed ends; its profile."""
+    if any(isinstance(e, Body3) for e in (problem.start, problem.end)):
+        solution, path = _shoot_from_body(problem, s_out)
+    else:
+        solution, path = _shoot_free(problem, s_out)
+
+    def profile():
+        fine = path.sample(problem, np.linspace(0.0, problem.length, 2001))
+        return fine[0], fine[2]
+    return solution, profile
 
 
 def _shoot_from_body(problem: CableBVP3, s_out):

@@ -32,7 +32,7 @@ from kanat.errors import SolverError
 from kanat.statics import budget
 from kanat.physics.drag import body_drag, cable_drag
 from kanat.physics.immersion import float_buoyancy, sphere_fraction
-from kanat.statics.problem import LineProperties
+from kanat.statics.problem import LineProperties, PiecewiseFlow
 
 UP = np.array([0.0, 0.0, 1.0])
 
@@ -99,25 +99,11 @@ class Body3:
 
 
 @dataclass(frozen=True)
-class Flow3:
+class Flow3(PiecewiseFlow):
     """Water velocity relative to the cable, piecewise linear in ``z``: heights ascending (k,), rows (k, 3)."""
 
     z: np.ndarray = field(default_factory=lambda: np.zeros(1))
     velocity: np.ndarray = field(default_factory=lambda: np.zeros((1, 3)))
-
-    @property
-    def is_uniform(self) -> bool:
-        return bool(np.all(self.velocity == self.velocity[0]))
-
-    def at(self, z):
-        """Velocity at heights ``z`` (any shape) -> ``z.shape + (3,)``."""
-        z = np.asarray(z, dtype=float)
-        if self.is_uniform:
-            return np.broadcast_to(self.velocity[0], z.shape + (3,)).copy()
-        return np.stack([np.interp(z, self.z, self.velocity[:, c]) for c in range(3)], axis=-1)
-
-    def scaled(self, factor: float) -> Flow3:
-        return Flow3(self.z, self.velocity * factor)
 
     def rotated(self, matrix) -> Flow3:
         """The flow turned by a rotation ``matrix`` (3, 3) about the vertical."""
