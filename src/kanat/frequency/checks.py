@@ -64,16 +64,17 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
 def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
     """``(failure, note)`` of the offset nonlinearity check (module docstring)."""
     weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(len(ex.omega), 0.5)
-    excursion = nonlinearity.vessel_excursion(response.prescribed, weight, ex.spectral)
-    if excursion is None:
+    excursions = nonlinearity.vessel_excursions(response.prescribed, weight, ex.spectral)
+    if not excursions:
         return None, None
     how = f"{nonlinearity.SIGMAS:g} sigma" if ex.spectral else "amplitude"
     dynamic = nonlinearity.SIGMAS * ds.tension_std.values if ex.spectral else ds.tension_amplitude.values.sum(axis=0)
     try:
-        check = nonlinearity.offset_check(model, case, excursion, dynamic)
+        checks = [nonlinearity.offset_check(model, case, excursion, dynamic) for excursion in excursions]
     except SolverError as error:
         return (f"outside the linear range: the static equilibrium with the vessel offset by its excursion "
                 f"({how}) did not converge ({error}); run method: time"), None
+    check = max(checks, key=lambda c: float(np.max(c.ratio)))
     ratio = check.ratio
     worst = int(np.argmax(ratio))
     where = f"node {worst} (cable {ds.cable.values[worst]}, s = {float(ds.s.values[worst]):.4g} m)"

@@ -20,10 +20,12 @@ predicts, and at :data:`QUIET` of the node's mean tension, so that a system the 
 loads (a tow heaved with its vessel in a uniform flow: 2.7 N of 12 kN) is not judged by a term
 that does not matter against its tension.
 
-The excursion ``d`` (p, 3) of the p vessel points is along the principal axis ``e`` of their
+The excursions ``d`` (p, 3) of the p vessel points are along the principal axes ``e`` of their
 displacements' covariance ``C = sum_f w_f Re(u_f u_f^H)`` (``w_f = S d omega`` for a spectral
-excitation, ``1/2`` for a harmonic one): ``d = SIGMAS sqrt(lambda_max) e`` for a sea state, and
-``d = sum_f |e . u_f| e`` (the harmonics' amplitudes summed) for a harmonic excitation.
+excitation, ``1/2`` for a harmonic one) whose variance ``lambda`` is at least :data:`AXES` of the
+largest (a slow surge and a wave-frequency heave are checked each on its own):
+``d = SIGMAS sqrt(lambda) e`` for a sea state, and ``d = sum_f |e . u_f| e`` (the harmonics'
+amplitudes summed) for a harmonic excitation. The worst axis is the check's.
 """
 from __future__ import annotations
 
@@ -41,6 +43,7 @@ LIMIT = 0.05        # r of eq. (1) beyond which the result is warned of: calibra
 REFUSE = 0.10       # r beyond which the result fails (the 1 m chain surge, 17-49 % off: r = 0.129)
 SIGMAS = 2.0        # a sea state's excursion in standard deviations of the vessel's motion
 FLOOR = 0.1         # of the largest quasi-static swing: the least denominator of eq. (1)
+AXES = 0.01         # of the largest variance: the least of a principal axis that is checked
 QUIET = 0.01        # of the node's mean tension: the least denominator of eq. (1)
 
 
@@ -77,20 +80,24 @@ class OffsetCheck:
         return float(np.max(np.linalg.norm(self.excursion, axis=1)))
 
 
-def vessel_excursion(prescribed: np.ndarray, weight: np.ndarray, spectral: bool) -> np.ndarray | None:
-    """``d`` (p, 3) of the module docstring from the vessel points' complex displacements (nf, p, 3)
-    and the variance weights (nf,); None when the vessel does not move."""
+def vessel_excursions(prescribed: np.ndarray, weight: np.ndarray, spectral: bool) -> list[np.ndarray]:
+    """The excursions ``d`` (p, 3) of the module docstring, largest first, from the vessel points'
+    complex displacements (nf, p, 3) and the variance weights (nf,); none when the vessel does not
+    move."""
     nf, p = prescribed.shape[:2]
     if p == 0:
-        return None
+        return []
     u = prescribed.reshape(nf, -1)
     covariance = np.einsum("f,fa,fb->ab", weight, u, u.conj()).real
     values, vectors = np.linalg.eigh(covariance)
-    if values[-1] <= 0.0:
-        return None
-    axis = vectors[:, -1]
-    size = SIGMAS * math.sqrt(values[-1]) if spectral else float(np.abs(u @ axis).sum())
-    return (size * axis).reshape(p, 3)
+    out = []
+    for k in np.argsort(values)[::-1]:
+        if values[k] <= 0.0 or values[k] < AXES * values.max():
+            break
+        axis = vectors[:, k]
+        size = SIGMAS * math.sqrt(values[k]) if spectral else float(np.abs(u @ axis).sum())
+        out.append((size * axis).reshape(p, 3))
+    return out
 
 
 def offset_check(model, case, excursion: np.ndarray, dynamic: np.ndarray) -> OffsetCheck:
