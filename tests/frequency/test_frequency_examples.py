@@ -6,6 +6,7 @@
 * ``examples/towed_body.yaml``, linearised about its steady tow (a line in the uniform relative
   flow at 6 kn), its tow point heaving 0.5 m in 20 s: every node's tension amplitude and phase
   against kanat's time domain (harmonic fit of the last three of eight periods).
+* The natural modes of that tow are those of the same line held still in the same relative flow.
 * The examples without waves or vessel motion are refused with the reason.
 """
 import warnings
@@ -84,6 +85,20 @@ def test_a_heaving_tow_against_the_time_domain():
     np.testing.assert_allclose(ds.tension_amplitude.values[0], np.abs(reference), rtol=0.02)
     np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[0] - np.angle(reference)))), 0.0,
                                atol=0.05)
+
+
+@pytest.mark.slow
+def test_the_modes_of_a_tow_are_those_of_the_line_held_in_the_same_flow():
+    """Galilean invariance: ``examples/towed_body.yaml`` towed at 6 kn has the natural periods of the
+    same line held still in a 6 kn current (measured: equal to 1e-9; 36.43, 27.70, 20.09, 16.16 s)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tow = kanat.load_case(EXAMPLES / "towed_body.yaml")
+        held = tow.replace({"vessel.track": [{"straight": {"speed": 0.0, "duration": 600.0}}],
+                            "environment.current.velocity": [-6 * 1852 / 3600, 0.0, 0.0]})
+        towed, still = kanat.modes(tow, n=4), kanat.modes(held, n=4)
+    np.testing.assert_allclose(towed.period.values, still.period.values, rtol=1e-6)
+    assert towed.period.values[0] == pytest.approx(36.43, rel=1e-3)
 
 
 @pytest.mark.parametrize("name", ["mooring_buoy_decay.yaml", "moordyn/three_leg_chain_50.dat"])

@@ -31,7 +31,7 @@ from kanat.io.provenance import provenance
 from kanat.frequency.assembly import element_tension, linear_model, node_displacements, node_tension
 from kanat.frequency.checks import trust_checks
 from kanat.frequency.excitation import excitation_of
-from kanat.frequency.linearize import after_ramps
+from kanat.frequency.linearize import about_mean, after_ramps
 from kanat.frequency.response import solve
 
 DOFS = ("x", "y", "z", "roll", "pitch", "yaw")
@@ -57,8 +57,8 @@ def solve_frequency(case) -> xr.Dataset:
     if case.model != "lumped":
         warnings.warn(f"the frequency domain linearises the lumped model (the system discretized as in "
                       f"model: lumped), not model: {case.model}", CaseWarning, stacklevel=2)
-    steady = after_ramps(case)              # the steady state: a ramped current at its full speed
-    ex = excitation_of(steady)
+    ex = excitation_of(after_ramps(case))   # the steady state: a ramped current at its full speed
+    steady = about_mean(case)               # ... and the vessel at its motion's mean place
     model = linear_model(steady)
     response = solve(model, ex)
     U = node_displacements(model, response.free, response.prescribed)
