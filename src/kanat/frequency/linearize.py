@@ -1,8 +1,8 @@
 """The lumped system linearised about its equilibrium (docs/frequency.md).
 
-With ``q`` the free node positions and ``q_e`` the lumped model's initial equilibrium
-(:func:`kanat.lumped.equilibrium.equilibrium`, without seabed friction, as the time-domain
-run starts), small motions ``u = q - q_e`` obey::
+With ``q`` the free node positions and ``q_e`` the lumped model's equilibrium
+(:func:`kanat.lumped.equilibrium.equilibrium`, without seabed friction) about the vessel's mean
+place (:func:`about_mean`), small motions ``u = q - q_e`` obey::
 
     (1)  M u_ddot + C u_dot + K u = f(t)
     (2)  M = the time domain's mass at q_e,   K = -dF/dq (q_e, q_dot_e),   C = -dF/dq_dot (q_e, q_dot_e)
