@@ -151,8 +151,8 @@ def assert_agrees(ds, reference, rtol, atol_phase, nodes=slice(None)):
 
 @pytest.mark.slow
 def test_chain_catenary_against_the_time_domain(tmp_path):
-    """Every node's tension amplitude within 5 % (measured: 1.4 % on the seabed, 3.5 % at the
-    fairlead) and phase within 0.05 rad (measured 0.001 rad) of the time domain's steady state."""
+    """Every node's tension amplitude within 5 % (measured 1.1 %) and phase within 0.05 rad of the
+    time domain's steady state."""
     case = chain(tmp_path, "frequency")
     ds = kanat.solve_frequency(case)
     assert ds.attrs["status"] == "ok"
@@ -201,9 +201,9 @@ def moordyn_node_tensions(moordyn, path, duration, omega, coupling=0.05, dt=0.00
 @pytest.mark.slow
 def test_chain_catenary_against_moordyn_side_by_side(tmp_path, moordyn, moordyn_folder):
     """The same MoorDyn file in kanat's frequency domain and in MoorDyn-C's time domain, the fairlead
-    surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 2.3 % on the
-    seabed, 3.4 % in the suspended span) but the touchdown node's, within 6 % (measured 5.3 %: where
-    the seabed contact is linearised), and phase within 0.05 rad. (At 10 s MoorDyn agrees only when
+    surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 0.0 % on the
+    seabed, 0.1-0.3 % in the suspended span, 4.2 % just before touchdown) but the touchdown node's,
+    within 6 % (measured 2.7 %: where the seabed contact is linearised), and phase within 0.05 rad. (At 10 s MoorDyn agrees only when
     called every few ms: tests/frequency/test_moordyn_chain_dynamic.py, docs/frequency.md.)"""
     period = 60.0
     case = chain(tmp_path, "frequency", period)
