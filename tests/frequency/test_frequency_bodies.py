@@ -6,7 +6,8 @@
 * A buoyant point body on a taut 20 m tether in regular waves (2 m, 8 s), moved by the waves'
   drag, Froude–Krylov and added-mass loads on it and on the tether: its surge and the tether's
   tension against kanat's time domain (harmonic fit of the last three of twelve periods).
-* 6-DOF bodies and surface buoys in waves are still refused at their key.
+* A surface buoy on a taut tether, lifted by the waves on its waterplane, against the time domain.
+* 6-DOF bodies in waves are still refused at their key.
 """
 import math
 import warnings
@@ -71,9 +72,35 @@ def test_a_tethered_body_in_waves_against_the_time_domain():
                                atol=0.05)
 
 
-@pytest.mark.parametrize("body, what", [
-    ({"surface_buoy": {"waterplane_area": 1.0, "height": 2.0}}, "is a surface buoy"),
-    ({"dof": 6, "inertia": [100.0, 100.0, 100.0]}, "has dof: 6")])
-def test_rigid_bodies_and_surface_buoys_in_waves_are_refused(body, what):
-    with pytest.raises(CaseError, match=f"bodies.buoy.*{what}"):
-        kanat.solve_frequency(tethered("frequency", body))
+@pytest.mark.slow
+def test_a_tethered_surface_buoy_in_waves_against_the_time_domain():
+    """A surface buoy (1 m^2 waterplane, 4 m high, 1.9 m immersed) on a taut 28 m tether in 1 m, 8 s
+    waves: the waves lift it by ``rho g A_w eta`` (5.0 kN at the crest) against the tether's
+    178 kN/m. The tether's tension amplitude within 2 % at every node (measured 0.4 %: 4572 against
+    4552 N) and phase within 0.05 rad (0.011); the buoy's surge within 5 % (2.9 %)."""
+    buoy = {"net_buoyancy": -2000.0, "position": [0.0, 0.0, -2.0],
+            "surface_buoy": {"waterplane_area": 1.0, "height": 4.0}}
+    changes = {"environment.waves.height": 1.0, "cables": [{
+        "name": "tether", "line_type": "t", "length": 28.0, "segments": 10,
+        "from": {"anchor": [0.0, 0.0, -30.0]}, "to": {"body": "buoy"}}]}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fd = kanat.solve_frequency(tethered("frequency", buoy).replace(changes))
+        with quiet():
+            td = kanat.run(tethered("time", buoy).replace(changes)).dataset
+    assert fd.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 3 * PERIOD
+    omega = 2 * math.pi / PERIOD
+    _, tension = harmonic_fit(t[keep], td.tension.values[keep], omega)
+    _, body = harmonic_fit(t[keep], td.body_position.values[keep, 0, 0], omega)
+    np.testing.assert_allclose(fd.tension_amplitude.values[0], np.abs(tension), rtol=0.02)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (fd.tension_phase.values[0] - np.angle(tension)))), 0.0,
+                               atol=0.05)
+    assert 0.5 * float(fd.body_motion_rao_amplitude[0, 0, 0]) == pytest.approx(abs(complex(np.ravel(body)[0])),
+                                                                               rel=0.05)
+
+
+def test_a_rigid_body_in_waves_is_refused():
+    with pytest.raises(CaseError, match="bodies.buoy.*has dof: 6"):
+        kanat.solve_frequency(tethered("frequency", {"dof": 6, "inertia": [100.0, 100.0, 100.0]}))

@@ -77,7 +77,7 @@ def excitation_of(case) -> Excitation:
     Raises
     ------
     CaseError
-        For what the frequency domain cannot take: 6-DOF bodies and surface buoys in waves,
+        For what the frequency domain cannot take: 6-DOF bodies in waves,
         a motion table (not harmonic), harmonic motion in an irregular sea, or nothing that moves.
     """
     env, motion = case.environment, case.vessel.motion
@@ -85,10 +85,11 @@ def excitation_of(case) -> Excitation:
     refused = _body_in_waves(case) if waves is not None else None
     if refused is not None:
         name, what = refused
-        raise _refused(f"bodies.{name}", f"simulation.method: frequency puts the waves' loads on the lines and on "
-                                         f"point bodies (drag, Froude-Krylov and added mass); {what} would get no "
-                                         "wave force of its own, so its motion and the tensions it drives would be "
-                                         "missing; run method: time (or drive the body as the vessel, by RAOs)")
+        raise _refused(f"bodies.{name}", "simulation.method: frequency puts the waves' loads on the lines and on "
+                                         "point bodies (drag, Froude-Krylov, added mass, a surface buoy's "
+                                         f"waterplane); {what} would get no wave force of its own, so its motion and "
+                                         "the tensions it drives would be missing; run method: time (or drive the "
+                                         "body as the vessel, by RAOs)")
     if motion.rows is not None:
         raise _refused("vessel.motion", "simulation.method: frequency takes harmonic vessel.motion or RAOs, "
                                         "not a motion table; give harmonics or run method: time")
@@ -106,13 +107,11 @@ def excitation_of(case) -> Excitation:
 
 def _body_in_waves(case) -> tuple[str, str] | None:
     """The first body whose wave loads the frequency domain does not have, and what it is: a 6-DOF
-    body (wave forces and moments of a rigid body) or a surface buoy (its waterplane's
-    Froude–Krylov heave force); None when every body is a submerged point body."""
+    body (wave forces and moments of a rigid body); None when every body is a point body (surface
+    buoys included: the waves lift them on their waterplane)."""
     for name, body in case.bodies.items():
         if body.dof == 6:
             return name, f"body '{name}' has dof: 6 (the wave force and moment of a rigid body)"
-        if body.surface_buoy is not None:
-            return name, f"body '{name}' is a surface buoy (the waves' heave force on its waterplane)"
     return None
 
 
