@@ -1,8 +1,9 @@
 """``simulation.method: frequency`` on the examples that have an excitation, and on a tow.
 
-* ``examples/moordyn/waves/taut_line_in_waves.dat`` (waves along a taut line) and
-  ``examples/lazy_wave.yaml`` (harmonic vessel motion) run and pass their own checks; the taut
-  line's tension against kanat's time domain.
+* ``examples/moordyn/waves/taut_line_in_waves.dat`` (waves along a taut line),
+  ``examples/lazy_wave.yaml`` (harmonic vessel motion) and ``examples/trawl_head_8s_1to2.yaml``
+  (point bodies and a surface buoy in waves, on a tow) run and pass their own checks; the taut
+  line's and ``examples/surface_mooring_waves.yaml``'s tension against kanat's time domain.
 * ``examples/towed_body.yaml``, linearised about its steady tow (a line in the uniform relative
   flow at 6 kn), its tow point heaving 0.5 m in 20 s: every node's tension amplitude and phase
   against kanat's time domain (harmonic fit of the last three of eight periods).
@@ -30,7 +31,8 @@ def frequency(path, **changes):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["moordyn/waves/taut_line_in_waves.dat", "lazy_wave.yaml"])
+@pytest.mark.parametrize("name", ["moordyn/waves/taut_line_in_waves.dat", "lazy_wave.yaml",
+                                  "trawl_head_8s_1to2.yaml"])
 def test_the_examples_with_an_excitation_run(name):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -62,6 +64,28 @@ def test_the_taut_line_in_a_two_component_sea_against_the_time_domain():
         np.testing.assert_allclose(ds.tension_amplitude.values[f], np.abs(reference), rtol=0.05)
         np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[f] - np.angle(reference)))), 0.0,
                                    atol=0.25)
+
+
+@pytest.mark.slow
+def test_the_surface_mooring_in_waves_against_the_time_domain():
+    """``surface_mooring_waves.yaml`` (a surface buoy on chain and nylon, 1.5 m waves of 10 s), as the
+    lumped model discretizes it: every node's tension amplitude within 5 % (measured 1.7 %) and phase
+    within 0.05 rad (0.033) of the lumped time domain's last 40 s of 120 s."""
+    case = frequency(EXAMPLES / "surface_mooring_waves.yaml", model="lumped", **{
+        "simulation.duration": 120.0, "simulation.output_dt": 0.1, "simulation.scheme": "generalized-alpha-lumped",
+        "simulation.dt": 0.01})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(case)
+        with quiet():
+            td = kanat.run(case.replace({"simulation.method": "time"})).dataset
+    assert ds.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 40.0
+    _, reference = harmonic_fit(t[keep], td.tension.values[keep], float(ds.frequency[0]))
+    np.testing.assert_allclose(ds.tension_amplitude.values[0], np.abs(reference), rtol=0.05)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[0] - np.angle(reference)))), 0.0,
+                               atol=0.05)
 
 
 @pytest.mark.slow
