@@ -203,8 +203,9 @@ def test_chain_catenary_against_moordyn_side_by_side(tmp_path, moordyn, moordyn_
     """The same MoorDyn file in kanat's frequency domain and in MoorDyn-C's time domain, the fairlead
     surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 0.0 % on the
     seabed, 0.1-0.3 % in the suspended span, 4.2 % just before touchdown) but the touchdown node's,
-    within 6 % (measured 2.7 %: where the seabed contact is linearised), and phase within 0.05 rad. (At 10 s MoorDyn agrees only when
-    called every few ms: tests/frequency/test_moordyn_chain_dynamic.py, docs/frequency.md.)"""
+    within 6 % (measured 2.7 %: where the seabed contact is linearised), and phase within 0.05 rad.
+    (At 10 s MoorDyn agrees only when called every few ms: tests/frequency/test_moordyn_chain_dynamic.py,
+    docs/frequency.md.)"""
     period = 60.0
     case = chain(tmp_path, "frequency", period)
     ds = kanat.solve_frequency(case)

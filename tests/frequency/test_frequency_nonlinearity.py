@@ -77,7 +77,8 @@ def test_a_chain_surge_outside_the_linear_range_is_flagged(tmp_path, amplitude, 
     if verdict == "failed":
         assert status.startswith("failed: outside the linear range")
     text = notes if verdict != "failed" else status
-    assert float(text.split("departs from the linear model's by ")[1].split(" %")[0]) == pytest.approx(measured, rel=0.05)
+    departure = float(text.split("departs from the linear model's by ")[1].split(" %")[0])
+    assert departure == pytest.approx(measured, rel=0.05)
 
 
 @pytest.mark.slow
