@@ -97,13 +97,14 @@ def test_taut_bar_axial_tension_against_the_closed_form():
 
 
 def test_a_swing_beyond_the_mean_tension_fails_the_result_as_slack():
-    """100 N of pretension less 80 N (the equilibrium is at the motion's t = 0 place, 0.08 m in), a
-    drive that swings it by 80 N: the result says slack."""
+    """100 N of pretension (the line's 0.1 % stretch at its mean place), a drive of 0.12 m that swings
+    it by 120 N (``EA a / L``, slowly): the result says slack."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        ds = kanat.solve_frequency(bar(segments=5, amplitude=0.08, phase_deg=-90.0, omega=0.3))
+        ds = kanat.solve_frequency(bar(segments=5, amplitude=0.12, phase_deg=-90.0, omega=0.3))
     assert ds.attrs["status"].startswith("failed: slack")
-    assert float(ds.tension_amplitude.max()) > float(ds.mean_tension.min())
+    assert float(ds.mean_tension.min()) == pytest.approx(100.0, rel=1e-3)
+    assert float(ds.tension_amplitude.max()) == pytest.approx(120.0, rel=0.01)
 
 
 def test_kanat_run_writes_the_frequency_dataset(tmp_path):
@@ -150,8 +151,8 @@ def assert_agrees(ds, reference, rtol, atol_phase, nodes=slice(None)):
 
 @pytest.mark.slow
 def test_chain_catenary_against_the_time_domain(tmp_path):
-    """Every node's tension amplitude within 5 % (measured: 1.4 % on the seabed, 3.5 % at the
-    fairlead) and phase within 0.05 rad (measured 0.001 rad) of the time domain's steady state."""
+    """Every node's tension amplitude within 5 % (measured 1.1 %) and phase within 0.05 rad of the
+    time domain's steady state."""
     case = chain(tmp_path, "frequency")
     ds = kanat.solve_frequency(case)
     assert ds.attrs["status"] == "ok"
@@ -200,10 +201,11 @@ def moordyn_node_tensions(moordyn, path, duration, omega, coupling=0.05, dt=0.00
 @pytest.mark.slow
 def test_chain_catenary_against_moordyn_side_by_side(tmp_path, moordyn, moordyn_folder):
     """The same MoorDyn file in kanat's frequency domain and in MoorDyn-C's time domain, the fairlead
-    surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 2.3 % on the
-    seabed, 3.4 % in the suspended span) but the touchdown node's, within 6 % (measured 5.3 %: where
-    the seabed contact is linearised), and phase within 0.05 rad. (At 10 s MoorDyn agrees only when
-    called every few ms: tests/frequency/test_moordyn_chain_dynamic.py, docs/frequency.md.)"""
+    surging 0.1 m in 60 s: every interior node's tension amplitude within 5 % (measured: 0.0 % on the
+    seabed, 0.1-0.3 % in the suspended span, 4.2 % just before touchdown) but the touchdown node's,
+    within 6 % (measured 2.7 %: where the seabed contact is linearised), and phase within 0.05 rad.
+    (At 10 s MoorDyn agrees only when called every few ms: tests/frequency/test_moordyn_chain_dynamic.py,
+    docs/frequency.md.)"""
     period = 60.0
     case = chain(tmp_path, "frequency", period)
     ds = kanat.solve_frequency(case)
@@ -228,11 +230,12 @@ def test_a_motion_table_is_refused_at_its_key():
 def test_a_node_moving_down_to_the_seabed_is_noted():
     """A taut weightless line 0.4 m above the seabed, its vessel end heaving 1 m slowly: its nodes move
     0, 0.25, 0.5, 0.75 and 1 m (the string's quasi-static shape), the last three beyond their
-    clearance, and the result's notes say they land (status stays ok: a note)."""
+    clearance, and the result's notes say they land (a note). The string's tension is quadratic in
+    its transverse motion, which the linear model drops: the offset check fails the result."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         ds = kanat.solve_frequency(bar(segments=4, amplitude=1.0, omega=0.03, z=-49.6, dof="heave", phase_deg=0.0,
                                        environment={"depth": 50.0, "seabed": {"stiffness": 3e6}}))
     assert float(ds.motion_amplitude[0, 2, 2]) == pytest.approx(0.5, rel=0.02)       # quasi-static: (omega/omega_1)^2 = 1 %
     assert "3 suspended node(s) move down to the seabed" in ds.attrs["notes"]     # 0.5, 0.75, 1 m > 0.4 m
-    assert ds.attrs["status"] == "ok"
+    assert ds.attrs["status"].startswith("failed: outside the linear range")

@@ -59,6 +59,11 @@ class LinearModel:
         Element to output-node tensions (the result files' ``tension``).
     contact_force : ndarray, shape (n,)
         The seabed's normal force on each node at the equilibrium [N].
+    waterplane_dof, waterplane_stiffness : ndarray, shape (b,)
+        The surface buoys' vertical degree of freedom and ``rho g A_w`` [N/m] (zero for a buoy
+        whose immersion is at 0 or its height at the equilibrium: its waterplane force is clipped);
+        ``waterplane_place`` (b, 2) their keels' x, y [m]. A wave of elevation ``eta`` at the keel
+        lifts the buoy by ``rho g A_w eta`` (:meth:`kanat.lumped.system.LumpedSystem.loads`).
     """
 
     lin: Linearization
@@ -76,6 +81,9 @@ class LinearModel:
     mean_tension: np.ndarray
     node_tension: NodeTension
     contact_force: np.ndarray
+    waterplane_dof: np.ndarray
+    waterplane_stiffness: np.ndarray
+    waterplane_place: np.ndarray
 
     @property
     def size(self) -> int:
@@ -102,7 +110,8 @@ def linear_model(case) -> LinearModel:
     step = POSITION_STEP * float(np.min(net.el_length))
     G = _coupling(lambda xx: steady.loads(0.0, xx, vs, heading)[0][free], xs, prescribed, step)
     Gv = _coupling(lambda vv: moving.loads(0.0, xm, vv, heading_m)[0][free], vm, prescribed, VELOCITY_STEP)
-    pairs = drag.drag_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]), frame)
+    pairs = drag.drag_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]), frame,
+                            rho=case.environment.water_density)
     slope = _slope(lambda xx: steady.loads(0.0, xx, vs, heading), lambda: steady.tension, xs, STRETCH_STEP)
     rate = _slope(lambda vv: moving.loads(0.0, xm, vv, heading_m), lambda: moving.tension, vm, VELOCITY_STEP,
                   about=xm)
@@ -115,7 +124,19 @@ def linear_model(case) -> LinearModel:
         coupling_mass=_coupling_mass(net, x, free, prescribed, consistent),
         pairs=pairs, drag_at_mean=assemble(pairs, drag.tangent_at_mean(pairs), len(free) * 3),
         stiffness_slope=slope / length, rate_slope=rate / length, tangent=d / length[:, None],
-        mean_tension=tension, node_tension=NodeTension(net), contact_force=contact_force)
+        mean_tension=tension, node_tension=NodeTension(net), contact_force=contact_force,
+        **_waterplanes(net, x, free, case.environment))
+
+
+def _waterplanes(net, x: np.ndarray, free: np.ndarray, environment) -> dict:
+    """The surface buoys' fields of :class:`LinearModel` at positions ``x`` (n, 3), the mean
+    surface at z = 0."""
+    node = np.asarray(net.body_node, dtype=np.int64)[np.asarray(net.buoy_body, dtype=np.int64)]
+    immersion = -x[node, 2]
+    inside = (immersion > 0.0) & (immersion < net.buoy_height)
+    stiffness = environment.water_density * environment.gravity * np.asarray(net.buoy_area, float) * inside
+    return dict(waterplane_dof=3 * np.searchsorted(free, node) + 2, waterplane_stiffness=stiffness,
+                waterplane_place=x[node, :2].copy())
 
 
 def _coupling(forces, base: np.ndarray, prescribed: np.ndarray, step: float) -> sp.csr_matrix:

@@ -13,11 +13,22 @@
   the linear model does not see either; a touchdown node (the last grounded one) whose horizontal
   motion exceeds its element's length moves the touchdown point by more than one element. A note:
   the tension away from the touchdown zone is often still sound.
+* **offset nonlinearity**: the catenary's quasi-static tension re-solved at the vessel's mean
+  place +- its excursion (the harmonics' amplitude, or :data:`kanat.frequency.nonlinearity.SIGMAS`
+  sigma of a sea state) departs from the linear model's straight line by ``r``
+  (:mod:`kanat.frequency.nonlinearity` eq. 1); beyond :data:`~kanat.frequency.nonlinearity.LIMIT`
+  the motion is outside the linear range: a warning (in ``notes`` and as a
+  :class:`~kanat.errors.CaseWarning`) with the measured ``r``; beyond
+  :data:`~kanat.frequency.nonlinearity.REFUSE` it fails the result.
 """
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
+from kanat.errors import CaseWarning, SolverError
+from kanat.frequency import nonlinearity
 from kanat.physics.seabed import seabed_of
 
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
@@ -43,8 +54,41 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
     else:
         notes.append(f"the largest dynamic tension ({what}) is {100 * ratio[worst]:.3g} % of the mean, at node {worst}")
     notes += _touchdown(model, ex, ds, case)
+    failure, note = _offset(model, ex, response, ds, case)
+    failures += [failure] if failure else []
+    notes += [note] if note else []
     status = "ok" if not failures else "failed: " + "; ".join(failures)
     return status, "; ".join(notes)
+
+
+def _offset(model, ex, response, ds, case) -> tuple[str | None, str | None]:
+    """``(failure, note)`` of the offset nonlinearity check (module docstring)."""
+    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(len(ex.omega), 0.5)
+    excursions = nonlinearity.vessel_excursions(response.prescribed, weight, ex.spectral)
+    if not excursions:
+        return None, None
+    how = f"{nonlinearity.SIGMAS:g} sigma" if ex.spectral else "amplitude"
+    dynamic = nonlinearity.SIGMAS * ds.tension_std.values if ex.spectral else ds.tension_amplitude.values.sum(axis=0)
+    try:
+        checks = [nonlinearity.offset_check(model, case, excursion, dynamic) for excursion in excursions]
+    except SolverError as error:
+        return (f"outside the linear range: the static equilibrium with the vessel offset by its excursion "
+                f"({how}) did not converge ({error}); run method: time"), None
+    check = max(checks, key=lambda c: float(np.max(c.ratio)))
+    ratio = check.ratio
+    worst = int(np.argmax(ratio))
+    where = f"node {worst} (cable {ds.cable.values[worst]}, s = {float(ds.s.values[worst]):.4g} m)"
+    measured = (f"the quasi-static tension at the vessel's mean place +- {check.distance:.3g} m ({how}) departs "
+                f"from the linear model's by {100 * ratio[worst]:.3g} % at {where}: {check.mean[worst]:.4g} N "
+                f"moves to {check.up[worst]:.4g} and {check.down[worst]:.4g} N")
+    beyond = (f"outside the linear range: {measured}, beyond the {100 * nonlinearity.LIMIT:g} % the linearisation "
+              "holds to (the line's stiffness changes over the motion); run method: time")
+    if ratio[worst] > nonlinearity.REFUSE:
+        return beyond, None
+    if ratio[worst] > nonlinearity.LIMIT:
+        warnings.warn(f"the frequency-domain result is {beyond}", CaseWarning, stacklevel=3)
+        return None, "warning: " + beyond
+    return None, measured
 
 
 def _tension_swing(ds, ex, case) -> tuple[np.ndarray, str]:

@@ -25,6 +25,15 @@ taken on its major axis' phase). The waves force node ``a`` with the same ``D`` 
 velocity and with its inertia (kernels eq. 6)::
 
     (2)  F_a = D u_w + h' [(rho A + m_a) (I - t t) + (rho A + m_at) t t] a_w,   h' = phi L0 / 2
+
+Point bodies and points with drag (kernels ``add_body_loads``) are *isotropic* pairs: their drag
+``f = 1/2 rho C_D A |v| v`` with ``v = u_w - v_a`` the water's velocity at the body less its own,
+``J(v) = 1/2 rho C_D A |v| (I + v v^T / |v|^2)``, and their Morison inertia ``(rho V + m_a) a_w``
+(Froude–Krylov and added mass, the network's ``node_fluid_inertia``). Eqs. (1)-(2) cover them with
+``t = 0``, ``h c_n = 1/2 rho C_D A``, ``c_t = 0`` and ``h' (rho A + m_a) = rho V + m_a``; their
+stochastic ``D`` is a quasi-Monte Carlo mean over the three-dimensional Gaussian
+(:func:`isotropic_stochastic`), ``4/3 sqrt(8/pi) sigma`` times ``1/2 rho C_D A`` in still water
+under an isotropic ``sigma^2 I`` (the Maxwell speed's mean, ``E[v v^T/|v|] = E|v| I / 3``).
 """
 from __future__ import annotations
 
@@ -72,13 +81,42 @@ class DragPairs:
     inertia_tangential: np.ndarray
     mean: np.ndarray
     middle: np.ndarray
+    isotropic: np.ndarray | None = None
+
+    @property
+    def bodies(self) -> np.ndarray:
+        """Which pairs are isotropic (point bodies), shape (p,) bool."""
+        return np.zeros(len(self.node), bool) if self.isotropic is None else self.isotropic
 
 
 def drag_pairs(net, x: np.ndarray, free: np.ndarray, wet: np.ndarray, strain: np.ndarray,
-               current, frame_velocity: np.ndarray) -> DragPairs:
+               current, frame_velocity: np.ndarray, rho: float = 0.0) -> DragPairs:
     """:class:`DragPairs` of a network at positions ``x`` (n, 3); ``free`` the free nodes in DOF
     order, ``wet`` and ``strain`` (m,) the elements' wetted fraction and strain,
-    ``current(points) -> (k, 3)`` the current [m/s]."""
+    ``current(points) -> (k, 3)`` the current [m/s]; the point bodies' isotropic pairs after the
+    elements' (``rho`` the water's density [kg/m^3])."""
+    lines = _line_pairs(net, x, free, wet, strain, current, frame_velocity)
+    bodies = _body_pairs(net, x, free, current, frame_velocity, rho)
+    return DragPairs(*(np.concatenate([getattr(lines, name), getattr(bodies, name)])
+                       for name in DragPairs.__dataclass_fields__))
+
+
+def _body_pairs(net, x, free, current, frame_velocity, rho) -> DragPairs:
+    """The isotropic pairs of the free point-body nodes (module docstring)."""
+    position = -np.ones(net.n_nodes, dtype=np.int64)
+    position[free] = np.arange(len(free))
+    keep = position[net.load_node] >= 0
+    node = np.asarray(net.load_node, dtype=np.int64)[keep]
+    k = len(node)
+    return DragPairs(node=node, element=-np.ones(k, dtype=np.int64), dof=3 * position[node],
+                     tangent=np.zeros((k, 3)), normal=0.5 * rho * np.asarray(net.load_drag_area, float)[keep],
+                     tangential=np.zeros(k), inertia_normal=np.asarray(net.node_fluid_inertia, float)[node],
+                     inertia_tangential=np.zeros(k), mean=current(x[node]).reshape(k, 3) - frame_velocity,
+                     middle=x[node], isotropic=np.ones(k, bool))
+
+
+def _line_pairs(net, x, free, wet, strain, current, frame_velocity) -> DragPairs:
+    """The elements' pairs (eq. 1)."""
     position = -np.ones(net.n_nodes, dtype=np.int64)
     position[free] = np.arange(len(free))
     node = np.r_[net.el_i, net.el_j]
@@ -96,7 +134,7 @@ def drag_pairs(net, x: np.ndarray, free: np.ndarray, wet: np.ndarray, strain: np
                      normal=(h * stretch * net.el_cn)[e], tangential=(h * stretch * net.el_ct)[e],
                      inertia_normal=(h * (net.el_displaced + net.el_added_mass))[e],
                      inertia_tangential=(h * (net.el_displaced + net.el_added_tangential))[e],
-                     mean=mean[e], middle=middle[e])
+                     mean=mean[e], middle=middle[e], isotropic=np.zeros(len(e), bool))
 
 
 def jacobian(pairs: DragPairs, v: np.ndarray) -> np.ndarray:
@@ -114,6 +152,43 @@ def jacobian(pairs: DragPairs, v: np.ndarray) -> np.ndarray:
 
 
 def stochastic(pairs: DragPairs, covariance: np.ndarray) -> np.ndarray:
+    """``D = E[J(U + w)]`` (p, 3, 3) for Gaussian ``w`` of covariance (p, 3, 3): the elements'
+    (:func:`line_stochastic`) and the point bodies' (:func:`isotropic_stochastic`)."""
+    bodies = pairs.bodies
+    out = np.empty((len(pairs.node), 3, 3))
+    if np.any(~bodies):
+        out[~bodies] = line_stochastic(_subset(pairs, ~bodies), covariance[~bodies])
+    if np.any(bodies):
+        out[bodies] = isotropic_stochastic(pairs.normal[bodies], pairs.mean[bodies], covariance[bodies])
+    return out
+
+
+def _subset(pairs: DragPairs, which) -> DragPairs:
+    return DragPairs(*(None if getattr(pairs, name) is None else getattr(pairs, name)[which]
+                       for name in DragPairs.__dataclass_fields__))
+
+
+def isotropic_stochastic(coefficient: np.ndarray, mean: np.ndarray, covariance: np.ndarray) -> np.ndarray:
+    """``c E[|v| (I + v v^T / |v|^2)]`` (p, 3, 3) for ``v`` Gaussian of mean (p, 3) and covariance
+    (p, 3, 3), ``c`` (p,) (module docstring): :data:`NORMAL_SAMPLES` scrambled Sobol points in three
+    dimensions and their mirror images."""
+    values, vectors = np.linalg.eigh(covariance)
+    scale = vectors * np.sqrt(np.maximum(values, 0.0))[:, None, :]
+    v = mean[:, None, :] + np.einsum("prq,sq->psr", scale, _space_samples())
+    speed = np.linalg.norm(v, axis=-1)
+    unit = v / np.maximum(speed, TINY)[..., None]
+    J = speed[..., None, None] * (np.eye(3) + np.einsum("psr,psq->psrq", unit, unit))
+    return coefficient[:, None, None] * J.mean(axis=1)
+
+
+@functools.lru_cache(maxsize=1)
+def _space_samples() -> np.ndarray:
+    """Standard normal points in space (2 x :data:`NORMAL_SAMPLES`, 3): Sobol, seed 0, mirrored."""
+    z = ndtri(qmc.Sobol(d=3, scramble=True, seed=0).random(NORMAL_SAMPLES))
+    return np.vstack([z, -z])
+
+
+def line_stochastic(pairs: DragPairs, covariance: np.ndarray) -> np.ndarray:
     """``D = E[J(U + w)]`` (p, 3, 3) for Gaussian ``w`` of covariance (p, 3, 3) (module docstring).
 
     Along the element, ``E[2 |U_t + w_t|]`` in closed form (a folded normal's mean); across it, the

@@ -1,8 +1,8 @@
 """The lumped system linearised about its equilibrium (docs/frequency.md).
 
-With ``q`` the free node positions and ``q_e`` the lumped model's initial equilibrium
-(:func:`kanat.lumped.equilibrium.equilibrium`, without seabed friction, as the time-domain
-run starts), small motions ``u = q - q_e`` obey::
+With ``q`` the free node positions and ``q_e`` the lumped model's equilibrium
+(:func:`kanat.lumped.equilibrium.equilibrium`, without seabed friction) about the vessel's mean
+place (:func:`about_mean`), small motions ``u = q - q_e`` obey::
 
     (1)  M u_ddot + C u_dot + K u = f(t)
     (2)  M = the time domain's mass at q_e,   K = -dF/dq (q_e, q_dot_e),   C = -dF/dq_dot (q_e, q_dot_e)
@@ -18,6 +18,11 @@ over a distance-2 colouring of the node graph (``3 x colours`` pairs of force ev
 equilibrium's Newton iteration sees it. ``C`` is the axial (Kelvin–Voigt) damping and the tangent
 of drag about the mean relative flow: zero in still water, where drag is quadratic
 (``|u| u`` has no slope at ``u = 0``); drag's equivalent linearisation is not in ``C``.
+
+The equilibrium is the one the motion oscillates about (:func:`about_mean`): a current with a
+start-up ``ramp`` at its full speed, not at its ramp's zero at t = 0, and the vessel at the mean
+place of its harmonic or RAO motion, not at the motion's t = 0 place where a time-domain run
+starts (a 1 m surge starting at -1 m would otherwise be linearised at one end of its stroke).
 """
 from __future__ import annotations
 
@@ -89,6 +94,7 @@ def linearize(case) -> Linearization:
     SolverError
         If the equilibrium does not converge (:func:`kanat.lumped.equilibrium.equilibrium`).
     """
+    case = about_mean(case)
     net = build_network(case)
     x, _ = equilibrium(net, case, friction=False)
     base = LumpedSystem(net, case, waves=False, friction=False)
@@ -119,6 +125,31 @@ def linearize(case) -> Linearization:
         mass, damping, stiffness = rigid_rows(net.rigid, free, x, blocks, mass, damping, stiffness)
     return Linearization(mass=mass.tocsr(), damping=damping.tocsr(), stiffness=stiffness.tocsr(),
                          node=np.repeat(free, 3), xyz=np.tile(np.arange(3), len(free)), position=x, net=net)
+
+
+def about_mean(case):
+    """The case whose equilibrium the system is linearised about (module docstring): its current at
+    full speed from t = 0 (``environment.current.ramp`` 0) and its vessel on its track without the
+    prescribed motion (whose harmonics and RAO motion oscillate about that place)."""
+    current = case.environment.current
+    if current.ramp != 0.0:
+        environment = case.environment.model_copy(update={"current": current.model_copy(update={"ramp": 0.0})})
+        case = case.model_copy(update={"environment": environment})
+    motion = case.vessel.motion
+    if motion.harmonics or motion.rao_rows is not None:
+        still = motion.model_copy(update={"harmonics": (), "rao": None, "rao_rows": None})
+        case = case.model_copy(update={"vessel": case.vessel.model_copy(update={"motion": still})})
+    return case
+
+
+def after_ramps(case):
+    """The case with its current at full speed from t = 0 (``environment.current.ramp`` 0): the
+    steady state the excitation acts in, the current's ramp ended."""
+    current = case.environment.current
+    if current.ramp == 0.0:
+        return case
+    environment = case.environment.model_copy(update={"current": current.model_copy(update={"ramp": 0.0})})
+    return case.model_copy(update={"environment": environment})
 
 
 def mass_matrix(system: LumpedSystem, x: np.ndarray, consistent: bool) -> sp.csr_matrix:

@@ -82,6 +82,7 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
     fixed = np.stack([(model.coupling @ vessel[f] + 1j * omega[f] * (model.coupling_rate @ vessel[f])
                        + omega[f] ** 2 * (model.coupling_mass @ vessel[f])) for f in range(len(omega))])
     fixed += _on_pairs(pairs, 1j * omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water), size)
+    fixed += waterplane_forces(model, ex)
     lin = model.lin
     base = lin.damping - model.drag_at_mean
     D = _equivalent(pairs, water, np.zeros((len(omega), size), complex), ex)
@@ -97,6 +98,19 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
             break
         D = 0.5 * (D + new)
     return Response(X, prescribed, iterations, change < TOLERANCE, change)
+
+
+def waterplane_forces(model: LinearModel, ex: Excitation) -> np.ndarray:
+    """The waves' lift ``rho g A_w eta`` on the surface buoys, (nf, n_dof) complex: the elevation at
+    each keel ``eta_hat e^{-i k (x cos beta + y sin beta)}``."""
+    out = np.zeros((len(ex.omega), model.size), complex)
+    if ex.sea is None or not len(model.waterplane_dof):
+        return out
+    sea, place = ex.sea, model.waterplane_place
+    psi = np.multiply.outer(place[:, 0], sea.k * np.cos(sea.direction)) + np.multiply.outer(
+        place[:, 1], sea.k * np.sin(sea.direction))                           # (b, nf)
+    out[:, model.waterplane_dof] = (model.waterplane_stiffness[:, None] * np.exp(-1j * psi)).T * ex.wave[:, None]
+    return out
 
 
 def _on_pairs(pairs: drag.DragPairs, values: np.ndarray, size: int) -> np.ndarray:
@@ -135,6 +149,7 @@ def _chunked(function, pairs: drag.DragPairs, covariance: np.ndarray) -> np.ndar
     out = np.empty((len(pairs.node), 3, 3))
     for start in range(0, len(pairs.node), CHUNK):
         part = slice(start, start + CHUNK)
-        sub = drag.DragPairs(*(getattr(pairs, name)[part] for name in drag.DragPairs.__dataclass_fields__))
+        sub = drag.DragPairs(*(None if getattr(pairs, name) is None else getattr(pairs, name)[part]
+                               for name in drag.DragPairs.__dataclass_fields__))
         out[part] = function(sub, covariance[part])
     return out

@@ -31,6 +31,7 @@ from kanat.io.provenance import provenance
 from kanat.frequency.assembly import element_tension, linear_model, node_displacements, node_tension
 from kanat.frequency.checks import trust_checks
 from kanat.frequency.excitation import excitation_of
+from kanat.frequency.linearize import about_mean, after_ramps
 from kanat.frequency.response import solve
 
 DOFS = ("x", "y", "z", "roll", "pitch", "yaw")
@@ -56,13 +57,14 @@ def solve_frequency(case) -> xr.Dataset:
     if case.model != "lumped":
         warnings.warn(f"the frequency domain linearises the lumped model (the system discretized as in "
                       f"model: lumped), not model: {case.model}", CaseWarning, stacklevel=2)
-    ex = excitation_of(case)
-    model = linear_model(case)
+    ex = excitation_of(after_ramps(case))   # the steady state: a ramped current at its full speed
+    steady = about_mean(case)               # ... and the vessel at its motion's mean place
+    model = linear_model(steady)
     response = solve(model, ex)
     U = node_displacements(model, response.free, response.prescribed)
     tension = node_tension(model, element_tension(model, U, ex.omega))
     ds = _dataset(model, ex, U, tension)
-    status, notes = trust_checks(model, ex, ds, response, case)
+    status, notes = trust_checks(model, ex, ds, response, steady)
     ds.attrs.update(provenance(case, model="frequency", scheme="frequency-domain", status=status,
                                wall_time_s=time.perf_counter() - start),
                     notes=notes, iterations=response.iterations)

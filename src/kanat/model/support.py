@@ -416,6 +416,12 @@ FEATURES: tuple[Feature, ...] = (
     Feature("consistent_mass", "the consistent mass matrix", _simulation("mass_matrix", "lumped"),
             statics=YES, continuum=IGNORED, lumped=YES,
             note="a lumped-model setting; the continuum model has its own discretization"),
+    Feature("frequency_domain", "the frequency domain (linearised about the equilibrium)", _simulation("method", "time"),
+            statics=IGNORED, continuum=YES, lumped=YES,
+            note={"statics": "the steady state is the equilibrium the frequency domain linearises about; "
+                             "run the case with model: lumped for its response",
+                  "continuum": "the lines are linearised as the lumped model discretizes them (a warning "
+                               "says so)"}),
     Feature("initial_state_as_given", "starting from the given positions at rest",
             _simulation("initial_state", "equilibrium"), statics=YES, continuum=IGNORED,
             lumped=YES, note="the continuum model starts from its steady state"),

@@ -1,0 +1,131 @@
+"""``simulation.method: frequency`` on the examples that have an excitation, and on a tow.
+
+* ``examples/moordyn/waves/taut_line_in_waves.dat`` (waves along a taut line),
+  ``examples/lazy_wave.yaml`` (harmonic vessel motion) and ``examples/trawl_head_8s_1to2.yaml``
+  (point bodies and a surface buoy in waves, on a tow) run and pass their own checks; the taut
+  line's and ``examples/surface_mooring_waves.yaml``'s tension against kanat's time domain.
+* ``examples/towed_body.yaml``, linearised about its steady tow (a line in the uniform relative
+  flow at 6 kn), its tow point heaving 0.5 m in 20 s: every node's tension amplitude and phase
+  against kanat's time domain (harmonic fit of the last three of eight periods).
+* The natural modes of that tow are those of the same line held still in the same relative flow.
+* The examples without waves or vessel motion are refused with the reason.
+"""
+import warnings
+
+import numpy as np
+import pytest
+
+import kanat
+from kanat.errors import CaseError
+
+from helpers import EXAMPLES, quiet
+from test_frequency_harmonic import harmonic_fit
+
+
+def frequency(path, **changes):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = kanat.load_case(path)
+        simulation = {} if case.simulation is not None else {"simulation.duration": 600.0}
+        return case.replace({"simulation.method": "frequency", **simulation, **changes})
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["moordyn/waves/taut_line_in_waves.dat", "lazy_wave.yaml",
+                                  "trawl_head_8s_1to2.yaml"])
+def test_the_examples_with_an_excitation_run(name):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(frequency(EXAMPLES / name))
+    assert ds.attrs["status"] == "ok", ds.attrs["status"]
+    assert float(ds.tension_std.max()) > 0.0
+
+
+@pytest.mark.slow
+def test_the_taut_line_in_a_two_component_sea_against_the_time_domain():
+    """``moordyn/waves/taut_line_in_waves.dat`` (40 segments, waves of 4 m at 8 s and 1 m at 12 s):
+    every node's tension amplitude at each frequency within 5 % of the time domain's (measured
+    1.6 % at 12 s, 3.7 % at 8 s; a joint harmonic fit of the last 48 s of 120 s) and phase within
+    0.25 rad (0.04, 0.21 rad; about a minute)."""
+    case = frequency(EXAMPLES / "moordyn/waves/taut_line_in_waves.dat", **{"simulation.duration": 120.0})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(case)
+        with quiet():
+            td = kanat.run(case.replace({"simulation.method": "time"})).dataset
+    assert ds.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 48.0
+    omega = ds.frequency.values
+    columns = [np.ones(keep.sum())] + [f(w * t[keep]) for w in omega for f in (np.cos, np.sin)]
+    coef = np.linalg.lstsq(np.column_stack(columns), td.tension.values[keep], rcond=None)[0]
+    for f in range(len(omega)):
+        reference = coef[1 + 2 * f] - 1j * coef[2 + 2 * f]
+        np.testing.assert_allclose(ds.tension_amplitude.values[f], np.abs(reference), rtol=0.05)
+        np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[f] - np.angle(reference)))), 0.0,
+                                   atol=0.25)
+
+
+@pytest.mark.slow
+def test_the_surface_mooring_in_waves_against_the_time_domain():
+    """``surface_mooring_waves.yaml`` (a surface buoy on chain and nylon, 1.5 m waves of 10 s), as the
+    lumped model discretizes it: every node's tension amplitude within 5 % (measured 1.7 %) and phase
+    within 0.05 rad (0.033) of the lumped time domain's last 40 s of 120 s."""
+    case = frequency(EXAMPLES / "surface_mooring_waves.yaml", model="lumped", **{
+        "simulation.duration": 120.0, "simulation.output_dt": 0.1, "simulation.scheme": "generalized-alpha-lumped",
+        "simulation.dt": 0.01})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(case)
+        with quiet():
+            td = kanat.run(case.replace({"simulation.method": "time"})).dataset
+    assert ds.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 40.0
+    _, reference = harmonic_fit(t[keep], td.tension.values[keep], float(ds.frequency[0]))
+    np.testing.assert_allclose(ds.tension_amplitude.values[0], np.abs(reference), rtol=0.05)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[0] - np.angle(reference)))), 0.0,
+                               atol=0.05)
+
+
+@pytest.mark.slow
+def test_a_heaving_tow_against_the_time_domain():
+    """Every node's tension amplitude within 2 % (measured 0.5 %) and phase within 0.05 rad
+    (measured 0.014 rad) of the time domain's last three periods (about a minute)."""
+    period = 20.0
+    motion = [{"dof": "heave", "amplitude": 0.5, "period": period, "phase_deg": 90.0}]
+    case = frequency(EXAMPLES / "towed_body.yaml", model="lumped", **{
+        "vessel.motion": motion, "simulation.duration": 8 * period, "simulation.output_dt": 0.1})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(case)
+        with quiet():
+            td = kanat.run(case.replace({"simulation.method": "time"})).dataset
+    assert ds.attrs["status"] == "ok", ds.attrs["status"]
+    assert td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 3 * period
+    _, reference = harmonic_fit(t[keep], td.tension.values[keep], 2 * np.pi / period)
+    np.testing.assert_allclose(ds.tension_amplitude.values[0], np.abs(reference), rtol=0.02)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (ds.tension_phase.values[0] - np.angle(reference)))), 0.0,
+                               atol=0.05)
+
+
+@pytest.mark.slow
+def test_the_modes_of_a_tow_are_those_of_the_line_held_in_the_same_flow():
+    """Galilean invariance: ``examples/towed_body.yaml`` towed at 6 kn has the natural periods of the
+    same line held still in a 6 kn current (measured: equal to 1e-9; 36.43, 27.70, 20.09, 16.16 s)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tow = kanat.load_case(EXAMPLES / "towed_body.yaml")
+        held = tow.replace({"vessel.track": [{"straight": {"speed": 0.0, "duration": 600.0}}],
+                            "environment.current.velocity": [-6 * 1852 / 3600, 0.0, 0.0]})
+        towed, still = kanat.modes(tow, n=4), kanat.modes(held, n=4)
+    np.testing.assert_allclose(towed.period.values, still.period.values, rtol=1e-6)
+    assert towed.period.values[0] == pytest.approx(36.43, rel=1e-3)
+
+
+@pytest.mark.parametrize("name", ["mooring_buoy_decay.yaml", "moordyn/three_leg_chain_50.dat"])
+def test_an_example_without_an_excitation_is_refused_with_the_reason(name):
+    with pytest.raises(CaseError, match="needs an excitation"):
+        kanat.solve_frequency(frequency(EXAMPLES / name))
