@@ -33,9 +33,10 @@ end ``T = S_n = S_b = M_n = M_b = 0``. An inline body (junction) carries ``T t +
 and holds ``M = 0`` on its two nodes (pinned). A section without ``EI`` has ``M = 0``.
 
 The flexible rows are those of :func:`kanat.continuum.rows3d.assemble3`
-(:func:`~kanat.continuum.rows3d.flexible_rows`) on the first six unknowns, moved into this layout, so the plain 3-D kernels compile none of this:
-only a case with bending stiffness compiles :func:`assemble3_bending`. Rows ``[start (5); interval
-0 (10); ...; far end (5)]``, a band of 14 sub- and super-diagonals. All derivatives are written out;
+(:func:`~kanat.continuum.rows3d.flexible_rows`) on the first six unknowns, moved into this layout,
+so the plain 3-D kernels compile none of this: only a case with bending stiffness compiles
+:func:`assemble3_bending`. Rows ``[start (5); interval 0 (10); ...; far end (5)]``, a band of 14
+sub- and super-diagonals. All derivatives are written out;
 :mod:`kanat.continuum.oracle_complex_step3d` checks them by complex step.
 """
 from __future__ import annotations
