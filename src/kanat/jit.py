@@ -189,10 +189,12 @@ class Family:
 
 
 def planar(signature) -> bool:
-    """The planar version of a kernel shared by planar and spatial runs (``up`` is None)."""
+    """The planar version of a kernel shared by planar and spatial runs: the vertical is None, an
+    argument of its own or a field of a record argument (the factorized schemes' ``FactorizedLine``)."""
     from numba import types
 
-    return any(isinstance(t, types.NoneType) for t in signature)
+    return any(isinstance(t, types.NoneType) or isinstance(t, types.BaseNamedTuple)
+               and any(isinstance(field, types.NoneType) for field in t.types) for t in signature)
 
 
 def spatial(signature) -> bool:

@@ -99,7 +99,7 @@ def test_bending_jacobian_matches_complex_step(end, clamped):
           "free": np.array([k.FREE, *np.zeros(17)]), "anchor": np.zeros(b3.NBPAR3_BENDING)}[end]
     res, band = np.empty(x.size), np.empty((2 * b3.WIDTH + 1, x.size))
     res2, band2 = np.empty(x.size), np.empty((2 * b3.WIDTH + 1, x.size))
-    b3.assemble3_bending(x, base, d, env, up, P, b0, b1, res, band, np.zeros(1))
+    b3.assemble3_bending(x, k3.SpatialStep(base, d, env, up, P, b0, b1, np.zeros(1)), res, band)
     oracle_complex_step3d.jacobian_complex_step3_bending(x, base, d, env, up, P, b0, b1, res2, band2)
     np.testing.assert_allclose(res, res2, rtol=1e-12, atol=1e-9)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))

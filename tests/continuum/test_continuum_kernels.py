@@ -32,7 +32,7 @@ def run(kernel, args, extras=None):
     x = args[0]
     res, band = np.empty(x.size), np.empty((11, x.size))
     if kernel is k.assemble:
-        kernel(*args, res, band, extras)
+        kernel(x, k.PlanarStep(*args[1:], extras), res, band)
     else:
         kernel(*args, res, band)
     return res, band

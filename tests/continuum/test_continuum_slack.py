@@ -50,7 +50,7 @@ def kernel_args(seed, end_kind):
 def assemble(kernel, args):
     res, band = np.empty(args[0].size), np.empty((11, args[0].size))
     if kernel is k.assemble:
-        kernel(*args, res, band, None)
+        kernel(args[0], k.PlanarStep(*args[1:], None), res, band)
     else:
         kernel(*args, res, band)
     return res, band

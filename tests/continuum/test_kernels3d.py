@@ -57,10 +57,11 @@ def test_spatial_jacobian_matches_complex_step(end):
     P = np.tile(p, (n - 1, 1))
     res, band = np.empty(x.size), np.empty((17, x.size))
     res2, band2 = np.empty(x.size), np.empty((17, x.size))
-    k3.assemble3(x, base, d, env, up, P, b0, b1, res, band, None)
+    k3.assemble3(x, k3.SpatialStep(base, d, env, up, P, b0, b1, None), res, band)
     oracle_complex_step3d.jacobian_complex_step3(x, base, d, env, up, P, b0, b1, res2, band2)
     np.testing.assert_allclose(res, res2, rtol=1e-12, atol=1e-9)
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
     res3, band3 = np.empty(x.size), np.empty((17, x.size))
-    k3.assemble3(x, base, d, env, up, P, b0, b1, res3, band3, np.zeros(1))     # the full version, plain cable
+    full = k3.SpatialStep(base, d, env, up, P, b0, b1, np.zeros(1))
+    k3.assemble3(x, full, res3, band3)                                    # the full version, plain cable
     assert np.array_equal(res, res3) and np.array_equal(band, band3)

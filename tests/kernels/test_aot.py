@@ -54,13 +54,12 @@ def test_compiled_kernels_are_numbas_bit_for_bit(case, changes, kernels, name, m
     assert aot.kernel(name) is not numba_kernel                  # it runs the install's kernel, not numba's
     calls = []
 
-    def both(*args):
-        res, band = args[-3], args[-2]
-        compiled(*args)
+    def both(x, step, res, band):
+        compiled(x, step, res, band)
         res2, band2 = np.full_like(res, np.nan), np.full_like(band, np.nan)
-        numba_kernel(*args[:-3], res2, band2, args[-1])
+        numba_kernel(x, step, res2, band2)
         assert np.array_equal(res, res2) and np.array_equal(band, band2)
-        calls.append(args[-1] is None)
+        calls.append(step.extras is None)
 
     monkeypatch.setattr(kernels, name, both)
     case = api.load_case(case).replace(changes)
@@ -93,8 +92,8 @@ def test_arguments_the_compiled_code_would_misread_go_to_numba():
     args[4][:, 12] = 1.0                                                   # dt: a finite answer
     expected = [a.copy() for a in args]
     rows2d = import_module("kanat.continuum.rows2d")
-    rows2d.assemble(*expected, None)
-    assemble(*args, None)                                                 # Fortran-ordered: numba's
+    rows2d.assemble(expected[0], kernels2d.PlanarStep(*expected[1:7], None), *expected[7:])
+    assemble(args[0], kernels2d.PlanarStep(*args[1:7], None), *args[7:])   # Fortran-ordered fields: numba's
     assert calls == []
     np.testing.assert_array_equal(args[-2], expected[-2])
     np.testing.assert_array_equal(args[-1], expected[-1])

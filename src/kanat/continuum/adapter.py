@@ -24,6 +24,7 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum.courant import check_step
 from kanat.continuum.models import model_for
+from kanat.continuum.outputs import seabed_contact_length
 from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
@@ -145,8 +146,11 @@ class ContinuumModel:
                            **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
         s = cable.s if self.stations is None else self.stations
         names = TIME_VARIABLES + (("winch_tension", "winch_length") if self.winch is not None else ())
-        return Layout({"s": (("node",), s), "cable": (("node",), [cable.name] * len(s))},
-                      {"xyz": ("x", "y", "z"), "body": bodies}, names, attrs)
+        static = {"s": (("node",), s), "cable": (("node",), [cable.name] * len(s))}
+        if case.environment.depth is not None:             # a seabed: the line may rest on it
+            names += ("seabed_contact_length",)
+            static["cable_name"] = (("cable",), np.array([cable.name], dtype=str))
+        return Layout(static, {"xyz": ("x", "y", "z"), "body": bodies}, names, attrs)
 
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
@@ -234,8 +238,12 @@ class ContinuumModel:
         ends = values["position"][-1:] if self.body else np.zeros((0, 3))
         inline = values["position"][junctions] if len(junctions) else np.zeros((0, 3))
         extra = {}
+        seabed = self.cable_model.cable.seabed             # None also where the line cannot reach it: 0 m
+        if self.case.environment.depth is not None:        # on the nodes in the water, before a winch's stations
+            extra["seabed_contact_length"] = np.array([0.0 if seabed is None else seabed_contact_length(
+                seabed.penetration(values["position"]), rows[:, k.DS], facts.penetration[0])])
         if self.winch is not None:
-            extra = {"winch_tension": values["tension"][0], "winch_length": float(np.sum(rows[:, k.DS]))}
+            extra.update({"winch_tension": values["tension"][0], "winch_length": float(np.sum(rows[:, k.DS]))})
             values = self._on_stations(state, values)
         return {**values, "body_position": np.vstack([ends, inline]), "vessel_position": vessel.position,
                 "vessel_heading": vessel.heading, "vessel_pitch": pitch, **extra}

@@ -32,10 +32,11 @@ cantilever; no case key clamps one); an end body carries ``-side (T t + S)`` and
 end ``T = S_n = S_b = M_n = M_b = 0``. An inline body (junction) carries ``T t + S`` of both sides
 and holds ``M = 0`` on its two nodes (pinned). A section without ``EI`` has ``M = 0``.
 
-The flexible rows are :func:`kanat.continuum.rows3d.assemble3` on the first six unknowns (its
-version with ``extras``), moved into this layout, so the plain 3-D kernels compile none of this:
-only a case with bending stiffness compiles :func:`assemble3_bending`. Rows ``[start (5); interval
-0 (10); ...; far end (5)]``, a band of 14 sub- and super-diagonals. All derivatives are written out;
+The flexible rows are those of :func:`kanat.continuum.rows3d.assemble3`
+(:func:`~kanat.continuum.rows3d.flexible_rows`) on the first six unknowns, moved into this layout,
+so the plain 3-D kernels compile none of this: only a case with bending stiffness compiles
+:func:`assemble3_bending`. Rows ``[start (5); interval 0 (10); ...; far end (5)]``, a band of 14
+sub- and super-diagonals. All derivatives are written out;
 :mod:`kanat.continuum.oracle_complex_step3d` checks them by complex step.
 """
 from __future__ import annotations
@@ -45,7 +46,7 @@ from kanat.jit import inner, kernel
 
 from kanat.continuum import loads2d as k
 from kanat.continuum import loads3d as k3
-from kanat.continuum.rows3d import assemble3
+from kanat.continuum.rows3d import flexible_rows
 
 from kanat.continuum.layout3d import B3_CLAMP, B3_PHI0, B3_THETA0, NBPAR3_BENDING  # noqa: F401  (layout3d)
 from kanat.continuum.layout3d import NV_BENDING as NV, WIDTH_BENDING as WIDTH
@@ -89,19 +90,26 @@ def bending_terms(kb, g, p, out, dk, dg):
 
 
 @kernel
-def assemble3_bending(x, y, d, env, up, P, b0, b1, res, band, extras):
+def assemble3_bending(x, step, res, band):
     """Residual (10(N+1),) and banded Jacobian (29, 10(N+1)) of one step at unknowns ``x`` (N+1, 10).
 
-    Arguments as :func:`kanat.continuum.rows3d.assemble3`; ``b0, b1`` with the clamp entries
-    (:data:`NBPAR3_BENDING`).
+    Arguments as :func:`kanat.continuum.rows3d.assemble3` (``step`` a :class:`kernels3d.SpatialStep`);
+    its ``start``, ``end`` with the clamp entries (:data:`NBPAR3_BENDING`).
     """
+    _assemble_bending(x, step, res, band, step.extras)
+
+
+@inner
+def _assemble_bending(x, step, res, band, extras):
+    """:func:`assemble3_bending`, with the record's ``extras`` an argument of its own (pruned by type)."""
+    y, d, P = step.previous, step.rate, step.intervals
     n = x.shape[0]
     x6, y6, d6 = np.empty((n, 6)), np.empty((n, 6)), np.empty((n, 6))
     for j in range(n):
         for i in range(6):
             x6[j, i], y6[j, i], d6[j, i] = x[j, i], y[j, i], d[j, i]
     res6, band6 = np.empty(6 * n), np.empty((2 * k3.UPPER + 1, 6 * n))
-    assemble3(x6, y6, d6, env, up, P, b0, b1, res6, band6, extras)
+    flexible_rows(x6, y6, d6, step, res6, band6, extras)
     band[:, :] = 0.0
     for r in range(res.shape[0]):
         res[r] = 0.0
@@ -127,7 +135,7 @@ def assemble3_bending(x, y, d, env, up, P, b0, b1, res, band, extras):
             _junction_bending(j, x, wk, P[j], res, band)
         else:
             _interval_bending(j, wk, P[j], kb, g, out, dk, dg, res, band)
-    _ends_bending(x, y, d, env, up, P, b0, b1, res, band, extras)
+    _ends_bending(x, step, res, band, extras)
 
 
 @inner
@@ -190,8 +198,9 @@ def _junction_bending(j, x, wk, p, res, band):
 
 
 @inner
-def _ends_bending(x, y, d, env, up, P, b0, b1, res, band, extras):
+def _ends_bending(x, step, res, band, extras):
     """The five rows of each end (module docstring) and their derivatives into ``res``, ``band``."""
+    y, d, env, up, P, b0, b1 = step.previous, step.rate, step.water, step.vertical, step.intervals, step.start, step.end
     out, jac = np.empty(5), np.empty((5, NV))
     out3, jac3 = np.empty(3), np.empty((3, 6))
     last = x.shape[0] - 1

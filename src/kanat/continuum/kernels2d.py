@@ -67,9 +67,24 @@ from kanat.continuum.layout2d import (  # noqa: F401  re-exported: this module i
     B_BUOY, B_DRAG, B_F0, B_F1, B_WAVE, B_WPA, B_HEIGHT, B_ETA, B_PAYOUT, B_CLAMP, B_PHI0, NBPAR, FRICTION_SPEED,
     CONTACT_RAMP, STEP, LOWER, UPPER, bandwidth)
 
-# the compiled entry's arguments x, y, d, env, P, b0, b1, res, band, then extras: None or the marker array
-_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
-assemble = aot.register("assemble", "kanat.continuum.rows2d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
+PlanarStep = aot.record(
+    "PlanarStep", "kanat.continuum.kernels2d",
+    previous=aot.F2,                        # y: the nodal states at the start of the step (N+1, nv)
+    rate=aot.F2,                            # d: their time derivative (N+1, nv)
+    water=aot.F2,                           # env: nodal water velocity, acceleration and position (N+1, NENV)
+    intervals=aot.F2,                       # P: every interval's parameter row (N, n_par), layout2d
+    start=aot.F1, end=aot.F1,               # b0, b1: the end conditions at s = 0 and s = L (NBPAR)
+    extras=aot.F1,                          # None for a plain cable (rows2d docstring), else a marker (1,)
+)
+"""What one step of the planar box scheme knows before its Newton iteration, as :func:`assemble`
+reads it (``step.intervals[j, DS]``): one field per input, built by
+:func:`kanat.continuum.stepper.step_data` and nowhere else (docs/contributing.md, adding a line
+property). The unknowns ``x`` and the outputs ``res``, ``band`` stay arguments of their own: they
+change at every iteration, the record only from step to step."""
+
+# the compiled entry's arguments: x, step, res, band; the plain cable's version (extras None) first
+assemble = aot.register("assemble", "kanat.continuum.rows2d", *(
+    (aot.F2, step, aot.F1, aot.F2) for step in (PlanarStep.narrowed(extras=None), PlanarStep)))
 
 from kanat.continuum.loads2d import (  # noqa: E402, F401  re-exported: numba's kernels (no numba imported)
     strain, compliance, transverse_tension, node_load, node_load_jacobian, smooth_sign, seabed_force,

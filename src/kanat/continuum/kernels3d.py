@@ -56,8 +56,21 @@ from kanat.continuum.loads3d import (  # noqa: F401  re-exported: numba's kernel
     d_mass_times, d_stiffness_times, seabed_force3, seabed_force3_jacobian, extra_load3, extra_load3_jacobian,
     surface_buoyancy3, end_jacobian3)
 
-# the compiled entries' arguments x, y, d, env, up, P, b0, b1, res, band, then extras: None or the marker array
-_ARGUMENTS = (aot.F2, aot.F2, aot.F2, aot.F2, aot.F1, aot.F2, aot.F1, aot.F1, aot.F1, aot.F2)
-assemble3 = aot.register("assemble3", "kanat.continuum.rows3d", _ARGUMENTS + (None,), _ARGUMENTS + (aot.F1,))
-assemble3_bending = aot.register("assemble3_bending", "kanat.continuum.bending3d", _ARGUMENTS + (None,),
-                                 _ARGUMENTS + (aot.F1,))
+SpatialStep = aot.record(
+    "SpatialStep", "kanat.continuum.kernels3d",
+    previous=aot.F2,                        # y: the nodal states at the start of the step (N+1, nv)
+    rate=aot.F2,                            # d: their time derivative (N+1, nv)
+    water=aot.F2,                           # env: nodal data in chart coordinates (N+1, NENV3), layout3d
+    vertical=aot.F1,                        # up: the chart components of the vertical z (3,)
+    intervals=aot.F2,                       # P: every interval's parameter row (N, n_par), layout2d
+    start=aot.F1, end=aot.F1,               # b0, b1: the end conditions (NBPAR3, NBPAR3_BENDING with bending)
+    extras=aot.F1,                          # None for a plain cable (rows3d docstring), else a marker (1,)
+)
+"""What one step of the spatial box scheme knows before its Newton iteration, as :func:`assemble3`
+and :func:`assemble3_bending` read it: one field per input, built by
+:func:`kanat.continuum.spatial.step_data` and nowhere else (as :class:`kernels2d.PlanarStep`)."""
+
+# the compiled entries' arguments: x, step, res, band; the plain cable's version (extras None) first
+_VERSIONS = tuple((aot.F2, step, aot.F1, aot.F2) for step in (SpatialStep.narrowed(extras=None), SpatialStep))
+assemble3 = aot.register("assemble3", "kanat.continuum.rows3d", *_VERSIONS)
+assemble3_bending = aot.register("assemble3_bending", "kanat.continuum.bending3d", *_VERSIONS)

@@ -36,7 +36,8 @@ tension and angle jump across it by exactly the body's load.
 
 All derivatives are written out; :mod:`kanat.continuum.oracle_complex_step2d` checks them by complex step.
 
-The last argument of :func:`assemble`, ``extras``, is None for a plain cable (no seabed within
+The inputs of :func:`assemble` are one named record, :class:`kernels2d.PlanarStep`, read by field
+name. Its last field, ``extras``, is None for a plain cable (no seabed within
 reach, no waves, no inline bodies, no bending stiffness, no surface buoy) and an array otherwise:
 numba prunes the ``extras is not None`` branches of the plain version at compile time, so a
 plain run compiles none of that code (``kanat.jit``'s compile budget); the two versions give the
@@ -51,14 +52,23 @@ from kanat.continuum import loads2d as k
 
 
 @kernel
-def assemble(x, y, d, env, P, b0, b1, res, band, extras):
+def assemble(x, step, res, band):
     """Residual ``res`` (nv (N+1),) and banded Jacobian ``band`` at unknowns ``x`` (N+1, nv).
 
-    ``x, y, d`` are (N+1, nv): new state, old state, old rate; ``env`` (N+1, NENV) the nodal
-    water and position data; ``P`` (N, n_par) the parameter row of every interval; ``b0``,
-    ``b1`` the end conditions at ``s = 0`` and ``s = L``. ``band[w + row - col, col]`` holds
+    ``step`` is the step's :class:`kernels2d.PlanarStep`: ``previous`` and ``rate`` (N+1, nv) the
+    old state and rate, ``water`` (N+1, NENV) the nodal water and position data, ``intervals``
+    (N, n_par) the parameter row of every interval, ``start``, ``end`` the end conditions at
+    ``s = 0`` and ``s = L``, ``extras`` None for a plain cable. ``band[w + row - col, col]`` holds
     ``dR[row]/dx[col]`` (LAPACK banded storage, ``w`` = :func:`kernels2d.bandwidth`).
     """
+    _assemble(x, step, res, band, step.extras)
+
+
+@inner
+def _assemble(x, step, res, band, extras):
+    """:func:`assemble`, with the record's ``extras`` an argument of its own: numba prunes the
+    ``extras is not None`` branches by its type (None), which it does for arguments only."""
+    y, d, env, P = step.previous, step.rate, step.water, step.intervals
     n_nodes, nv = x.shape[0], x.shape[1]
     width = (band.shape[0] - 1) // 2
     band[:, :] = 0.0
@@ -84,7 +94,7 @@ def assemble(x, y, d, env, P, b0, b1, res, band, extras):
                 _junction_rows(j, x, wm, wk, wr, env, P[j], chain, width, res, band)
         if not junction:
             _interval_rows(j, wm, wk, wr, load, dload, P[j], chain, width, res, band, extras)
-    _end_rows(x, y, d, env, P, b0, b1, width, res, band, extras)
+    _end_rows(x, step, width, res, band, extras)
 
 
 @inner
@@ -312,8 +322,9 @@ def _junction_rows(j, x, wm, wk, wr, env, p, chain, width, res, band):
 
 
 @inner
-def _end_rows(x, y, d, env, P, b0, b1, width, res, band, extras):
+def _end_rows(x, step, width, res, band, extras):
     """The rows of each end and their derivatives (:func:`kernels2d.end_jacobian`) into ``res``, ``band``."""
+    y, d, env, P, b0, b1 = step.previous, step.rate, step.water, step.intervals, step.start, step.end
     nv = x.shape[1]
     half = nv // 2
     out = np.empty(half)

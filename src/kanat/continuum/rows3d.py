@@ -10,6 +10,7 @@ level) and the body's momentum in chart components (3 rows)
 
 (a spherical float: ``B`` and the wave inertia keep their immersed share, :mod:`kanat.continuum.rows2d`).
 
+The inputs are one named record, :class:`kernels3d.SpatialStep`, read by field name; its
 ``extras``: None for a plain cable (its branches compile away), as in :mod:`kanat.continuum.rows2d`.
 """
 from __future__ import annotations
@@ -22,13 +23,23 @@ from kanat.continuum import loads3d as k3
 
 
 @kernel
-def assemble3(x, y, d, env, up, P, b0, b1, res, band, extras):
+def assemble3(x, step, res, band):
     """Residual (6(N+1),) and banded Jacobian (17, 6(N+1)) of one step at unknowns ``x`` (N+1, 6).
 
-    ``y, d``: old state and rate; ``env`` (N+1, NENV3) the nodal data in chart coordinates;
-    ``up`` (3,) the chart components of the vertical ``z``; ``P`` (N, n_par) the interval rows;
-    ``b0, b1`` end conditions (NBPAR3).
+    ``step`` is the step's :class:`kernels3d.SpatialStep`: ``previous``, ``rate`` the old state and
+    rate; ``water`` (N+1, NENV3) the nodal data in chart coordinates; ``vertical`` (3,) the chart
+    components of the vertical ``z``; ``intervals`` (N, n_par) the interval rows; ``start``, ``end``
+    the end conditions (NBPAR3); ``extras`` None for a plain cable.
     """
+    flexible_rows(x, step.previous, step.rate, step, res, band, step.extras)
+
+
+@inner
+def flexible_rows(x, y, d, step, res, band, extras):
+    """:func:`assemble3` with the old state and rate ``y``, ``d`` (N+1, 6) given apart (the bending
+    kernel passes their first six columns, :mod:`kanat.continuum.bending3d`) and the record's
+    ``extras`` an argument of its own: numba prunes its branches by type for arguments only."""
+    env, up, P = step.water, step.vertical, step.intervals
     n_nodes = x.shape[0]
     band[:, :] = 0.0
     p = P[0]
@@ -50,7 +61,7 @@ def assemble3(x, y, d, env, up, P, b0, b1, res, band, extras):
                 _junction_rows3(j, x, wm, wk, wr, env, up, P[j], res, band)
         if not junction:
             _interval_rows3(j, wm, wk, wr, load, dload, P[j], scratch, vectors, res, band)
-    _end_rows3(x, y, d, env, up, P, b0, b1, res, band, extras)
+    _end_rows3(x, y, d, step, res, band, extras)
 
 
 @inner
@@ -234,8 +245,9 @@ def _junction_rows3(j, x, wm, wk, wr, env, up, p, res, band):
 
 
 @inner
-def _end_rows3(x, y, d, env, up, P, b0, b1, res, band, extras):
+def _end_rows3(x, y, d, step, res, band, extras):
     """The three rows of each end and their derivatives (:func:`kernels3d.end_jacobian3`) into ``res``, ``band``."""
+    env, up, P, b0, b1 = step.water, step.vertical, step.intervals, step.start, step.end
     out, jac = np.empty(3), np.empty((3, 6))
     last = x.shape[0] - 1
     for end in range(2):

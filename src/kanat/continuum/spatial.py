@@ -137,16 +137,38 @@ def kernel_of(nv: int):
     return k3.assemble3, k3.UPPER
 
 
-def _solve(cable, x0, y, rate, env, up, P, b0, b1):
+def step_data(cable, y, rate, env, up, P, b0, b1) -> k3.SpatialStep:
+    """What the kernels know of one step (:class:`kernels3d.SpatialStep`), its one builder.
+
+    Parameters
+    ----------
+    cable : SpatialCable
+        Its ``extras()`` chooses the plain kernel (None) or the full one.
+    y, rate : ndarray, shape (n_nodes, nv)
+        The states at the start of the step and their time derivative.
+    env : ndarray, shape (n_nodes, NENV3)
+        Nodal water and position data in chart coordinates (:func:`spatial_water`).
+    up : ndarray, shape (3,)
+        The chart components of the vertical.
+    P : ndarray, shape (n_nodes - 1, n_par)
+        The step's interval rows.
+    b0, b1 : ndarray
+        The end conditions (NBPAR3, or NBPAR3_BENDING with bending stiffness).
+    """
+    return k3.SpatialStep(previous=y, rate=rate, water=env, vertical=up, intervals=P, start=b0, end=b1,
+                          extras=cable.extras())
+
+
+def _solve(cable, x0, known: k3.SpatialStep):
+    """Newton's method for the new state from ``x0``, the step's inputs ``known`` (:func:`step_data`)."""
     x = x0.copy()
     n, nv = x.size, x.shape[1]
     assemble, width = kernel_of(nv)
     res, band = np.empty(n), np.empty((2 * width + 1, n))
-    scale = spatial_scales(cable, y)                     # (nv,): broadcast over the nodes
-    extras = cable.extras()
+    scale = spatial_scales(cable, known.previous)        # (nv,): broadcast over the nodes
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
-        assemble(x, y, rate, env, up, P, b0, b1, res, band, extras)
+        assemble(x, known, res, band)
         if not np.isfinite(res).all():
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         dx = solve_band(width, band, -res)
@@ -221,7 +243,7 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
     float_elevations(cable.sea, P, state.xyz[:, :2], kinematics_time(state.t, dt, coefficients))
     b0 = cable.start.array(v0, chart, rho, payout=payout)
     b1 = cable.end.array(v1, chart, rho, eta=eta)
-    x, iterations = _solve(cable, y + dt * rate, y, rate, env, chart.T @ UP, P, b0, b1)
+    x, iterations = _solve(cable, y + dt * rate, step_data(cable, y, rate, env, chart.T @ UP, P, b0, b1))
     gamma = coefficients[2]
     new_rate = (x - y) / (gamma * dt) - (1.0 - gamma) / gamma * rate
     new_frames = frames(x, chart)
@@ -246,7 +268,7 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
                         waves=False)
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
     if not near_seabed(cable, xyz) and cable.end.waterplane == 0.0 and not anchored and not has_floats(rows):
-        x, _ = _solve(cable, guess, guess, np.zeros_like(guess), env, up, P, b0, b1)
+        x, _ = _solve(cable, guess, step_data(cable, guess, np.zeros_like(guess), env, up, P, b0, b1))
         return x
     from kanat.continuum.steady import steady_with_positions
 
@@ -260,7 +282,7 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
 
     def residual(x, e):
         res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
-        assemble(x, x, np.zeros_like(x), e, up, P, b0, b1, res, band, cable.extras())
+        assemble(x, step_data(cable, x, np.zeros_like(x), e, up, P, b0, b1), res, band)
         return res, band
 
     def derivative(x):

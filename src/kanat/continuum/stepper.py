@@ -72,18 +72,37 @@ def scales(cable, y: np.ndarray) -> np.ndarray:
     return np.array([tension, speed, speed, 1.0])
 
 
-def solve(cable, x0, y, rate, env, P, b0, b1):
-    """Newton's method for the new state; returns ``(x, iterations)`` or raises NewtonFailure."""
-    extras = cable.extras()
+def step_data(cable, y, rate, env, P, b0, b1) -> k.PlanarStep:
+    """What the kernels know of one step (:class:`kernels2d.PlanarStep`), its one builder.
+
+    Parameters
+    ----------
+    cable : PlanarCable
+        Its ``extras()`` chooses the plain kernel (None) or the full one.
+    y, rate : ndarray, shape (n_nodes, nv)
+        The states at the start of the step and their time derivative.
+    env : ndarray, shape (n_nodes, NENV)
+        Nodal water velocity, acceleration and position (:func:`kanat.continuum.water.planar_water`).
+    P : ndarray, shape (n_nodes - 1, n_par)
+        The step's interval rows (:func:`step_rows`).
+    b0, b1 : ndarray, shape (NBPAR,)
+        The end conditions at ``s = 0`` and ``s = L``.
+    """
+    return k.PlanarStep(previous=y, rate=rate, water=env, intervals=P, start=b0, end=b1, extras=cable.extras())
+
+
+def solve(cable, x0, known: k.PlanarStep):
+    """Newton's method for the new state from ``x0``, the step's inputs ``known`` (:func:`step_data`);
+    returns ``(x, iterations)`` or raises NewtonFailure."""
     x = x0.copy()
     n, nv = x.size, x.shape[1]
     width = k.bandwidth(nv)
     res = np.empty(n)
     band = np.empty((2 * width + 1, n))
-    scale = np.tile(scales(cable, y), len(x))
+    scale = np.tile(scales(cable, known.previous), len(x))
     previous = np.inf
     for iteration in range(1, MAX_ITERATIONS + 1):
-        k.assemble(x, y, rate, env, P, b0, b1, res, band, extras)
+        k.assemble(x, known, res, band)
         if not np.all(np.isfinite(res)):
             raise NewtonFailure("the residual is not finite (NaN)", int(np.argmax(~np.isfinite(res)) // nv))
         dx = solve_band(width, band, -res)
@@ -166,7 +185,7 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive, own_r
     float_elevations(cable.sea, P, np.column_stack([state.xz[:, 0], np.zeros(len(state.xz))]),
                      kinematics_time(state.t, dt, coefficients))
     b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
-    x, iterations = solve(cable, state.y + dt * state.rate, state.y, state.rate, env, P, b0, b1)
+    x, iterations = solve(cable, state.y + dt * state.rate, step_data(cable, state.y, state.rate, env, P, b0, b1))
     gamma = coefficients[2]
     rate = (x - state.y) / (gamma * dt) - (1.0 - gamma) / gamma * state.rate
     xz = positions(cable, x, drive.origin(state.t + dt), after)
@@ -192,7 +211,7 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     anchored = cable.end.kind == k.VELOCITY and not cable.end.moving
     if not near_seabed(cable, np.column_stack([xz[:, 0], np.zeros(len(xz)), xz[:, 1]])) and \
             cable.end.waterplane == 0.0 and not anchored and not has_floats(rows):
-        x, _ = solve(cable, guess, guess, np.zeros_like(guess), env, P, b0, b1)
+        x, _ = solve(cable, guess, step_data(cable, guess, np.zeros_like(guess), env, P, b0, b1))
         return x
 
     def layout(x):
@@ -205,7 +224,7 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
 
     def residual(x, e):
         res, band = np.empty(x.size), np.empty((2 * width + 1, x.size))
-        k.assemble(x, x, np.zeros_like(x), e, P, b0, b1, res, band, cable.extras())
+        k.assemble(x, step_data(cable, x, np.zeros_like(x), e, P, b0, b1), res, band)
         return res, band
     target = np.asarray(cable.end.position, dtype=float) if anchored else None
     return steady_with_positions(guess, layout, (k.RX, k.RZ), residual, planar_position_jacobian(rows),

@@ -105,15 +105,13 @@ def factorized_step(world, Y, dt: float, sweeps, implicit_source: bool = True, c
 
 
 def _compiled(world, Y, dt, sweeps, implicit_source, delta):
-    from kanat.continuum.factorized.sweeps_compiled import MESSAGES, OK, end_parameters, factorized_step_compiled
+    from kanat.continuum.factorized.sweeps_compiled import MESSAGES, OK, factorized_step_compiled, line_data
 
     system = world.system
     slack = max(np.max(np.abs(Y[:, 0])), 1.0) * COMPRESSION / system.normal_mass
     four = len(sweeps) == 4
-    X, status, node = factorized_step_compiled(
-        np.ascontiguousarray(Y, dtype=float), np.ascontiguousarray(world.current, dtype=float),
-        np.asarray(world.up, dtype=float), system.p, system.dim, world.ds, dt, four, implicit_source,
-        end_parameters(world.start), end_parameters(world.end), slack, delta)
+    X, status, node = factorized_step_compiled(np.ascontiguousarray(Y, dtype=float), line_data(world), dt, four,
+                                               implicit_source, slack, delta)
     if status != OK:
         raise NewtonFailure(MESSAGES[status], int(node))
     return X

@@ -7,7 +7,8 @@ tests check the two agree to round-off. Nodal loads and their derivatives come f
 model's kernels (:func:`kernels2d.node_load_jacobian`, :func:`kernels3d.node_load3_jacobian`);
 the end conditions are solved by Newton with complex-step derivatives.
 
-A planar cable passes ``up = None``: numba then compiles the planar branches only (a branch
+The cable's inputs are one named record, :class:`FactorizedLine` (:func:`line_data`). A planar
+cable's ``vertical`` (``up`` in the kernels) is None: numba then compiles the planar branches only (a branch
 on ``is None`` is pruned by type), so a planar run does not compile the spatial kernels.
 Scalar loops throughout (no array expressions, ``@`` or ``np.linalg``; :mod:`kanat.jit`).
 
@@ -27,6 +28,17 @@ from kanat.continuum.factorized.dense import lu_factor, lu_solve, sweep_into
 
 STEP = 1e-30
 ENDPAR = 10
+FactorizedLine = aot.record(
+    "FactorizedLine", "kanat.continuum.factorized.sweeps_compiled",
+    current=aot.F2,                         # the water velocity at every node, frame coordinates (n, d_c) [m/s]
+    vertical=aot.F1,                        # the frame components of the vertical z (3,); None for a planar cable
+    parameters=aot.F1,                      # the cable's parameter row (kanat.continuum.layout2d)
+    dimensions=aot.INT,                     # 2 or 3
+    spacing=aot.FLOAT,                      # the node spacing ds [m]
+    start=aot.F1, end=aot.F1,               # the end parameters at s = 0 and s = L (ENDPAR, end_parameters)
+)
+"""The cable as the factorized schemes' kernels read it (``line.spacing``): one field per input,
+built by :func:`line_data` and nowhere else; ``vertical`` None prunes the spatial branches."""
 END_ITERATIONS = 30
 END_TOLERANCE = 1e-11
 OK, COMPRESSION, SINGULAR, DIVERGED, NONFINITE = 0, 1, 2, 3, 4
@@ -359,21 +371,29 @@ def end_solve(Y, e, side, nbr, par, dt, cur, up, p, dim, ds, x):
     return DIVERGED
 
 
-def factorized_step_compiled(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, slack, delta):
-    """One factorized step (two or four sweeps, states or increments); returns ``(X, status, node)``.
+def line_data(world) -> FactorizedLine:
+    """The :class:`FactorizedLine` of ``world`` (a :class:`~kanat.continuum.factorized.system.World`),
+    its one builder: a planar cable's ``vertical`` is None, so the kernels compile their planar
+    branches only."""
+    system = world.system
+    return FactorizedLine(current=np.ascontiguousarray(world.current, dtype=float),
+                          vertical=np.asarray(world.up, dtype=float) if system.dim == 3 else None,
+                          parameters=system.p, dimensions=system.dim, spacing=world.ds,
+                          start=end_parameters(world.start), end=end_parameters(world.end))
 
-    ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
-    planar branches only.
-    """
+
+def factorized_step_compiled(Y, line, dt, four, implicit, slack, delta):
+    """One factorized step (two or four sweeps, states or increments) of the cable ``line``
+    (:func:`line_data`); returns ``(X, status, node)``."""
     X = np.empty_like(Y)
     step = aot.kernel("factorized_step")
-    status, node = step(Y, cur, up if dim == 3 else None, p, dim, ds, dt, four, implicit, par0, par1, slack, delta, X)
+    status, node = step(Y, line, dt, four, implicit, slack, delta, X)
     return X, status, node
 
 
-aot.register("factorized_step", __name__, *((aot.F2, aot.F2, up, aot.F1, aot.INT, aot.FLOAT, aot.FLOAT, aot.BOOL, aot.BOOL,
-                                             aot.F1, aot.F1, aot.FLOAT, aot.BOOL, aot.F2) for up in (None, aot.F1)),
-             returns=(aot.INT, aot.INT), function="_factorized_step")      # planar (up None) and spatial
+aot.register("factorized_step", __name__, *((aot.F2, line, aot.FLOAT, aot.BOOL, aot.BOOL, aot.FLOAT, aot.BOOL, aot.F2)
+                                             for line in (FactorizedLine.narrowed(vertical=None), FactorizedLine)),
+             returns=(aot.INT, aot.INT), function="_factorized_step")      # planar (vertical None) and spatial
 
 
 @inner
@@ -393,8 +413,10 @@ def _split_all(Y, B, p, slack, parts):
 
 
 @kernel
-def _factorized_step(Y, cur, up, p, dim, ds, dt, four, implicit, par0, par1, slack, delta, X):
+def _factorized_step(Y, line, dt, four, implicit, slack, delta, X):
     """:func:`factorized_step_compiled` into ``X`` (n, d); returns ``(status, node)``."""
+    cur, up, p, dim, ds = line.current, line.vertical, line.parameters, line.dimensions, line.spacing
+    par0, par1 = line.start, line.end
     n, d = Y.shape
     B, D, J, _Ms = node_forms(Y, cur, up, p, implicit)
     parts = np.empty((n, 4, d, d))

@@ -34,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.linalg import solve_banded
 
-from kanat.continuum.factorized.sweeps_compiled import end_parameters
+from kanat.continuum.factorized.sweeps_compiled import line_data
 from kanat.continuum.factorized.system import STEP
 from kanat.continuum.stepper import NewtonFailure
 from kanat.continuum.factorized.waves_compiled import assemble_block
@@ -52,16 +52,14 @@ def wave_factorized_step(world, Y, dt: float, block_count: int, gamma: float = 0
     Fn = system.loads(Y, world.current, world.up)
     latest = Y.copy()
     if compiled:
-        par0, par1 = end_parameters(world.start), end_parameters(world.end)
-        current = np.ascontiguousarray(world.current, dtype=float)
-        up = np.asarray(world.up, dtype=float)
+        line = line_data(world)
     for _ in range(iterations):
         for index, block in enumerate(blocks):
             components = _end_components(index, len(blocks), system.dim)
             if compiled:
                 band, rhs, lower, upper = assemble_block(
-                    Y, latest, Fn, current, up, system.p, system.dim, world.ds, dt, gamma,
-                    np.array(block, dtype=np.int64), np.array(components, dtype=np.int64), par0, par1)
+                    Y, latest, Fn, line, dt, gamma, np.array(block, dtype=np.int64),
+                    np.array(components, dtype=np.int64))
                 x = _solve(band, rhs, lower, upper).reshape(len(Y), len(block))
             else:
                 x = _block_solve(world, Y, Fn, latest, dt, gamma, block, components)

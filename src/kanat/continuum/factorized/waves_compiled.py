@@ -12,29 +12,32 @@ from kanat.jit import kernel
 
 from kanat import aot
 
-from kanat.continuum.factorized.sweeps_compiled import load_jacobian, lu_factor, lu_solve, mass_stiffness, physical
+from kanat.continuum.factorized.sweeps_compiled import (FactorizedLine, load_jacobian, lu_factor, lu_solve,
+                                                       mass_stiffness, physical)
 
 STEP = 1e-30
 
 
-def assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, par0, par1):
+def assemble_block(Yn, latest, Fn, line, dt, gamma, own, comps):
     """Band (lower + upper + 1, n nb), right-hand side (n nb,) and bandwidths of one block.
 
-    ``up`` is ignored for a planar cable (``dim`` 2): the kernel gets None and compiles its
-    planar branches only (:mod:`.sweeps_compiled`).
+    ``line`` is the cable's :class:`~.sweeps_compiled.FactorizedLine` (:func:`.sweeps_compiled.line_data`;
+    a planar cable's ``vertical`` None: the kernel compiles its planar branches only).
     """
     block = aot.kernel("assemble_block")
-    return block(Yn, latest, Fn, cur, up if dim == 3 else None, p, dim, ds, dt, gamma, own, comps, par0, par1)
+    return block(Yn, latest, Fn, line, dt, gamma, own, comps)
 
 
-aot.register("assemble_block", __name__, *((aot.F2, aot.F2, aot.F2, aot.F2, up, aot.F1, aot.INT, aot.FLOAT, aot.FLOAT,
-                                            aot.FLOAT, aot.I1, aot.I1, aot.F1, aot.F1) for up in (None, aot.F1)),
+aot.register("assemble_block", __name__, *((aot.F2, aot.F2, aot.F2, line, aot.FLOAT, aot.FLOAT, aot.I1, aot.I1)
+                                           for line in (FactorizedLine.narrowed(vertical=None), FactorizedLine)),
              returns=(aot.F2, aot.F1, aot.INT, aot.INT), function="_assemble_block")     # planar and spatial
 
 
 @kernel
-def _assemble_block(Yn, latest, Fn, cur, up, p, dim, ds, dt, gamma, own, comps, par0, par1):
+def _assemble_block(Yn, latest, Fn, line, dt, gamma, own, comps):
     """:func:`assemble_block` compiled; nodal load derivatives written out, the ends' by complex step."""
+    cur, up, p, dim, ds = line.current, line.vertical, line.parameters, line.dimensions, line.spacing
+    par0, par1 = line.start, line.end
     n, d = Yn.shape
     nb, h = own.shape[0], comps.shape[0]
     lower, upper = h + nb - 1, 2 * nb - 1 - h
