@@ -1,0 +1,90 @@
+"""The starting equilibrium's linear systems (kanat.lumped.node_systems): the dense form (small
+networks) and the sparse one (SciPy's SuperLU, the oracle) give the same solution to round-off, and
+say "singular" alike; a lumped run of a small network imports no SciPy."""
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from kanat.lumped import node_systems
+
+from helpers import ROOT
+
+
+def node_band(nodes, seed):
+    """Entries of a non-symmetric block tridiagonal system of ``nodes`` 3 x 3 blocks, with repeated
+    entries (as a Jacobian's coloured columns give them): rows, cols, values."""
+    rng = np.random.default_rng(seed)
+    rows, cols, values = [], [], []
+    for k in range(nodes):
+        for other in (k - 1, k, k + 1):
+            if 0 <= other < nodes:
+                r, c = np.meshgrid(3 * k + np.arange(3), 3 * other + np.arange(3), indexing="ij")
+                block = rng.normal(size=(3, 3)) + (8.0 * np.eye(3) if other == k else 0.0)
+                for part in (0.25, 0.75):                       # each entry given twice: summed
+                    rows.extend(r.ravel())
+                    cols.extend(c.ravel())
+                    values.extend(part * block.ravel())
+    return np.array(rows), np.array(cols), np.array(values)
+
+
+@pytest.mark.parametrize("nodes", [5, 101])          # dense (15 unknowns) and sparse (303)
+def test_dense_and_sparse_forms_solve_alike(nodes):
+    rows, cols, values = node_band(nodes, seed=nodes)
+    size = 3 * nodes
+    matrix = node_systems.node_matrix(rows, cols, values, size)
+    assert isinstance(matrix, np.ndarray) == (size <= node_systems.DENSE_UNKNOWNS)
+    reference = sp.csc_matrix((values, (rows, cols)), shape=(size, size))
+    np.testing.assert_allclose(np.asarray(matrix.todense() if sp.issparse(matrix) else matrix),
+                               reference.toarray(), rtol=0, atol=1e-14)
+    mass = np.random.default_rng(1).normal(size=(nodes, 3, 3))
+    b = np.random.default_rng(2).normal(size=size)
+    want = sp.linalg.spsolve((sp.block_diag(list(mass), format="csc") - reference).tocsc(), b)
+    got = node_systems.solve(node_systems.with_mass(-matrix, mass), b)
+    np.testing.assert_allclose(got, want, rtol=1e-10, atol=1e-12 * np.max(np.abs(want)))
+
+
+def test_the_sparse_form_past_the_limit(monkeypatch):
+    monkeypatch.setattr(node_systems, "DENSE_UNKNOWNS", 10)
+    rows, cols, values = node_band(20, seed=3)
+    matrix = node_systems.node_matrix(rows, cols, values, 60)
+    assert sp.issparse(matrix)
+    b = np.arange(60.0)
+    want = np.linalg.solve(sp.csc_matrix((values, (rows, cols)), shape=(60, 60)).toarray(), b)
+    np.testing.assert_allclose(node_systems.solve(matrix, b), want, rtol=1e-10, atol=1e-12 * np.max(np.abs(want)))
+
+
+@pytest.mark.parametrize("limit", [300, 0])
+def test_a_singular_system_says_so_in_either_form(limit, monkeypatch):
+    monkeypatch.setattr(node_systems, "DENSE_UNKNOWNS", limit)
+    rows, cols, values = node_band(4, seed=5)
+    keep = (rows != 4) & (cols != 4)                        # an unknown no equation holds: a zero column
+    matrix = node_systems.node_matrix(rows[keep], cols[keep], values[keep], 12)
+    with pytest.raises(RuntimeError, match="singular"):
+        node_systems.solve(matrix, np.ones(12))
+
+
+def test_a_small_lumped_run_imports_no_scipy(tmp_path):
+    """MoorDyn's WD0050 chain (82 segments, friction on the seabed) from its equilibrium, 0.2 s of the
+    default implicit scheme: no SciPy sparse or linear-algebra module (their import would be a tenth
+    of the whole process; numba, where the kernels compiled at install are stale, imports SciPy's
+    package itself)."""
+    script = (
+        "import sys, warnings\n"
+        "import kanat\n"
+        "warnings.simplefilter('ignore')\n"
+        f"case = kanat.load_case({str(ROOT / 'tests' / 'data' / 'moordyn' / 'wd0050_chain.dat')!r})\n"
+        "case = case.replace({'model': 'lumped', 'simulation.duration': 0.2, 'simulation.output_dt': 0.1})\n"
+        "ds = kanat.simulate(case)\n"
+        "assert ds.attrs['status'] == 'ok', ds.attrs['status']\n"
+        "print('numba' in sys.modules)\n"
+        "print(sorted(m for m in sys.modules if m.startswith(('scipy.sparse', 'scipy.linalg'))))\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    numba, scipy = done.stdout.strip().splitlines()[-2:]
+    if numba == "True":
+        pytest.skip("the kernels compiled at install are stale or missing here: numba ran them, and numba "
+                    "imports scipy.linalg itself")
+    assert scipy == "[]"
