@@ -3,14 +3,17 @@ networks) and the sparse one (SciPy's SuperLU, the oracle) give the same solutio
 say "singular" alike; a lumped run of a small network imports no SciPy."""
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
 import scipy.sparse as sp
+import yaml
 
+from kanat.io import load_case
 from kanat.lumped import node_systems
 
-from helpers import ROOT
+from helpers import DATA
 
 
 def node_band(nodes, seed):
@@ -67,22 +70,29 @@ def test_a_singular_system_says_so_in_either_form(limit, monkeypatch):
 
 
 def test_a_small_lumped_run_imports_no_scipy(tmp_path):
-    """MoorDyn's WD0050 chain (82 segments, friction on the seabed) from its equilibrium, 0.2 s of the
-    default implicit scheme: no SciPy sparse or linear-algebra module (their import would be a tenth
-    of the whole process; numba, where the kernels compiled at install are stale, imports SciPy's
-    package itself)."""
+    """``kanat run`` of MoorDyn's WD0050 chain (82 segments, friction on the seabed) from its
+    equilibrium, 0.2 s of the default implicit scheme: no SciPy sparse or linear-algebra module (their
+    import would be a tenth of the whole process; numba, where the kernels compiled at install are
+    stale, imports SciPy itself, and so does an in-memory result's xarray through dask)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                       # the file's MoorDyn-only settings
+        case = load_case(DATA / "moordyn" / "wd0050_chain.dat")
+    case = case.replace({"model": "lumped", "simulation.duration": 0.2, "simulation.output_dt": 0.1})
+    path = tmp_path / "wd0050.yaml"
+    path.write_text(yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_none=True), sort_keys=False))
     script = (
-        "import sys, warnings\n"
-        "import kanat\n"
-        "warnings.simplefilter('ignore')\n"
-        f"case = kanat.load_case({str(ROOT / 'tests' / 'data' / 'moordyn' / 'wd0050_chain.dat')!r})\n"
-        "case = case.replace({'model': 'lumped', 'simulation.duration': 0.2, 'simulation.output_dt': 0.1})\n"
-        "ds = kanat.simulate(case)\n"
-        "assert ds.attrs['status'] == 'ok', ds.attrs['status']\n"
+        "import sys\n"
+        f"sys.argv = ['kanat', 'run', {str(path)!r}, '-o', {str(tmp_path / 'out.nc')!r}]\n"
+        "from kanat.cli import app\n"
+        "try:\n"
+        "    app()\n"
+        "except SystemExit as done:\n"
+        "    assert not done.code, done.code\n"
         "print('numba' in sys.modules)\n"
         "print(sorted(m for m in sys.modules if m.startswith(('scipy.sparse', 'scipy.linalg'))))\n")
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
+    assert "status: ok" in done.stdout + done.stderr
     numba, scipy = done.stdout.strip().splitlines()[-2:]
     if numba == "True":
         pytest.skip("the kernels compiled at install are stale or missing here: numba ran them, and numba "
