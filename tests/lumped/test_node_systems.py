@@ -1,6 +1,7 @@
 """The starting equilibrium's linear systems (kanat.lumped.node_systems): the dense form (small
 networks) and the sparse one (SciPy's SuperLU, the oracle) give the same solution to round-off, and
-say "singular" alike; a lumped run of a small network imports no SciPy."""
+say "singular" alike; the dense form's band elimination is LAPACK's dense solve where rows must be
+swapped; a lumped run of a small network imports no SciPy."""
 import subprocess
 import sys
 import warnings
@@ -47,6 +48,23 @@ def test_dense_and_sparse_forms_solve_alike(nodes):
     want = sp.linalg.spsolve((sp.block_diag(list(mass), format="csc") - reference).tocsc(), b)
     got = node_systems.solve(node_systems.with_mass(-matrix, mass), b)
     np.testing.assert_allclose(got, want, rtol=1e-10, atol=1e-12 * np.max(np.abs(want)))
+
+
+@pytest.mark.parametrize("lower, upper", [(5, 5), (2, 7), (0, 3), (11, 11)])
+def test_band_elimination_is_partial_pivoting(lower, upper):
+    """A band matrix whose diagonal is small against the entries below it (every column swaps rows),
+    against NumPy's dense LAPACK solve."""
+    rng = np.random.default_rng(lower + 10 * upper)
+    n = 60
+    matrix = np.zeros((n, n))
+    for i in range(n):
+        for j in range(max(0, i - lower), min(n, i + upper + 1)):
+            matrix[i, j] = rng.normal() * (1e-3 if i == j else 1.0)
+    rhs = rng.normal(size=n)
+    got = node_systems.band_solve(matrix, rhs, lower, upper)
+    want = np.linalg.solve(matrix, rhs)
+    np.testing.assert_allclose(got, want, rtol=1e-9, atol=1e-9 * np.max(np.abs(want)))
+    np.testing.assert_allclose(matrix @ got, rhs, rtol=0, atol=1e-11 * np.max(np.abs(matrix)) * np.max(np.abs(got)))
 
 
 def test_the_sparse_form_past_the_limit(monkeypatch):

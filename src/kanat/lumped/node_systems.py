@@ -4,17 +4,21 @@
 A process that starts a small network never imports SciPy: its sparse modules take about
 0.3 s of CPU to import (``scipy.sparse`` and ``scipy.sparse.linalg``), more than all the dense
 solves of such an equilibrium together. :data:`DENSE_UNKNOWNS` draws the line. Both forms are
-solved by LU with partial pivoting (LAPACK ``gesv``; SuperLU's ``splu``), so either answers to
-round-off.
+solved by Gaussian elimination with partial pivoting, so either answers to round-off: the dense
+one by :func:`band_solve`, which touches only the matrix's band (LAPACK ``gbsv``'s algorithm: a
+line's matrix is 3 x 3 blocks wide) in plain NumPy, never LAPACK's dense ``gesv`` — on a machine
+shared with other work, OpenBLAS's threads made that 5 times slower than SciPy's sparse LU where
+the command line's one BLAS thread (:mod:`kanat.cli`) was not set; the sparse one by SuperLU
+(``splu``).
 """
 from __future__ import annotations
 
 import numpy as np
 
 DENSE_UNKNOWNS = 300
-"""Unknowns (3 per free node) up to which a system is dense: a dense LU of 300 unknowns takes
-about 2 ms (``2 n^3 / 3`` flops), and an equilibrium solves some 30-60 of them, 0.1 s at most,
-below SciPy's import; past it the cubic cost soon exceeds the import."""
+"""Unknowns (3 per free node) up to which a system is dense: :func:`band_solve` of a line's 243
+unknowns takes about 3 ms, and an equilibrium solves some 30-60 of them, 0.1-0.2 s, below SciPy's
+import; a wider band costs up to ``n`` times more."""
 
 
 def node_matrix(rows, cols, values, size: int):
@@ -51,10 +55,40 @@ def solve(matrix, rhs: np.ndarray) -> np.ndarray:
         When the matrix is exactly singular (a zero pivot), in either form.
     """
     if isinstance(matrix, np.ndarray):
-        try:
-            return np.linalg.solve(matrix, rhs)
-        except np.linalg.LinAlgError as error:
-            raise RuntimeError(f"singular matrix ({error})") from None
+        rows, cols = np.nonzero(matrix)
+        lower = int(np.max(rows - cols, initial=0))
+        return band_solve(matrix, rhs, lower, int(np.max(cols - rows, initial=0)))
     import scipy.sparse.linalg as spla
 
     return spla.splu(matrix.tocsc()).solve(rhs)
+
+
+def band_solve(matrix: np.ndarray, rhs: np.ndarray, lower: int, upper: int) -> np.ndarray:
+    """``x`` of ``matrix x = rhs`` (n square, n) by Gaussian elimination with partial pivoting
+    within the band: ``lower`` and ``upper`` diagonals hold every nonzero; a row swap widens the
+    upper part to ``lower + upper`` (Golub & Van Loan, Matrix Computations, 4th ed., §4.3.5,
+    Algorithm 4.3.5 with pivoting; LAPACK ``gbsv``). Neither argument is modified.
+
+    Raises
+    ------
+    RuntimeError
+        On an exactly zero pivot (a singular matrix).
+    """
+    a, b = np.array(matrix, dtype=float), np.array(rhs, dtype=float)
+    n = len(b)
+    for k in range(n):
+        last, right = min(n, k + lower + 1), min(n, k + lower + upper + 1)
+        p = k + int(np.argmax(np.abs(a[k:last, k])))
+        if a[p, k] == 0.0:
+            raise RuntimeError(f"singular matrix (zero pivot in column {k})")
+        if p != k:
+            a[[k, p], k:right] = a[[p, k], k:right]
+            b[k], b[p] = b[p], b[k]
+        factors = a[k + 1:last, k] / a[k, k]
+        a[k + 1:last, k + 1:right] -= np.outer(factors, a[k, k + 1:right])
+        b[k + 1:last] -= factors * b[k]
+    x = np.empty(n)
+    for k in range(n - 1, -1, -1):
+        right = min(n, k + lower + upper + 1)
+        x[k] = (b[k] - a[k, k + 1:right] @ x[k + 1:right]) / a[k, k]
+    return x
