@@ -155,7 +155,7 @@ def test_fused_implicit_steps_match_the_python_scheme():
 
 
 def test_band_order_keeps_a_network_narrow():
-    from kanat.lumped.band_order import band_order
+    from kanat.lumped.fast_implicit import band_order
     net = build_network(network_case())
     position, bandwidth = band_order(net, np.flatnonzero(net.free))
     assert sorted(position[net.free]) == list(range(np.count_nonzero(net.free)))

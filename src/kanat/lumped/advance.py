@@ -19,8 +19,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from kanat.lumped import entries, fast, stepping
-from kanat.lumped.band_order import band_order
+from kanat.lumped import entries, fast, fast_implicit, stepping
 from kanat.lumped.integrators import ABM4, RK4, ExplicitState, GeneralizedAlphaLumped, pack, unpack
 from kanat.step_control import Halving, StepRefused
 
@@ -89,7 +88,7 @@ class FusedArrays:
             if nb:
                 self.work.body_velocity[:] = cu[0]
         self.events = np.zeros((max(fast.EVENT_BUFFER_MIN, 4 * m), 4))
-        self.position, self.bandwidth = band_order(net, system.free_index)
+        self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
         self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
                        np.zeros((n, 3, 3)))
         self.band = np.zeros((len(system.free_index), 2 * self.bandwidth + 1, 3, 3))   # 3 x 3 node blocks

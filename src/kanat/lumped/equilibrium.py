@@ -28,10 +28,11 @@ import dataclasses
 import functools
 
 import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.statics import budget
-from kanat.lumped import node_systems
 from kanat.lumped.relaxation import relax
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
@@ -105,7 +106,8 @@ def _jacobian(force, free, xf, colour, step, neighbours_of):
                         rows.extend(3 * m + np.arange(3))
                         cols.extend([3 * k + r] * 3)
                         vals.extend(dF[m])
-    return node_systems.node_matrix(rows, cols, vals, 3 * len(free))
+    size = 3 * len(free)
+    return sp.csc_matrix((vals, (rows, cols)), shape=(size, size))
 
 
 class _SteadyForces:
@@ -125,7 +127,7 @@ def _newton(J, F, xf, forces, length):
     """A Newton step ``-J dx = F`` shortened (halving, from at most MAX_STEP_FRACTION of an
     element per node) until the residual's 2-norm falls; None if it never does."""
     try:
-        direction = node_systems.solve(-J, F.ravel()).reshape(-1, 3)
+        direction = spla.splu((-J).tocsc()).solve(F.ravel()).reshape(-1, 3)
     except RuntimeError:                                         # singular: slack parts
         return None
     alpha = min(1.0, MAX_STEP_FRACTION * length / max(np.max(np.linalg.norm(direction, axis=1)), 1e-300))
@@ -140,9 +142,9 @@ def _newton(J, F, xf, forces, length):
 
 def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
     """One pseudo-transient step, eq. (1), clipped to MAX_STEP_FRACTION; None if it blows up."""
-    A = node_systems.with_mass(-J, M / dtau**2)
+    A = sp.block_diag(list(M / dtau**2), format="csc") - J
     try:
-        dx = node_systems.solve(A, F.ravel()).reshape(-1, 3)
+        dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
     except RuntimeError:                                         # singular: the caller shortens dtau
         return None
     biggest = np.max(np.linalg.norm(dx, axis=1))

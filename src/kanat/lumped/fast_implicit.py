@@ -6,7 +6,7 @@ Each step solves the same equations as :func:`kanat.lumped.implicit.generalized_
 force evaluation (:func:`kanat.lumped.fast.loads`), the tangent blocks
 (:func:`kernels.tangent_blocks`), its assembly and the linear solve run in numba. The
 tangent is stored as a band of 3 x 3 node blocks over the free nodes in a bandwidth-reducing
-order (reverse Cuthill–McKee, :func:`kanat.lumped.band_order.band_order`: one block either side of the diagonal for a
+order (reverse Cuthill–McKee, :func:`band_order`: one block either side of the diagonal for a
 line) and factorized by block LU without pivoting between blocks, each pivot block inverted
 exactly by cofactors — the matrix is dominated by its mass blocks, and its geometric and drag
 parts are positive semidefinite — at ``O(n b^2)`` block operations. The blocks are written out
@@ -35,6 +35,27 @@ CONTRACTION = 0.1           # an increment above this fraction of the one before
 FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
+
+
+def band_order(net, free_index) -> tuple[np.ndarray, int]:
+    """Position of each free node in the band order (n_nodes,; -1 for prescribed nodes) and the
+    band's half-width in nodes (3 x 3 blocks)."""
+    import scipy.sparse as sp                          # here: the kernels' module loads without SciPy
+    from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+    n_free = len(free_index)
+    local = -np.ones(net.n_nodes, dtype=np.int64)
+    local[free_index] = np.arange(n_free)
+    a, b = local[np.r_[net.el_i, net.bend[0]]], local[np.r_[net.el_j, net.bend[2]]]   # bending joins i-1, i+1
+    keep = (a >= 0) & (b >= 0)
+    graph = sp.coo_matrix((np.ones(2 * keep.sum()), (np.r_[a[keep], b[keep]], np.r_[b[keep], a[keep]])),
+                          shape=(n_free, n_free)).tocsr()
+    order = reverse_cuthill_mckee(graph, symmetric_mode=True) if n_free else np.zeros(0, np.int64)
+    rank = np.empty(n_free, dtype=np.int64)
+    rank[order] = np.arange(n_free)
+    position = -np.ones(net.n_nodes, dtype=np.int64)
+    position[free_index] = rank
+    return position, int(np.max(np.abs(rank[a[keep]] - rank[b[keep]]), initial=0))
 
 
 @inner

@@ -22,6 +22,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.lumped import kernels
@@ -62,8 +64,6 @@ class TangentPattern:
     def matrix(self, element_blocks, node_blocks):
         """Sparse CSC matrix from ``element_blocks`` (4, m, 3, 3) for (ii, ij, ji, jj) and
         ``node_blocks`` (n_free, 3, 3) on the diagonal."""
-        import scipy.sparse as sp                       # here: the compiled runs never need it (node_systems)
-
         data = np.concatenate([element_blocks.ravel(), node_blocks.ravel()])[self.keep]
         return sp.csc_matrix((data, (self.rows, self.cols)), shape=(self.size, self.size))
 
@@ -103,8 +103,6 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
 def _bending(system, x):
     """The bending's Gauss-Newton tangent (:func:`kanat.lumped.bending.bending_blocks`, eq. 4) over
     the free DOFs, sparse."""
-    import scipy.sparse as sp
-
     net = system.net
     size = 3 * len(system.free_index)
     before, node, after, k, _ = net.bend
@@ -156,8 +154,6 @@ def _residual(system, t, x, v, am_free, a_full):
 
 def _attempt(scheme, system, state, h):
     """One step of size ``h``; None when Newton fails. Returns (state, iterations)."""
-    from scipy.sparse.linalg import splu
-
     am, af, gamma, beta = scheme.coefficients
     t, x0, v0, a0 = state.t, state.x, state.v, state.a
     tm = t + (1.0 - af) * h
@@ -182,7 +178,7 @@ def _attempt(scheme, system, state, h):
         norm_before, backtracks = norm, 0
         J = jacobian(system, tm, x, v, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h, M)
         try:
-            delta = splu(J).solve(-R.ravel()).reshape(-1, 3)
+            delta = spla.splu(J).solve(-R.ravel()).reshape(-1, 3)
         except RuntimeError:                                   # singular tangent
             return None, iteration
         a1, last = a1 + delta, delta

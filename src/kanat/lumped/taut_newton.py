@@ -22,8 +22,9 @@ solution leaves ``F`` unbalanced, and the caller goes on with its pseudo-transie
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse.linalg as spla
 
-from kanat.lumped import entries, node_systems
+from kanat.lumped import entries
 from kanat.physics.seabed import seabed_of
 from kanat.statics import budget
 
@@ -91,7 +92,7 @@ def taut_newton(forces, jacobian, xf, tolerance, max_step, guard, taut_forces):
     ----------
     forces : callable ``xf -> F`` (n_free, 3)
         The true static forces.
-    jacobian : callable ``xf -> dF_taut/dq`` (3 n_free square, :func:`kanat.lumped.node_systems.node_matrix`)
+    jacobian : callable ``xf -> dF_taut/dq`` (sparse, 3 n_free square)
     tolerance : float
         On ``max |F|`` [N].
     max_step : float
@@ -109,7 +110,7 @@ def taut_newton(forces, jacobian, xf, tolerance, max_step, guard, taut_forces):
         if not np.all(np.isfinite(F)):
             return None
         try:
-            step = node_systems.solve(-jacobian(xf), F.ravel()).reshape(-1, 3)
+            step = spla.splu((-jacobian(xf)).tocsc()).solve(F.ravel()).reshape(-1, 3)
         except RuntimeError:                                     # singular even when taut: leave it
             return None
         size = np.linalg.norm(step, axis=1)
