@@ -10,13 +10,15 @@ of every 0.05 s coupling step).
 
 Each configuration runs as its own process (``kanat run case.yaml -o out.nc``; a Python process
 running MoorDyn on the file), interleaved, ``--repeats`` times; the table gives medians of the
-whole process's wall time and of the stepping alone (kanat: ``solver_time_s``; MoorDyn: its
-``Step`` calls). Accuracy: the fairlead tension's mean, range and maximum over the second half of
+whole process's wall time, of its CPU time (user + system, the child's own: on a machine shared with
+other work the wall time grows with the load, the CPU time much less) and of the stepping alone
+(kanat: ``solver_time_s``; MoorDyn: its ``Step`` calls); "vs best MoorDyn" compares both.
+``--kanat-schemes default`` leaves out kanat's ``rk4`` (30 s a run). Accuracy: the fairlead tension's mean, range and maximum over the second half of
 the run (the last segment's tension in both codes) against MoorDyn at its file's own setting (RK2,
 1 ms). MoorDyn's faster settings count as "best MoorDyn" only within 1 % of that reference in mean
 and 3 % in range and maximum (the issue's tolerances for kanat).
 
-Run: ``python benchmarks/bench_wd0050_moordyn.py [--repeats 3] [--duration 200]``; prints the
+Run: ``python benchmarks/bench_wd0050_moordyn.py [--repeats 3] [--duration 200] [--kanat-schemes default rk4]``; prints the
 Markdown table kept in benchmarks/RESULTS.md.
 """
 from __future__ import annotations
@@ -24,6 +26,7 @@ from __future__ import annotations
 import argparse
 import json
 import re
+import resource
 import subprocess
 import sys
 import tempfile
@@ -66,6 +69,16 @@ CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.002), ("MoorDyn", "RK
            ("kanat", "default", None), ("kanat", "rk4", None)]
 
 
+def timed(command: list) -> tuple[subprocess.CompletedProcess, float, float]:
+    """Run ``command``: its result, wall time and CPU time (user + system of the child) [s]."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    done = subprocess.run(command, capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return done, wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+
+
 def kanat_case(folder: Path, scheme: str, duration: float) -> Path:
     """The MoorDyn file imported, with the fairlead's motion; the default scheme names none."""
     import warnings
@@ -90,18 +103,15 @@ def run_kanat(case_path: Path, folder: Path):
     import xarray as xr
 
     out = folder / (case_path.stem + ".nc")
-    start = time.perf_counter()
-    subprocess.run([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)],
-                   capture_output=True)
-    whole = time.perf_counter() - start
+    _, whole, cpu = timed([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)])
     with xr.open_dataset(out) as ds:
         if ds.attrs["status"] != "ok":
-            return whole, float("nan"), ds.attrs["status"], {}
+            return (whole, cpu), float("nan"), ds.attrs["status"], {}
         last = int(np.flatnonzero(ds.segment_cable.values == "line1")[-1])
         series = np.column_stack([ds.time.values, ds.segment_tension.values[:, last]])
         extra = {"dt": float(ds.attrs["dt"]), "explicit": int(ds.attrs.get("explicit_steps", 0)),
                  "cuts": int(ds.attrs.get("step_cuts", 0))}
-        return whole, float(ds.attrs["solver_time_s"]), series, extra
+        return (whole, cpu), float(ds.attrs["solver_time_s"]), series, extra
 
 
 def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
@@ -110,16 +120,13 @@ def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
     out = folder / f"moordyn_{scheme}_{dt}.npy"
     copy = folder / FILE.name                      # MoorDyn writes its outputs beside its input
     copy.write_text(FILE.read_text())
-    start = time.perf_counter()
-    done = subprocess.run([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)],
-                          capture_output=True, text=True)
-    whole = time.perf_counter() - start
+    done, whole, cpu = timed([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)])
     if done.returncode != 0:                       # MoorDyn-C raises when a step diverges
         lines = done.stderr.strip().splitlines() or ["no message"]
-        return whole, float("nan"), f"MoorDyn failed: {lines[-1]}", {}
+        return (whole, cpu), float("nan"), f"MoorDyn failed: {lines[-1]}", {}
     report = re.findall(r'\{"stepping": [^}]*\}', done.stdout)   # MoorDyn-C's own output
     stepping = json.loads(report[-1])["stepping"]                  # ends without a newline
-    return whole, stepping, np.load(out), {}
+    return (whole, cpu), stepping, np.load(out), {}
 
 
 def statistics(series: np.ndarray, duration: float) -> np.ndarray:
@@ -132,18 +139,20 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--duration", type=float, default=200.0)
+    parser.add_argument("--kanat-schemes", nargs="+", default=["default", "rk4"], choices=["default", "rk4"])
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp())
-    times = {c: [] for c in CONFIGS}
+    configs = [c for c in CONFIGS if c[0] == "MoorDyn" or c[1] in args.kanat_schemes]
+    times = {c: [] for c in configs}
     results, extras = {}, {}
     for _ in range(args.repeats):                                   # interleaved
-        for config in CONFIGS:
+        for config in configs:
             code, scheme, dt = config
             if code == "kanat":
                 whole, stepping, series, extra = run_kanat(kanat_case(folder, scheme, args.duration), folder)
             else:
                 whole, stepping, series, extra = run_moordyn(scheme, dt, args.duration, folder)
-            times[config].append((whole, stepping))
+            times[config].append({"wall": whole[0], "cpu": whole[1], "stepping": stepping})
             results[config] = statistics(series, args.duration) if not isinstance(series, str) else series
             extras[config] = extra
     reference = results[CONFIGS[0]]
@@ -152,23 +161,26 @@ def main() -> None:
         return not isinstance(results[config], str) and np.all(
             np.abs(results[config] / reference - 1.0) <= TOLERANCE)
 
-    best = min(np.median([w for w, _ in times[c]]) for c in CONFIGS if c[0] == "MoorDyn" and accurate(c))
-    print("| code | scheme | step [s] | whole process [s] | stepping [s] | vs best MoorDyn (whole) | "
+    def median(config, part):
+        return float(np.median([t[part] for t in times[config]]))
+
+    candidates = [c for c in configs if c[0] == "MoorDyn" and accurate(c)]
+    best_wall, best_cpu = (min(median(c, "wall") for c in candidates), min(median(c, "cpu") for c in candidates))
+    print("| code | scheme | step [s] | whole process [s] | CPU [s] | stepping [s] | vs best MoorDyn (whole; CPU) | "
           "mean | range | maximum |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for config in CONFIGS:
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for config in configs:
         code, scheme, dt = config
-        whole = float(np.median([w for w, _ in times[config]]))
-        stepping = float(np.median([s for _, s in times[config]]))
+        whole, cpu, stepping = median(config, "wall"), median(config, "cpu"), median(config, "stepping")
         if isinstance(results[config], str):
-            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | – | – | {results[config][:90]} | | |")
+            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | {cpu:.2f} | – | – | {results[config][:90]} | | |")
             continue
         diff = 100 * (results[config] / reference - 1.0)
         extra = extras[config]
         step = f"{extra['dt']:.4g} ({extra['explicit']} rk4 steps, {extra['cuts']} cuts)" if extra else dt
         off = "" if code == "kanat" or accurate(config) else " (outside the tolerances: not a candidate)"
-        print(f"| {code} | {scheme} | {step} | {whole:.2f} | {stepping:.2f} | {best / whole:.2f}x{off} | "
-              f"{diff[0]:+.2f} % | {diff[1]:+.2f} % | {diff[2]:+.2f} % |")
+        print(f"| {code} | {scheme} | {step} | {whole:.2f} | {cpu:.2f} | {stepping:.2f} | {best_wall / whole:.2f}x; "
+              f"{best_cpu / cpu:.2f}x{off} | {diff[0]:+.2f} % | {diff[1]:+.2f} % | {diff[2]:+.2f} % |")
     print(f"\nreference (MoorDyn RK2 1 ms): fairlead tension mean {reference[0]:.0f} N, range {reference[1]:.0f} N, "
           f"maximum {reference[2]:.0f} N over {args.duration / 2:g}-{args.duration:g} s")
 
