@@ -13,7 +13,10 @@ complex amplitudes: horizontal ``omega C(z) e^{-i psi}``, vertical ``i omega S(z
 ``a_w = i omega u_w``, ``psi = k (x cos beta + y sin beta)``). ``D`` depends on the relative
 velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
 repeated with ``D`` the mean of the last two until it changes by less than
-:data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981).
+:data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981). ``D`` is one matrix for all frequencies
+under the stochastic rule (a sea state, or more than :data:`kanat.frequency.drag.MAX_HARMONICS`
+harmonics) and one per frequency under the describing functions (one or a few harmonics,
+:mod:`kanat.frequency.drag` eq. 3).
 """
 from __future__ import annotations
 
@@ -88,8 +91,8 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
     D = _equivalent(pairs, water, np.zeros((len(omega), size), complex), ex)
     change, iterations = np.inf, 0
     while iterations < MAX_ITERATIONS:
-        X = _solve_all(lin, base + assemble(pairs, D, size), omega,
-                       fixed + _on_pairs(pairs, np.einsum("prq,fpq->fpr", D, water), size))
+        X = _solve_all(lin, [base + assemble(pairs, D[f], size) for f in range(len(omega))], omega,
+                       fixed + _on_pairs(pairs, np.einsum("fprq,fpq->fpr", D, water), size))
         iterations += 1
         new = _equivalent(pairs, water, X, ex)
         scale = max(float(np.max(np.abs(new))), float(np.max(np.abs(D))), 1e-300)
@@ -121,35 +124,47 @@ def _on_pairs(pairs: drag.DragPairs, values: np.ndarray, size: int) -> np.ndarra
     return out
 
 
-def _solve_all(lin, damping: sp.csr_matrix, omega: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """``X`` (nf, n_dof) of eq. (1), one sparse LU per frequency."""
+def _solve_all(lin, damping: list[sp.csr_matrix], omega: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """``X`` (nf, n_dof) of eq. (1), one sparse LU per frequency (``damping`` that frequency's)."""
     K, M = lin.stiffness.astype(complex), lin.mass.astype(complex)
     out = np.empty_like(rhs)
     for f, w in enumerate(omega):
-        A = (K + 1j * w * damping - w * w * M).tocsc()
+        A = (K + 1j * w * damping[f] - w * w * M).tocsc()
         out[f] = spla.splu(A).solve(rhs[f])
     return out
 
 
 def _equivalent(pairs: drag.DragPairs, water: np.ndarray, X: np.ndarray, ex: Excitation) -> np.ndarray:
-    """``D`` (p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module)."""
-    nodes = X.reshape(X.shape[0], -1, 3)[:, pairs.dof // 3]
+    """``D`` (nf, p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module):
+    the describing functions' for one or a few harmonics, else the stochastic rule's, the same at
+    every frequency."""
+    nf = X.shape[0]
+    nodes = X.reshape(nf, -1, 3)[:, pairs.dof // 3]
     W = water - 1j * ex.omega[:, None, None] * nodes                    # (nf, p, 3)
-    if not ex.spectral and len(ex.omega) == 1:
-        return drag.describing(pairs, W[0])
-    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(len(ex.omega), 0.5)
+    if not ex.spectral and nf == 1:
+        return drag.describing(pairs, W[0])[None]
+    if not ex.spectral and nf <= drag.MAX_HARMONICS:
+        return _chunked(lambda part, amplitudes: drag.multiple_describing(part, amplitudes.transpose(1, 0, 2)),
+                        pairs, W.transpose(1, 0, 2), nf)
+    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(nf, 0.5)
     covariance = np.einsum("f,fpr,fpq->prq", weight, W, W.conj()).real
-    return _chunked(drag.stochastic, pairs, covariance)
+    return np.broadcast_to(_chunked(drag.stochastic, pairs, covariance)[None], (nf, len(pairs.node), 3, 3))
 
 
-CHUNK = 64      # pairs per batch of the Gauss–Hermite expectation (memory: CHUNK x 1000 x 9 doubles)
+CHUNK = 64      # pairs per batch of the expectations (memory: CHUNK x 4096 x 9 doubles)
 
 
-def _chunked(function, pairs: drag.DragPairs, covariance: np.ndarray) -> np.ndarray:
-    out = np.empty((len(pairs.node), 3, 3))
-    for start in range(0, len(pairs.node), CHUNK):
+def _chunked(function, pairs: drag.DragPairs, statistics: np.ndarray, nf: int | None = None) -> np.ndarray:
+    """``function(pairs, statistics)`` over batches of :data:`CHUNK` pairs: (p, 3, 3), or with
+    ``nf`` given (nf, p, 3, 3) from ``function``'s (nf, batch, 3, 3)."""
+    p = len(pairs.node)
+    out = np.empty((p, 3, 3) if nf is None else (nf, p, 3, 3))
+    for start in range(0, p, CHUNK):
         part = slice(start, start + CHUNK)
         sub = drag.DragPairs(*(None if getattr(pairs, name) is None else getattr(pairs, name)[part]
                                for name in drag.DragPairs.__dataclass_fields__))
-        out[part] = function(sub, covariance[part])
+        if nf is None:
+            out[part] = function(sub, statistics[part])
+        else:
+            out[:, part] = function(sub, statistics[part])
     return out
