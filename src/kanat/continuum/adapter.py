@@ -24,7 +24,7 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum.courant import check_step
 from kanat.continuum.models import model_for
-from kanat.continuum.outputs import seabed_contact_length
+from kanat.continuum.outputs import end_forces, inline_forces, seabed_contact_length
 from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
@@ -90,6 +90,8 @@ class ContinuumModel:
         self._refuse_for_factorized()
         self.max_strain = min(case.line_types[name].strain_limit() for name in case.cables[0].line_types)
         self.body = case.cables[0].to.kind == "body"
+        self.anchor_ends = [label for label, end in (("from", case.cables[0].from_), ("to", case.cables[0].to))
+                            if end.kind == "anchor"]
         self.attached = [name for _, name in cable.grid.junctions] if cable.grid is not None else []
         self.winch = cable.winch
         self.stations = (material_stations(case, cable.s, cable.winch, self.dt, self.duration)
@@ -147,10 +149,16 @@ class ContinuumModel:
         s = cable.s if self.stations is None else self.stations
         names = TIME_VARIABLES + (("winch_tension", "winch_length") if self.winch is not None else ())
         static = {"s": (("node",), s), "cable": (("node",), [cable.name] * len(s))}
+        labels = {"xyz": ("x", "y", "z"), "body": bodies}
         if case.environment.depth is not None:             # a seabed: the line may rest on it
             names += ("seabed_contact_length",)
             static["cable_name"] = (("cable",), np.array([cable.name], dtype=str))
-        return Layout(static, {"xyz": ("x", "y", "z"), "body": bodies}, names, attrs)
+        if self.anchor_ends:                               # named by cable end, as the lumped model and statics
+            names += ("anchor_force",)
+            labels["anchor"] = [f"{cable.name}.{end}" for end in self.anchor_ends]
+        if bodies:
+            names += ("body_force",)
+        return Layout(static, labels, names, attrs)
 
     # 2. initial state and checkpoints ------------------------------------------------------
     def initial(self):
@@ -242,11 +250,24 @@ class ContinuumModel:
         if self.case.environment.depth is not None:        # on the nodes in the water, before a winch's stations
             extra["seabed_contact_length"] = np.array([0.0 if seabed is None else seabed_contact_length(
                 seabed.penetration(values["position"]), rows[:, k.DS], facts.penetration[0])])
+        extra.update(self._forces(state, junctions))
         if self.winch is not None:
             extra.update({"winch_tension": values["tension"][0], "winch_length": float(np.sum(rows[:, k.DS]))})
             values = self._on_stations(state, values)
         return {**values, "body_position": np.vstack([ends, inline]), "vessel_position": vessel.position,
                 "vessel_heading": vessel.heading, "vessel_pitch": pitch, **extra}
+
+    def _forces(self, state, junctions: np.ndarray) -> dict:
+        """``anchor_force`` and ``body_force`` (:mod:`kanat.continuum.outputs`), where the case has anchors
+        or bodies: the end body first, then the inline bodies, as ``body_position``."""
+        if not self.anchor_ends and not self.body and not len(junctions):
+            return {}
+        force = self.cable_model.line_force(state)
+        out = {"anchor_force": end_forces(force, self.anchor_ends)} if self.anchor_ends else {}
+        if self.body or len(junctions):
+            out["body_force"] = np.vstack([end_forces(force, ["to"] if self.body else []),
+                                           inline_forces(force, junctions)])
+        return out
 
     def _facts(self, state) -> RowFacts:
         """What the outputs and checks read of the state's interval rows (the cable's own, or a winch's)."""

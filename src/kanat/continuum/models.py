@@ -6,6 +6,8 @@ Both adapters have the same methods, so nothing above them asks which one it hol
   ``save(state)`` / ``restore(t, saved)``;
 * ``velocities(t)`` (both ends, global frame) and ``origin(t)`` (the first end's position);
 * ``tangents(state)`` (global unit tangents) and ``tension(state)``;
+* ``line_force(state)``: the cable's force ``T t + S`` at each node, global frame
+  (:func:`kanat.continuum.outputs.line_force`);
 * ``world(state, dt)`` and ``advanced(state, start, y, chart, dt)`` for Kaliukh & Vusatiuk's schemes
   (:mod:`kanat.continuum.factorized.system`).
 
@@ -25,6 +27,7 @@ import numpy as np
 from kanat.continuum import kernels2d as k
 from kanat.continuum.drive import Drive
 from kanat.continuum.model2d import planar_cable, positions
+from kanat.continuum.outputs import line_force
 from kanat.continuum.start import STEADY_PASSES, static_shape
 from kanat.continuum.stepper import State, steady, step
 from kanat.continuum.vessel_motion import vessel_track
@@ -103,6 +106,18 @@ class PlanarModel:
         """Global unit tangents (N+1, 3)."""
         phi = state.y[:, 3]
         return np.column_stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
+
+    def line_force(self, state) -> np.ndarray:
+        """The cable's force ``T t + S n`` at each node (N+1, 3) [N], global frame
+        (:func:`kanat.continuum.outputs.line_force`; ``n = (-sin phi, cos phi)``, the shear ``S``
+        of a line with bending stiffness)."""
+        y = state.y
+        phi = y[:, 3]
+        shear = None
+        if y.shape[1] == 6:
+            normal = np.column_stack([-np.sin(phi), np.zeros_like(phi), np.cos(phi)])
+            shear = y[:, 4:5] * normal
+        return line_force(y[:, 0], self.tangents(state), shear)
 
     def world(self, state, dt):
         """``(World, y, None)`` of a step of ``dt`` from ``state`` (Kaliukh & Vusatiuk's schemes)."""

@@ -13,6 +13,7 @@ from kanat.continuum import kernels2d as k
 from kanat.continuum.chart import angles, choose_chart, frames, needs_rechart, rechart
 from kanat.continuum.model2d import _end as planar_end
 from kanat.continuum.model2d import planar_cable
+from kanat.continuum.outputs import line_force
 from kanat.continuum.start import STEADY_PASSES, static_shape
 from kanat.continuum.spatial import UP, SpatialCable, SpatialEnd, SpatialState, positions3, step3, steady3
 from kanat.continuum.vessel_motion import vessel_track
@@ -79,6 +80,15 @@ class SpatialModel:
     def tangents(self, state) -> np.ndarray:
         """Global unit tangents (N+1, 3)."""
         return frames(state.y, state.chart)[0]
+
+    def line_force(self, state) -> np.ndarray:
+        """The cable's force ``T t + S_n n + S_b b`` at each node (N+1, 3) [N], global frame
+        (:func:`kanat.continuum.outputs.line_force`; the shear of a line with bending stiffness,
+        :mod:`kanat.continuum.bending3d`)."""
+        y = state.y
+        t, n, b = frames(y, state.chart)
+        shear = y[:, 6:7] * n + y[:, 7:8] * b if y.shape[1] == 10 else None
+        return line_force(y[:, 0], t, shear)
 
     def world(self, state, dt):
         """``(World, y, chart)`` of a step of ``dt`` from ``state``, re-charted first when a tangent
