@@ -97,23 +97,27 @@ def test_anchor_forces_agree_with_the_lumped_models(segments, rtol):
     assert abs(c_seabed[2] - l_seabed[2]) <= 1.05 * boundary_layer(l_seabed[0])
 
 
-def towed_body(segments: int, dimensions: int, cross_current: float):
-    """The sled of examples/towed_body.yaml towed steadily at 6 kn along +x, a uniform current along +y."""
+def towed_body(segments: int, dimensions: int, cross_current: float, bending: float):
+    """The sled of examples/towed_body.yaml towed steadily at 6 kn along +x, a uniform current along +y, the
+    cable given a bending stiffness [N m^2] (a rod: its shear ``S`` on the body too)."""
     case = kanat.load_case(EXAMPLES / "towed_body.yaml")
     changes = {"model": "continuum", "simulation.dt": 1.0, "simulation.duration": 2.0, "simulation.output_dt": 1.0,
-               "simulation.dimensions": dimensions, "cables[0].segments": segments}
+               "simulation.dimensions": dimensions, "cables[0].segments": segments,
+               "line_types.towcable.bending_stiffness": bending}
     if cross_current:
         changes["environment.current"] = {"profile": [[0, 0, cross_current, 0], [-2000, 0, cross_current, 0]]}
     return case, run(case.replace(changes))
 
 
-@pytest.mark.parametrize("dimensions, cross_current", [(2, 0.0), pytest.param(3, 0.5, marks=pytest.mark.slow)])
-def test_a_towed_body_carries_its_weight_and_drag(dimensions, cross_current):
+@pytest.mark.parametrize("dimensions, cross_current, bending", [
+    (2, 0.0, 0.0), pytest.param(3, 0.5, 0.0, marks=pytest.mark.slow),
+    pytest.param(2, 0.0, 500.0, marks=pytest.mark.slow), pytest.param(3, 0.5, 500.0, marks=pytest.mark.slow)])
+def test_a_towed_body_carries_its_weight_and_drag(dimensions, cross_current, bending):
     """Line force on the body = -(net buoyancy z + 0.5 rho C_D S |U_r| U_r), ``U_r`` the water's velocity
     relative to the body, ``(-6 kn, current, 0)``: the box method's error falls as ds^2."""
     errors = []
     for segments in (40, 80, 160):
-        case, ds = towed_body(segments, dimensions, cross_current)
+        case, ds = towed_body(segments, dimensions, cross_current, bending)
         body = case.bodies["sled"]
         relative = np.array([-6.0 * KNOT, cross_current, 0.0])
         drag = 0.5 * case.environment.water_density * body.drag_area * np.linalg.norm(relative) * relative
