@@ -178,6 +178,8 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     tried under a budget of its own; elsewhere the failure stands as it did (a case with no
     equilibrium fails as fast as before).
     """
+    if x0 is None and len(net.float_body):
+        return _floats_first(net, case, velocity, friction, time)
     with budget.budget("the equilibrium of the lumped network"):
         try:
             return _equilibrium(net, case, x0, velocity, friction, time)
@@ -188,6 +190,26 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
         try:
             return _relaxed_equilibrium(net, case, velocity, friction, time)
+        except SolverError:
+            raise failure from None
+
+
+def _floats_first(net, case, velocity, friction, time):
+    """:func:`equilibrium` of a network with spherical floats whose buoyancy follows their immersion
+    (``bodies.X.diameter``): dynamic relaxation first. Which floats reach the surface, and how deep
+    each floats there, is what the equilibrium decides; Newton's method from a guess that has them
+    all under water (or all above it) meets a residual that changes its law as they cross the
+    surface and stalls (shallow_s: 58 s of failed iterations before the fallback's 12 s). The
+    other paths are tried after it, as :func:`equilibrium` tries them."""
+    with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
+        try:
+            x, info = _relaxed_equilibrium(net, case, velocity, friction, time)
+            return x, {**info, "relaxation_reason": "floats at the surface"}
+        except SolverError as error:
+            failure = error
+    with budget.budget("the equilibrium of the lumped network"):
+        try:
+            return _equilibrium(net, case, None, velocity, friction, time)
         except SolverError:
             raise failure from None
 
@@ -295,7 +317,9 @@ def relaxation_note(info: dict) -> str:
     """The run's note that its initial equilibrium came from the dynamic-relaxation fallback."""
     return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
             f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
-            f"stages; residual {info['residual']:.3g} N): Newton's method alone did not converge")
+            f"stages; residual {info['residual']:.3g} N): "
+            + ("the inline floats' immersion is what it finds" if info.get("relaxation_reason")
+               else "Newton's method alone did not converge"))
 
 
 def first_guess(net, case):

@@ -167,7 +167,8 @@ def held_under_water(case, net) -> list[tuple[str, int, float]]:
     """The bodies and points :func:`out_of_water` watches: ``(label, node, radius [m])``."""
     held = [(f"body '{name}'", node, np.sqrt(case.bodies[name].drag_area / np.pi))
             for name, node in zip(net.body_names, net.body_node)
-            if case.bodies[name].surface_buoy is None and name not in net.rigid.names]
+            if case.bodies[name].surface_buoy is None and case.bodies[name].diameter is None
+            and name not in net.rigid.names]
     held += [(f"point '{name}'", net.names[name], np.cbrt(0.75 * point.volume / np.pi))
              for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
     return held
@@ -175,9 +176,9 @@ def held_under_water(case, net) -> list[tuple[str, int, float]]:
 
 def out_of_water(case, net, x, sea, t: float, held=None) -> str | None:
     """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
-    gives it its full buoyancy wherever it is (only a ``surface_buoy`` or a 6-DOF body has a
-    waterplane), so its center more than :data:`SURFACE_MARGIN` (or its diameter, from
-    ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
+    gives it its full buoyancy wherever it is (only a ``surface_buoy``, a 6-DOF body with a
+    waterplane and a spherical float with a ``diameter`` lose it out of the water), so its center
+    more than :data:`SURFACE_MARGIN` (or its diameter, from ``drag_area`` or ``volume``) above the local wave surface (``sea``, None for still water)
     is refused; None when every one is in the water. ``held``: :func:`held_under_water` of the
     case, if already worked out."""
     for label, node, radius in held_under_water(case, net) if held is None else held:
@@ -186,5 +187,6 @@ def out_of_water(case, net, x, sea, t: float, held=None) -> str | None:
         if r[2] - eta > max(SURFACE_MARGIN, 2.0 * radius):
             return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
                     "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
-                    "to ride the surface, or lines that hold it under water")
+                    "to ride the surface at a cable's end, a diameter (a spherical float) inline, or lines that "
+                    "hold it under water")
     return None
