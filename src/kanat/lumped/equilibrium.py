@@ -20,7 +20,9 @@ only on its neighbours), so it costs ``3 x colours`` force evaluations.
 Where all of that fails (lines held up by many small inline floats, whose sections go slack and
 taut from one iterate to the next), :func:`_relaxed_equilibrium` settles the softened network by
 dynamic relaxation (:mod:`kanat.lumped.relaxation`) and lets Newton's method finish; the info's
-``fallback`` says so. It runs only after the other paths failed, so they give what they gave.
+``fallback`` says so. It runs only after the other paths failed, so they give what they gave,
+except in a network with spherical inline floats (``bodies.X.diameter``, whose buoyancy follows
+their immersion): there it runs first (:func:`_floats_first`).
 """
 from __future__ import annotations
 
