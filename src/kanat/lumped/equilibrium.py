@@ -54,6 +54,8 @@ RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dyna
 #                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
 #                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
+STAGE_ITERATIONS = 100        # Newton's first try at a relaxed stage: from a relaxed state it converges in a few
+#                                or not at all (deep_s: 400 failed iterations at four stages, 43 s of 110 s)
 RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 
 
@@ -289,7 +291,8 @@ def _relaxed_equilibrium(net, case, velocity, friction, time):
     for k, stage in enumerate(stages):
         stage_net = _scaled(net, stage)
         try:
-            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, taut=(k == 0), friction=friction, time=time)
+            x, info = _solve(stage_net, case, x, velocity, STAGE_ITERATIONS, taut=(k == 0), friction=friction,
+                             time=time)
         except SolverError:
             x, more = _relaxed(stage_net, case, x, velocity, friction, time, RETRY_TARGET * target)
             steps += more
@@ -320,7 +323,7 @@ def relaxation_note(info: dict) -> str:
     return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
             f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
             f"stages; residual {info['residual']:.3g} N): "
-            + ("the inline floats' immersion is what it finds" if info.get("relaxation_reason")
+            + ("tried first, as for every network with spherical inline floats" if info.get("relaxation_reason")
                else "Newton's method alone did not converge"))
 
 
