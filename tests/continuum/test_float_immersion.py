@@ -184,9 +184,8 @@ def test_continuum_float_follows_a_long_wave():
     assert np.min(np.abs(expected - waterline())) > 0.02     # the still-water height is 10x that away
 
 
-def test_models_that_keep_full_buoyancy_refuse_a_diameter():
+def test_network_statics_which_keeps_full_buoyancy_refuses_a_diameter():
+    """(The lumped model honours it: tests/lumped/test_lumped_float_immersion.py.)"""
     case = tether_case()
-    for model in ("lumped", "statics"):
-        with pytest.raises(CaseError, match=r"bodies\.float\.diameter"):
-            kanat.simulate(case.replace({"model": model})) if model == "lumped" else kanat.solve_statics(
-                case.replace({"model": model}))
+    with pytest.raises(CaseError, match=r"bodies\.float\.diameter"):
+        kanat.solve_statics(case.replace({"model": "statics"}))

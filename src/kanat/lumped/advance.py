@@ -68,6 +68,8 @@ class FusedArrays:
             spreading=net.load_spreading.astype(float), fluid_inertia=net.node_fluid_inertia.astype(float),
             buoy_node=buoys.astype(np.int64), buoy_area=net.buoy_area.astype(float),
             buoy_height=net.buoy_height.astype(float),
+            float_node=net.body_node[net.float_body].astype(np.int64), float_diameter=net.float_diameter.astype(float),
+            float_buoyancy=net.float_buoyancy.astype(float),
             rig=system.rig if net.rigid.count else None,                          # None: pruned from the kernels
             contact=system.contact if len(system.contact[0]) else None)
         cz, cu = system.current.table()

@@ -74,6 +74,8 @@ Bodies = aot.record(
     buoy_node=I1, buoy_area=F1, buoy_height=F1,   # surface buoys: keel node, waterplane area [m^2], height [m]
     rig=RIG,                                # 6-DOF bodies (kanat.lumped.rigid), or None
     contact=SEABED,                         # seabed contact (kanat.physics.contact), or None
+    float_node=I1, float_diameter=F1,       # spherical inline floats: node, diameter [m] and buoyancy fully
+    float_buoyancy=F1,                      # submerged [N] (kanat.physics.immersion)
 )
 """Bodies, buoys and the seabed as the kernels read them, built by
 :class:`kanat.lumped.advance.FusedArrays`; ``rig`` and ``contact`` are None in a network without

@@ -20,7 +20,9 @@ only on its neighbours), so it costs ``3 x colours`` force evaluations.
 Where all of that fails (lines held up by many small inline floats, whose sections go slack and
 taut from one iterate to the next), :func:`_relaxed_equilibrium` settles the softened network by
 dynamic relaxation (:mod:`kanat.lumped.relaxation`) and lets Newton's method finish; the info's
-``fallback`` says so. It runs only after the other paths failed, so they give what they gave.
+``fallback`` says so. It runs only after the other paths failed, so they give what they gave,
+except in a network with spherical inline floats (``bodies.X.diameter``, whose buoyancy follows
+their immersion): there it runs first (:func:`_floats_first`).
 """
 from __future__ import annotations
 
@@ -52,6 +54,8 @@ RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dyna
 #                                modes, 1e3-1e4 times slower than a chain's, leave the fictitious motion a
 #                                period of a few hundred steps; seatex: 62,000 steps to 43 N)
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
+STAGE_ITERATIONS = 100        # Newton's first try at a relaxed stage: from a relaxed state it converges in a few
+#                                or not at all (deep_s: 400 failed iterations at four stages, 43 s of 110 s)
 RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 
 
@@ -178,6 +182,8 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     tried under a budget of its own; elsewhere the failure stands as it did (a case with no
     equilibrium fails as fast as before).
     """
+    if x0 is None and len(net.float_body):
+        return _floats_first(net, case, velocity, friction, time)
     with budget.budget("the equilibrium of the lumped network"):
         try:
             return _equilibrium(net, case, x0, velocity, friction, time)
@@ -188,6 +194,26 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
         try:
             return _relaxed_equilibrium(net, case, velocity, friction, time)
+        except SolverError:
+            raise failure from None
+
+
+def _floats_first(net, case, velocity, friction, time):
+    """:func:`equilibrium` of a network with spherical floats whose buoyancy follows their immersion
+    (``bodies.X.diameter``): dynamic relaxation first. Which floats reach the surface, and how deep
+    each floats there, is what the equilibrium decides; Newton's method from a guess that has them
+    all under water (or all above it) meets a residual that changes its law as they cross the
+    surface and stalls (shallow_s: 58 s of failed iterations before the fallback's 12 s). The
+    other paths are tried after it, as :func:`equilibrium` tries them."""
+    with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
+        try:
+            x, info = _relaxed_equilibrium(net, case, velocity, friction, time)
+            return x, {**info, "relaxation_reason": "floats at the surface"}
+        except SolverError as error:
+            failure = error
+    with budget.budget("the equilibrium of the lumped network"):
+        try:
+            return _equilibrium(net, case, None, velocity, friction, time)
         except SolverError:
             raise failure from None
 
@@ -265,7 +291,8 @@ def _relaxed_equilibrium(net, case, velocity, friction, time):
     for k, stage in enumerate(stages):
         stage_net = _scaled(net, stage)
         try:
-            x, info = _solve(stage_net, case, x, velocity, MAX_ITERATIONS, taut=(k == 0), friction=friction, time=time)
+            x, info = _solve(stage_net, case, x, velocity, STAGE_ITERATIONS, taut=(k == 0), friction=friction,
+                             time=time)
         except SolverError:
             x, more = _relaxed(stage_net, case, x, velocity, friction, time, RETRY_TARGET * target)
             steps += more
@@ -295,7 +322,9 @@ def relaxation_note(info: dict) -> str:
     """The run's note that its initial equilibrium came from the dynamic-relaxation fallback."""
     return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
             f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
-            f"stages; residual {info['residual']:.3g} N): Newton's method alone did not converge")
+            f"stages; residual {info['residual']:.3g} N): "
+            + ("tried first, as for every network with spherical inline floats" if info.get("relaxation_reason")
+               else "Newton's method alone did not converge"))
 
 
 def first_guess(net, case):

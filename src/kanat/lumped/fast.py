@@ -236,6 +236,24 @@ def rigid_water_and_loads(t, rig, env, work):
 
 
 @inner
+def sphere_share(z, eta, diameter):
+    """Submerged volume fraction of a sphere of ``diameter`` centred at height ``z`` under the surface
+    ``eta``: :func:`kanat.physics.immersion.sphere_fraction`, eq. (1) (its twin, real heights)."""
+    u = min(max((eta - z) / diameter + 0.5, 0.0), 1.0)
+    return u * u * (3.0 - 2.0 * u)
+
+
+@inner
+def float_loads(t, x, node, diameter, buoyancy, sea, F):
+    """Take off ``F`` the buoyancy ``(1 - f) B`` that spherical inline floats lose out of the water
+    (``f`` of :func:`sphere_share`; the nodal force holds ``net_buoyancy``, the fully submerged one)."""
+    for b in range(node.shape[0]):
+        n = node[b]
+        share = sphere_share(x[n, 2], sea_elevation(x[n, 0], x[n, 1], t, sea), diameter[b])
+        F[n, 2] -= (1.0 - share) * buoyancy[b]
+
+
+@inner
 def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
     """Nodal forces ``F`` and packed mass blocks ``M`` into ``work`` at ``y = (q, q_dot)`` (flat)
     — system eqs. (1)-(2); seabed contact and 6-DOF bodies included (``bodies.rig``, ``bodies.contact``
@@ -274,6 +292,7 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
         immersion = sea_elevation(x[keel, 0], x[keel, 1], t, sea) - x[keel, 2]
         immersion = min(max(immersion, 0.0), buoy_height[b])
         F[buoy_node[b], 2] += rho * g * buoy_area[b] * immersion
+    float_loads(t, x, bodies.float_node, bodies.float_diameter, bodies.float_buoyancy, sea, F)
     rigid_loads(t, rig, env, work)
 
 

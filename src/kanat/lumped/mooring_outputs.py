@@ -163,20 +163,23 @@ def allowed_penetration(net, environment) -> np.ndarray:
     return PENETRATION_MARGIN * static + PENETRATION_FLOOR
 
 
-def held_under_water(case, net) -> list[tuple[str, int, float, bool]]:
-    """The bodies and points :func:`out_of_water` watches: ``(label, node, limit [m], surface)``, the
-    height above the local wave surface at which each is out of the water (``surface``: a
-    ``surface_buoy``, whose node is its keel)."""
+def held_under_water(case, net) -> list[tuple[str, int, float, str | None]]:
+    """The bodies and points :func:`out_of_water` watches: ``(label, node, limit [m], part)``, the
+    height above the local wave surface at which each is out of the water; ``part`` names the node
+    of a body that floats by immersion (a ``surface_buoy``'s keel, a spherical float's center with
+    a ``diameter``), None for one that keeps its buoyancy."""
     held = []
     for name, node in zip(net.body_names, net.body_node):
-        buoy = case.bodies[name].surface_buoy
+        body = case.bodies[name]
         if name in net.rigid.names:
             continue
-        if buoy is None:
-            held.append((f"body '{name}'", node, max(SURFACE_MARGIN, 2.0 * np.sqrt(case.bodies[name].drag_area / np.pi)), False))
+        if body.surface_buoy is not None:
+            held.append((f"surface buoy '{name}'", node, max(SURFACE_MARGIN, body.surface_buoy.height), "keel"))
+        elif body.diameter is not None:
+            held.append((f"float '{name}'", node, max(SURFACE_MARGIN, body.diameter), "center"))
         else:
-            held.append((f"surface buoy '{name}'", node, max(SURFACE_MARGIN, buoy.height), True))
-    held += [(f"point '{name}'", net.names[name], max(SURFACE_MARGIN, 2.0 * np.cbrt(0.75 * point.volume / np.pi)), False)
+            held.append((f"body '{name}'", node, max(SURFACE_MARGIN, 2.0 * np.sqrt(body.drag_area / np.pi)), None))
+    held += [(f"point '{name}'", net.names[name], max(SURFACE_MARGIN, 2.0 * np.cbrt(0.75 * point.volume / np.pi)), None)
              for name, point in case.points.items() if point.volume > 0.0 and name in net.names]
     return held
 
@@ -185,22 +188,24 @@ def out_of_water(case, net, x, sea, t: float, held=None) -> str | None:
     """Why the state ``x`` is wrong for this model, if a body or point is out of the water: the model
     gives a body or point its full buoyancy wherever it is, so its center more than
     :data:`SURFACE_MARGIN` (or its diameter, from ``drag_area`` or ``volume``) above the local wave
-    surface (``sea``, None for still water) is refused; a ``surface_buoy`` (a waterplane, no
-    radiation or slamming damping) whose keel is thrown clear of the water by more than its height
-    is refused too: measured, a 1-cm-draft buoy started off its forced heave bounced on the surface
-    and gained energy until it flew 27 m high, which no floating buoy does. None when every one is
-    in the water. ``held``: :func:`held_under_water` of the case, if already worked out."""
-    for label, node, limit, surface in held_under_water(case, net) if held is None else held:
+    surface (``sea``, None for still water) is refused. A body that floats by immersion (a
+    ``surface_buoy``'s waterplane, a spherical float with a ``diameter``: no radiation or slamming
+    damping) is refused when thrown clear of the water by more than its height or diameter:
+    measured, a 1-cm-draft buoy started off its forced heave bounced on the surface and gained
+    energy until it flew 27 m high, which no floating buoy does. None when every one is in the
+    water. ``held``: :func:`held_under_water` of the case, if already worked out."""
+    for label, node, limit, part in held_under_water(case, net) if held is None else held:
         r = x[node]
         eta = float(sea.elevation(np.array([r[0]]), np.array([r[1]]), t)[0]) if sea is not None else 0.0
         if r[2] - eta <= limit:
             continue
-        if surface:
-            return (f"{label}'s keel is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, more than "
-                    f"its height: thrown clear of the water, where its waterplane model (no radiation or "
+        if part is not None:
+            return (f"{label}'s {part} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, more "
+                    "than its size: thrown clear of the water, where its immersion model (no radiation or "
                     "slamming damping) does not hold; a free heave started at its waterplane frequency (start "
                     "the waves with a ramp) or a line that snaps it up are the usual causes")
         return (f"{label} is {r[2] - eta:.4g} m above the water surface at t = {t:.6g} s, where this model "
                 "would still give it its full buoyancy; give it a surface_buoy (waterplane_area, height) "
-                "to ride the surface, or lines that hold it under water")
+                "to ride the surface at a cable's end, a diameter (a spherical float) inline, or lines that "
+                "hold it under water")
     return None

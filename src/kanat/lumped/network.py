@@ -98,6 +98,9 @@ class Network:
     load_node, load_drag_area, load_spreading : nodes with point-body loads (3-DOF bodies and
         points with drag or added mass), for :func:`kanat.lumped.kernels.body_loads`
     buoy_body, buoy_area, buoy_height : per surface buoy (index into the bodies)
+    float_body, float_diameter, float_buoyancy : per spherical inline float (``diameter`` given; index
+        into the bodies), its diameter [m] and its buoyancy fully submerged ``net_buoyancy + m g`` [N],
+        of which ``1 - f`` (:func:`kanat.physics.immersion.sphere_fraction`) is taken off out of the water
     rigid : RigidBodies
         The 6-DOF bodies (:mod:`kanat.lumped.rigid`).
     node_cable, node_s, node_index : per output node (cables' nodes concatenated)
@@ -154,6 +157,9 @@ class Network:
     buoy_body: np.ndarray
     buoy_area: np.ndarray
     buoy_height: np.ndarray
+    float_body: np.ndarray
+    float_diameter: np.ndarray
+    float_buoyancy: np.ndarray
     rigid: RigidBodies
     node_cable: np.ndarray
     node_s: np.ndarray
@@ -534,6 +540,7 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
     body_node = np.array([b.named[k] if k in b.named else rigid.ref_node[rigid.names.index(k)]
                           for k in body_names], dtype=np.int64)
     buoys = [k for k, name in enumerate(body_names) if case.bodies[name].surface_buoy is not None]
+    floats = [k for k, name in enumerate(body_names) if case.bodies[name].diameter is not None]
     cols = _element_arrays(case, rows, laws, rho, g)
     area, weight = _contact_arrays(n, cols, node_force)
     for name, body in case.bodies.items():         # a point body's own bearing area (seabed_area)
@@ -572,6 +579,9 @@ def _finish(case, b, laws, rows, cable_nodes, x, rigid, rho, g) -> Network:
         buoy_body=np.array(buoys, dtype=np.int64),
         buoy_area=np.array([case.bodies[body_names[k]].surface_buoy.waterplane_area for k in buoys]),
         buoy_height=np.array([case.bodies[body_names[k]].surface_buoy.height for k in buoys]),
+        float_body=np.array(floats, dtype=np.int64),
+        float_diameter=np.array([case.bodies[body_names[k]].diameter for k in floats], dtype=float),
+        float_buoyancy=np.array([case.bodies[body_names[k]].buoyancy(g) for k in floats], dtype=float),
         rigid=rigid,
         node_cable=np.array(names, dtype=object), node_s=np.array(s), node_index=np.array(index, np.int64),
         segment_cable=np.array(seg_cable, dtype=object), cable_names=[c.name for c in case.cables],

@@ -29,6 +29,7 @@ import numpy as np
 from kanat.lumped import entries, kernels
 from kanat.lumped.bending import bending_forces
 from kanat.physics import contact
+from kanat.physics.immersion import sphere_fractions
 from kanat.physics.motion import Harmonics, compile_motion
 from kanat.physics.motion_samples import motion_series, point_series
 from kanat.physics.seabed import seabed_of
@@ -290,6 +291,8 @@ class LumpedSystem:
                                    self.normal_force)
         if len(net.load_node):
             self._body_loads(t, x, v, heading)
+        if len(net.float_body):
+            self._float_loads(t, x)
         if net.rigid.count:
             self._rigid(t, x, v)
         return self._F, self._M
@@ -305,6 +308,17 @@ class LumpedSystem:
             eta = self.sea.elevation(keel[:, 0], keel[:, 1], t) if self.sea is not None else 0.0
             immersion = np.clip(eta - keel[:, 2], 0.0, net.buoy_height)
             F[net.body_node[net.buoy_body], 2] += self.rho * self.g * net.buoy_area * immersion
+
+    def _float_loads(self, t, x):
+        """Spherical inline floats: the buoyancy ``(1 - f) B`` they lose out of the water off ``F``
+        (``f`` of :func:`kanat.physics.immersion.sphere_fractions`, eq. 1; ``net.node_force`` holds
+        ``net_buoyancy``, the fully submerged one)."""
+        net = self.net
+        nodes = net.body_node[net.float_body]
+        centre = x[nodes]
+        eta = self.sea.elevation(centre[:, 0], centre[:, 1], t) if self.sea is not None else 0.0
+        share = sphere_fractions(centre[:, 2], eta, net.float_diameter)
+        np.subtract.at(self._F[:, 2], nodes, (1.0 - share) * net.float_buoyancy)
 
     def _rigid(self, t, x, v):
         """6-DOF bodies (:mod:`kanat.lumped.rigid`): accelerations into ``rigid_acc``, their rows of

@@ -130,7 +130,8 @@ class Body(KanatModel):
         None, unit="m", gt=0,
         description="dof 3: diameter of a spherical float centred on its node, whose buoyancy (net_buoyancy + "
                     "mass * g) follows its immersion: the submerged cap's share of the sphere's volume, so a "
-                    "float that reaches the surface floats there (continuum model and single-cable statics); "
+                    "float that reaches the surface floats there (continuum and lumped models, single-cable "
+                    "statics); "
                     "none: the buoyancy is the same in and out of the water")
     position: Vector3 | None = quantity(
         None, unit="m", description="initial guess of the position for the network "

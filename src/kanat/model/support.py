@@ -403,11 +403,9 @@ FEATURES: tuple[Feature, ...] = (
             statics=NO, continuum=NO, lumped=NO,
             note="a surface buoy rides the waves at a cable's end; inline bodies have no waterplane"),
     Feature("float_diameter", "a float whose buoyancy follows its immersion (diameter)", _float_diameters(False),
-            statics=NO, continuum=YES, lumped=NO,
-            note={"statics": "network statics keeps a float's full buoyancy in the air; the continuum model's "
-                             "initial state honours it (model: continuum)",
-                  "lumped": "the lumped model's point bodies keep their full buoyancy in the air; use model: "
-                            "continuum"}),
+            statics=NO, continuum=YES, lumped=YES,
+            note="network statics keeps a float's full buoyancy in the air; the initial state of a run "
+                 "(model: lumped or continuum) honours it"),
     Feature("end_float_diameter", "a float with a diameter at a cable's end", _float_diameters(True),
             statics=NO, continuum=NO, lumped=NO,
             note="a body riding the surface at a cable's end is a surface_buoy (waterplane_area, height)"),

@@ -15,6 +15,8 @@ weight of the water it displaces fully submerged (``net_buoyancy + mass g`` of t
 """
 from __future__ import annotations
 
+import numpy as np
+
 
 def sphere_fraction(z, eta, diameter: float):
     """Submerged volume fraction of a sphere and its derivative by the centre's height, eqs. (1)-(2).
@@ -45,3 +47,24 @@ def float_buoyancy(net_buoyancy: float, buoyancy: float, fraction) -> float:
     """Net buoyancy of a float immersed to ``fraction`` [N]: ``net_buoyancy - (1 - f) buoyancy``, with
     ``buoyancy = net_buoyancy + m g`` its buoyancy fully submerged (so ``-m g`` out of the water)."""
     return net_buoyancy - (1.0 - fraction) * buoyancy
+
+
+def sphere_fractions(z: np.ndarray, eta, diameter: np.ndarray) -> np.ndarray:
+    """Eq. (1) for many spheres at once (real heights): the submerged volume fractions.
+
+    Parameters
+    ----------
+    z : ndarray, shape (n,)
+        Heights of the centres [m].
+    eta : float or ndarray, shape (n,)
+        Water surface elevation over each centre [m].
+    diameter : ndarray, shape (n,)
+        [m], > 0.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        In ``[0, 1]``.
+    """
+    u = np.clip((eta - np.asarray(z, dtype=float)) / diameter + 0.5, 0.0, 1.0)
+    return u * u * (3.0 - 2.0 * u)

@@ -166,7 +166,8 @@ def _surface(case, name, position, attitude, cables, when, warnings) -> str | No
                 "body keeps it in the air in the model, so the floats carry their lines through the surface and "
                 "the state is no possible one; use fewer or smaller floats (the lines' weight must hold them "
                 "under water), a deeper anchor or a shorter line; a body meant to float at the surface is a "
-                "surface_buoy at a cable's end")
+                "surface_buoy at a cable's end, or, clamped inline, a float with a diameter (its buoyancy then "
+                "follows its immersion)")
     buoyancy = body.buoyancy(env.gravity)
     warnings.append(f"{where}: out of the water it weighs m g = {body.mass * env.gravity:.4g} N, not the "
                     f"{-body.net_buoyancy:.4g} N of its net_buoyancy (its {buoyancy:.4g} N of buoyancy is "
