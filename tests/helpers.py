@@ -232,3 +232,47 @@ def scatter_of_mean_square(b, omega, t):
     j, k = np.triu_indices(len(b), 1)
     var += np.sum((b[j] * b[k]) ** 2 * 0.5 * (power(omega[j] - omega[k]) + power(omega[j] + omega[k])))
     return math.sqrt(var)
+
+
+def harmonic_fit(t, values, omega):
+    """Mean and complex amplitude ``X`` (``|X| cos(omega t + arg X)``) of ``values`` (k, ...) at ``t``
+    (k,), by least squares; ``omega`` a frequency, or several fitted together (``X`` then has a
+    leading frequency axis)."""
+    columns = [np.ones_like(t)] + [f(w * t) for w in np.atleast_1d(omega) for f in (np.cos, np.sin)]
+    coef = np.linalg.lstsq(np.column_stack(columns), values.reshape(len(t), -1), rcond=None)[0]
+    amplitude = coef[1::2] - 1j * coef[2::2]
+    return coef[0], amplitude if np.ndim(omega) else amplitude[0]
+
+
+def phase_gap(a, b):
+    """``a - b`` wrapped to (-pi, pi] [rad]."""
+    return np.angle(np.exp(1j * (np.asarray(a) - np.asarray(b))))
+
+
+def frequency_and_time(frequency_case, time_case=None):
+    """The frequency-domain solution of ``frequency_case`` and the time-domain run of ``time_case``
+    (default: the same case with ``simulation.method: time``), warnings and progress silenced."""
+    from kanat import solve_frequency
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fd = solve_frequency(frequency_case)
+        with quiet():
+            td = api.run(time_case or frequency_case.replace({"simulation.method": "time"})).dataset
+    return fd, td
+
+
+def grounded_catenary(span, rise, length, weight, stiffness):
+    """Horizontal tension ``H`` [N] and suspended length ``L_s`` [m] of the elastic catenary with a
+    grounded part (no friction): ``X = L - L_s + (H/w) asinh(w L_s / H) + H L / EA``,
+    ``Z = (H/w)(sqrt(1 + (w L_s / H)^2) - 1) + w L_s^2 / (2 EA)`` (Irvine 1981, the line meeting the
+    seabed tangentially)."""
+    from scipy.optimize import fsolve
+
+    def equations(unknowns):
+        horizontal, suspended = unknowns
+        a, v = horizontal / weight, weight * suspended / horizontal
+        return [length - suspended + a * np.arcsinh(v) + horizontal * length / stiffness - span,
+                a * (np.sqrt(1.0 + v * v) - 1.0) + weight * suspended ** 2 / (2.0 * stiffness) - rise]
+    horizontal, suspended = fsolve(equations, [1e5, 300.0], xtol=1e-13)
+    assert np.allclose(equations([horizontal, suspended]), 0.0, atol=1e-6)
+    return horizontal, suspended

@@ -6,27 +6,18 @@ import warnings
 
 import numpy as np
 import pytest
-from scipy.optimize import fsolve
 
 import kanat
 
-from helpers import EXAMPLES
+from helpers import EXAMPLES, grounded_catenary
 
 SPAN, RISE, LENGTH, WEIGHT, STIFFNESS = 600.0, 145.0, 700.0, 981.0, 5.1e8      # the example's chain
 
 
 def grounded_length() -> float:
-    """The unstretched length on the seabed of the elastic catenary with a grounded part (no friction):
-    ``X = L_b + (H/w) asinh(w L_s / H) + H L / EA``, ``Z = (H/w)(sqrt(1 + (w L_s / H)^2) - 1) + w L_s^2 / (2 EA)``
-    with ``L_s = L - L_b`` the suspended length (Irvine 1981, the line meeting the seabed tangentially)."""
-    def equations(unknowns):
-        horizontal, suspended = unknowns
-        a, v = horizontal / WEIGHT, WEIGHT * suspended / horizontal
-        return [LENGTH - suspended + a * np.arcsinh(v) + horizontal * LENGTH / STIFFNESS - SPAN,
-                a * (np.sqrt(1.0 + v * v) - 1.0) + WEIGHT * suspended ** 2 / (2.0 * STIFFNESS) - RISE]
-    horizontal, suspended = fsolve(equations, [1e5, 300.0], xtol=1e-13)
-    assert np.allclose(equations([horizontal, suspended]), 0.0, atol=1e-6)
-    return LENGTH - suspended
+    """The unstretched length on the seabed of the elastic catenary with a grounded part (no friction),
+    :func:`helpers.grounded_catenary`."""
+    return LENGTH - grounded_catenary(SPAN, RISE, LENGTH, WEIGHT, STIFFNESS)[1]
 
 
 def grounded_chain(segments: int) -> str:

@@ -16,11 +16,10 @@ import warnings
 
 import numpy as np
 import pytest
-from scipy.optimize import fsolve
 
 import kanat
 
-from helpers import EXAMPLES
+from helpers import EXAMPLES, grounded_catenary
 
 SPAN, RISE, LENGTH, WEIGHT, STIFFNESS = 600.0, 145.0, 700.0, 981.0, 5.1e8      # the example's chain
 DIAMETER, SEABED_STIFFNESS = 0.137, 3.0e6                                       # and its seabed contact
@@ -28,17 +27,9 @@ KNOT = 1852.0 / 3600.0
 
 
 def catenary() -> tuple[float, float]:
-    """Horizontal tension ``H`` [N] and suspended length ``L_s`` [m] of the elastic catenary with a grounded
-    part (no friction): ``X = L - L_s + (H/w) asinh(w L_s / H) + H L / EA``,
-    ``Z = (H/w)(sqrt(1 + (w L_s / H)^2) - 1) + w L_s^2 / (2 EA)`` (Irvine 1981)."""
-    def equations(unknowns):
-        horizontal, suspended = unknowns
-        a, v = horizontal / WEIGHT, WEIGHT * suspended / horizontal
-        return [LENGTH - suspended + a * np.arcsinh(v) + horizontal * LENGTH / STIFFNESS - SPAN,
-                a * (np.sqrt(1.0 + v * v) - 1.0) + WEIGHT * suspended ** 2 / (2.0 * STIFFNESS) - RISE]
-    horizontal, suspended = fsolve(equations, [1e5, 300.0], xtol=1e-13)
-    assert np.allclose(equations([horizontal, suspended]), 0.0, atol=1e-6)
-    return horizontal, suspended
+    """Horizontal tension ``H`` [N] and suspended length ``L_s`` [m] of the example's chain as an elastic
+    catenary with a grounded part (:func:`helpers.grounded_catenary`)."""
+    return grounded_catenary(SPAN, RISE, LENGTH, WEIGHT, STIFFNESS)
 
 
 def grounded_chain(segments: int, model: str = "continuum"):
