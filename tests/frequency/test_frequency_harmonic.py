@@ -19,7 +19,7 @@ import kanat
 import kanat.errors
 from kanat.model import Case
 
-from helpers import quiet
+from helpers import harmonic_fit, quiet
 from helpers_moordyn import node_tensions, run_moordyn
 
 CHAIN_FILE = """--------------------- MoorDyn Input File ------------------------------------
@@ -57,13 +57,6 @@ OMEGA = 2.0 * math.pi / PERIOD
 def surge(period=PERIOD):
     """The fairlead's surge ``-a cos(omega t)``."""
     return [{"dof": "surge", "amplitude": AMPLITUDE, "period": period, "phase_deg": -90.0}]
-
-
-def harmonic_fit(t, values, omega):
-    """Mean and complex amplitude ``X`` (``|X| cos(omega t + arg X)``) of ``values`` (k, ...) at ``t`` (k,)."""
-    A = np.column_stack([np.ones_like(t), np.cos(omega * t), np.sin(omega * t)])
-    coef = np.linalg.lstsq(A, values.reshape(len(t), -1), rcond=None)[0]
-    return coef[0], coef[1] - 1j * coef[2]
 
 
 def bar(segments=20, amplitude=1e-3, omega=3.0, ea=1e5, mass=1.0, length=100.0, method="frequency", phase_deg=90.0,

@@ -23,7 +23,8 @@ import numpy as np
 import pytest
 
 import kanat
-from test_frequency_harmonic import chain, harmonic_fit, moordyn_node_tensions, time_domain_tension
+from helpers import harmonic_fit
+from test_frequency_harmonic import chain, moordyn_node_tensions, time_domain_tension
 
 
 def amplitudes(tmp_path, moordyn, period, coupling, periods):
