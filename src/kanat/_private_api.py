@@ -1,6 +1,6 @@
 """Every use kanat makes of another library's private API, in one place (docs/kernels.md).
 
-Three touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
+Four touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
 numba or h5netcdf that changes one fails one test whose message names the library and version:
 
 * :func:`compile_object_files` — ``numba.pycc.CC._compile_object_files``: the install compiles
@@ -11,12 +11,21 @@ numba or h5netcdf that changes one fails one test whose message names the librar
   of its keys: whether a run would compile, read without compiling (:func:`kanat.jit.is_cached`).
 * :func:`flush_hdf5` — h5netcdf's ``File._h5file``: the HDF5 file beneath a netCDF file being
   written, flushed so that a killed run leaves its outputs on disk (:mod:`kanat.io.stream`).
+* :func:`banded_lapack` — SciPy's extension module ``scipy/linalg/_flapack``, loaded from its file
+  without the ``scipy.linalg`` package around it: the continuum model's Newton steps call LAPACK's
+  ``dgbsv`` from it, and ``import scipy.linalg`` costs a run 0.1-0.3 s of CPU (it imports
+  ``scipy._lib.array_api_compat``, which imports NumPy's f2py, ma, testing and polynomial
+  packages) against ~0.01 s for the module alone. Where the file is not found, the public
+  ``scipy.linalg.lapack`` module (the same functions).
 
 The libraries are imported inside the functions: importing this module imports neither.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
+import importlib.machinery
+import importlib.util
 import os
 
 
@@ -92,3 +101,24 @@ def flush_hdf5(file) -> None:
     except AttributeError as error:
         raise _changed("h5netcdf", "File._h5file", error) from None
     flush()
+
+
+@functools.cache
+def banded_lapack():
+    """SciPy's LAPACK wrappers (``dgbsv`` and the rest of ``scipy.linalg.lapack``'s double-precision
+    routines), loaded from the extension module's file alone (module docstring); the public
+    ``scipy.linalg.lapack`` where that file is not where SciPy keeps it.
+
+    A later ``import scipy.linalg`` finds the same module (tests/kernels/test_private_api.py).
+    """
+    spec = importlib.util.find_spec("scipy")                       # finds, does not import, SciPy
+    folder = os.path.join(os.path.dirname(spec.origin), "linalg") if spec and spec.origin else ""
+    for suffix in importlib.machinery.EXTENSION_SUFFIXES:
+        path = os.path.join(folder, "_flapack" + suffix)
+        if os.path.isfile(path):
+            module_spec = importlib.util.spec_from_file_location("scipy.linalg._flapack", path)
+            module = importlib.util.module_from_spec(module_spec)
+            module_spec.loader.exec_module(module)
+            return module
+    from scipy.linalg import lapack
+    return lapack

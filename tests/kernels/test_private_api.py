@@ -1,9 +1,9 @@
 """Every private API kanat uses (:mod:`kanat._private_api`), one test per touch point.
 
-A numba or h5netcdf release that changes one of them fails its test here, with a message naming
+A numba, h5netcdf or SciPy release that changes one of them fails its test here, with a message naming
 the library and its version (docs/kernels.md says what each touch point is for and what replaces
 it). Oracles: the object file on disk, numba's own compile of a one-line function (its signature),
-and the HDF5 file read back by h5py in another process.
+the HDF5 file read back by h5py in another process, and SciPy's public ``solve_banded``.
 """
 import subprocess
 import sys
@@ -77,6 +77,35 @@ def test_h5netcdf_file_flushes_the_hdf5_file_beneath(tmp_path):
                               env={"HDF5_USE_FILE_LOCKING": "FALSE", "PATH": ""})
         assert read.returncode == 0 and read.stdout.strip() == "[1.0, 2.0, 3.0]", (
             f"h5netcdf {h5netcdf.__version__}: the file open for writing was not flushed: {read.stderr[-300:]}")
+
+
+BANDED = """
+import sys
+from kanat._private_api import banded_lapack
+lapack = banded_lapack()
+print(lapack.__name__, 'scipy.linalg' in sys.modules)
+import numpy as np
+from scipy.linalg import solve_banded
+from scipy.linalg.lapack import dgbsv
+ab = np.array([[0.0, 1.0, 2.0, 1.0], [5.0, 6.0, 7.0, 8.0], [1.0, 2.0, 1.0, 0.0]])
+rhs = np.array([1.0, -2.0, 3.0, 0.5])
+work = np.zeros((4, 4), order="F")
+work[1:] = ab
+_, _, x, info = lapack.dgbsv(1, 1, work, rhs.copy())
+print(info, lapack.dgbsv is dgbsv, np.abs(x - solve_banded((1, 1), ab, rhs)).max())
+"""
+
+
+def test_scipy_lapack_loads_without_scipy_linalg():
+    """SciPy's ``_flapack`` loaded alone (no ``scipy.linalg`` imported), the same ``dgbsv`` as
+    ``scipy.linalg.lapack``'s once SciPy is imported, its band solve ``solve_banded``'s."""
+    lines = subprocess.run([sys.executable, "-c", BANDED], capture_output=True, text=True,
+                           check=True).stdout.split("\n")
+    assert lines[0] == "scipy.linalg._flapack False", (
+        f"SciPy's _flapack was not found beside scipy/linalg (kanat._private_api.banded_lapack): {lines[0]}")
+    info, same, error = lines[1].split()
+    assert (info, same) == ("0", "True")
+    assert float(error) < 1e-15
 
 
 def test_a_missing_private_api_is_named_with_its_library_version():

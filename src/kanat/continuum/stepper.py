@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg.lapack import dgbsv
 
+from kanat._private_api import banded_lapack
 from kanat.continuum import kernels2d as k
 from kanat.continuum.model2d import PlanarCable, positions
 from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
@@ -136,7 +136,7 @@ def solve_band(width: int, band: np.ndarray, rhs: np.ndarray) -> np.ndarray | No
     # the top rows hold the LU's fill-in; in Fortran order, which f2py would otherwise copy it into
     work = np.zeros((3 * width + 1, band.shape[1]), order="F")
     work[width:] = band
-    _, _, x, info = dgbsv(width, width, work, rhs, overwrite_ab=True, overwrite_b=True)
+    _, _, x, info = banded_lapack().dgbsv(width, width, work, rhs, overwrite_ab=True, overwrite_b=True)
     return x if info == 0 else None
 
 
@@ -182,8 +182,9 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive, own_r
     env = planar_water(cable, state.xz, node_velocity(state.y), state.t, dt, coefficients)
     payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, (state.xz[-1, 0], 0.0), kinematics_time(state.t, dt, coefficients))
-    float_elevations(cable.sea, P, np.column_stack([state.xz[:, 0], np.zeros(len(state.xz))]),
-                     kinematics_time(state.t, dt, coefficients))
+    if cable.sea is not None:
+        float_elevations(cable.sea, P, np.column_stack([state.xz[:, 0], np.zeros(len(state.xz))]),
+                         kinematics_time(state.t, dt, coefficients))
     b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
     x, iterations = solve(cable, state.y + dt * state.rate, step_data(cable, state.y, state.rate, env, P, b0, b1))
     gamma = coefficients[2]
