@@ -180,8 +180,8 @@ def channels(rigid, free: np.ndarray, x: np.ndarray, current, frame_velocity: np
 def _pairs(rows: list) -> DragPairs:
     """:class:`DragPairs` of channels ``(tangent, coefficient, mean flow, place, flowing)``."""
     k = len(rows)
-    column = lambda i: np.array([row[i] for row in rows], float).reshape(k, -1)  # noqa: E731
+    vectors = lambda i: np.array([row[i] for row in rows], float).reshape(k, 3)  # noqa: E731
     return DragPairs(node=-np.ones(k, dtype=np.int64), element=-np.ones(k, dtype=np.int64),
-                     dof=-np.ones(k, dtype=np.int64), tangent=column(0), normal=np.zeros(k),
-                     tangential=column(1).reshape(k), inertia_normal=np.zeros(k), inertia_tangential=np.zeros(k),
-                     mean=column(2), middle=column(3), isotropic=np.zeros(k, bool))
+                     dof=-np.ones(k, dtype=np.int64), tangent=vectors(0), normal=np.zeros(k),
+                     tangential=np.array([row[1] for row in rows], float), inertia_normal=np.zeros(k),
+                     inertia_tangential=np.zeros(k), mean=vectors(2), middle=vectors(3), isotropic=np.zeros(k, bool))

@@ -77,15 +77,10 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
     water = water_kinematics(model, ex) * ex.wave[:, None, None]
     prescribed = vessel_displacement(ex.motion, model.arms, model.heading)
     vessel = prescribed.reshape(len(omega), -1)
-    inertia = drag.inertia(pairs)
     fixed = np.stack([(model.coupling @ vessel[f] + 1j * omega[f] * (model.coupling_rate @ vessel[f])
                        + omega[f] ** 2 * (model.coupling_mass @ vessel[f])) for f in range(len(omega))])
-    maps = model.maps
-    fixed += maps.forces(1j * omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water))
-    fixed += waterplane_forces(model, ex)
-    if ex.sea is not None:
-        fixed += wave_forces(model.bodies, ex.sea, omega, size) * ex.wave[:, None]
-    lin = model.lin
+    fixed += wave_excitation(model, ex, water)
+    maps, lin = model.maps, model.lin
     base = lin.damping - model.drag_at_mean
     D = _equivalent(pairs, water, np.zeros((len(omega), len(pairs.node), 3), complex), ex)
     change, iterations = np.inf, 0
@@ -100,6 +95,21 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
             break
         D = 0.5 * (D + new)
     return Response(X, prescribed, iterations, change < TOLERANCE, change)
+
+
+def wave_excitation(model: LinearModel, ex: Excitation, water: np.ndarray | None = None) -> np.ndarray:
+    """The waves' forces on the system at rest but for drag, (nf, n_dof) complex: the lines' and point
+    bodies' inertia ``I a_w`` (Froude-Krylov and added mass), the surface buoys' waterplane lift and
+    the 6-DOF bodies' wave force and moment; ``water`` the pairs' water velocity
+    (:func:`water_kinematics` times the wave), worked out when not given."""
+    if water is None:
+        water = water_kinematics(model, ex) * ex.wave[:, None, None]
+    inertia = drag.inertia(model.pairs)
+    out = model.maps.forces(1j * ex.omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water))
+    out += waterplane_forces(model, ex)
+    if ex.sea is not None:
+        out += wave_forces(model.bodies, ex.sea, ex.omega, model.size) * ex.wave[:, None]
+    return out
 
 
 def waterplane_forces(model: LinearModel, ex: Excitation) -> np.ndarray:

@@ -1,0 +1,146 @@
+"""6-DOF bodies in waves in the frequency domain (kanat.frequency.bodies), against:
+
+* the time domain's own loads: a body held at its equilibrium in a regular wave, the fundamental of
+  the force and moment the time domain puts on it (Froude-Krylov and added mass at the reference
+  point, the waterplane's restoring from the wave surface, the wave loads on the line half
+  elements riding on it) is the frequency domain's excitation;
+* hydrostatics: a surface-piercing body on very soft, light lines heaves at
+  ``omega^2 = C33 / (m + A33)`` and pitches at ``omega^2 = C55 M11 / (M11 M55 - M15^2)``, the
+  pitch of a body free to surge (``M = M_rb + A`` about its reference point, the centre of gravity
+  below it coupling surge and pitch);
+* kanat's time domain: examples/mooring_buoy_waves.yaml's buoy in a small regular wave (its
+  surge, heave and pitch, and the legs' tension at every node, amplitude and phase) and in a
+  small irregular sea (the standard deviations of the same quantities over the same window).
+"""
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import kanat
+from kanat.frequency.assembly import linear_model
+from kanat.frequency.excitation import excitation_of
+from kanat.frequency.linearize import about_mean
+from kanat.frequency.response import wave_excitation
+from kanat.lumped.system import LumpedSystem
+from kanat.model import Case
+from kanat.physics.waves import sea_from_model
+
+from helpers import EXAMPLES, frequency_and_time, harmonic_fit, phase_gap
+
+BUOY_WAVES = EXAMPLES / "mooring_buoy_waves.yaml"
+PERIOD = 9.0
+
+
+def buoy_in_waves(waves: dict, duration: float, method: str = "time", output_dt: float = 0.1):
+    """examples/mooring_buoy_waves.yaml with its sea replaced by ``waves``."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = kanat.load_case(BUOY_WAVES)
+    return case.replace({"environment.waves": waves, "simulation.duration": duration,
+                         "simulation.output_dt": output_dt, "simulation.method": method})
+
+
+def floating(drag: bool = True) -> Case:
+    """A surface-piercing body (the example's buoy, its centre of gravity 1 m below the reference
+    point) on three light, slack lines of 40 m in 20 m of water."""
+    line = {"diameter": 0.02, "mass": 1.2, "weight_in_water": 10.0, "axial_stiffness": 1e5,
+            "drag_normal": 1.2 if drag else 0.0, "drag_tangential": 0.0}
+    legs = [{"name": f"leg{k}", "line_type": "rope", "length": 40.0, "segments": 8,
+             "from": {"anchor": [30.0 * math.cos(a), 30.0 * math.sin(a), -20.0]},
+             "to": {"body": "buoy", "offset": [2.0 * math.cos(a), 2.0 * math.sin(a), -1.0]}}
+            for k, a in enumerate(np.radians([0.0, 120.0, 240.0]))]
+    return Case.model_validate({
+        "name": "floating", "model": "lumped",
+        "environment": {"depth": 20.0, "seabed": {"stiffness": 1e5, "damping": 1e3}},
+        "line_types": {"rope": line},
+        "bodies": {"buoy": {"dof": 6, "mass": 6.0e4, "net_buoyancy": 500.0, "position": [0.0, 0.0, -2.0],
+                            "inertia": [4.0e5, 4.0e5, 6.0e5], "center_of_gravity": [0.0, 0.0, -1.0],
+                            "waterplane_area": 50.0, "metacentric_heights": [3.0, 3.0],
+                            "added_mass_matrix": [3.0e4, 3.0e4, 8.0e4, 1.0e5, 1.0e5, 0.0]}},
+        "cables": legs, "simulation": {"duration": 10.0, "dt": 0.01}})
+
+
+def test_a_floating_bodys_heave_and_pitch_periods_are_its_hydrostatics():
+    """Lines of 1.2 kg/m and 10 N/m in water against a 60 t buoy: heave within 0.1 % of
+    ``sqrt(rho g A_w / (m + A33))``, and the roll and pitch modes (alike: a round buoy) of
+    ``sqrt(B GM M11 / (M11 M55 - M15^2))``; the body's heave mode is the one it heaves most in."""
+    case = floating()
+    body = case.bodies["buoy"]
+    env = case.environment
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.modes(case, n=24)
+    M = body.rigid_body_mass_matrix() + np.asarray(body.added_mass_matrix)        # a diagonal 6 x 6
+    heave = math.sqrt(env.water_density * env.gravity * body.waterplane_area / M[2, 2])
+    C55 = body.buoyancy(env.gravity) * body.metacentric_heights[1]
+    pitch = math.sqrt(C55 * M[0, 0] / (M[0, 0] * M[4, 4] - M[0, 4] ** 2))
+    shape = ds.body_mode_shape.sel(body="buoy")
+    heaving = int(np.argmax(np.abs(shape.sel(dof="z").values)))
+    assert ds.direction.values[heaving] == "z"
+    assert float(ds.natural_frequency[heaving]) == pytest.approx(heave, rel=1e-3)
+    assert float(ds.period[heaving]) == pytest.approx(2 * math.pi / heave, rel=1e-3)
+    turning = np.isin(ds.direction.values, ["roll", "pitch"])
+    assert turning.sum() == 2
+    np.testing.assert_allclose(ds.natural_frequency.values[turning], pitch, rtol=1e-3)
+
+
+@pytest.mark.parametrize("heading", [0.0, 30.0])
+def test_the_excitation_is_the_time_domains_force_on_the_body_held_still(heading):
+    """The body and its lines held at the equilibrium in a 0.5 m, 7 s wave (no drag, whose
+    fundamental is the describing function's): the time domain's force and moment on the body's
+    reference point and angles over one period, fitted at the wave's frequency, against the
+    frequency domain's excitation (every degree of freedom, within 1e-6 of the largest)."""
+    case = floating(drag=False).replace({"environment.waves": {"type": "regular", "height": 0.5, "period": 7.0,
+                                                               "heading_deg": heading}})
+    model = linear_model(about_mean(case))
+    ex = excitation_of(case)
+    expected = wave_excitation(model, ex)[0]
+    net, lin = model.lin.net, model.lin
+    system = LumpedSystem(net, case, waves=True, friction=False)
+    free = system.free_index
+    times = np.linspace(0.0, 7.0, 57)[:-1]
+    forces = []
+    for t in times:
+        x, v, _, heading_t = system.full(t, lin.position[free], np.zeros((len(free), 3)))
+        v[:] = 0.0
+        forces.append(system.loads(t, x, v, heading_t)[0][free].ravel().copy())
+    _, fitted = harmonic_fit(times, np.array(forces), 2 * math.pi / 7.0)
+    rigid = net.rigid
+    rows = np.concatenate([3 * np.searchsorted(free, node) + np.arange(3) for node in (rigid.ref_node[0],
+                                                                                      rigid.rot_node[0])])
+    np.testing.assert_allclose(expected[rows], np.ravel(fitted)[rows], atol=1e-6 * np.abs(expected[rows]).max())
+    assert np.abs(expected[rows[2]]) > 1e4                        # rho g A_w eta and more, not a vacuous zero
+
+
+@pytest.mark.slow
+def test_the_buoy_in_a_small_regular_wave_against_the_time_domain():
+    """examples/mooring_buoy_waves.yaml's buoy in a 0.5 m, 9 s head sea (12 periods, the last three
+    fitted): surge, heave and pitch within 5 % and 0.05 rad; the legs' tension within 5 % and 0.05
+    rad at every node."""
+    waves = {"type": "regular", "height": 0.5, "period": PERIOD, "heading_deg": 0.0, "ramp": 2 * PERIOD}
+    fd, td = frequency_and_time(buoy_in_waves(waves, 12 * PERIOD, "frequency"), buoy_in_waves(waves, 12 * PERIOD))
+    assert fd.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    t = td.time.values
+    keep = t >= t[-1] - 3 * PERIOD
+    omega = 2 * math.pi / PERIOD
+    _, position = harmonic_fit(t[keep], td.body_position.values[keep, 0], omega)
+    _, attitude = harmonic_fit(t[keep], td.body_attitude.values[keep, 0], omega)
+    motion = np.r_[np.ravel(position), np.ravel(attitude)]
+    for dof in (0, 2, 4):                                          # surge, heave, pitch
+        rao = 0.25 * float(fd.body_motion_rao_amplitude[0, 0, dof]) * np.exp(
+            1j * float(fd.body_motion_rao_phase[0, 0, dof]))
+        assert abs(rao) == pytest.approx(abs(motion[dof]), rel=0.05), dof
+        assert abs(phase_gap(np.angle(rao), np.angle(motion[dof]))) < 0.05, dof
+    _, tension = harmonic_fit(t[keep], td.tension.values[keep], omega)
+    np.testing.assert_allclose(fd.tension_amplitude.values[0], np.abs(tension), rtol=0.05)
+    np.testing.assert_allclose(phase_gap(fd.tension_phase.values[0], np.angle(tension)), 0.0, atol=0.05)
+
+
+def linear_series(fd, case, times, amplitude, phase):
+    """A frequency-domain RAO's series (k, ...) at ``times`` in the case's own sea (its seed's phases)."""
+    sea = sea_from_model(case.environment)
+    H = (amplitude * np.exp(1j * phase)).reshape(len(sea.omega), -1)
+    eta = sea.amplitude * np.exp(-1j * sea.phase)
+    return np.real(np.exp(1j * np.outer(times, sea.omega)) @ (H * eta[:, None]))
