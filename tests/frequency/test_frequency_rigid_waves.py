@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 import kanat
+from kanat.frequency import drag
 from kanat.frequency.assembly import linear_model
 from kanat.frequency.excitation import excitation_of
 from kanat.frequency.linearize import about_mean
@@ -55,7 +56,7 @@ def floating(drag: bool = True) -> Case:
         "name": "floating", "model": "lumped",
         "environment": {"depth": 20.0, "seabed": {"stiffness": 1e5, "damping": 1e3}},
         "line_types": {"rope": line},
-        "bodies": {"buoy": {"dof": 6, "mass": 6.0e4, "net_buoyancy": 500.0, "position": [0.0, 0.0, -2.0],
+        "bodies": {"buoy": {"dof": 6, "mass": 6.0e4, "net_buoyancy": 600.0, "position": [0.0, 0.0, -2.0],
                             "inertia": [4.0e5, 4.0e5, 6.0e5], "center_of_gravity": [0.0, 0.0, -1.0],
                             "waterplane_area": 50.0, "metacentric_heights": [3.0, 3.0],
                             "added_mass_matrix": [3.0e4, 3.0e4, 8.0e4, 1.0e5, 1.0e5, 0.0]}},
@@ -144,3 +145,38 @@ def linear_series(fd, case, times, amplitude, phase):
     H = (amplitude * np.exp(1j * phase)).reshape(len(sea.omega), -1)
     eta = sea.amplitude * np.exp(-1j * sea.phase)
     return np.real(np.exp(1j * np.outer(times, sea.omega)) @ (H * eta[:, None]))
+
+
+def test_a_bodys_drag_and_quadratic_damping_take_the_describing_function():
+    """A body with drag areas and a full 6 x 6 quadratic damping moving harmonically, body-axes
+    velocity amplitudes ``V``: the assembled equivalent damping is ``B2 diag(8/(3 pi) |V|)`` plus
+    ``1/2 rho (C_D A)_j 8/(3 pi) |V_j|`` on each drag term, the describing function of ``|v| v``
+    (Krylov & Bogoliubov), within the phase rule's 1e-4."""
+    rng = np.random.default_rng(3)
+    quadratic = rng.uniform(0.0, 1e4, (6, 6))
+    areas = [8.0, 6.0, 40.0, 30.0, 20.0, 10.0]
+    case = floating(drag=False).replace({"bodies.buoy.quadratic_damping": quadratic.tolist(),
+                                         "bodies.buoy.drag_areas": areas})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        model = linear_model(case)
+    rigid, free = model.lin.net.rigid, np.flatnonzero(model.lin.net.free)
+    dofs = np.concatenate([3 * np.searchsorted(free, node) + np.arange(3) for node in (rigid.ref_node[0],
+                                                                                      rigid.rot_node[0])])
+    angles = model.lin.position[rigid.rot_node[0]]
+    assert np.abs(angles).max() < 1e-9                             # body axes are global axes
+    velocity = np.zeros((1, model.size), complex)
+    velocity[0, dofs] = rng.uniform(0.2, 1.0, 6) * np.exp(1j * rng.uniform(0, 2 * np.pi, 6))
+    channel = model.pairs.node < 0
+    W = -model.maps.velocities(velocity)[0]                          # still water: u_w - v
+    blocks = np.zeros((len(channel), 3, 3))
+    blocks[channel] = drag.describing(_subset(model.pairs, channel), W[channel])
+    damping = model.maps.assemble(blocks).toarray()[np.ix_(dofs, dofs)]
+    slope = 8.0 / (3.0 * np.pi) * np.abs(velocity[0, dofs])
+    rho = case.environment.water_density
+    expected = quadratic * slope[None, :] + np.diag(0.5 * rho * np.array(areas) * slope)
+    np.testing.assert_allclose(damping, expected, rtol=1e-4, atol=1e-4 * np.abs(expected).max())
+
+
+def _subset(pairs, which):
+    return drag.DragPairs(*(getattr(pairs, name)[which] for name in drag.DragPairs.__dataclass_fields__))

@@ -31,8 +31,10 @@ freedom (:mod:`kanat.frequency.pairs`)::
          quadratic damping k: w = -(nu's translation or rotation part),  t = e_k',
                               f -> G^T T B2[:, k] (e_k' . f)
 
-(``k' = k mod 3``). The channel's ``D = 2 c E|t . w| t t^T`` thus gives the force's slope
-``2 c E|v|`` along its own component, as the time domain's ``c |v| v`` has it.
+(``k' = k mod 3``), each velocity and water velocity projected on ``t``, so that a channel's
+oscillation is along one line and its describing function exact. The channel's
+``D = 2 c E|t . w| t t^T`` thus gives the force's slope ``2 c E|v|`` along its own component, as
+the time domain's ``c |v| v`` has it.
 """
 from __future__ import annotations
 
@@ -83,14 +85,15 @@ class Channels:
         Per channel, the degrees of freedom it acts on and the block (d, 3) mapping its 3-vector
         force to their generalized forces (``force``), or the block whose transpose maps their
         velocities to its velocity (``velocity``).
-    flowing : ndarray of bool, shape (p,)
-        Whether the channel's velocity is relative to the water (translation drag).
+    flow : ndarray, shape (p, 3, 3)
+        The projection of the water's velocity the channel feels: ``t t^T`` for a translation drag
+        channel, zero for those on the body's absolute velocity.
     """
 
     pairs: DragPairs
     force: list
     velocity: list
-    flowing: np.ndarray
+    flow: np.ndarray
 
 
 def body_frames(rigid, b: int, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -157,28 +160,30 @@ def channels(rigid, free: np.ndarray, x: np.ndarray, current, frame_velocity: np
             if area <= 0.0:
                 continue
             if j < 3:
-                rows.append((R[:, j], 0.5 * rho * area, flow, place, True))
+                along = np.outer(R[:, j], R[:, j])
+                rows.append((R[:, j], 0.5 * rho * area, flow, place, along))
                 force.append((ref, np.eye(3)))
-                velocity.append((ref, np.eye(3)))
+                velocity.append((ref, along))
             else:
-                rows.append((np.eye(3)[j - 3], 0.5 * rho * area, np.zeros(3), place, False))
+                axis = np.eye(3)[j - 3]
+                rows.append((axis, 0.5 * rho * area, np.zeros(3), place, np.zeros((3, 3))))
                 force.append((rot, spin))
-                velocity.append((rot, spin))
+                velocity.append((rot, spin @ np.outer(axis, axis)))
         for k in range(6):
             column = rigid.quadratic[b][:, k]
             if not np.any(column):
                 continue
             axis = np.eye(3)[k % 3]
             mean = -R.T @ frame_velocity if k < 3 else np.zeros(3)
-            rows.append((axis, 1.0, mean, place, False))
+            rows.append((axis, 1.0, mean, place, np.zeros((3, 3))))
             force.append((dofs[b], np.outer(G.T @ T @ column, axis)))
-            velocity.append((ref, R) if k < 3 else (rot, spin))
+            velocity.append((ref, R @ np.outer(axis, axis)) if k < 3 else (rot, spin @ np.outer(axis, axis)))
     return Channels(pairs=_pairs(rows), force=force, velocity=velocity,
-                    flowing=np.array([row[4] for row in rows], bool))
+                    flow=np.array([row[4] for row in rows], float).reshape(-1, 3, 3))
 
 
 def _pairs(rows: list) -> DragPairs:
-    """:class:`DragPairs` of channels ``(tangent, coefficient, mean flow, place, flowing)``."""
+    """:class:`DragPairs` of channels ``(tangent, coefficient, mean flow, place, flow)``."""
     k = len(rows)
     vectors = lambda i: np.array([row[i] for row in rows], float).reshape(k, 3)  # noqa: E731
     return DragPairs(node=-np.ones(k, dtype=np.int64), element=-np.ones(k, dtype=np.int64),

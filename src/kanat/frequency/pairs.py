@@ -27,20 +27,21 @@ from kanat.frequency.rigid import euler_rates_matrix, skew
 
 @dataclass(frozen=True, eq=False)
 class PairMaps:
-    """``P_f``, ``P_v^T`` of eq. (1) and which pairs feel the water's flow.
+    """``P_f``, ``P_v^T`` of eq. (1) and what each pair feels of the water's flow.
 
     Attributes
     ----------
     force : scipy.sparse.csr_matrix, shape (n_dof, 3 p)
     velocity_t : scipy.sparse.csr_matrix, shape (3 p, n_dof)
         ``P_v^T``.
-    flowing : ndarray of bool, shape (p,)
-        False for the bodies' channels on their absolute velocity (rotations, damping): no water there.
+    flow : ndarray, shape (p, 3, 3)
+        The water's velocity at a pair is ``flow u_w``: the identity for the lines' and point
+        bodies' pairs, the bodies' channels' own projections (:mod:`kanat.frequency.bodies`).
     """
 
     force: sp.csr_matrix
     velocity_t: sp.csr_matrix
-    flowing: np.ndarray
+    flow: np.ndarray
 
     def assemble(self, blocks: np.ndarray) -> sp.csr_matrix:
         """``P_f blockdiag(blocks) P_v^T`` (n_dof, n_dof) of the pairs' 3 x 3 ``blocks`` (p, 3, 3)."""
@@ -93,10 +94,10 @@ def line_and_body_pairs(net, x: np.ndarray, free: np.ndarray, wet: np.ndarray, s
     for j, ((fd, fb), (vd, vb)) in enumerate(zip(own.force, own.velocity)):
         add(first + j, fd, fb, force)
         add(first + j, vd, vb, velocity)
-    total = first + len(own.flowing)
+    total = first + len(own.flow)
     P_f, P_v = (sp.csr_matrix((np.concatenate(v), (np.concatenate(r), np.concatenate(c))), shape=(size, 3 * total))
                 for r, c, v in (force, velocity))
     merged = drag.DragPairs(*(np.concatenate([getattr(pairs, name), getattr(own.pairs, name)])
                               for name in drag.DragPairs.__dataclass_fields__))
-    flowing = np.r_[np.ones(first, bool), own.flowing]
-    return merged, PairMaps(force=P_f, velocity_t=P_v.T.tocsr(), flowing=flowing)
+    flow = np.concatenate([np.broadcast_to(np.eye(3), (first, 3, 3)), own.flow])
+    return merged, PairMaps(force=P_f, velocity_t=P_v.T.tocsr(), flow=flow)

@@ -11,7 +11,8 @@ through the pairs' maps ``P_f D P_v^T``, :mod:`kanat.frequency.pairs`), ``f_p`` 
 forcing (:mod:`kanat.frequency.assembly` eq. 1), ``f_w`` the surface buoys' waterplane lift,
 ``f_b`` the 6-DOF bodies' wave force and moment (:mod:`kanat.frequency.bodies` eq. 1), ``u_w, a_w``
 the waves' velocity and acceleration at the elements' middles per unit amplitude
-(:mod:`kanat.frequency.kinematics`; zero for the bodies' channels on their absolute velocity).
+(:mod:`kanat.frequency.kinematics`; projected on a body's drag channel, zero on its channels on
+its absolute velocity).
 ``D`` depends on the relative
 velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
 repeated with ``D`` the mean of the last two until it changes by less than
@@ -63,11 +64,11 @@ class Response:
 
 def water_kinematics(model: LinearModel, ex: Excitation) -> np.ndarray:
     """The waves' velocity at the pairs' element middles per unit amplitude, (nf, p, 3) complex
-    (zero for the pairs outside the flow: the bodies' channels on their absolute velocity)."""
+    (projected as each pair feels it: the bodies' channels, :mod:`kanat.frequency.pairs`)."""
     nf, p = len(ex.omega), len(model.pairs.node)
     if ex.sea is None:
         return np.zeros((nf, p, 3), complex)
-    return water_velocity(ex.sea, model.pairs.middle) * model.maps.flowing[None, :, None]
+    return np.einsum("prq,fpq->fpr", model.maps.flow, water_velocity(ex.sea, model.pairs.middle))
 
 
 def solve(model: LinearModel, ex: Excitation) -> Response:
