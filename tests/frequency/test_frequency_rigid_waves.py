@@ -180,3 +180,26 @@ def test_a_bodys_drag_and_quadratic_damping_take_the_describing_function():
 
 def _subset(pairs, which):
     return drag.DragPairs(*(getattr(pairs, name)[which] for name in drag.DragPairs.__dataclass_fields__))
+
+
+@pytest.mark.slow
+def test_the_buoy_in_a_small_irregular_sea_against_the_time_domain():
+    """examples/mooring_buoy_waves.yaml at Hs 1 m (its JONSWAP sea, Tp 9 s, seed 7, a 20 s ramp),
+    160 s of time domain, the first 60 s left out: over that window the standard deviations of the
+    buoy's surge, heave and pitch and of every node's tension against the frequency domain's series
+    for the same sea (its seed's phases: no sampling error between the two), within 10 %
+    (measured over 200 s: tension 3.1 %, surge 2.8 %, heave 1.4 %, pitch 2.5 %)."""
+    waves = {"type": "jonswap", "hs": 1.0, "tp": PERIOD, "gamma": 3.3, "heading_deg": 0.0, "seed": 7, "ramp": 20.0}
+    case = buoy_in_waves(waves, 160.0, "frequency", output_dt=0.25)
+    fd, td = frequency_and_time(case, case.replace({"simulation.method": "time"}))
+    assert fd.attrs["status"] == "ok" and td.attrs["status"] == "ok"
+    assert fd.attrs["excitation"] == "spectral"
+    t = td.time.values
+    keep = t >= 60.0
+    tension = linear_series(fd, case, t[keep], fd.tension_rao_amplitude.values, fd.tension_rao_phase.values)
+    np.testing.assert_allclose(tension.std(axis=0), td.tension.values[keep].std(axis=0), rtol=0.10)
+    body = linear_series(fd, case, t[keep], fd.body_motion_rao_amplitude.values[:, 0],
+                         fd.body_motion_rao_phase.values[:, 0])
+    measured = np.c_[td.body_position.values[keep, 0], td.body_attitude.values[keep, 0]]
+    for dof in (0, 2, 4):                                          # surge, heave, pitch
+        assert body[:, dof].std() == pytest.approx(measured[:, dof].std(), rel=0.10), dof
