@@ -71,7 +71,6 @@ def line_and_body_pairs(net, x: np.ndarray, free: np.ndarray, wet: np.ndarray, s
     riding = np.asarray(rigid.fairlead_node, dtype=np.int64)
     pairs = drag.drag_pairs(net, x, np.r_[free, riding], wet, strain, current, frame_velocity, rho=rho)
     own = bodies.channels(rigid, free, x, current, frame_velocity, rho)
-    rows, cols, vals = [], [], []
 
     def add(k: int, dofs: np.ndarray, block: np.ndarray, into: tuple) -> None:
         r, c = np.meshgrid(dofs, 3 * k + np.arange(3), indexing="ij")

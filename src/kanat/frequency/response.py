@@ -3,17 +3,17 @@ equivalent linearisation iterated to a fixed point (docs/frequency.md).
 
 At each frequency ``omega`` of the excitation (:mod:`kanat.frequency.excitation`)::
 
-    (1)  (K + i omega (C - J_U + D) - omega^2 M) X = f_p + (f_w + f_b + P_f sum_pairs (D_k u_w,k + I_k a_w,k)) eta_hat
+    (1)  (K + i omega (C - J_U + D) - omega^2 M) X
+             = f_p + (f_w + f_b + P_f sum_pairs (D_k u_w,k + I_k a_w,k)) eta_hat
 
 ``K, C, M`` the linearisation (:mod:`kanat.frequency.linearize`), ``J_U`` the drag's slope about
 the mean flow which ``C`` holds and ``D`` replaces (:mod:`kanat.frequency.drag`; both assembled
-through the pairs' maps ``P_f D P_v^T``, :mod:`kanat.frequency.pairs`), ``f_p`` the vessel's
+through the pairs' maps, ``P_f D P_v^T``: :mod:`kanat.frequency.pairs`), ``f_p`` the vessel's
 forcing (:mod:`kanat.frequency.assembly` eq. 1), ``f_w`` the surface buoys' waterplane lift,
 ``f_b`` the 6-DOF bodies' wave force and moment (:mod:`kanat.frequency.bodies` eq. 1), ``u_w, a_w``
 the waves' velocity and acceleration at the elements' middles per unit amplitude
 (:mod:`kanat.frequency.kinematics`; projected on a body's drag channel, zero on its channels on
-its absolute velocity).
-``D`` depends on the relative
+its absolute velocity). ``D`` depends on the relative
 velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
 repeated with ``D`` the mean of the last two until it changes by less than
 :data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981). ``D`` is one matrix for all frequencies
