@@ -62,7 +62,8 @@ def _warn_complex(values: np.ndarray) -> None:
     if worst > SYMMETRY_TOLERANCE:
         warnings.warn("the stiffness is not symmetric (drag in a flow, a 6-DOF body's loads turning with it) "
                       f"and some eigenvalues are complex (imaginary part up to {worst:.2g} of the modulus): "
-                      "their real parts are reported; the undamped modes are an approximation there", CaseWarning, stacklevel=3)
+                      "their real parts are reported; the undamped modes are an approximation there",
+                      CaseWarning, stacklevel=3)
 
 
 def modes(case, n: int = 10) -> xr.Dataset:
