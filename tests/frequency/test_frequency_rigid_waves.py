@@ -89,14 +89,23 @@ def test_a_floating_bodys_heave_and_pitch_periods_are_its_hydrostatics():
     np.testing.assert_allclose(ds.natural_frequency.values[turning], pitch, rtol=1e-3)
 
 
-@pytest.mark.parametrize("heading", [0.0, 30.0])
-def test_the_excitation_is_the_time_domains_force_on_the_body_held_still(heading):
+SUBMERGED = {"waterplane_area": None, "metacentric_heights": None, "net_buoyancy": 300.0,
+             "position": [0.0, 0.0, -10.0], "center_of_buoyancy": [0.0, 0.0, 0.5],
+             "added_mass_matrix": [[3.0e4, 0, 0, 0, 2.0e4, 0], [0, 3.0e4, 0, -2.0e4, 0, 0], [0, 0, 8.0e4, 0, 0, 0],
+                                   [0, -2.0e4, 0, 1.0e5, 0, 0], [2.0e4, 0, 0, 0, 1.0e5, 0], [0, 0, 0, 0, 0, 0]]}
+
+
+@pytest.mark.parametrize("heading, body", [(0.0, {}), (30.0, {}), (30.0, SUBMERGED)],
+                         ids=["surface-0deg", "surface-30deg", "submerged-30deg"])
+def test_the_excitation_is_the_time_domains_force_on_the_body_held_still(heading, body):
     """The body and its lines held at the equilibrium in a 0.5 m, 7 s wave (no drag, whose
     fundamental is the describing function's): the time domain's force and moment on the body's
     reference point and angles over one period, fitted at the wave's frequency, against the
-    frequency domain's excitation (every degree of freedom, within 1e-6 of the largest)."""
+    frequency domain's excitation (every degree of freedom, within 1e-6 of the largest). Surface-
+    piercing, and submerged 10 m with an added mass coupling surge and pitch (its moment arm)."""
     case = floating(drag=False).replace({"environment.waves": {"type": "regular", "height": 0.5, "period": 7.0,
-                                                               "heading_deg": heading}})
+                                                               "heading_deg": heading},
+                                         **{f"bodies.buoy.{key}": value for key, value in body.items()}})
     model = linear_model(about_mean(case))
     ex = excitation_of(case)
     expected = wave_excitation(model, ex)[0]
