@@ -4,7 +4,7 @@ Oracles: every utilisation row is the Rayleigh MPM of the fairlead node's tensio
 :func:`kanat.solve_frequency` gives for that sea state's case (the spectral moments and MPM of
 :mod:`kanat.analysis.spectral`, computed here from the solver's dataset), and the fatigue table
 the Dirlik damage of the same spectra weighted by each sea state's probability; a case with a
-body in waves is refused (the frequency domain has no wave loads on bodies), and a sea state whose
+6-DOF body in waves is solved, and a sea state whose
 linear solution fails its own checks (slack) is a failed row, never numbers.
 
 The system: a spread mooring of three catenary chains to RAO-driven fairleads (the vessel of
@@ -22,7 +22,6 @@ import kanat
 from kanat.analysis.spectral import most_probable_maximum, spectral_moments
 from kanat.design_checks import design
 from kanat.design_checks.conditions import sea_state_case, wave_seed
-from kanat.errors import KanatError
 
 from helpers import EXAMPLES
 
@@ -75,9 +74,13 @@ def test_frequency_design_rows_are_the_spectra_of_the_frequency_domain(tmp_path)
     assert (result.fatigue.damage_per_year > 0).all()
 
 
-def test_a_body_in_waves_is_refused_by_the_frequency_domain(tmp_path):
+@pytest.mark.slow
+def test_a_body_in_waves_is_solved_by_the_frequency_domain():
+    """The 6-DOF buoy of mooring_design.yaml moves in the waves (its wave loads:
+    tests/frequency/test_frequency_rigid_waves.py checks them against the time domain)."""
     data = yaml.safe_load((EXAMPLE.parent / "mooring_design.yaml").read_text())
     del data["design"]
     data["simulation"] = {"method": "frequency", "duration": 600}
-    with pytest.raises(KanatError, match="bodies.buoy"):
-        kanat.solve_frequency(kanat.load_case(data))
+    ds = kanat.solve_frequency(kanat.load_case(data))
+    assert ds.attrs["status"] == "ok"
+    assert float(ds.body_motion_std.sel(body="buoy", dof="z")) > 0.1

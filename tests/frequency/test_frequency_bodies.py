@@ -7,15 +7,14 @@
   drag, Froude–Krylov and added-mass loads on it and on the tether: its surge and the tether's
   tension against kanat's time domain (harmonic fit of the last three of twelve periods).
 * A surface buoy on a taut tether, lifted by the waves on its waterplane, against the time domain.
-* 6-DOF bodies in waves are still refused at their key.
+
+6-DOF bodies in waves: tests/frequency/test_frequency_rigid_waves.py.
 """
 import math
 
 import numpy as np
 import pytest
 
-import kanat
-from kanat.errors import CaseError
 from kanat.frequency.drag import isotropic_stochastic
 from kanat.model import Case
 
@@ -26,8 +25,6 @@ PERIOD = 8.0
 
 def tethered(method, body=None):
     buoy = {"mass": 500.0, "net_buoyancy": 5000.0, "drag_area": 1.0, "added_mass": 500.0, "position": [0.0, 0.0, -10.0]}
-    if body and body.get("dof") == 6:
-        buoy = {k: v for k, v in buoy.items() if k not in ("drag_area", "added_mass")}
     return Case.model_validate({
         "name": "tethered", "model": "lumped",
         "environment": {"depth": 30.0, "waves": {"type": "regular", "height": 2.0, "period": PERIOD, "ramp": 16.0}},
@@ -88,7 +85,3 @@ def test_a_tethered_surface_buoy_in_waves_against_the_time_domain():
     assert 0.5 * float(fd.body_motion_rao_amplitude[0, 0, 0]) == pytest.approx(abs(complex(np.ravel(body)[0])),
                                                                                rel=0.05)
 
-
-def test_a_rigid_body_in_waves_is_refused():
-    with pytest.raises(CaseError, match="bodies.buoy.*has dof: 6"):
-        kanat.solve_frequency(tethered("frequency", {"dof": 6, "inertia": [100.0, 100.0, 100.0]}))

@@ -25,7 +25,9 @@ import numpy as np
 import scipy.sparse as sp
 
 from kanat.frequency import drag
+from kanat.frequency.bodies import BodyWaves, body_waves
 from kanat.frequency.linearize import POSITION_STEP, VELOCITY_STEP, Linearization, linearize
+from kanat.frequency.pairs import PairMaps, line_and_body_pairs
 from kanat.frequency.rigid import euler_rates_matrix
 from kanat.lumped import kernels
 from kanat.lumped.output import NodeTension
@@ -48,6 +50,9 @@ class LinearModel:
     coupling, coupling_rate, coupling_mass : scipy.sparse.csr_matrix, shape (n_dof, 3 p)
         ``G`` [N/m], ``G_v`` [N s/m] and ``M_qp`` [kg] of eq. (1).
     pairs : kanat.frequency.drag.DragPairs
+        The lines', point bodies' and 6-DOF bodies' drag (:mod:`kanat.frequency.pairs`).
+    maps : kanat.frequency.pairs.PairMaps
+        Where each pair acts in the linear system.
     drag_at_mean : scipy.sparse.csr_matrix, shape (n_dof, n_dof)
         The drag's slope about the mean flow, assembled (part of ``lin.damping``).
     stiffness_slope, rate_slope : ndarray, shape (m,)
@@ -64,6 +69,9 @@ class LinearModel:
         whose immersion is at 0 or its height at the equilibrium: its waterplane force is clipped);
         ``waterplane_place`` (b, 2) their keels' x, y [m]. A wave of elevation ``eta`` at the keel
         lifts the buoy by ``rho g A_w eta`` (:meth:`kanat.lumped.system.LumpedSystem.loads`).
+    bodies : kanat.frequency.bodies.BodyWaves
+        The 6-DOF bodies' wave excitation (Froude-Krylov, added mass, a surface-piercing body's
+        waterplane).
     """
 
     lin: Linearization
@@ -74,6 +82,7 @@ class LinearModel:
     coupling_rate: sp.csr_matrix
     coupling_mass: sp.csr_matrix
     pairs: drag.DragPairs
+    maps: PairMaps
     drag_at_mean: sp.csr_matrix
     stiffness_slope: np.ndarray
     rate_slope: np.ndarray
@@ -84,6 +93,7 @@ class LinearModel:
     waterplane_dof: np.ndarray
     waterplane_stiffness: np.ndarray
     waterplane_place: np.ndarray
+    bodies: BodyWaves
 
     @property
     def size(self) -> int:
@@ -110,8 +120,8 @@ def linear_model(case) -> LinearModel:
     step = POSITION_STEP * float(np.min(net.el_length))
     G = _coupling(lambda xx: steady.loads(0.0, xx, vs, heading)[0][free], xs, prescribed, step)
     Gv = _coupling(lambda vv: moving.loads(0.0, xm, vv, heading_m)[0][free], vm, prescribed, VELOCITY_STEP)
-    pairs = drag.drag_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]), frame,
-                            rho=case.environment.water_density)
+    pairs, maps = line_and_body_pairs(net, x, free, wet, strain, lambda p: case.environment.current.at(p[:, 2]),
+                                      frame, rho=case.environment.water_density)
     slope = _slope(lambda xx: steady.loads(0.0, xx, vs, heading), lambda: steady.tension, xs, STRETCH_STEP)
     rate = _slope(lambda vv: moving.loads(0.0, xm, vv, heading_m), lambda: moving.tension, vm, VELOCITY_STEP,
                   about=xm)
@@ -122,10 +132,10 @@ def linear_model(case) -> LinearModel:
         lin=lin, prescribed=prescribed, arms=np.asarray(net.vessel_offset, float).reshape(-1, 3),
         heading=float(heading), coupling=G, coupling_rate=Gv,
         coupling_mass=_coupling_mass(net, x, free, prescribed, consistent),
-        pairs=pairs, drag_at_mean=assemble(pairs, drag.tangent_at_mean(pairs), len(free) * 3),
+        pairs=pairs, maps=maps, drag_at_mean=maps.assemble(drag.tangent_at_mean(pairs)),
         stiffness_slope=slope / length, rate_slope=rate / length, tangent=d / length[:, None],
         mean_tension=tension, node_tension=NodeTension(net), contact_force=contact_force,
-        **_waterplanes(net, x, free, case.environment))
+        bodies=body_waves(net.rigid, free, x), **_waterplanes(net, x, free, case.environment))
 
 
 def _waterplanes(net, x: np.ndarray, free: np.ndarray, environment) -> dict:
@@ -179,14 +189,6 @@ def _coupling_mass(net, x, free, prescribed, consistent: bool) -> sp.csr_matrix:
             if row[a] >= 0 and col[b] >= 0:
                 dense[3 * row[a]:3 * row[a] + 3, 3 * col[b]:3 * col[b] + 3] += B[k]
     return sp.csr_matrix(dense)
-
-
-def assemble(pairs: drag.DragPairs, blocks: np.ndarray, size: int) -> sp.csr_matrix:
-    """The pairs' 3 x 3 ``blocks`` (p, 3, 3) on their nodes' diagonal, shape (size, size)."""
-    r = pairs.dof[:, None, None] + np.arange(3)[None, :, None]
-    c = pairs.dof[:, None, None] + np.arange(3)[None, None, :]
-    r, c = np.broadcast_to(r, blocks.shape), np.broadcast_to(c, blocks.shape)
-    return sp.csr_matrix((blocks.ravel(), (r.ravel(), c.ravel())), shape=(size, size))
 
 
 def node_displacements(model: LinearModel, free_motion: np.ndarray, prescribed_motion: np.ndarray) -> np.ndarray:

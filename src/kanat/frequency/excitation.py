@@ -77,19 +77,11 @@ def excitation_of(case) -> Excitation:
     Raises
     ------
     CaseError
-        For what the frequency domain cannot take: 6-DOF bodies in waves,
-        a motion table (not harmonic), harmonic motion in an irregular sea, or nothing that moves.
+        For what the frequency domain cannot take: a motion table (not harmonic), harmonic motion
+        in an irregular sea, or nothing that moves.
     """
     env, motion = case.environment, case.vessel.motion
     waves = env.waves
-    refused = _body_in_waves(case) if waves is not None else None
-    if refused is not None:
-        name, what = refused
-        raise _refused(f"bodies.{name}", "simulation.method: frequency puts the waves' loads on the lines and on "
-                                         "point bodies (drag, Froude-Krylov, added mass, a surface buoy's "
-                                         f"waterplane); {what} would get no wave force of its own, so its motion and "
-                                         "the tensions it drives would be missing; run method: time (or drive the "
-                                         "body as the vessel, by RAOs)")
     if motion.rows is not None:
         raise _refused("vessel.motion", "simulation.method: frequency takes harmonic vessel.motion or RAOs, "
                                         "not a motion table; give harmonics or run method: time")
@@ -103,16 +95,6 @@ def excitation_of(case) -> Excitation:
         raise _refused("simulation.method", "the frequency domain needs an excitation: environment.waves or "
                                             "harmonic vessel.motion")
     return _harmonic(case)
-
-
-def _body_in_waves(case) -> tuple[str, str] | None:
-    """The first body whose wave loads the frequency domain does not have, and what it is: a 6-DOF
-    body (wave forces and moments of a rigid body); None when every body is a point body (surface
-    buoys included: the waves lift them on their waterplane)."""
-    for name, body in case.bodies.items():
-        if body.dof == 6:
-            return name, f"body '{name}' has dof: 6 (the wave force and moment of a rigid body)"
-    return None
 
 
 def _refused(key: str, message: str) -> CaseError:

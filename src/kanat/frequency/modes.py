@@ -60,9 +60,10 @@ def _warn_complex(values: np.ndarray) -> None:
     finite = values[np.isfinite(values)]
     worst = np.max(np.abs(finite.imag) / np.maximum(np.abs(finite), 1e-300), initial=0.0)
     if worst > SYMMETRY_TOLERANCE:
-        warnings.warn(f"the stiffness is not symmetric (drag in a flow) and some eigenvalues are complex "
-                      f"(imaginary part up to {worst:.2g} of the modulus): their real parts are reported; "
-                      "the undamped modes are an approximation there", CaseWarning, stacklevel=3)
+        warnings.warn("the stiffness is not symmetric (drag in a flow, a 6-DOF body's loads turning with it) "
+                      f"and some eigenvalues are complex (imaginary part up to {worst:.2g} of the modulus): "
+                      "their real parts are reported; the undamped modes are an approximation there",
+                      CaseWarning, stacklevel=3)
 
 
 def modes(case, n: int = 10) -> xr.Dataset:
@@ -134,5 +135,6 @@ def modes_table(ds: xr.Dataset) -> str:
                      f"{float(ds.period[k]):>10.5g}  {str(ds.direction.values[k])}")
     asymmetry = float(ds.attrs.get("stiffness_asymmetry", 0.0))
     if asymmetry > SYMMETRY_TOLERANCE:
-        lines.append(f"(the stiffness is not symmetric: ||K - K^T|| / ||K|| = {asymmetry:.2g}; drag in a flow)")
+        lines.append(f"(the stiffness is not symmetric: ||K - K^T|| / ||K|| = {asymmetry:.2g}; "
+                     "drag in a flow, or a 6-DOF body's loads turning with it)")
     return "\n".join(lines)

@@ -3,14 +3,17 @@ equivalent linearisation iterated to a fixed point (docs/frequency.md).
 
 At each frequency ``omega`` of the excitation (:mod:`kanat.frequency.excitation`)::
 
-    (1)  (K + i omega (C - J_U + D) - omega^2 M) X = f_p + sum_pairs (D_k u_w,k + I_k a_w,k) eta_hat
+    (1)  (K + i omega (C - J_U + D) - omega^2 M) X
+             = f_p + (f_w + f_b + P_f sum_pairs (D_k u_w,k + I_k a_w,k)) eta_hat
 
 ``K, C, M`` the linearisation (:mod:`kanat.frequency.linearize`), ``J_U`` the drag's slope about
-the mean flow which ``C`` holds and ``D`` replaces (:mod:`kanat.frequency.drag`), ``f_p`` the
-vessel's forcing (:mod:`kanat.frequency.assembly` eq. 1), ``u_w, a_w`` the waves' velocity and
-acceleration at the elements' middles per unit amplitude (:mod:`kanat.physics.waves` eqs. 3-5 as
-complex amplitudes: horizontal ``omega C(z) e^{-i psi}``, vertical ``i omega S(z) e^{-i psi}``,
-``a_w = i omega u_w``, ``psi = k (x cos beta + y sin beta)``). ``D`` depends on the relative
+the mean flow which ``C`` holds and ``D`` replaces (:mod:`kanat.frequency.drag`; both assembled
+through the pairs' maps, ``P_f D P_v^T``: :mod:`kanat.frequency.pairs`), ``f_p`` the vessel's
+forcing (:mod:`kanat.frequency.assembly` eq. 1), ``f_w`` the surface buoys' waterplane lift,
+``f_b`` the 6-DOF bodies' wave force and moment (:mod:`kanat.frequency.bodies` eq. 1), ``u_w, a_w``
+the waves' velocity and acceleration at the elements' middles per unit amplitude
+(:mod:`kanat.frequency.kinematics`; projected on a body's drag channel, zero on its channels on
+its absolute velocity). ``D`` depends on the relative
 velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
 repeated with ``D`` the mean of the last two until it changes by less than
 :data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981). ``D`` is one matrix for all frequencies
@@ -27,8 +30,10 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from kanat.frequency import drag
-from kanat.frequency.assembly import LinearModel, assemble
+from kanat.frequency.assembly import LinearModel
+from kanat.frequency.bodies import wave_forces
 from kanat.frequency.excitation import Excitation, vessel_displacement
+from kanat.frequency.kinematics import water_velocity
 
 TOLERANCE = 1e-4        # relative change of the equivalent drag at which the iteration stops
 MAX_ITERATIONS = 200
@@ -58,20 +63,12 @@ class Response:
 
 
 def water_kinematics(model: LinearModel, ex: Excitation) -> np.ndarray:
-    """The waves' velocity at the pairs' element middles per unit amplitude, (nf, p, 3) complex."""
+    """The waves' velocity at the pairs' element middles per unit amplitude, (nf, p, 3) complex
+    (projected as each pair feels it: the bodies' channels, :mod:`kanat.frequency.pairs`)."""
     nf, p = len(ex.omega), len(model.pairs.node)
     if ex.sea is None:
         return np.zeros((nf, p, 3), complex)
-    sea, middle = ex.sea, model.pairs.middle
-    c, s = sea._profiles(middle[:, 2])                              # (p, nf)
-    cb, sb = np.cos(sea.direction), np.sin(sea.direction)
-    psi = np.multiply.outer(middle[:, 0], sea.k * cb) + np.multiply.outer(middle[:, 1], sea.k * sb)
-    phase = np.exp(-1j * psi) * sea.omega
-    u = np.empty((nf, p, 3), complex)
-    u[..., 0] = (c * phase * cb).T
-    u[..., 1] = (c * phase * sb).T
-    u[..., 2] = (1j * s * phase).T
-    return u
+    return np.einsum("prq,fpq->fpr", model.maps.flow, water_velocity(ex.sea, model.pairs.middle))
 
 
 def solve(model: LinearModel, ex: Excitation) -> Response:
@@ -81,26 +78,39 @@ def solve(model: LinearModel, ex: Excitation) -> Response:
     water = water_kinematics(model, ex) * ex.wave[:, None, None]
     prescribed = vessel_displacement(ex.motion, model.arms, model.heading)
     vessel = prescribed.reshape(len(omega), -1)
-    inertia = drag.inertia(pairs)
     fixed = np.stack([(model.coupling @ vessel[f] + 1j * omega[f] * (model.coupling_rate @ vessel[f])
                        + omega[f] ** 2 * (model.coupling_mass @ vessel[f])) for f in range(len(omega))])
-    fixed += _on_pairs(pairs, 1j * omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water), size)
-    fixed += waterplane_forces(model, ex)
-    lin = model.lin
+    fixed += wave_excitation(model, ex, water)
+    maps, lin = model.maps, model.lin
     base = lin.damping - model.drag_at_mean
-    D = _equivalent(pairs, water, np.zeros((len(omega), size), complex), ex)
+    D = _equivalent(pairs, water, np.zeros((len(omega), len(pairs.node), 3), complex), ex)
     change, iterations = np.inf, 0
     while iterations < MAX_ITERATIONS:
-        X = _solve_all(lin, [base + assemble(pairs, D[f], size) for f in range(len(omega))], omega,
-                       fixed + _on_pairs(pairs, np.einsum("fprq,fpq->fpr", D, water), size))
+        X = _solve_all(lin, _dampings(maps, base, D), omega,
+                       fixed + maps.forces(np.einsum("fprq,fpq->fpr", D, water)))
         iterations += 1
-        new = _equivalent(pairs, water, X, ex)
+        new = _equivalent(pairs, water, maps.velocities(X), ex)
         scale = max(float(np.max(np.abs(new))), float(np.max(np.abs(D))), 1e-300)
         change = float(np.max(np.abs(new - D))) / scale
         if change < TOLERANCE:
             break
         D = 0.5 * (D + new)
     return Response(X, prescribed, iterations, change < TOLERANCE, change)
+
+
+def wave_excitation(model: LinearModel, ex: Excitation, water: np.ndarray | None = None) -> np.ndarray:
+    """The waves' forces on the system at rest but for drag, (nf, n_dof) complex: the lines' and point
+    bodies' inertia ``I a_w`` (Froude-Krylov and added mass), the surface buoys' waterplane lift and
+    the 6-DOF bodies' wave force and moment; ``water`` the pairs' water velocity
+    (:func:`water_kinematics` times the wave), worked out when not given."""
+    if water is None:
+        water = water_kinematics(model, ex) * ex.wave[:, None, None]
+    inertia = drag.inertia(model.pairs)
+    out = model.maps.forces(1j * ex.omega[:, None, None] * np.einsum("prq,fpq->fpr", inertia, water))
+    out += waterplane_forces(model, ex)
+    if ex.sea is not None:
+        out += wave_forces(model.bodies, ex.sea, ex.omega, model.size) * ex.wave[:, None]
+    return out
 
 
 def waterplane_forces(model: LinearModel, ex: Excitation) -> np.ndarray:
@@ -116,12 +126,12 @@ def waterplane_forces(model: LinearModel, ex: Excitation) -> np.ndarray:
     return out
 
 
-def _on_pairs(pairs: drag.DragPairs, values: np.ndarray, size: int) -> np.ndarray:
-    """The pairs' nodal vectors (nf, p, 3) summed into the system's DOFs, (nf, size)."""
-    out = np.zeros((values.shape[0], size), complex)
-    for r in range(3):
-        np.add.at(out, (slice(None), pairs.dof + r), values[..., r])
-    return out
+def _dampings(maps, base: sp.csr_matrix, D: np.ndarray) -> list[sp.csr_matrix]:
+    """``base + P_f D_f P_v^T`` per frequency, assembled once when ``D`` (nf, p, 3, 3) is the same
+    at every frequency (the stochastic rule's broadcast)."""
+    if D.shape[0] > 1 and D.strides[0] == 0:
+        return [base + maps.assemble(D[0])] * D.shape[0]
+    return [base + maps.assemble(D[f]) for f in range(D.shape[0])]
 
 
 def _solve_all(lin, damping: list[sp.csr_matrix], omega: np.ndarray, rhs: np.ndarray) -> np.ndarray:
@@ -135,12 +145,12 @@ def _solve_all(lin, damping: list[sp.csr_matrix], omega: np.ndarray, rhs: np.nda
 
 
 def _equivalent(pairs: drag.DragPairs, water: np.ndarray, X: np.ndarray, ex: Excitation) -> np.ndarray:
-    """``D`` (nf, p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module):
+    """``D`` (nf, p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module),
+    ``X`` (nf, p, 3) the pairs' displacements (:meth:`kanat.frequency.pairs.PairMaps.velocities`):
     the describing functions' for one or a few harmonics, else the stochastic rule's, the same at
     every frequency."""
     nf = X.shape[0]
-    nodes = X.reshape(nf, -1, 3)[:, pairs.dof // 3]
-    W = water - 1j * ex.omega[:, None, None] * nodes                    # (nf, p, 3)
+    W = water - 1j * ex.omega[:, None, None] * X                        # (nf, p, 3)
     if not ex.spectral and nf == 1:
         return drag.describing(pairs, W[0])[None]
     if not ex.spectral and nf <= drag.MAX_HARMONICS:
