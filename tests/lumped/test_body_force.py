@@ -5,7 +5,9 @@ of each element next to the body.
 Oracles:
 
 * closed form at rest: a body held in a current by its lines carries ``-(B z + 0.5 rho C_D S |u| u)``
-  (net buoyancy and drag in the current at its depth), to round-off;
+  (net buoyancy and drag in the current at its depth), to round-off: the subsurface mooring's
+  bodies, and a tethered float with a clump, submerged or, as a sphere, at the surface (its
+  buoyancy the immersed cap's share);
 * the continuum model side by side (whose ``body_force`` is the line's end force ``T t + S``): the
   subsurface mooring's two bodies;
 * closed form in motion: a weight hanging on a short stiff wire under a heaving vessel moves with the
@@ -92,3 +94,45 @@ def test_a_weight_under_a_heaving_vessel_is_pulled_with_its_inertia_buoyancy_and
     assert np.max(np.abs(force - expected)[settled]) < 1.0
     end_tension = ds.segment_tension.values[:, -1]
     assert np.max(np.abs(end_tension - expected)[settled]) > 100.0              # the half element's share
+
+
+def float_on_a_tether(with_diameter):
+    """A 40 m tether (8 elements) from an anchor 50 m down to a float, a clump at its middle, in a
+    0.5 m/s current. With ``with_diameter`` the float is a 1 m sphere whose buoyancy follows its
+    immersion, inline at s = 52 m (at the surface: the 780 N it holds up take a sixth of its
+    buoyancy), and the clump hangs from it on a 6 m tail."""
+    tether = dict(diameter=0.02, mass=1.5, weight_in_water=10.0, axial_stiffness=1e6, drag_normal=1.2,
+                  drag_tangential=0.01)
+    buoy = {"mass": 20.0, "net_buoyancy": 600.0, "drag_area": 0.3}
+    cable = dict(name="tether", line_type="tether", length=40.0, segments=8, **{"from": "anchor:[0, 0, -50]"},
+                 to="buoy", attachments=[{"body": "clump", "s": 20.0}])
+    if with_diameter:                   # full buoyancy: the sphere's displaced water, 5265 N
+        buoy.update(diameter=1.0, net_buoyancy=1025.0 * 9.81 * math.pi / 6 - 20.0 * 9.81)
+        cable.update(length=58.0, segments=10, to="clump", attachments=[{"body": "buoy", "s": 52.0}])
+    return Case.model_validate(dict(
+        model="lumped", environment={"depth": 50.0, "current": {"velocity": [0.5, 0.0, 0.0]}},
+        line_types={"tether": tether},
+        bodies={"buoy": buoy, "clump": {"mass": 30.0, "net_buoyancy": -200.0, "drag_area": 0.05}},
+        cables=[cable], simulation={"duration": 0.1, "output_dt": 0.1, "dt": 0.1}))
+
+
+@pytest.mark.parametrize("with_diameter", [False, True], ids=["submerged", "at-the-surface"])
+def test_a_tethered_floats_lines_hold_its_buoyancy_and_drag(with_diameter):
+    """At rest in the current, the line ends' force on the float and on the clump is ``-(B z + 0.5 rho C_D S |u| u)``, with, for the spherical float at the surface, ``B`` its net
+    buoyancy less the share ``1 - f`` of its full buoyancy out of the water (``f`` the cap's volume
+    fraction, :mod:`kanat.physics.immersion` eq. 1, computed here from the float's height), to 1e-6 N
+    (the equilibrium's residual)."""
+    case = float_on_a_tether(with_diameter)
+    ds = quietly(kanat.simulate, case)
+    assert ds.attrs["status"] == "ok", ds.attrs["status"]
+    for name in ("buoy", "clump"):
+        body = case.bodies[name]
+        z = float(ds.body_position.sel(body=name).values[0, 2])
+        lift = body.net_buoyancy
+        if body.diameter is not None:
+            h = min(max(0.5 - z, 0.0), 1.0)                  # the submerged cap's height, diameter 1 m
+            share = h * h * (1.5 - h) / 0.5                  # pi h^2 (3a - h) / 3 over 4 pi a^3 / 3, a = 0.5
+            assert 0.0 < share < 1.0                          # it floats at the surface
+            lift -= (1.0 - share) * body.buoyancy(9.81)
+        expected = -np.array([0.5 * 1025.0 * body.drag_area * 0.25, 0.0, lift])
+        assert np.linalg.norm(ds.body_force.sel(body=name).values[0] - expected) < 1e-6, name
