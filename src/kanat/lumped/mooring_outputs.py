@@ -134,7 +134,7 @@ class MooringOutputs:
     on_seabed : ndarray of bool, shape (n_anchor,), optional
         Whether each anchor lies on the seabed (:func:`anchors_on_seabed`); none when not given.
     case : kanat.model.Case, optional
-        The case the network is built from (its bodies' masses, for :meth:`line_forces`).
+        The case the network is built from (its bodies' masses): :meth:`line_forces` needs it.
     """
 
     def __init__(self, net, on_seabed=None, case=None):
@@ -153,9 +153,9 @@ class MooringOutputs:
         self.rigid_bodies = [b for b, name in enumerate(net.body_names) if name in rigid.names]
         self.point_bodies = np.array([b for b, name in enumerate(net.body_names) if name not in rigid.names],
                                      dtype=np.int64)
-        bodies = {} if case is None else case.bodies
-        self.body_mass = np.array([bodies[net.body_names[b]].mass + bodies[net.body_names[b]].added_mass
-                                   for b in self.point_bodies], dtype=float)
+        self.body_mass = None if case is None else np.array(
+            [case.bodies[net.body_names[b]].mass + case.bodies[net.body_names[b]].added_mass
+             for b in self.point_bodies], dtype=float)
         self.body_elements = []
         for name, node in zip(net.body_names, net.body_node):
             nodes = (rigid.fairlead_node[rigid.fairlead_body == rigid.names.index(name)] if name in rigid.names
