@@ -118,7 +118,8 @@ def float_on_a_tether(with_diameter):
 
 @pytest.mark.parametrize("with_diameter", [False, True], ids=["submerged", "at-the-surface"])
 def test_a_tethered_floats_lines_hold_its_buoyancy_and_drag(with_diameter):
-    """At rest in the current, the line ends' force on the float and on the clump is ``-(B z + 0.5 rho C_D S |u| u)``, with, for the spherical float at the surface, ``B`` its net
+    """At rest in the current, the line ends' force on the float and on the clump is
+    ``-(B z + 0.5 rho C_D S |u| u)``, with, for the spherical float at the surface, ``B`` its net
     buoyancy less the share ``1 - f`` of its full buoyancy out of the water (``f`` the cap's volume
     fraction, :mod:`kanat.physics.immersion` eq. 1, computed here from the float's height), to 1e-6 N
     (the equilibrium's residual)."""

@@ -13,7 +13,8 @@ Outputs beyond the node and element series (case-format.md): ``seabed_contact_le
 contact), ``anchor_force(anchor)`` (the total force on the prescribed anchor node: the end
 element's tension and the half element's loads — uplift is its +z part), ``body_force(body)``
 (the force the line ends exert on each point body, eq. (O1) of :mod:`kanat.lumped.mooring_outputs`,
-or the forces of a 6-DOF body's fairleads' elements) and ``body_attitude(body)`` (roll, pitch, yaw; zeros for point bodies).
+or the forces of a 6-DOF body's fairleads' elements) and ``body_attitude(body)`` (roll, pitch, yaw;
+zeros for point bodies).
 """
 from __future__ import annotations
 
