@@ -12,8 +12,9 @@ Outputs beyond the node and element series (case-format.md): ``seabed_contact_le
 (unstretched length of each cable whose nodes touch the seabed: half an element per node in
 contact), ``anchor_force(anchor)`` (the total force on the prescribed anchor node: the end
 element's tension and the half element's loads — uplift is its +z part), ``body_force(body)``
-(the lines' force on each body: the forces of its node's elements, or of its fairleads' for a
-6-DOF body) and ``body_attitude(body)`` (roll, pitch, yaw; zeros for point bodies).
+(the force the line ends exert on each point body, eq. (O1) of :mod:`kanat.lumped.mooring_outputs`,
+or the forces of a 6-DOF body's fairleads' elements) and ``body_attitude(body)`` (roll, pitch, yaw;
+zeros for point bodies).
 """
 from __future__ import annotations
 
@@ -92,7 +93,7 @@ class LumpedModel:
         self._seen = None                  # (t, free nodes' x, all nodes' x) of the last outputs()
         self.penetration = allowed_penetration(self.net, case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
-        self._mooring = MooringOutputs(self.net, anchors_on_seabed(self.net, case.environment))
+        self._mooring = MooringOutputs(self.net, anchors_on_seabed(self.net, case.environment), case)
         self._held = held_under_water(case, self.net)
         self._cable_node = np.zeros(self.net.n_nodes, dtype=bool)
         self._cable_node[self.net.node_index] = True
@@ -233,18 +234,20 @@ class LumpedModel:
     def outputs(self, state: LumpedState) -> dict:
         system, net = self.system, self.net
         t = state.scheme.t
-        x, v, _, heading = system.full(t, *state_positions(state.scheme))
+        x, v, a, heading = system.full(t, *state_positions(state.scheme))
         self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy())             # for check()
         T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
-        F = system.loads(t, x, v, heading)[0]
+        F, M = system.loads(t, x, v, heading)
+        a = system.solve_mass(x, F, M, a)
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
                 "vessel_heading": heading, "vessel_pitch": pitch,
                 "seabed_contact_length": self._mooring.contact_length(system.normal_force),
                 "anchor_force": self._mooring.anchor_forces(F, system.normal_force, self._friction),
-                "body_force": self._mooring.line_forces(x, T), "body_attitude": attitudes(net, x)}
+                "body_force": self._mooring.line_forces(system, t, x, v, a, heading, T),
+                "body_attitude": attitudes(net, x)}
 
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:

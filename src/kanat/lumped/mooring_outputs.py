@@ -3,9 +3,17 @@ bodies, body attitudes, and the penetration the seabed check allows.
 
 * ``seabed_contact_length(cable) = sum_k L0_k (c_i + c_j) / 2`` with ``c = 1`` at a node the
   seabed pushes (normal force > 0): half an element per node in contact;
-* the lines' force on a body: at each of its nodes (a 3-DOF body's node, a 6-DOF body's
-  fairleads), ``sum_k (+/- T_k t_k - w0_k L0_k / 2 z)`` over the elements there — the end
-  tension and the weight in water of the half element the node carries (as statics reports it);
+* the lines' force on a 3-DOF body: what the line ends exert on the body itself, not on the
+  node that also carries half of each element next to it. The node's equation ``M a = F`` (system
+  eq. 1) splits into the body's ``M_b a = F_b + F_line`` and its half elements', so
+
+      F_line = M_b a - F_b,    M_b = (m + m_a) I,                                    (O1)
+
+  with ``F_b`` the body's own loads (net buoyancy, ``force``, drag and fluid inertia, the
+  buoyancy a spherical float loses out of the water, a surface buoy's waterplane) and ``a`` the
+  node's acceleration; at rest ``F_line = -F_b`` (the continuum model's ``body_force``, which has
+  no half elements). A 6-DOF body's fairleads are points of the body, so the half elements there
+  are the body's load: ``sum_k (+/- T_k t_k - w0_k L0_k / 2 z)`` over the elements at its fairleads;
 * the line's force on an anchor: the total force on its prescribed node (end tension and the
   half element's loads), less the half element's weight where that element rests on the seabed
   (both its ends touching, or the anchor on the seabed and the other end touching): the
@@ -18,7 +26,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN
+from kanat.lumped import kernels
+from kanat.physics.contact import PENETRATION_FLOOR, PENETRATION_MARGIN, contact_forces
+from kanat.physics.immersion import sphere_fractions
 
 NO_CONTACT_RTOL = 1e-9     # below the seabed by more than this fraction of the depth fails without contact
 SURFACE_MARGIN = 1.0
@@ -47,9 +57,55 @@ def _node_pull(net, x, T, elements) -> np.ndarray:
     return out
 
 
-def line_forces(net, x, T) -> np.ndarray:
-    """Resultant force of the lines on each body (n_body, 3) [N]."""
-    return MooringOutputs(net).line_forces(x, T)
+def line_forces(system, t, x, v, a, heading, T) -> np.ndarray:
+    """Resultant force of the lines on each body (n_body, 3) [N], eq. (O1) (module docstring).
+
+    ``system``: the run's :class:`kanat.lumped.system.LumpedSystem`; ``x, v, a`` (n, 3) every
+    node's position, velocity and acceleration at time ``t``; ``heading`` the vessel's [rad] (the
+    spreading force's direction); ``T`` (m,) the element tensions."""
+    return MooringOutputs(system.net, case=system.case).line_forces(system, t, x, v, a, heading, T)
+
+
+def own_loads(system, t, x, v, heading, bodies) -> np.ndarray:
+    """The loads on 3-DOF bodies themselves, ``F_b`` of eq. (O1) (len(bodies), 3) [N].
+
+    ``bodies``: indices into ``net.body_names``. Net buoyancy and ``force`` (``net.node_force``
+    holds them with any point's at the same node, which is counted as the body's), drag, spreading
+    and fluid inertia (:func:`kanat.lumped.kernels.body_loads`), the buoyancy a spherical float keeps
+    out of the water (:func:`kanat.physics.immersion.sphere_fractions`), a surface buoy's waterplane
+    and, for a body with a ``seabed_area``, its share ``A_b / A_n`` of its node's seabed contact."""
+    net = system.net
+    nodes = net.body_node[bodies]
+    out = np.zeros((net.n_nodes, 3))
+    out[nodes] = net.node_force[nodes]
+    loads = np.flatnonzero(np.isin(net.load_node, nodes))
+    if len(loads):
+        u, aw = system.water(t, x[net.load_node[loads]])
+        kernels.body_loads(x, v, u, aw, net.load_node[loads], net.load_drag_area[loads], net.load_spreading[loads],
+                           net.node_fluid_inertia, system.rho, heading, out)
+    for k, b in enumerate(net.float_body):
+        node = net.body_node[b]
+        share = sphere_fractions(x[node:node + 1, 2], _eta(system, x[node], t), net.float_diameter[k:k + 1])[0]
+        out[node, 2] -= (1.0 - share) * net.float_buoyancy[k]
+    for k, b in enumerate(net.buoy_body):
+        node = net.body_node[b]
+        immersion = np.clip(_eta(system, x[node], t) - x[node, 2], 0.0, net.buoy_height[k])
+        out[node, 2] += system.rho * system.g * net.buoy_area[k] * immersion
+    bearing = np.array([system.case.bodies[net.body_names[b]].seabed_area for b in bodies])
+    if np.any(bearing > 0.0):
+        area, bed, params, laid = system.contact
+        contact = np.zeros_like(out)
+        contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, np.zeros_like(out), contact,
+                       np.zeros(net.n_nodes))
+        out[nodes] += (bearing / area[nodes])[:, None] * contact[nodes]
+    return out[nodes]
+
+
+def _eta(system, point, t) -> float:
+    """The wave elevation over ``point`` (3,) [m], 0 in still water."""
+    if system.sea is None:
+        return 0.0
+    return float(system.sea.elevation(point[:1], point[1:2], t)[0])
 
 
 def attitudes(net, x) -> np.ndarray:
@@ -77,9 +133,11 @@ class MooringOutputs:
     net : kanat.lumped.network.Network
     on_seabed : ndarray of bool, shape (n_anchor,), optional
         Whether each anchor lies on the seabed (:func:`anchors_on_seabed`); none when not given.
+    case : kanat.model.Case, optional
+        The case the network is built from (its bodies' masses): :meth:`line_forces` needs it.
     """
 
-    def __init__(self, net, on_seabed=None):
+    def __init__(self, net, on_seabed=None, case=None):
         self.net = net
         on_seabed = np.zeros(len(net.anchor_names), bool) if on_seabed is None else np.asarray(on_seabed, bool)
         self.resting_anchors = net.anchors[on_seabed]
@@ -92,6 +150,12 @@ class MooringOutputs:
                                      for k in np.flatnonzero(ends == node)])
                                 for a, node in enumerate(net.anchors) if on_seabed[a]]
         rigid = net.rigid
+        self.rigid_bodies = [b for b, name in enumerate(net.body_names) if name in rigid.names]
+        self.point_bodies = np.array([b for b, name in enumerate(net.body_names) if name not in rigid.names],
+                                     dtype=np.int64)
+        self.body_mass = None if case is None else np.array(
+            [case.bodies[net.body_names[b]].mass + case.bodies[net.body_names[b]].added_mass
+             for b in self.point_bodies], dtype=float)
         self.body_elements = []
         for name, node in zip(net.body_names, net.body_node):
             nodes = (rigid.fairlead_node[rigid.fairlead_body == rigid.names.index(name)] if name in rigid.names
@@ -109,15 +173,16 @@ class MooringOutputs:
             out[c] = per_element[first:last].sum()
         return out
 
-    def line_forces(self, x, T) -> np.ndarray:
-        """Resultant force of the lines on each body (n_body, 3) [N]."""
+    def line_forces(self, system, t, x, v, a, heading, T) -> np.ndarray:
+        """Resultant force of the lines on each body (n_body, 3) [N] (:func:`line_forces`)."""
         out = np.zeros((len(self.body_elements), 3))
-        for b, nodes in enumerate(self.body_elements):
-            if len(nodes) == 1:
-                out[b] = _node_pull(self.net, x, T, nodes[0])
-                continue
-            for elements in nodes:
+        for b in self.rigid_bodies:
+            for elements in self.body_elements[b]:
                 out[b] += _node_pull(self.net, x, T, elements)
+        if len(self.point_bodies):
+            nodes = self.net.body_node[self.point_bodies]
+            out[self.point_bodies] = (self.body_mass[:, None] * a[nodes]
+                                      - own_loads(system, t, x, v, heading, self.point_bodies))
         return out
 
     def anchor_forces(self, F, normal_force, friction: float = 0.0) -> np.ndarray:
