@@ -173,8 +173,8 @@ def _python_steps(scheme, system, state, h, steps, tracker, tensions):
         state = scheme.step(system, state, h)
         if implicit:
             x, v = system.full(state.t, state.x, state.v)[:2]
-            time_error.observe(time_error_estimate(system), state.t, h, scheme.coefficients, before.a, state.a, x, v,
-                               system.free_index, system.el_args)
+            time_error.observe(time_error_estimate(system), state.t, h, scheme.coefficients, before.x, before.a, state.a,
+                               x, v, system.free_index, system.el_args)
         tracker.update(state.t, tensions(state))
         if not _finite(state):
             return state, done + 1

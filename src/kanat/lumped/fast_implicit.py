@@ -36,6 +36,7 @@ FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
 TENSION_FLOOR = 1.0         # N: the least tension scale of the time-error estimate (kanat.lumped.time_error)
+MOTION_FLOOR = 1e-6         # m per node: the least displacement of a step the time-error estimate divides by
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -346,20 +347,27 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
 
 
 @inner
-def perturbed_tensions(t, factor, h, a, na, nx, nv, y, s, end_samples, nodes, el, bodies, work, estimate, out):
-    """The local displacement error ``e = factor h^2 (a_n+1 - a_n)`` of each free node
-    (:mod:`kanat.lumped.time_error`, eq. 1) at ``t = t_n+1``, its largest norm into ``estimate[0:3]``
-    (value, time, free node), and the element tensions at ``x_n+1 + e`` into ``out`` (m,)."""
+def perturbed_tensions(t, factor, h, x, a, na, nx, nv, y, s, end_samples, nodes, el, bodies, work, estimate, out):
+    """The local displacement error ``e = factor h^2 (a_n+1 - a_n)`` of each free node at ``t = t_n+1``
+    (:mod:`kanat.lumped.time_error`, eq. 1): its largest norm into ``estimate[0:3]`` (value, time, free node),
+    its 2-norm over the step's displacement's, eq. (2), into ``estimate[3:5]`` (value, time); the element
+    tensions at ``x_n+1 + e`` into ``out`` (m,)."""
     nf = a.shape[0]
     c = factor * h * h
+    error, moved = 0.0, 0.0
     for f in range(nf):
         size = 0.0
         for r in range(3):
             e = c * (na[f, r] - a[f, r])
             size += e * e
+            moved += (nx[f, r] - x[f, r]) ** 2
             y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r] + e, nv[f, r]
+        error += size
         if np.sqrt(size) > estimate[0]:
             estimate[0], estimate[1], estimate[2] = np.sqrt(size), t, f
+    ratio = np.sqrt(error) / max(np.sqrt(moved), MOTION_FLOOR * np.sqrt(nf))
+    if ratio > estimate[3]:
+        estimate[3], estimate[4] = ratio, t
     fast.tensions_at(y, s, end_samples, nodes, el, bodies, work)
     for k in range(out.shape[0]):
         out[k] = work.tension[k]
@@ -368,14 +376,14 @@ def perturbed_tensions(t, factor, h, a, na, nx, nv, y, s, end_samples, nodes, el
 @inner
 def tension_error(t, tension, perturbed, estimate):
     """The largest ``|T(x + e) - T(x)| / max(max_k |T_k(x)|, TENSION_FLOOR)`` of a step
-    (:mod:`kanat.lumped.time_error`, eq. 2) into ``estimate[3:8]`` (value, time, element, error [N], scale [N])."""
+    (:mod:`kanat.lumped.time_error`, eq. 3) into ``estimate[5:10]`` (value, time, element, error [N], scale [N])."""
     scale = TENSION_FLOOR
     for k in range(tension.shape[0]):
         scale = max(scale, abs(tension[k]))
     for k in range(tension.shape[0]):
         error = abs(perturbed[k] - tension[k])
-        if error / scale > estimate[3]:
-            estimate[3], estimate[4], estimate[5], estimate[6], estimate[7] = error / scale, t, k, error, scale
+        if error / scale > estimate[5]:
+            estimate[5], estimate[6], estimate[7], estimate[8], estimate[9] = error / scale, t, k, error, scale
 
 
 @kernel
@@ -391,7 +399,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
     ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
     calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
-    state and step, else ``a_1 = a``. ``estimate`` (8,): the running maxima of the local time-integration
+    state and step, else ``a_1 = a``. ``estimate`` (10,): the running maxima of the local time-integration
     error estimate (:mod:`kanat.lumped.time_error`), updated after each step; it only observes."""
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
@@ -414,7 +422,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
-        perturbed_tensions(t + h, factor, h, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work, estimate, perturbed)
+        perturbed_tensions(t + h, factor, h, x, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work, estimate, perturbed)
         for f in range(nf):
             for r in range(3):
                 previous[f, r] = a[f, r]
