@@ -253,6 +253,7 @@ def _explicit(system, state, h, tracker):
     xf, vf = (np.array(part) for part in unpack(sub.y))
     a = system.acceleration(sub.t, xf, vf) if done == count else np.full_like(xf, np.nan)
     _arrays(system).tangent[:] = 0.0                    # the implicit factors start afresh
+    time_error.restart(time_error_estimate(system))     # and the error estimate passes over the restart
     return replace(state, t=sub.t, x=xf, v=vf, a=a, explicit=state.explicit + done)
 
 

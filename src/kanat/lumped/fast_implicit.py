@@ -399,7 +399,7 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
     ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
     calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
-    state and step, else ``a_1 = a``. ``estimate`` (10,): the running maxima of the local time-integration
+    state and step, else ``a_1 = a``. ``estimate`` (11,): the running maxima of the local time-integration
     error estimate (:mod:`kanat.lumped.time_error`), updated after each step; it only observes."""
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
@@ -422,7 +422,12 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
-        perturbed_tensions(t + h, factor, h, x, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work, estimate, perturbed)
+        observed = estimate[10] <= 0.0                          # past a start's steps (time_error.START_STEPS)
+        if observed:
+            perturbed_tensions(t + h, factor, h, x, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work,
+                               estimate, perturbed)
+        else:
+            estimate[10] -= 1.0
         for f in range(nf):
             for r in range(3):
                 previous[f, r] = a[f, r]
@@ -430,7 +435,8 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
         tangent[1], tangent[2], tangent[4] = t + h, h, tangent[4] + 1.0
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
-        tension_error(t + h, work.tension, perturbed, estimate)
+        if observed:
+            tension_error(t + h, work.tension, perturbed, estimate)
         n_events = fast.snap_update(t0 + (step + 1) * h, work.tension, snap, events, n_events)
         if not fast.finite(y):
             return step + 1, iterations, n_events, False
