@@ -47,7 +47,7 @@ ATTRIBUTES = {
     "snap_events": "number of slack-to-taut events (lumped model)",
     "time_error_estimate": "implicit lumped runs: the largest local time-integration error estimate of a step, as a "
                            "fraction of the step's displacement (lumped.md, \"Time-step error estimate\"); above 0.02 "
-                           "the run warns, above 0.25 it fails",
+                           "the run warns, above 1 it fails",
     "time_error_time": "implicit lumped runs: the time of that step [s]",
     "time_error_displacement": "implicit lumped runs: the largest local displacement error of a node in one step [m]",
     "time_error_tension": "implicit lumped runs: the largest tension change that displacement error makes, as a "

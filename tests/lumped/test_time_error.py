@@ -14,6 +14,7 @@ import warnings
 import numpy as np
 import pytest
 
+import kanat
 from kanat.io import load_case
 from kanat.lumped import advance, time_error
 from kanat.lumped.adapter import LumpedModel
@@ -83,6 +84,7 @@ def steps_of(model, state, steps, path):
     return new, estimate.copy()
 
 
+@pytest.mark.slow
 def test_compiled_and_python_steps_estimate_alike():
     """MoorDyn's WD0050 chain driven at its fairlead, its first six steps of 0.1 s by each path, each from
     the same state (the compiled modified Newton and the Python full Newton agree to their tolerance):
@@ -111,3 +113,44 @@ def test_the_estimate_only_observes():
     assert np.array_equal(observed.x, blind.x) and np.array_equal(observed.v, blind.v)
     assert np.array_equal(observed.a, blind.a)
     assert np.all(record[[0, 3, 5]] > 0.0)
+
+
+@pytest.fixture(scope="module")
+def fall(tmp_path_factory):
+    from helpers import released_fall
+
+    return released_fall(tmp_path_factory.mktemp("fall"), drag_tangential=0.0, duration=9, dt=0.01, output_dt=0.5)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("dt, verdict", [(0.025, "failed"), (0.01, "warned")])
+def test_a_step_through_snaps_warns_or_fails(fall, dt, verdict):
+    """A 20 m wire released at t = 5 s falls through its own slack, snapping taut again and again (axial
+    period 3.6 ms; rk4 and the implicit scheme at 2 ms agree, tests/lumped/test_lumped_snap_step.py). At
+    10 ms its snap peaks are 12 times rk4's: eq. (2) is 0.62 (a warning); at 25 ms 7.2 (the run fails,
+    its outputs up to then kept)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.run(fall.replace({"simulation.dt": dt})).dataset
+    status, estimate = ds.attrs["status"], ds.attrs["time_error_estimate"]
+    if verdict == "failed":
+        assert status.startswith("failed: the time step does not resolve the motion")
+        assert estimate > time_error.FAILURE and "rerun with dt <= " in status
+        assert 5.0 < ds.time.values[-1] < 9.0                        # stopped after the release, outputs kept
+    else:
+        assert status == "ok"
+        assert time_error.WARNING < estimate < time_error.FAILURE
+        assert "the time step does not resolve the motion" in ds.attrs["notes"]
+    assert ds.attrs["time_error_time"] > 5.0                         # after the release, on the run's clock
+
+
+def test_the_verdict_reads_the_thresholds():
+    record = time_error.empty()
+    record[3:5] = 0.5 * time_error.WARNING, 1.0
+    assert time_error.verdict(record, 0.1, str) is None
+    record[3] = 2.0 * time_error.WARNING
+    kind, text = time_error.verdict(record, 0.1, str)
+    assert kind == "warning" and f"rerun with dt <= {time_error.suggested_step(0.1, record[3]):.3g} s" in text
+    assert time_error.suggested_step(0.1, record[3]) == pytest.approx(0.1 * (time_error.TARGET / record[3]) ** 0.5)
+    record[3] = 2.0 * time_error.FAILURE
+    assert time_error.verdict(record, 0.1, str)[0] == "failure"
