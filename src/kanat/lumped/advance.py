@@ -125,7 +125,8 @@ def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
 
 def time_error_estimate(system) -> np.ndarray:
     """The running maxima of the implicit scheme's local error estimate over ``system``'s run so far
-    (:data:`kanat.lumped.time_error.SIZE`,; zeros before an implicit step), updated in place by the steps."""
+    (:data:`kanat.lumped.time_error.SIZE`,; :func:`kanat.lumped.time_error.empty` before the first step),
+    updated in place by the steps."""
     if getattr(system, "_time_error", None) is None:
         system._time_error = time_error.empty()
     return system._time_error
