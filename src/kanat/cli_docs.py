@@ -45,6 +45,13 @@ ATTRIBUTES = {
     "scheme_*": "the scheme's parameters (`scheme_lambda_inf`, ...)",
     "method_CABLE, grounded_length_CABLE_m": "statics: the method that solved each cable and its length on the seabed",
     "snap_events": "number of slack-to-taut events (lumped model)",
+    "time_error_estimate": "implicit lumped runs: the largest local time-integration error estimate of a step, as a "
+                           "fraction of the step's displacement (lumped.md, \"Time-step error estimate\"); above 0.02 "
+                           "the run warns, above 1 it fails",
+    "time_error_time": "implicit lumped runs: the time of that step [s]",
+    "time_error_displacement": "implicit lumped runs: the largest local displacement error of a node in one step [m]",
+    "time_error_tension": "implicit lumped runs: the largest tension change that displacement error makes, as a "
+                          "fraction of the network's largest tension at that step (an upper bound on stiff lines)",
 }
 """Global attributes of a result file and what they hold (the reference page lists them)."""
 

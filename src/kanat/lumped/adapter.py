@@ -18,16 +18,17 @@ zeros for point bodies).
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from kanat.dynamics import StepFailure, Steps
-from kanat.errors import CaseError, Problem, SolverError
+from kanat.errors import CaseError, CaseWarning, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
-from kanat.lumped import entries, stepping
-from kanat.lumped.advance import HALVING, advance
+from kanat.lumped import entries, stepping, time_error
+from kanat.lumped.advance import HALVING, advance, time_error_estimate
 from kanat.lumped.equilibrium import relaxation_note, starting_state, starting_state_info
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
@@ -259,7 +260,16 @@ class LumpedModel:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
                     f"{t:.6g} s in {net.element_where(k)} (tension {values['segment_tension'][k]:.4g} N); check "
                     "axial_stiffness and the loads, or reduce dt, or set line_types.<name>.max_strain")
-        return self._below_seabed(x, t) or out_of_water(self.case, self.net, x, self.system.sea, t, self._held)
+        return (self._below_seabed(x, t) or out_of_water(self.case, self.net, x, self.system.sea, t, self._held)
+                or self._time_error("failure"))
+
+    def _time_error(self, kind: str) -> str | None:
+        """The implicit scheme's local error estimate's sentence when it is a ``kind`` ("warning" or
+        "failure") of :func:`kanat.lumped.time_error.verdict`; None otherwise and for explicit schemes."""
+        if self.scheme.explicit:
+            return None
+        found = time_error.verdict(time_error_estimate(self.system), self.dt, self.net.element_where)
+        return found[1] if found is not None and found[0] == kind else None
 
     def _below_seabed(self, x, t) -> str | None:
         seabed = self._seabed
@@ -332,8 +342,15 @@ class LumpedModel:
         explicit = _count(state.scheme, "explicit")
         if explicit:
             self.notes.append(HALVING.fallback_note(explicit, "rk4"))
-        return variables, {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations,
-                           "explicit_steps": explicit}
+        attrs = {"snap_events": len(events["time"]), "force_evaluations": self.system.evaluations,
+                 "explicit_steps": explicit}
+        if not self.scheme.explicit:
+            attrs.update(time_error.attributes(time_error_estimate(self.system)))
+            unresolved = self._time_error("warning")
+            if unresolved:
+                self.notes.append(unresolved)
+                warnings.warn(unresolved, CaseWarning, stacklevel=2)
+        return variables, attrs
 
 
 def _count(state: SchemeState, name: str) -> int:

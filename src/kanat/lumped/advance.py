@@ -11,7 +11,9 @@ implicit step whose Newton iteration fails is retaken as compiled half steps (up
 :class:`kanat.step_control.Halving`), and where even those fail, by the explicit ``rk4`` at its
 safe step (:func:`_explicit`, counted in the state's ``explicit`` and said in the run's notes): an
 implicit run never fails where ``rk4`` succeeds. Each scheme's compiled run is found in
-:data:`COMPILED` by its class.
+:data:`COMPILED` by its class. Every implicit step, on either path, also updates the run's
+estimate of its local time-integration error (:mod:`kanat.lumped.time_error`, kept as
+:func:`time_error_estimate`), which only observes.
 """
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from kanat.lumped import entries, fast, fast_implicit, stepping
+from kanat.lumped import entries, fast, fast_implicit, stepping, time_error
 from kanat.lumped.integrators import ABM4, RK4, ExplicitState, GeneralizedAlphaLumped, pack, unpack
 from kanat.step_control import Halving, StepRefused
 
@@ -121,6 +123,15 @@ def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
     return np.ascontiguousarray(pos), np.ascontiguousarray(vel), np.ascontiguousarray(heading)
 
 
+def time_error_estimate(system) -> np.ndarray:
+    """The running maxima of the implicit scheme's local error estimate over ``system``'s run so far
+    (:data:`kanat.lumped.time_error.SIZE`,; :func:`kanat.lumped.time_error.empty` before the first step),
+    updated in place by the steps."""
+    if getattr(system, "_time_error", None) is None:
+        system._time_error = time_error.empty()
+    return system._time_error
+
+
 def _arrays(system) -> FusedArrays:
     if getattr(system, "_fused", None) is None:
         system._fused = FusedArrays(system)
@@ -155,9 +166,16 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions):
 
 
 def _python_steps(scheme, system, state, h, steps, tracker, tensions):
-    """``steps`` of the scheme's own ``step``, the tracker updated after each."""
+    """``steps`` of the scheme's own ``step``, the tracker (and, for generalized-α, the time error
+    estimate) updated after each."""
+    implicit = isinstance(scheme, GeneralizedAlphaLumped)
     for done in range(steps):
+        before = state
         state = scheme.step(system, state, h)
+        if implicit:
+            x, v = system.full(state.t, state.x, state.v)[:2]
+            time_error.observe(time_error_estimate(system), state.t, h, scheme.coefficients, before.x, before.a, state.a,
+                               x, v, system.free_index, system.el_args)
         tracker.update(state.t, tensions(state))
         if not _finite(state):
             return state, done + 1
@@ -236,6 +254,7 @@ def _explicit(system, state, h, tracker):
     xf, vf = (np.array(part) for part in unpack(sub.y))
     a = system.acceleration(sub.t, xf, vf) if done == count else np.full_like(xf, np.nan)
     _arrays(system).tangent[:] = 0.0                    # the implicit factors start afresh
+    time_error.restart(time_error_estimate(system))     # and the error estimate passes over the restart
     return replace(state, t=sub.t, x=xf, v=vf, a=a, explicit=state.explicit + done)
 
 
@@ -253,7 +272,8 @@ def _fused_implicit(scheme, system, state, h, steps, tracker):
     done, iterations, count, failed = entries.implicit_steps(
         t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
         arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
-        arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events)
+        arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events,
+        time_error_estimate(system))
     tracker.absorb(arrays.events[:count].copy())
     system.evaluations += iterations
     return replace(state, t=t0 + done * h, x=x, v=v, a=a), done, iterations, failed

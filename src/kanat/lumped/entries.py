@@ -121,7 +121,7 @@ register("abm4_steps", "kanat.lumped.fast",
          returns=(INT, INT), module="_lumped_explicit")
 register("implicit_steps", "kanat.lumped.fast_implicit",
          *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, Nodes, Elements,
-            bodies, Environment, Work, (F3,) * 5, F4, F1, B1, F2, Snap, F2) for bodies in BODIES),
+            bodies, Environment, Work, (F3,) * 5, F4, F1, B1, F2, Snap, F2, F1) for bodies in BODIES),
          returns=(INT, INT, INT, BOOL), function="steps")
 register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
 register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, Elements, F2, F2, F1, F1),

@@ -35,6 +35,8 @@ CONTRACTION = 0.1           # an increment above this fraction of the one before
 FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
+TENSION_FLOOR = 1.0         # N: the least tension scale of the time-error estimate (kanat.lumped.time_error)
+MOTION_FLOOR = 1e-6         # m per node: the least displacement of a step the time-error estimate divides by
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -344,9 +346,50 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     return -max_iterations
 
 
+@inner
+def perturbed_tensions(t, factor, h, x, a, na, nx, nv, y, s, end_samples, nodes, el, bodies, work, estimate, out):
+    """The local displacement error ``e = factor h^2 (a_n+1 - a_n)`` of each free node at ``t = t_n+1``
+    (:mod:`kanat.lumped.time_error`, eq. 1): its largest norm into ``estimate[0:3]`` (value, time, free node),
+    its 2-norm over the step's displacement's, eq. (2), into ``estimate[3:5]`` (value, time); the element
+    tensions at ``x_n+1 + e`` into ``out`` (m,)."""
+    nf = a.shape[0]
+    c = factor * h * h
+    error, moved = 0.0, 0.0
+    for f in range(nf):
+        size = 0.0
+        for r in range(3):
+            e = c * (na[f, r] - a[f, r])
+            size += e * e
+            moved += (nx[f, r] - x[f, r]) ** 2
+            y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r] + e, nv[f, r]
+        error += size
+        if np.sqrt(size) > estimate[0]:
+            estimate[0], estimate[1], estimate[2] = np.sqrt(size), t, f
+    ratio = np.sqrt(error) / max(np.sqrt(moved), MOTION_FLOOR * np.sqrt(nf))
+    if ratio > estimate[3]:
+        estimate[3], estimate[4] = ratio, t
+    fast.tensions_at(y, s, end_samples, nodes, el, bodies, work)
+    for k in range(out.shape[0]):
+        out[k] = work.tension[k]
+
+
+@inner
+def tension_error(t, tension, perturbed, estimate):
+    """The largest ``|T(x + e) - T(x)| / max(max_k |T_k(x)|, TENSION_FLOOR)`` of a step
+    (:mod:`kanat.lumped.time_error`, eq. 3) into ``estimate[5:10]`` (value, time, element, error [N], scale [N])."""
+    scale = TENSION_FLOOR
+    for k in range(tension.shape[0]):
+        scale = max(scale, abs(tension[k]))
+    for k in range(tension.shape[0]):
+        error = abs(perturbed[k] - tension[k])
+        if error / scale > estimate[5]:
+            estimate[5], estimate[6], estimate[7], estimate[8], estimate[9] = error / scale, t, k, error, scale
+
+
 @kernel
 def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
-          position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, previous, snap, events):
+          position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, previous, snap, events,
+          estimate):
     """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
     Returns (steps done, Newton iterations, events, failed): it stops before a step whose
     Newton iteration fails, before the event buffer could overflow, or on a non-finite state.
@@ -356,10 +399,14 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
     the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
     ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
     calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
-    state and step, else ``a_1 = a``."""
+    state and step, else ``a_1 = a``. ``estimate`` (11,): the running maxima of the local time-integration
+    error estimate (:mod:`kanat.lumped.time_error`), updated after each step; it only observes."""
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
     y = np.empty(6 * nf)
+    perturbed = np.empty(work.tension.shape[0])
+    am, af, gamma, beta = coefficients
+    factor = beta - 1.0 / 6.0 + 0.5 * (am - af)            # time_error eq. 1
     iterations, n_events = 0, np.int64(0)      # not a literal 0: see kanat.jit
     for step in range(count):
         if n_events + work.tension.shape[0] > events.shape[0]:
@@ -375,6 +422,12 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
+        observed = estimate[10] <= 0.0                          # past a start's steps (time_error.START_STEPS)
+        if observed:
+            perturbed_tensions(t + h, factor, h, x, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work,
+                               estimate, perturbed)
+        else:
+            estimate[10] -= 1.0
         for f in range(nf):
             for r in range(3):
                 previous[f, r] = a[f, r]
@@ -382,6 +435,8 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
         tangent[1], tangent[2], tangent[4] = t + h, h, tangent[4] + 1.0
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
+        if observed:
+            tension_error(t + h, work.tension, perturbed, estimate)
         n_events = fast.snap_update(t0 + (step + 1) * h, work.tension, snap, events, n_events)
         if not fast.finite(y):
             return step + 1, iterations, n_events, False

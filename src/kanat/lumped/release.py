@@ -164,7 +164,8 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
         at the release, is the earlier phase's last and is dropped); an anchor let go has no
         ``anchor_force`` (NaN) after its release; the vessel's outputs are the case's vessel at the
         run's times; snap events on the run's clock; the last phase's attributes but for the case
-        itself (``case_yaml``, ``case_sha256``: the case as written, with its releases).
+        itself (``case_yaml``, ``case_sha256``: the case as written, with its releases) and for the
+        implicit scheme's error estimate (``time_error_*``), the phase's with the largest.
     """
     import xarray as xr
 
@@ -185,6 +186,10 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
         values = [ds.attrs.get(key) for _, ds in parts]
         if all(isinstance(v, (int, float, np.integer, np.floating)) for v in values):
             out.attrs[key] = sum(values)
+    worst = max(parts, key=lambda part: part[1].attrs.get("time_error_estimate", -1.0))   # the implicit scheme's
+    if "time_error_estimate" in worst[1].attrs:                                          # largest error estimate
+        out.attrs.update({k: v for k, v in worst[1].attrs.items() if k.startswith("time_error_")})
+        out.attrs["time_error_time"] = worst[1].attrs["time_error_time"] + worst[0].start
     for name in ("s", "cable", "segment_cable", "segment_length", "cable_name"):
         if name in first.coords:
             out = out.assign_coords({name: first[name]})

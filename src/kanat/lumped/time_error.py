@@ -1,0 +1,167 @@
+"""A posteriori estimate of the implicit lumped scheme's local time-integration error.
+
+For Newmark's scheme, Zienkiewicz & Xie (1991, "A simple error estimator and adaptive time
+stepping procedure for dynamic analysis", Earthquake Eng. Struct. Dyn. 20, 871-887) compare its
+displacement update with the Taylor series of the exact motion: with ``a_n+1 - a_n = h a' + O(h^2)``
+the update ``x_n+1 = x_n + h v_n + h^2 ((1/2 - beta) a_n + beta a_n+1)`` differs from
+``x(t_n+1)`` by ``(beta - 1/6) h^3 a'``. In the generalized-α family (Chung & Hulbert 1993) the
+algorithmic acceleration ``a_n`` approximates ``a(t_n + (alpha_m - alpha_f) h)`` (the shift that
+makes the scheme second order, ``gamma = 1/2 - alpha_m + alpha_f``), which adds
+``(alpha_m - alpha_f)/2 h^3 a'`` to the update. The estimate for the family follows (derived as
+Hulbert & Jang 1995, "Automatic time step control algorithms for structural dynamics", Comput.
+Methods Appl. Mech. Eng. 126, 155-178, derive theirs; ``tests/lumped/test_time_error.py`` checks it
+against the exact local error of an oscillator, to 2 %)::
+
+    (1)  e_n+1 = (beta - 1/6 + (alpha_m - alpha_f) / 2) h^2 (a_n+1 - a_n)     per free node [m]
+
+(Newmark's ``beta - 1/6`` for ``alpha_m = alpha_f = 0``; 1/9 for the lumped default, WBZ-α with
+``rho_inf = 0.5``). The local error is ``O(h^3)`` where the motion is smooth: halving the step
+divides it by 8 (and the run's accumulated, global, error by 4). It is judged against the step's own
+motion, over the whole network::
+
+    (2)  eta_n+1 = ||e_n+1|| / max(||x_n+1 - x_n||, 1e-6 m sqrt(n_free))    (2-norms over the free nodes)
+
+and the run keeps its largest value: a relative error of the step's displacement, small where the
+step follows the motion, near or above 1 where the motion within a step is not the one the step
+takes (a snap, a slap on the seabed, a start the scheme damps). What the error would do to the
+tensions is measured too, not linearised: the tensions at ``x_n+1 + e_n+1`` against those at
+``x_n+1``, relative to the network's largest tension at that step::
+
+    (3)  r_n+1 = max_k |T_k(x_n+1 + e_n+1) - T_k(x_n+1)| / max(max_k |T_k(x_n+1)|, 1 N)
+
+Eq. (3) is an upper bound, not an estimate, on stiff lines: an axial part of ``e`` is not an error the
+run keeps (the stiff axial modes, far above ``1/h``, sit at their quasi-static place after every
+step), so it only reads the displacement error in newtons; the verdicts are taken on eq. (2).
+
+All three only observe: the steps are those of the scheme, bit for bit. The run keeps their maxima
+over its steps, with where and when (:data:`SIZE` numbers, as the compiled steps keep them:
+:func:`kanat.lumped.fast_implicit.steps`), and reports them as ``time_error_*`` attributes
+(:func:`attributes`). The thresholds on eq. (2), :data:`WARNING` and :data:`FAILURE`, are measured
+(docs/lumped.md, "Time-step error estimate"; ``tests/lumped/test_time_error.py``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kanat.lumped import entries
+from kanat.lumped.fast_implicit import MOTION_FLOOR, TENSION_FLOOR
+
+WARNING = 0.02
+"""Eq. (2) above which a run carries a note and a :class:`~kanat.errors.CaseWarning`. Measured (largest
+over the run, after a start's steps): resolved runs 1e-3 (``examples/lazy_wave.yaml`` at its 0.05 s) and
+0.0094 (MoorDyn's WD0050 chain driven at its fairlead, the default 0.1 s: fairlead tension within 0.5 % of
+MoorDyn's, all tensions within 1.2 % of the largest at 0.05 s); unresolved runs 0.043 (WHOI seatex's chain in
+a 1 m wave at its 0.05 s, snap peaks 45 % of the largest tension apart at dt/2) and 0.09 (WHOI breaking's
+cable falling slack after its release, at 0.25 s; 0.12 at 0.125 s: tensions 87 % apart)."""
+FAILURE = 1.0
+"""Eq. (2) above which the run fails (at the output after the step): the step's error is as large as its
+displacement, no motion at all. Below it the measured unresolved runs warn: 0.62 for a released 20 m wire
+falling through its own slack at 10 ms (axial period 3.6 ms; snap peaks 12 times rk4's,
+``tests/lumped/test_lumped_snap_step.py``), 0.12 at most for WHOI breaking."""
+TARGET = 0.5 * WARNING
+"""The eq. (2) a suggested step aims at."""
+SIZE = 11
+"""The record's length: the largest eq. (1) [m], its time [s], free node; eq. (2), its time [s]; eq. (3), its
+time [s], element, tension change [N], tension scale [N]; the start's steps still to pass over."""
+START_STEPS = 10
+"""Steps after a start (the run's, or the implicit scheme's restart after explicit steps) the estimate passes
+over. Eq. (1) needs the scheme's own accelerations, and a start hands it the equations' (the algorithmic
+``a_n`` lags them by ``(alpha_m - alpha_f) h``): their difference is a transient the scheme damps by
+``rho_inf`` a step, 1e-3 after ten steps at the default 0.5. Measured at the start of runs from rest: eq. (2)
+is 0.25 on the first step whatever the step (``(beta - 1/6 + alpha_m/2) / beta``: a step from rest moves
+by ``beta h^2 a_1``), 0.03-0.06 on the second to fourth, below 0.01 from the fifth (lazy_wave, WD0050)."""
+
+
+def error_factor(coefficients) -> float:
+    """The factor of eq. (1) for ``(alpha_m, alpha_f, gamma, beta)``."""
+    am, af, _, beta = coefficients
+    return beta - 1.0 / 6.0 + 0.5 * (am - af)
+
+
+def empty() -> np.ndarray:
+    """A record (:data:`SIZE`,) before the first step."""
+    record = np.zeros(SIZE)
+    restart(record)
+    return record
+
+
+def restart(estimate) -> None:
+    """Pass over the next :data:`START_STEPS` steps (after a start)."""
+    estimate[10] = START_STEPS
+
+
+def observe(estimate, t, h, coefficients, x0, a0, a1, x, v, free_index, el) -> None:
+    """Update ``estimate`` with one step (the Python path; the compiled twin is
+    :func:`kanat.lumped.fast_implicit.steps`).
+
+    Parameters
+    ----------
+    estimate : ndarray (SIZE,)
+        Running maxima, updated in place.
+    t, h : float
+        The step's end ``t_n+1`` and its size [s].
+    coefficients : tuple
+        ``(alpha_m, alpha_f, gamma, beta)``.
+    x0 : ndarray (n_free, 3)
+        The free nodes' positions at ``t_n`` [m].
+    a0, a1 : ndarray (n_free, 3)
+        The free nodes' algorithmic accelerations at ``t_n`` and ``t_n+1`` [m/s^2].
+    x, v : ndarray (n, 3)
+        All nodes' positions and velocities at ``t_n+1``.
+    free_index : ndarray (n_free,)
+    el : kanat.lumped.entries.Elements
+    """
+    if estimate[10] > 0.0:
+        estimate[10] -= 1.0
+        return
+    e = error_factor(coefficients) * h * h * (np.asarray(a1) - np.asarray(a0))       # eq. (1)
+    size = np.linalg.norm(e, axis=1)
+    if not len(size):
+        return
+    f = int(np.argmax(size))
+    if size[f] > estimate[0]:
+        estimate[0:3] = size[f], t, f
+    moved = np.linalg.norm(x[free_index] - np.asarray(x0))
+    ratio = np.linalg.norm(e) / max(moved, MOTION_FLOOR * np.sqrt(len(size)))          # eq. (2)
+    if ratio > estimate[3]:
+        estimate[3:5] = ratio, t
+    tension, shifted_tension = np.empty(el.length.shape[0]), np.empty(el.length.shape[0])
+    entries.tensions(x, v, el, tension)
+    shifted = np.array(x, dtype=float)
+    shifted[free_index] += e
+    entries.tensions(shifted, v, el, shifted_tension)
+    scale = max(float(np.max(np.abs(tension), initial=0.0)), TENSION_FLOOR)
+    error = np.abs(shifted_tension - tension)                                          # eq. (3)
+    k = int(np.argmax(error)) if len(error) else 0
+    if len(error) and error[k] / scale > estimate[5]:
+        estimate[5:10] = error[k] / scale, t, k, error[k], scale
+
+
+def suggested_step(h: float, relative: float) -> float:
+    """The step that would bring eq. (2) to :data:`TARGET`: ``e`` scales as ``h^3`` and a step's displacement
+    as ``h``, so eq. (2) as ``h^2``."""
+    return h * (TARGET / relative) ** 0.5 if relative > TARGET else h
+
+
+def attributes(estimate) -> dict:
+    """The result attributes of a run's estimate (docs/results.md)."""
+    return {"time_error_estimate": float(estimate[3]), "time_error_time": float(estimate[4]),
+            "time_error_displacement": float(estimate[0]), "time_error_tension": float(estimate[5])}
+
+
+def verdict(estimate, h: float, where) -> tuple[str, str] | None:
+    """``("warning" | "failure", sentence)`` when eq. (2) is past :data:`WARNING`, else None; ``where(k)``
+    names element ``k``."""
+    relative = float(estimate[3])
+    if relative <= WARNING:
+        return None
+    kind = "failure" if relative > FAILURE else "warning"
+    limit = FAILURE if kind == "failure" else WARNING
+    return kind, (
+        f"the time step does not resolve the motion: the implicit scheme's local time-integration error estimate "
+        f"at dt {h:.4g} s is {100 * relative:.3g} % of a step's displacement at t = {estimate[4]:.6g} s (more than "
+        f"{100 * limit:g} %; a node's largest error in one step is {estimate[0]:.3g} m, at t = {estimate[1]:.6g} s, "
+        f"and tensions at the positions plus the error differ by up to {estimate[8]:.4g} N, in "
+        f"{where(int(estimate[7]))}: an upper bound where lines are stiff); rerun with dt <= "
+        f"{suggested_step(h, relative):.3g} s (the local error falls as dt^3, this ratio as dt^2, where the motion "
+        "is smooth; through snaps, below the shortest axial nodal period) or scheme rk4")
