@@ -81,7 +81,7 @@ STORM = 10800.0                         # s: the MPM's exposure
 TOLERANCE = np.array([0.01, 0.03, 0.03, 0.03])    # mean, std, maximum, MPM
 STATS = ("mean", "std", "max", "MPM")
 
-CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK4", 0.008),
+CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK2", 0.003), ("MoorDyn", "RK4", 0.008),
            ("kanat", "default", None)]
 
 MOORDYN_SCRIPT = """
@@ -274,6 +274,26 @@ def run_moordyn(scheme: str, dt: float, input_path: Path, motion_path: Path, fol
     return whole, cpu, json.loads(report[-1])["stepping"], np.load(out), {}
 
 
+def _stored(folder: Path, config, duration: float) -> Path:
+    code, scheme, dt = config
+    return folder / f"{code}_{scheme}_{dt}_{duration:g}.json"
+
+
+def save_runs(folder: Path, config, duration: float, runs: list) -> None:
+    """Keep a configuration's runs (times, tension series or failure message, step) for later tables."""
+    folder.mkdir(parents=True, exist_ok=True)
+    rows = [[w, c, s, x if isinstance(x, str) else x.tolist(), e] for w, c, s, x, e in runs]
+    _stored(folder, config, duration).write_text(json.dumps(rows))
+
+
+def load_runs(folder: Path, config, duration: float) -> list:
+    """The runs :func:`save_runs` kept for ``config`` at ``duration``, or an empty list."""
+    path = _stored(folder, config, duration)
+    if not path.exists():
+        return []
+    return [(w, c, s, x if isinstance(x, str) else np.array(x), e) for w, c, s, x, e in json.loads(path.read_text())]
+
+
 def statistics(series: np.ndarray, transient: float) -> np.ndarray:
     """Mean, standard deviation, maximum and 3-hour Rayleigh MPM of each fairlead tension after
     ``transient``: shape (3, 4) [N]."""
@@ -289,6 +309,10 @@ def main() -> None:
     parser.add_argument("--duration", type=float, default=STORM, help="simulated time [s]")
     parser.add_argument("--transient", type=float, default=200.0, help="start-up left out of the statistics [s]")
     parser.add_argument("--repeats", type=int, default=1)
+    parser.add_argument("--store", type=Path, help="keep each configuration's runs in this folder and reuse "
+                        "those already there (same duration): the reference takes hours")
+    parser.add_argument("--only", default="", help="run only the configurations whose label code-scheme-step starts "
+                        "with one of these, comma-separated (MoorDyn, kanat, MoorDyn-RK2-0.001, ...)")
     parser.add_argument("--write-raos", action="store_true", help=f"write {RAOS.relative_to(ROOT)} and stop")
     args = parser.parse_args()
     if args.write_raos:
@@ -307,23 +331,34 @@ def main() -> None:
     input_path = moordyn_file(folder, case)
     runs = {c: [] for c in CONFIGS}
     results, extras = {}, {}
+    stored = {c: load_runs(args.store, c, args.duration) for c in CONFIGS} if args.store else {}
     for _ in range(args.repeats):                                   # interleaved
         for config in CONFIGS:
             code, scheme, dt = config
+            if stored.get(config) or not f"{code}-{scheme}-{dt}".startswith(tuple(args.only.split(","))):
+                continue
             if code == "kanat":
-                whole, cpu, stepping, series, extra = run_kanat(case_path, folder)
+                path = case_path if scheme == "default" else write_case(folder, args.duration, scheme, dt)
+                whole, cpu, stepping, series, extra = run_kanat(path, folder)
             else:
                 whole, cpu, stepping, series, extra = run_moordyn(scheme, dt, input_path, motion_path, folder)
-            runs[config].append((whole, cpu, stepping))
-            results[config] = statistics(series, args.transient) if not isinstance(series, str) else series
-            extras[config] = extra
+            runs[config].append((whole, cpu, stepping, series, extra))
+    for config in CONFIGS:
+        runs[config] = stored.get(config) or runs[config]
+        if args.store and runs[config] and not stored.get(config):
+            save_runs(args.store, config, args.duration, runs[config])
+    runs = {c: r for c, r in runs.items() if r}
+    for config, done in runs.items():
+        series, extras[config] = done[-1][3], done[-1][4]
+        results[config] = statistics(series, args.transient) if not isinstance(series, str) else series
+        runs[config] = [r[:3] for r in done]
     print_table(runs, results, extras, args.duration)
     print(f"\nfairlead motion for MoorDyn computed with kanat's API in {drive_time:.1f} s (not in MoorDyn's times); "
           f"fairlead surge/heave std {positions[:, 0].std():.2f} m / {positions[:, 2].std():.2f} m")
 
 
 def print_table(runs, results, extras, duration: float) -> None:
-    reference = results[CONFIGS[0]]
+    reference = results.get(CONFIGS[0], "not run (no stored run either)")
     if isinstance(reference, str):
         print(f"the reference failed: {reference}")
         return
@@ -332,13 +367,13 @@ def print_table(runs, results, extras, duration: float) -> None:
         return not isinstance(results[config], str) and bool(np.all(
             np.abs(results[config] / reference - 1.0) <= TOLERANCE))
 
-    medians = {c: np.median(np.array(runs[c]), axis=0) for c in CONFIGS}
-    best = min(medians[c][1] for c in CONFIGS if c[0] == "MoorDyn" and accurate(c))
+    medians = {c: np.median(np.array(runs[c]), axis=0) for c in runs}
+    best = min(medians[c][1] for c in runs if c[0] == "MoorDyn" and accurate(c))
     hours = duration / 3600.0
     print("| code | scheme | step [s] | whole process [s] | CPU [s] | CPU per simulated hour [s] | stepping [s] | "
           "vs best MoorDyn (CPU) | " + " | ".join(f"{s}, max rel. diff." for s in STATS) + " |")
     print("|---|---|---|---|---|---|---|---|" + "---|" * len(STATS))
-    for config in CONFIGS:
+    for config in runs:
         code, scheme, dt = config
         whole, cpu, stepping = medians[config]
         if isinstance(results[config], str):
