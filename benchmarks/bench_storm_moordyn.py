@@ -50,8 +50,11 @@ the largest relative difference over the three legs against MoorDyn at its file'
 (RK2, 1 ms). MoorDyn's faster settings count as "best MoorDyn" only within 1 % of that reference
 in mean and 3 % in standard deviation and maximum.
 
-Run: ``python benchmarks/bench_storm_moordyn.py [--duration 10800] [--repeats 1]``; prints the
-Markdown table kept in benchmarks/RESULTS.md.
+Run: ``python benchmarks/bench_storm_moordyn.py [--duration 10800] [--repeats 1] [--store DIR]
+[--only LABELS]``; prints the Markdown table kept in benchmarks/RESULTS.md. ``--store`` keeps each
+configuration's runs in DIR and reuses them in later tables (the 1 ms reference costs about five
+CPU-hours per simulated hour); ``--only MoorDyn-RK2-0.001,kanat`` runs the configurations whose
+label ``code-scheme-step`` starts with one of those, so that several processes can share them out.
 """
 from __future__ import annotations
 
@@ -81,8 +84,10 @@ STORM = 10800.0                         # s: the MPM's exposure
 TOLERANCE = np.array([0.01, 0.03, 0.03, 0.03])    # mean, std, maximum, MPM
 STATS = ("mean", "std", "max", "MPM")
 
-CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK4", 0.008),
-           ("kanat", "default", None)]
+CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK2", 0.003), ("MoorDyn", "RK2", 0.004),
+           ("MoorDyn", "RK4", 0.008),
+           ("kanat", "default", None), ("kanat", "generalized-alpha-lumped", 0.05),
+           ("kanat", "generalized-alpha-lumped", 0.025)]
 
 MOORDYN_SCRIPT = """
 import json, sys, time
@@ -274,6 +279,26 @@ def run_moordyn(scheme: str, dt: float, input_path: Path, motion_path: Path, fol
     return whole, cpu, json.loads(report[-1])["stepping"], np.load(out), {}
 
 
+def _stored(folder: Path, config, duration: float) -> Path:
+    code, scheme, dt = config
+    return folder / f"{code}_{scheme}_{dt}_{duration:g}.json"
+
+
+def save_runs(folder: Path, config, duration: float, runs: list) -> None:
+    """Keep a configuration's runs (times, tension series or failure message, step) for later tables."""
+    folder.mkdir(parents=True, exist_ok=True)
+    rows = [[w, c, s, x if isinstance(x, str) else x.tolist(), e] for w, c, s, x, e in runs]
+    _stored(folder, config, duration).write_text(json.dumps(rows))
+
+
+def load_runs(folder: Path, config, duration: float) -> list:
+    """The runs :func:`save_runs` kept for ``config`` at ``duration``, or an empty list."""
+    path = _stored(folder, config, duration)
+    if not path.exists():
+        return []
+    return [(w, c, s, x if isinstance(x, str) else np.array(x), e) for w, c, s, x, e in json.loads(path.read_text())]
+
+
 def statistics(series: np.ndarray, transient: float) -> np.ndarray:
     """Mean, standard deviation, maximum and 3-hour Rayleigh MPM of each fairlead tension after
     ``transient``: shape (3, 4) [N]."""
@@ -289,6 +314,10 @@ def main() -> None:
     parser.add_argument("--duration", type=float, default=STORM, help="simulated time [s]")
     parser.add_argument("--transient", type=float, default=200.0, help="start-up left out of the statistics [s]")
     parser.add_argument("--repeats", type=int, default=1)
+    parser.add_argument("--store", type=Path, help="keep each configuration's runs in this folder and reuse "
+                        "those already there (same duration): the reference takes hours")
+    parser.add_argument("--only", default="", help="run only the configurations whose label code-scheme-step starts "
+                        "with one of these, comma-separated (MoorDyn, kanat, MoorDyn-RK2-0.001, ...)")
     parser.add_argument("--write-raos", action="store_true", help=f"write {RAOS.relative_to(ROOT)} and stop")
     args = parser.parse_args()
     if args.write_raos:
@@ -307,23 +336,34 @@ def main() -> None:
     input_path = moordyn_file(folder, case)
     runs = {c: [] for c in CONFIGS}
     results, extras = {}, {}
+    stored = {c: load_runs(args.store, c, args.duration) for c in CONFIGS} if args.store else {}
     for _ in range(args.repeats):                                   # interleaved
         for config in CONFIGS:
             code, scheme, dt = config
+            if stored.get(config) or not f"{code}-{scheme}-{dt}".startswith(tuple(args.only.split(","))):
+                continue
             if code == "kanat":
-                whole, cpu, stepping, series, extra = run_kanat(case_path, folder)
+                path = case_path if scheme == "default" else write_case(folder, args.duration, scheme, dt)
+                whole, cpu, stepping, series, extra = run_kanat(path, folder)
             else:
                 whole, cpu, stepping, series, extra = run_moordyn(scheme, dt, input_path, motion_path, folder)
-            runs[config].append((whole, cpu, stepping))
-            results[config] = statistics(series, args.transient) if not isinstance(series, str) else series
-            extras[config] = extra
+            runs[config].append((whole, cpu, stepping, series, extra))
+    for config in CONFIGS:
+        runs[config] = stored.get(config) or runs[config]
+        if args.store and runs[config] and not stored.get(config):
+            save_runs(args.store, config, args.duration, runs[config])
+    runs = {c: r for c, r in runs.items() if r}
+    for config, done in runs.items():
+        series, extras[config] = done[-1][3], done[-1][4]
+        results[config] = statistics(series, args.transient) if not isinstance(series, str) else series
+        runs[config] = [r[:3] for r in done]
     print_table(runs, results, extras, args.duration)
     print(f"\nfairlead motion for MoorDyn computed with kanat's API in {drive_time:.1f} s (not in MoorDyn's times); "
           f"fairlead surge/heave std {positions[:, 0].std():.2f} m / {positions[:, 2].std():.2f} m")
 
 
 def print_table(runs, results, extras, duration: float) -> None:
-    reference = results[CONFIGS[0]]
+    reference = results.get(CONFIGS[0], "not run (no stored run either)")
     if isinstance(reference, str):
         print(f"the reference failed: {reference}")
         return
@@ -332,13 +372,13 @@ def print_table(runs, results, extras, duration: float) -> None:
         return not isinstance(results[config], str) and bool(np.all(
             np.abs(results[config] / reference - 1.0) <= TOLERANCE))
 
-    medians = {c: np.median(np.array(runs[c]), axis=0) for c in CONFIGS}
-    best = min(medians[c][1] for c in CONFIGS if c[0] == "MoorDyn" and accurate(c))
+    medians = {c: np.median(np.array(runs[c]), axis=0) for c in runs}
+    best = min(medians[c][1] for c in runs if c[0] == "MoorDyn" and accurate(c))
     hours = duration / 3600.0
     print("| code | scheme | step [s] | whole process [s] | CPU [s] | CPU per simulated hour [s] | stepping [s] | "
           "vs best MoorDyn (CPU) | " + " | ".join(f"{s}, max rel. diff." for s in STATS) + " |")
     print("|---|---|---|---|---|---|---|---|" + "---|" * len(STATS))
-    for config in CONFIGS:
+    for config in runs:
         code, scheme, dt = config
         whole, cpu, stepping = medians[config]
         if isinstance(results[config], str):
@@ -347,6 +387,8 @@ def print_table(runs, results, extras, duration: float) -> None:
             continue
         diff = np.abs(results[config] / reference - 1.0).max(axis=0)
         step = f"{extras[config]['dt']:.4g}" if extras[config] else f"{dt:g}"
+        if code == "kanat" and scheme == "default":
+            scheme = f"default ({extras[config]['scheme']})"
         off = "" if code == "kanat" or accurate(config) else " (outside the tolerances: not a candidate)"
         print(f"| {code} | {scheme} | {step} | {whole:.1f} | {cpu:.1f} | {cpu / hours:.1f} | {stepping:.1f} | "
               f"{best / cpu:.2f}x{off} | " + " | ".join(f"{100 * d:.2f} %" for d in diff) + " |")

@@ -55,14 +55,47 @@ def current_at(z, cz, cu, scale, u, p):
         u[p, r] = scale * (cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0))
 
 
+QUARTER_TURN = (1.5707963267341256, 6.077100506303966e-11, 2.0222662487959506e-21)
+"""``pi / 2`` split in three (the first two of 33 bits: ``n`` times them is exact for ``|n| < 2^20``);
+fdlibm's ``pio2_1``, ``pio2_2``, ``pio2_2t`` (e_rem_pio2.c)."""
+TWO_OVER_PI = 0.6366197723675814
+SINCOS_REACH = 1.0e6           # |theta| [rad] below which sincos's reduction is exact (n < 2^20 quarter turns)
+SIN_TAYLOR = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0, -1.0 / 39916800.0, 1.0 / 6227020800.0,
+              -1.0 / 1307674368000.0, 1.0 / 355687428096000.0)    # x^3 ... x^17: truncation < 1e-19 at pi/4
+COS_TAYLOR = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0, -1.0 / 3628800.0, 1.0 / 479001600.0,
+              -1.0 / 87178291200.0, 1.0 / 20922789888000.0, -1.0 / 6402373705728000.0)   # x^2 ... x^18
+
+
 @inner
-def stretched(x, y, z, t, sea):
-    """The height whose kinematics the point ``(x, y, z)`` takes (waves eq. 7; ``z`` itself
-    without stretching)."""
-    depth, wheeler = sea[6], sea[8]
+def sincos(theta):
+    """``(cos theta, sin theta)`` from one reduction: ``theta = n pi / 2 + r`` with ``|r| <= pi / 4``
+    (Cody & Waite 1980, *Software Manual for the Elementary Functions*, ch. 8: ``pi / 2`` in three
+    parts, :data:`QUARTER_TURN`), the Taylor series of ``sin r`` and ``cos r`` to ``r^17`` and ``r^18``,
+    and the quadrant ``n mod 4``, for ``|theta| <= SINCOS_REACH``. Within an ulp or two of ``math.cos``
+    and ``math.sin``; one reduction instead of two, and no library call (a loop of them vectorizes)."""
+    n = math.floor(theta * TWO_OVER_PI + 0.5)
+    r = ((theta - n * QUARTER_TURN[0]) - n * QUARTER_TURN[1]) - n * QUARTER_TURN[2]
+    r2 = r * r
+    ps = SIN_TAYLOR[7]
+    for i in range(6, -1, -1):
+        ps = SIN_TAYLOR[i] + r2 * ps
+    pc = COS_TAYLOR[8]
+    for i in range(7, -1, -1):
+        pc = COS_TAYLOR[i] + r2 * pc
+    s, c = r + r * r2 * ps, 1.0 + r2 * pc
+    quadrant = np.int64(n) & 3
+    odd = (quadrant & 1) == 1
+    cos_sign = -1.0 if ((quadrant + 1) & 2) == 2 else 1.0
+    sin_sign = -1.0 if (quadrant & 2) == 2 else 1.0
+    return cos_sign * (s if odd else c), sin_sign * (c if odd else s)
+
+
+@inner
+def stretched(z, eta, depth, wheeler):
+    """The height whose kinematics a point at height ``z`` under the surface ``eta`` takes (waves
+    eq. 7; ``z`` itself without stretching)."""
     if wheeler <= 0.0:
         return z
-    eta = sea_elevation(x, y, t, sea)
     if z > eta:
         return 0.0
     if depth <= 0.0:
@@ -71,31 +104,62 @@ def stretched(x, y, z, t, sea):
 
 
 @inner
-def sea_add(x, y, z, t, sea, u, a, p):
+def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
     """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5,
-    stretched by eq. 7 and ramped by eq. 8)."""
+    stretched by eq. 7 and ramped by eq. 8).
+
+    ``spare`` (4, n) holds the point-independent factors of the ``n`` components at ``t``
+    (:func:`sea_factors`) and, in its last two rows, room for ``cos theta_j`` and ``sin theta_j``:
+    each phase's cosine and sine are taken once, for the elevation of eq. (7) and for eqs. (3)-(4), by
+    :func:`sincos` where every phase is within its reach (``reach``: a bound on ``|theta_j| - k_j |x, y|``
+    from :func:`sea_factors`), by ``math`` beyond.
+    In finite depth ``C`` and ``S`` of eq. (5) come from one exponential,
+    ``C, S = (E +- e^{-2 k h} / E) / (1 - e^{-2 k h})`` with ``E = e^{k z}``.
+    """
     amp, omega, k, cosd, sind, phase, depth, inv = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5], sea[6], sea[7]
-    ramp = ramp_at(t, sea[9])
-    if amp.shape[0] > 0:
-        z = stretched(x, y, z, t, sea)
-    for j in range(amp.shape[0]):
-        theta = k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j]
+    ramp, n = ramp_at(t, sea[9]), amp.shape[0]
+    deep, wt, ct, st = spare[0], spare[1], spare[2], spare[3]
+    eta = 0.0
+    if reach[0] * (abs(x) + abs(y)) + reach[1] <= SINCOS_REACH:
+        for j in range(n):
+            ct[j], st[j] = sincos(k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j])
+            eta += amp[j] * ct[j]
+    else:
+        for j in range(n):
+            theta = k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j]
+            ct[j], st[j] = math.cos(theta), math.sin(theta)
+            eta += amp[j] * ct[j]
+    if n > 0:
+        z = stretched(z, ramp * eta, depth, sea[8])
+    zc = min(z, 0.0) if depth <= 0.0 else min(max(z, -depth), 0.0)
+    for j in range(n):
+        e = math.exp(k[j] * zc)
         if depth <= 0.0:
-            c = math.exp(k[j] * min(z, 0.0))
-            s = c
+            c, s = e, e
         else:
-            zc = min(max(z, -depth), 0.0)
-            below = math.exp(-2.0 * k[j] * (zc + depth))
-            scale = math.exp(k[j] * zc) * inv[j]
-            c, s = scale * (1.0 + below), scale * (1.0 - below)
+            low = deep[j] / e if e > 0.0 else 0.0           # e^{-k (z + 2 h)}
+            c, s = (e + low) * inv[j], (e - low) * inv[j]
         aw, aw2 = ramp * amp[j] * omega[j], ramp * amp[j] * omega[j] * omega[j]
-        ct, st = math.cos(theta), math.sin(theta)
-        u[p, 0] += c * ct * aw * cosd[j]
-        u[p, 1] += c * ct * aw * sind[j]
-        u[p, 2] += s * st * aw
-        a[p, 0] += c * st * aw2 * cosd[j]
-        a[p, 1] += c * st * aw2 * sind[j]
-        a[p, 2] -= s * ct * aw2
+        u[p, 0] += c * ct[j] * aw * cosd[j]
+        u[p, 1] += c * ct[j] * aw * sind[j]
+        u[p, 2] += s * st[j] * aw
+        a[p, 0] += c * st[j] * aw2 * cosd[j]
+        a[p, 1] += c * st[j] * aw2 * sind[j]
+        a[p, 2] -= s * ct[j] * aw2
+
+
+@inner
+def sea_factors(t, sea, spare, reach):
+    """Fill ``spare[0]`` with ``e^{-2 k_j h}`` (finite depth) and ``spare[1]`` with ``omega_j t``,
+    the factors :func:`sea_add` shares between points at one instant, and ``reach`` with
+    ``max k_j`` and ``max |omega_j t| + |phi_j|`` (``|theta_j|`` is at most the first times
+    ``|x| + |y|`` plus the second)."""
+    k, omega, phase, depth = sea[2], sea[1], sea[5], sea[6]
+    reach[0], reach[1] = 0.0, 0.0
+    for j in range(k.shape[0]):
+        spare[0, j] = math.exp(-2.0 * k[j] * depth) if depth > 0.0 else 0.0
+        spare[1, j] = omega[j] * t
+        reach[0], reach[1] = max(reach[0], k[j]), max(reach[1], abs(spare[1, j]) + abs(phase[j]))
 
 
 @inner
@@ -113,11 +177,13 @@ def water(points, t, cz, cu, current_ramp, sea, u, a):
     """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current (ramped over
     ``current_ramp`` seconds) + waves."""
     scale = ramp_at(t, current_ramp)
+    spare, reach = np.empty((4, sea[0].shape[0])), np.empty(2)
+    sea_factors(t, sea, spare, reach)
     for p in range(points.shape[0]):
         current_at(points[p, 2], cz, cu, scale, u, p)
         for r in range(3):
             a[p, r] = 0.0
-        sea_add(points[p, 0], points[p, 1], points[p, 2], t, sea, u, a, p)
+        sea_add(points[p, 0], points[p, 1], points[p, 2], t, sea, spare, reach, u, a, p)
 
 
 # --- vessel ----------------------------------------------------------------------------------
