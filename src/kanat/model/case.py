@@ -232,6 +232,15 @@ class Case(KanatModel):
 
         return replaced(self, changes)
 
+    def with_seabed_contact(self) -> Case:
+        """This case with :meth:`Environment.with_seabed_contact`: the seabed the models apply (the
+        lumped model takes its case through this, so that a case with ``depth`` alone has contact
+        with the default seabed in every model). This case itself when nothing changes."""
+        environment = self.environment.with_seabed_contact()
+        if environment is self.environment:
+            return self
+        return self.model_copy(update={"environment": environment})
+
     @model_validator(mode="after")
     def _cross_references(self) -> Case:
         messages = reference_errors(self)
