@@ -196,17 +196,26 @@ def _lowest_reach(case: Case, cables: list[int]) -> float | None:
     return min(heights) if lift > weight else min(heights) - length
 
 
-def _seabed_reach(case: Case) -> list[Use]:
+def seabed_reacher(case: Case) -> str | None:
+    """The name of the first cable whose network can reach the seabed at ``z = -depth``
+    (:func:`_lowest_reach`), or None (none can, or no ``depth``)."""
     depth = case.environment.depth
-    if depth is None or case.environment.seabed is not None:
-        return []
+    if depth is None:
+        return None
     for group in _networks(case):
         reach = _lowest_reach(case, group)
         if reach is None or reach < -depth * (1 + 1e-9):
-            name = case.cables[group[0]].name
-            return [(("environment", "depth"), f" (cable '{name}' can reach the seabed "
-                     f"at z = {fmt(-depth)} m)")]
-    return []
+            return case.cables[group[0]].name
+    return None
+
+
+def _seabed_reach(case: Case) -> list[Use]:
+    if case.environment.seabed is not None:
+        return []
+    name = seabed_reacher(case)
+    if name is None:
+        return []
+    return [(("environment", "depth"), f" (cable '{name}' can reach the seabed at z = {fmt(-case.environment.depth)} m)")]
 
 
 def _line_type_key(key: str, test) -> Callable[[Case], list[Use]]:
