@@ -27,8 +27,10 @@ matrix ``D`` minimising the mean square error of ``f(U + w) - f(U) - D w``:
   (one harmonic: the describing function above). The Gaussian rule would take the sum of a few
   sinusoids for a Gaussian of their variance, whose ``E|w|`` is ``sqrt(8/pi) sigma`` against a
   sinusoid's ``8/(3 pi) a``: 33 % too much drag on a dominant harmonic;
-* **many harmonics** (more than :data:`SINUSOIDS`): at each pair the :data:`SINUSOIDS` largest
-  harmonics (by ``|W_f|`` there) stay sinusoids and the others are taken together as a Gaussian
+* **many harmonics** (more than :data:`SINUSOIDS`): the :data:`SINUSOIDS` largest harmonics (by
+  ``sum_p |W_f|^2`` over all pairs, :func:`largest_harmonics`: chosen per pair, they flipped between
+  nearly equal harmonics from one iteration of the response to the next, which then did not
+  converge) stay sinusoids and the others are taken together as a Gaussian
   ``r`` of their covariance ``Sigma_r = sum_rest Re(W_g W_g^H) / 2``, the sinusoids-plus-Gaussian
   input of Gelb & Vander Velde 1968 (ch. 5)::
 
@@ -288,25 +290,35 @@ def _torus_samples(n: int) -> np.ndarray:
     return 2.0 * np.pi * qmc.Sobol(d=n, scramble=True, seed=0).random(HARMONIC_SAMPLES)
 
 
-def harmonic_describing(pairs: DragPairs, amplitudes: np.ndarray) -> np.ndarray:
+def largest_harmonics(amplitudes: np.ndarray) -> np.ndarray:
+    """The :data:`SINUSOIDS` harmonics of eq. (4) (k,): the largest by ``sum_p |W_f|^2`` over the pairs
+    of ``amplitudes`` (nf, p, 3), the same at every pair, so that the choice does not flip from pair to
+    pair, nor between iterations of the response, where two harmonics are nearly equal there."""
+    energy = np.einsum("fpr,fpr->f", amplitudes, amplitudes.conj()).real
+    return np.sort(np.argsort(-energy, kind="stable")[:SINUSOIDS])
+
+
+def harmonic_describing(pairs: DragPairs, amplitudes: np.ndarray, sinusoids: np.ndarray | None = None) -> np.ndarray:
     """``D_f`` (nf, p, 3, 3) for ``w = sum_f Re(W_f e^{i theta_f})``, any number of harmonics: eq. (3)
-    (:func:`multiple_describing`) for up to :data:`SINUSOIDS`, else eq. (4) at each pair.
+    (:func:`multiple_describing`) for up to :data:`SINUSOIDS`, else eq. (4).
 
     Parameters
     ----------
     pairs : DragPairs
     amplitudes : ndarray, shape (nf, p, 3)
         Complex amplitudes ``W_f`` of the relative velocity at each pair [m/s].
+    sinusoids : ndarray of int, shape (k,), optional
+        The harmonics eq. (4) keeps as sinusoids (default: :func:`largest_harmonics` of ``amplitudes``;
+        a caller working on batches of pairs passes those of all of them).
     """
     nf, p = amplitudes.shape[:2]
     if nf <= SINUSOIDS:
         return multiple_describing(pairs, amplitudes)
-    size = np.linalg.norm(amplitudes, axis=-1)                               # (nf, p)
-    top = np.argsort(-size, axis=0, kind="stable")[:SINUSOIDS]              # (k, p)
+    kept = largest_harmonics(amplitudes) if sinusoids is None else np.asarray(sinusoids)
     rest = np.ones((nf, p), bool)
-    np.put_along_axis(rest, top, False, axis=0)
+    rest[kept] = False
     covariance = 0.5 * np.einsum("fp,fpr,fpq->prq", rest, amplitudes, amplitudes.conj()).real
-    sinusoids = np.take_along_axis(amplitudes, top[..., None], axis=0)      # (k, p, 3)
+    sinusoids = amplitudes[kept]                                             # (k, p, 3)
     square = np.einsum("kpr,kpr->kp", sinusoids, sinusoids)
     B = sinusoids * np.exp(-0.5j * np.angle(square))[..., None]
     theta, z = _mixed_samples()                                              # (s, k), (s, 3)
@@ -317,7 +329,7 @@ def harmonic_describing(pairs: DragPairs, amplitudes: np.ndarray) -> np.ndarray:
     J = jacobian(pairs, pairs.mean[:, None, :] + w)                          # (p, s, 3, 3)
     out = np.broadcast_to(J.mean(axis=1), (nf, p, 3, 3)).copy()              # the Gaussian part's gain
     own = np.einsum("psrq,sk->kprq", J, 2.0 * np.sin(theta) ** 2 / len(theta))
-    out[top, np.arange(p)[None, :]] = own
+    out[kept] = own
     return out
 
 

@@ -19,7 +19,7 @@ repeated with ``D`` the mean of the last two until it changes by less than
 :data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981). ``D`` is one matrix for all frequencies
 under the stochastic rule (a sea state) and one per frequency under the describing functions (one
 harmonic or several, :mod:`kanat.frequency.drag` eqs. 3-4: up to eight as sinusoids, beyond that the
-eight largest at each node as sinusoids and the rest as one Gaussian).
+eight largest over the line as sinusoids and the rest as one Gaussian).
 """
 from __future__ import annotations
 
@@ -154,7 +154,8 @@ def _equivalent(pairs: drag.DragPairs, water: np.ndarray, X: np.ndarray, ex: Exc
     if not ex.spectral and nf == 1:
         return drag.describing(pairs, W[0])[None]
     if not ex.spectral:
-        return _chunked(lambda part, amplitudes: drag.harmonic_describing(part, amplitudes.transpose(1, 0, 2)),
+        kept = drag.largest_harmonics(W)                                # the same sinusoids in every batch
+        return _chunked(lambda part, amplitudes: drag.harmonic_describing(part, amplitudes.transpose(1, 0, 2), kept),
                         pairs, W.transpose(1, 0, 2), nf)
     covariance = np.einsum("f,fpr,fpq->prq", ex.spectrum * ex.bandwidth, W, W.conj()).real
     return np.broadcast_to(_chunked(drag.stochastic, pairs, covariance)[None], (nf, len(pairs.node), 3, 3))
