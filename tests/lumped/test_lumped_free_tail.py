@@ -11,6 +11,8 @@ With the array's own axial stiffness the drag grows with ``sqrt(1 + e)`` (the co
 steady state, exact for a straight line on any grid); the lumped model's box-free nodal loads
 converge to it at second order in the element length.
 """
+import math
+
 import numpy as np
 import pytest
 
@@ -39,7 +41,10 @@ def closed_form(case):
     """``(phi, T_top)`` of the inextensible straight tail (module docstring)."""
     lt = case.line_types["array"]
     w = lt.weight_in_water_value(RHO, 9.81)
-    phi = critical_angle(w, 0.5 * RHO * lt.diameter * lt.drag_normal, SPEED)
+    r = 0.5 * RHO * lt.diameter * lt.drag_normal * SPEED**2           # R sin^2 phi = w cos phi
+    phi = math.acos((-w + math.sqrt(w * w + 4 * r * r)) / (2 * r))
+    assert r * math.sin(phi) ** 2 == pytest.approx(w * math.cos(phi), rel=1e-12)
+    assert critical_angle(w, r / SPEED**2, SPEED) == pytest.approx(phi, rel=1e-12)
     length = case.cables[0].length
     drag = 0.5 * RHO * np.pi * lt.diameter * lt.drag_tangential * (SPEED * np.cos(phi)) ** 2
     return phi, length * (w * np.sin(phi) + drag)
