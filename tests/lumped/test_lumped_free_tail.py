@@ -92,3 +92,14 @@ def test_a_surface_tow_point_differs_from_the_continuum_by_the_dry_top_element()
     _, T_ref = steady(array_case("continuum", 60))
     _, T = steady(array_case("lumped", 60))
     assert -3e-3 < T[0] / T_ref[0] - 1.0 < -5e-4
+
+
+def test_a_buoyant_tail_rises_as_the_mirror_image_of_a_heavy_one():
+    """Weight -w instead of w (the tow point deep enough for the tail to stay under water): the same
+    tensions, the shape mirrored about the tow point's depth."""
+    heavy_x, heavy_T = steady(array_case(**{"vessel.tow_point": [0, 0, -2.0]}))
+    light_x, light_T = steady(array_case(**{"vessel.tow_point": [0, 0, -30.0],
+                                            "line_types.array.weight_in_water": -2.0}))
+    np.testing.assert_allclose(light_T, heavy_T, rtol=1e-9)
+    np.testing.assert_allclose(light_x[:, 2] + 30.0, -(heavy_x[:, 2] + 2.0), atol=1e-7)
+    np.testing.assert_allclose(light_x[:, 0], heavy_x[:, 0], atol=1e-7)
