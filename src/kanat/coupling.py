@@ -210,7 +210,7 @@ class Coupling:
             raise KanatError(f"substep must be positive (got {substep!r} s)")
         self.notes: list[str] = []
         self._substep = substep
-        self.case = self._held(case)
+        self.case = self._held(case).with_seabed_contact()
         self.net = build_network(self.case)
         if not len(self.net.vessel_nodes):
             raise KanatError(f"case '{case.name}' has no vessel points to drive: give the lines' ends on "

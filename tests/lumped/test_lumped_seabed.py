@@ -170,14 +170,19 @@ def test_friction_holds_below_the_friction_angle_and_slides_above(slope_deg, fri
         assert -2.0 * fit[0] == pytest.approx(accel, rel=0.02)           # sliding down-slope (-x)
 
 
-def test_without_a_seabed_block_a_node_below_the_seabed_fails_the_run():
-    case = Case.model_validate(dict(
-        model="lumped", environment={"depth": 50.0}, line_types={"chain": CHAIN},
-        cables=[dict(name="leg", line_type="chain", length=120.0, segments=12,
-                     **{"from": "anchor:[0, 0, -50]"}, to="anchor:[60, 0, -10]")],
-        simulation={"duration": 2.0, "dt": 0.01}))
-    status = api.run(case).dataset.attrs["status"]
-    assert status != "ok" and "below the seabed" in status and "environment.seabed" in status
+def test_without_a_seabed_block_the_run_rests_on_the_default_seabed():
+    """``depth`` alone: the default ``environment.seabed``, as the continuum model applies it."""
+    runs = []
+    for environment in ({"depth": 50.0}, {"depth": 50.0, "seabed": {}}):
+        case = Case.model_validate(dict(
+            model="lumped", environment=environment, line_types={"chain": CHAIN},
+            cables=[dict(name="leg", line_type="chain", length=120.0, segments=12,
+                         **{"from": "anchor:[0, 0, -50]"}, to="anchor:[60, 0, -10]")],
+            simulation={"duration": 2.0, "dt": 0.01}))
+        runs.append(api.run(case).dataset)
+    assert [ds.attrs["status"] for ds in runs] == ["ok", "ok"]
+    np.testing.assert_array_equal(runs[0].tension.values, runs[1].tension.values)
+    assert runs[0].seabed_contact_length.values[-1, 0] > 0.0
 
 
 def contact_twin(x, v, el_i, el_j, area, bed, params):

@@ -17,7 +17,7 @@ from helpers import EXAMPLES
 
 from kanat.errors import CaseError
 from kanat.io import check_text
-from kanat.model import Case
+from kanat.model import Case, Seabed
 from kanat.model.support import (
     FEATURES,
     IGNORED,
@@ -27,6 +27,7 @@ from kanat.model.support import (
     feature,
     markdown_table,
     require_supported,
+    seabed_reacher,
     unsupported,
 )
 
@@ -247,27 +248,26 @@ def test_bending_stiffness_is_taken_by_every_model_of_cables():
     assert unsupported(case, "statics") == []                         # by the lumped equilibrium
 
 
-def test_seabed_contact_without_a_contact_model_is_a_warning_where_cables_reach_it():
+def test_depth_alone_gives_the_default_seabed_where_cables_reach_it():
     shallow = case_of(**{"environment.depth": 500.0})
-    (problem,) = unsupported(shallow, "lumped")
-    assert problem.severity == "warning" and problem.key == "environment.depth"
-    assert "cable 'tow' can reach the seabed at z = -500 m" in problem.message
-    assert "supported by: statics, continuum" in problem.message
-    assert unsupported(shallow, "continuum") == []                   # the default contact model of the seabed
-    assert unsupported(case_of(), "lumped") == []                    # 1000 m of cable in 3000 m
+    assert unsupported(shallow, "lumped") == []                      # the default contact model, as continuum
+    assert unsupported(shallow, "continuum") == []
     assert unsupported(shallow, "statics") == []
-    assert [p.severity for p in require_supported(shallow, "lumped")] == ["warning"]
+    assert shallow.with_seabed_contact().environment.seabed == Seabed()
+    deep = case_of(**{"environment.depth": 3000.0})                  # 1000 m of cable in 3000 m
+    assert deep.with_seabed_contact() is deep
 
 
 def test_a_riser_held_up_by_its_buoy_does_not_reach_the_seabed():
     riser = case_of(**{"cables": [{"name": "riser", "line_type": "wire", "length": 400, "segments": 8,
                                    "from": "anchor:[0, 0, -500]", "to": "sled"}],
                        "bodies.sled.net_buoyancy": 8500.0, "environment.depth": 500.0})
-    assert unsupported(riser, "lumped") == []
+    assert seabed_reacher(riser) is None and riser.with_seabed_contact() is riser
     sinking = case_of(**{"cables": [{"name": "riser", "line_type": "wire", "length": 400, "segments": 8,
                                      "from": "anchor:[0, 0, -500]", "to": "sled"}],
                          "environment.depth": 500.0})
-    assert [p.key for p in unsupported(sinking, "lumped")] == ["environment.depth"]
+    assert seabed_reacher(sinking) == "riser"
+    assert sinking.with_seabed_contact().environment.seabed == Seabed()
 
 
 def test_pitch_model_ignores_everything_else_with_warnings():

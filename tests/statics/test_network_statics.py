@@ -427,7 +427,7 @@ def test_statics_refuses_what_the_table_says():
     data["environment"]["current"] = {"velocity": [0.5, 0.0, 0.0]}
     case = Case.model_validate(data)
     keys = {p.key for p in unsupported(case, "statics") if p.severity == "error"}
-    assert "environment.depth" in keys                 # the lumped equilibrium has no seabed contact yet
+    assert "environment.depth" in keys                 # rigid in statics, the default compliant one in the lumped model
     with pytest.raises(CaseError, match="lumped model's equilibrium"):
         solve_statics(case)
     del data["environment"]["current"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.model.plane import out_of_plane
+from kanat.physics.drag import critical_angle
 from kanat.statics import CableSolution
 from kanat.statics.budget import budget
 from kanat.statics.march import steady_guess
@@ -66,15 +67,15 @@ def static_shape(case, name, s) -> CableSolution:
 def free_tail_guess(case, s) -> CableSolution:
     """A straight cable trailing from the tow point at the critical angle of the relative flow.
 
-    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (theory/continuum.md eq. (C15)); the
+    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (theory/continuum.md eq. (C15),
+    :func:`kanat.physics.drag.critical_angle`); the
     tension grows from 0 at the tail with the tangential weight and drag. Vertical in still water.
     """
     env, cable = case.environment, case.cables[0]
     lt = case.line_types[cable.line_type]
     w = lt.weight_in_water_value(env.water_density, env.gravity)
     speed = case.vessel.initial_speed - env.current.at(0.0)[0]
-    r = 0.5 * env.water_density * lt.diameter * lt.drag_normal * speed**2
-    phi = np.arccos((-w + np.sqrt(w * w + 4 * r * r)) / (2 * r)) if r > 0 else 0.5 * np.pi
+    phi = critical_angle(w, 0.5 * env.water_density * lt.diameter * lt.drag_normal, speed)
     along = np.array([-np.sign(speed) * np.cos(phi) if speed else 0.0, -np.sin(phi)])
     per_length = w * np.sin(phi) + 0.5 * env.water_density * np.pi * lt.diameter * lt.drag_tangential * (
         speed * np.cos(phi))**2

@@ -130,7 +130,9 @@ def linearize(case) -> Linearization:
 def about_mean(case):
     """The case whose equilibrium the system is linearised about (module docstring): its current at
     full speed from t = 0 (``environment.current.ramp`` 0) and its vessel on its track without the
-    prescribed motion (whose harmonics and RAO motion oscillate about that place)."""
+    prescribed motion (whose harmonics and RAO motion oscillate about that place), on the seabed the
+    lumped model applies (:meth:`kanat.model.Case.with_seabed_contact`)."""
+    case = case.with_seabed_contact()
     current = case.environment.current
     if current.ramp != 0.0:
         environment = case.environment.model_copy(update={"current": current.model_copy(update={"ramp": 0.0})})

@@ -17,9 +17,9 @@ its absolute velocity). ``D`` depends on the relative
 velocity's statistics, which depend on ``X``: starting from the nodes at rest, the solves are
 repeated with ``D`` the mean of the last two until it changes by less than
 :data:`TOLERANCE` of its norm (Langley 1984, Spanos 1981). ``D`` is one matrix for all frequencies
-under the stochastic rule (a sea state, or more than :data:`kanat.frequency.drag.MAX_HARMONICS`
-harmonics) and one per frequency under the describing functions (one or a few harmonics,
-:mod:`kanat.frequency.drag` eq. 3).
+under the stochastic rule (a sea state) and one per frequency under the describing functions (one
+harmonic or several, :mod:`kanat.frequency.drag` eqs. 3-4: up to eight as sinusoids, beyond that the
+eight largest over the line as sinusoids and the rest as one Gaussian).
 """
 from __future__ import annotations
 
@@ -147,17 +147,17 @@ def _solve_all(lin, damping: list[sp.csr_matrix], omega: np.ndarray, rhs: np.nda
 def _equivalent(pairs: drag.DragPairs, water: np.ndarray, X: np.ndarray, ex: Excitation) -> np.ndarray:
     """``D`` (nf, p, 3, 3) of the relative velocity ``u_w - i omega X`` at each pair (drag module),
     ``X`` (nf, p, 3) the pairs' displacements (:meth:`kanat.frequency.pairs.PairMaps.velocities`):
-    the describing functions' for one or a few harmonics, else the stochastic rule's, the same at
-    every frequency."""
+    the describing functions' for harmonics (any number), else (a sea state) the stochastic rule's,
+    the same at every frequency."""
     nf = X.shape[0]
     W = water - 1j * ex.omega[:, None, None] * X                        # (nf, p, 3)
     if not ex.spectral and nf == 1:
         return drag.describing(pairs, W[0])[None]
-    if not ex.spectral and nf <= drag.MAX_HARMONICS:
-        return _chunked(lambda part, amplitudes: drag.multiple_describing(part, amplitudes.transpose(1, 0, 2)),
+    if not ex.spectral:
+        kept = drag.largest_harmonics(W)                                # the same sinusoids in every batch
+        return _chunked(lambda part, amplitudes: drag.harmonic_describing(part, amplitudes.transpose(1, 0, 2), kept),
                         pairs, W.transpose(1, 0, 2), nf)
-    weight = ex.spectrum * ex.bandwidth if ex.spectral else np.full(nf, 0.5)
-    covariance = np.einsum("f,fpr,fpq->prq", weight, W, W.conj()).real
+    covariance = np.einsum("f,fpr,fpq->prq", ex.spectrum * ex.bandwidth, W, W.conj()).real
     return np.broadcast_to(_chunked(drag.stochastic, pairs, covariance)[None], (nf, len(pairs.node), 3, 3))
 
 

@@ -79,6 +79,8 @@ class LumpedModel:
 
     def __init__(self, case, scheme=None, start_from=None):
         sim = case.simulation
+        self.given = case                           # as written: the result's provenance
+        case = case.with_seabed_contact()           # depth alone: the default seabed, as in every model
         self.case, self.net = case, build_network(case)
         self.system = LumpedSystem(self.net, case, sim.mass_matrix)
         self.info = stepping.step_info(self.net, self.net.x_guess, sim.mass_matrix == "consistent",
@@ -149,7 +151,7 @@ class LumpedModel:
     # 1. set up ------------------------------------------------------------------------
     def layout(self) -> Layout:
         net, sim = self.net, self.case.simulation
-        attrs = provenance(self.case, model=self.name, scheme=self.scheme.name, dt=self.dt,
+        attrs = provenance(self.given, model=self.name, scheme=self.scheme.name, dt=self.dt,
                            dt_case=sim.dt if sim.dt is not None else "", axial_period=self.info.axial_period,
                            mass_matrix=sim.mass_matrix, output_interval=self.output_interval,
                            **{f"scheme_{k}": v for k, v in self.scheme.parameters().items()})
@@ -281,10 +283,6 @@ class LumpedModel:
         worst = int(np.argmax(excess))
         if excess[worst] <= 0.0:
             return None
-        if self.case.environment.seabed is None:
-            return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}); "
-                    "without environment.seabed this model has no seabed contact: add environment.seabed "
-                    "(stiffness, damping, friction)")
         return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}), more "
                 f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight in "
                 f"water, if any, / (stiffness x contact area) + {PENETRATION_FLOOR * 1e3:g} mm); raise "
@@ -378,6 +376,7 @@ def start_state(net, start, mass_matrix: str = "lumped") -> tuple[np.ndarray, np
     """
     if hasattr(start, "data_vars"):
         return _result_state(net, start)
+    start = start.with_seabed_contact()
     other = build_network(start)
     if other.n_nodes != net.n_nodes or not np.array_equal(other.free, net.free):
         raise CaseError([Problem("start", f"the case to start from ('{start.name}') must have the same "

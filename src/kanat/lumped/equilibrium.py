@@ -38,6 +38,7 @@ from kanat.statics import budget
 from kanat.lumped.relaxation import relax
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
+from kanat.lumped.tow_guess import free_tail_guess
 
 MAX_ITERATIONS = 400
 DIRECT_ITERATIONS = 150        # before stiffness continuation takes over
@@ -330,8 +331,11 @@ def relaxation_note(info: dict) -> str:
 def first_guess(net, case):
     """The start of the equilibrium without positions given: ``(x, source)``, the first of
     :func:`statics_guess` (``"statics"``), the still-water catenaries of network statics
-    (:func:`kanat.lumped.catenary_guess.catenary_guess`, ``"catenary"``), or None for the
-    network's own guess ``net.x_guess`` (``"network"``).
+    (:func:`kanat.lumped.catenary_guess.catenary_guess`, ``"catenary"``), the network's own guess
+    with its free tails trailing at the critical angle of the relative flow
+    (:func:`kanat.lumped.tow_guess.free_tail_guess`, ``"free tail"``: a towed array, whose tail the
+    network's guess hangs at 45 degrees), or None for the network's own guess ``net.x_guess``
+    (``"network"``).
 
     A case that the statics front door would solve as a network
     (:func:`kanat.model.support.needs_network`, other than one cable in a current) goes to the
@@ -347,7 +351,10 @@ def first_guess(net, case):
     if x is not None:
         return x, "statics"
     x = catenary_guess(net, case)
-    return (x, "catenary") if x is not None else (None, "network")
+    if x is not None:
+        return x, "catenary"
+    x = free_tail_guess(net, case, net.x_guess, LumpedSystem(net, case, waves=False).frame_velocity())
+    return (x, "free tail") if x is not None else (None, "network")
 
 
 def statics_guess(net, case):

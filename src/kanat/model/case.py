@@ -232,6 +232,19 @@ class Case(KanatModel):
 
         return replaced(self, changes)
 
+    def with_seabed_contact(self) -> Case:
+        """This case with :meth:`Environment.with_seabed_contact` where a cable can reach the seabed
+        (:func:`kanat.model.support.seabed_reacher`): the seabed the continuum model applies, which the
+        lumped model takes its case through, so that ``depth`` alone means the same contact in both.
+        This case itself when nothing changes (a line that cannot reach the seabed gets no contact
+        model, whose stiffness would only shorten the lumped model's stable step)."""
+        from .support import seabed_reacher
+
+        environment = self.environment.with_seabed_contact()
+        if environment is self.environment or seabed_reacher(self) is None:
+            return self
+        return self.model_copy(update={"environment": environment})
+
     @model_validator(mode="after")
     def _cross_references(self) -> Case:
         messages = reference_errors(self)

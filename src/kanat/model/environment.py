@@ -253,6 +253,16 @@ class Environment(KanatModel):
             return self
         return self.model_copy(update={"current": Current(ramp=self.current.ramp)})
 
+    def with_seabed_contact(self) -> Environment:
+        """The environment with the seabed contact every model applies: ``seabed`` as given, or a
+        :class:`Seabed` of its documented defaults (stiffness 3e6 Pa/m, damping 3e5 Pa s/m, no
+        friction, flat) when only ``depth`` is given, as the continuum model takes it
+        (:func:`kanat.continuum.grid.seabed_contact`); this one without ``depth``. (Statics keeps a rigid
+        seabed at ``-depth`` without the block: its exact contact.)"""
+        if self.depth is None or self.seabed is not None:
+            return self
+        return self.model_copy(update={"seabed": Seabed()})
+
     @field_validator("seabed")
     @classmethod
     def _seabed_needs_depth(cls, seabed: Seabed | None, info: ValidationInfo) -> Seabed | None:

@@ -196,17 +196,26 @@ def _lowest_reach(case: Case, cables: list[int]) -> float | None:
     return min(heights) if lift > weight else min(heights) - length
 
 
-def _seabed_reach(case: Case) -> list[Use]:
+def seabed_reacher(case: Case) -> str | None:
+    """The name of the first cable whose network can reach the seabed at ``z = -depth``
+    (:func:`_lowest_reach`), or None (none can, or no ``depth``)."""
     depth = case.environment.depth
-    if depth is None or case.environment.seabed is not None:
-        return []
+    if depth is None:
+        return None
     for group in _networks(case):
         reach = _lowest_reach(case, group)
         if reach is None or reach < -depth * (1 + 1e-9):
-            name = case.cables[group[0]].name
-            return [(("environment", "depth"), f" (cable '{name}' can reach the seabed "
-                     f"at z = {fmt(-depth)} m)")]
-    return []
+            return case.cables[group[0]].name
+    return None
+
+
+def _seabed_reach(case: Case) -> list[Use]:
+    if case.environment.seabed is not None:
+        return []
+    name = seabed_reacher(case)
+    if name is None:
+        return []
+    return [(("environment", "depth"), f" (cable '{name}' can reach the seabed at z = {fmt(-case.environment.depth)} m)")]
 
 
 def _line_type_key(key: str, test) -> Callable[[Case], list[Use]]:
@@ -350,13 +359,14 @@ def single_cable(case: Case) -> bool:
 
 def _drag_without_fallback(case: Case) -> list[Use]:
     """A network in a current or under tow, where it uses what the lumped equilibrium lacks
-    (a row the lumped model does not support, or its missing seabed contact); a single cable is
-    the 3-D single-cable statics' and needs no fallback."""
+    (a row the lumped model does not support, or a seabed given by ``depth`` alone: statics'
+    seabed is rigid there, the lumped model's the compliant default); a single cable is the 3-D
+    single-cable statics' and needs no fallback."""
     if not (has_drag(case) and needs_network(case)) or single_cable(case):
         return []
     return [(path, f" ({row.title}{detail})") for row in FEATURES
             if row.statics == YES and row.name not in NO_STEADY_EFFECT
-            and (row.lumped == NO or (row.lumped == IGNORED and row.name == "seabed_contact"))
+            and (row.lumped == NO or row.name == "seabed_contact")
             for path, detail in row.uses(case)]
 
 
@@ -386,9 +396,11 @@ FEATURES: tuple[Feature, ...] = (
     Feature("out_of_plane", "a position or force off the x-z plane",
             _out_of_plane, statics=YES, continuum=YES, lumped=YES),
     Feature("seabed_contact", "seabed contact", _seabed_reach,
-            statics=YES, continuum=YES, lumped=IGNORED,
-            note={"lumped": "without environment.seabed it has no seabed contact: a node below "
-                            "z = -depth stops the run (add environment.seabed)"}),
+            statics=YES, continuum=YES, lumped=YES,
+            note={"statics": "without environment.seabed a rigid seabed at z = -depth",
+                  "continuum": "without environment.seabed the default one (stiffness 3e6 Pa/m, damping "
+                               "3e5 Pa s/m, no friction)",
+                  "lumped": "as the continuum model"}),
     Feature("elastic_law", "a nonlinear elastic law", _line_type_key("elastic_law", _NOT_NONE),
             statics=NO, continuum=YES, lumped=YES, note="statics uses the linear axial_stiffness"),
     Feature("dimensional_drag", "dimensional drag coefficients", _dimensional_drag,

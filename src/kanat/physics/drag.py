@@ -53,3 +53,32 @@ def body_drag(water_velocity, drag_area, density):
     """
     water_velocity = np.asarray(water_velocity, dtype=float)
     return 0.5 * density * drag_area * np.linalg.norm(water_velocity) * water_velocity
+
+
+def critical_angle(weight, normal_drag, speed):
+    """Angle below the flow of a cable at rest in a uniform flow whose normal drag carries its
+    weight with no tension curvature: the trailing angle of a free tail (theory/continuum.md eq. (C15))::
+
+        R sin^2(phi) = |w| cos(phi),   cos(phi) = (-|w| + sqrt(w^2 + 4 R^2)) / (2 R),   R = C U^2
+
+    Parameters
+    ----------
+    weight : float or ndarray
+        Weight in water per unit length ``w`` [N/m] (its sign does not enter: a buoyant tail
+        trails at the same angle above the flow).
+    normal_drag : float or ndarray
+        ``C = 0.5 rho d C_n`` [N s^2/m^3].
+    speed : float or ndarray
+        Speed of the relative flow ``U`` [m/s].
+
+    Returns
+    -------
+    float or ndarray
+        ``phi`` [rad], in [0, pi/2]; pi/2 (hanging) where there is no normal drag.
+    """
+    w = np.abs(np.asarray(weight, dtype=float))
+    r = np.asarray(normal_drag, dtype=float) * np.asarray(speed, dtype=float) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cosine = np.where(r > 0.0, (-w + np.sqrt(w * w + 4.0 * r * r)) / (2.0 * np.where(r > 0.0, r, 1.0)), 0.0)
+    phi = np.arccos(np.clip(cosine, 0.0, 1.0))
+    return float(phi) if np.ndim(phi) == 0 else phi
