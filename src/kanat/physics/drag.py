@@ -39,6 +39,15 @@ def cable_drag(tangent, water_velocity, strain, diameter, drag_normal, drag_tang
     return area * (drag_normal * speed_n * normal + np.pi * drag_tangential * np.abs(u_t) * u_t * tangent)
 
 
+def axial_drag(u_t, diameter, drag_tangential, density):
+    """Drag along a cable lying still, per unit length, from the flow's component ``u_t`` along it:
+    the tangential term of :func:`cable_drag` unstretched, ``0.5 rho pi d C_t |u_t| u_t`` [N/m]
+    (arrays broadcast). Statics uses it on the part of a line resting on the seabed, whose normal
+    drag the seabed bears (:class:`kanat.statics.problem.Grounding`)."""
+    u_t = np.asarray(u_t, dtype=float)
+    return 0.5 * density * np.pi * np.asarray(diameter) * np.asarray(drag_tangential) * np.abs(u_t) * u_t
+
+
 def body_drag(water_velocity, drag_area, density):
     """Quadratic drag of a body, ``0.5 rho (C_D S) |U| U`` [N] (theory/continuum.md §3, Kaliukh & Vusatiuk 2018, eq. 26).
 

@@ -114,6 +114,7 @@ def _collocate_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -
 
     def solve_at(factor, guess):
         flow_problem = problem.with_flow(factor)
+        ground = flow_problem.grounding()                # its drag along the seabed scaled with the flow
         mesh, y0, p0 = guess
 
         def fun(sigma, y, p):
@@ -122,7 +123,7 @@ def _collocate_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -
         def bc(ya, yb, p):
             y_td, y_far = (ya, yb) if touchdown_at_start else (yb, ya)
             td = y_td * scale
-            expected = grounding.touchdown_state(grounding.tangent_x * td[2], p[0] * length, stiffness)
+            expected = ground.touchdown_state(ground.tangent_x * td[2], p[0] * length, stiffness)
             return np.concatenate([(td[[0, 1, 3]] - expected[[0, 1, 3]]) / scale[[0, 1, 3]],
                                    (y_far[0:2] * scale[0:2] - target) / length])
         return solve_bvp(fun, bc, mesh, y0, p=p0, tol=TOL, max_nodes=MAX_NODES)

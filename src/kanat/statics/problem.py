@@ -33,7 +33,7 @@ import numpy as np
 
 from kanat.errors import SolverError
 from kanat.statics import budget
-from kanat.physics.drag import body_drag, cable_drag
+from kanat.physics.drag import axial_drag, body_drag, cable_drag
 
 
 @dataclass(frozen=True)
@@ -184,13 +184,25 @@ class CableBVP:
             if (isinstance(end, FixedEnd) and isinstance(other, FixedEnd)
                     and abs(end.position[1] - self.seabed_z) <= 1e-9 * max(1.0, self.length)):
                 direction = 1.0 if other.position[0] >= end.position[0] else -1.0
-                return Grounding(anchor, end.position[0], end.position[1], direction)
+                line = self.line
+                u_along = direction * self.flow.at(np.array([self.seabed_z]))[0, 0]   # towards touchdown
+                pull = axial_drag(u_along, line.diameter, line.drag_tangential, line.water_density)
+                return Grounding(anchor, end.position[0], end.position[1], direction, float(pull))
         return None
 
 
 @dataclass(frozen=True)
 class Grounding:
     """A line lying straight on a frictionless seabed from a fixed end (the anchor).
+
+    The flow at the seabed drags the grounded part along itself by ``pull`` per unit length
+    (:func:`kanat.physics.drag.axial_drag`; its normal part the seabed bears), so that the tension grows linearly from touchdown to the anchor: at a distance ``r``
+    from the anchor along a grounded length ``G``,
+
+        (G1)  T(r) = T_td + pull (G - r),
+        (G2)  x(r) = x_A + direction (r + (T_A r - pull r^2 / 2) / EA),   T_A = T_td + pull G,
+
+    the balance ``dT/dr = -pull`` of a frictionless element and its stretch ``int (1 + T/EA) dr``.
 
     Attributes
     ----------
@@ -200,12 +212,16 @@ class Grounding:
         The anchor's position [m].
     direction : float
         +1 when the other end lies at larger ``x``, else -1.
+    pull : float
+        The flow's drag along the grounded part, per unit length, towards touchdown [N/m]
+        (negative: towards the anchor).
     """
 
     anchor: int
     x_anchor: float
     z_anchor: float
     direction: float
+    pull: float = 0.0
 
     @property
     def tangent_x(self) -> float:
@@ -216,18 +232,42 @@ class Grounding:
         """Unstretched arclength of the touchdown point [m]."""
         return grounded_length if self.anchor == 0 else length - grounded_length
 
+    def tensions(self, from_anchor, tension: float, grounded_length: float) -> np.ndarray:
+        """Tension at distances ``from_anchor`` [m] along the grounded part for a touchdown tension
+        ``tension`` [N], eq. (G1)."""
+        return tension + self.pull * (grounded_length - np.asarray(from_anchor, dtype=float))
+
+    def positions(self, from_anchor, tension: float, grounded_length: float, stiffness: float) -> np.ndarray:
+        """x at distances ``from_anchor`` [m] along the grounded part, eq. (G2)."""
+        r = np.asarray(from_anchor, dtype=float)
+        at_anchor = tension + self.pull * grounded_length
+        return self.x_anchor + self.direction * (r + (at_anchor * r - 0.5 * self.pull * r * r) / stiffness)
+
     def touchdown_state(self, tension: float, grounded_length: float, stiffness: float) -> np.ndarray:
         """State ``(x, z, F_x, F_z)`` at touchdown for a horizontal tension ``tension`` [N]."""
-        x = self.x_anchor + self.direction * grounded_length * (1.0 + tension / stiffness)
+        x = float(self.positions(grounded_length, tension, grounded_length, stiffness))
         return np.array([x, self.z_anchor, self.tangent_x * tension, 0.0])
 
     def fill(self, s, y, tension: float, grounded_length: float, length: float, stiffness: float) -> None:
-        """Overwrite the states ``y`` (4, n) at stations ``s`` that lie on the seabed."""
+        """Overwrite the states ``y`` (4, n) at stations ``s`` that lie on the seabed.
+
+        Raises
+        ------
+        SolverError
+            The flow pushes the grounded part towards the anchor harder than the line pulls it
+            (the tension would fall below zero before the anchor): the line would not lie straight.
+        """
         from_anchor = s if self.anchor == 0 else length - s
         on_bed = from_anchor <= grounded_length
-        y[0, on_bed] = self.x_anchor + self.direction * from_anchor[on_bed] * (1.0 + tension / stiffness)
+        at_anchor = tension + self.pull * grounded_length
+        if at_anchor < 0.0:
+            raise SolverError(f"the current along the seabed pushes the {grounded_length:.4g} m of line lying on "
+                              f"it towards its anchor ({-self.pull:.4g} N/m) harder than the line pulls it "
+                              f"({tension:.4g} N at touchdown): it would not lie straight, and statics assumes it "
+                              "does; run a dynamic model (model: lumped), whose seabed contact carries it")
+        y[0, on_bed] = self.positions(from_anchor[on_bed], tension, grounded_length, stiffness)
         y[1, on_bed] = self.z_anchor
-        y[2, on_bed] = self.tangent_x * tension
+        y[2, on_bed] = self.tangent_x * self.tensions(from_anchor[on_bed], tension, grounded_length)
         y[3, on_bed] = 0.0
 
 

@@ -190,8 +190,9 @@ def _shoot_grounded(problem: CableBVP, s_out, grounding: Grounding, guess) -> Ca
 
     def shoot(unknowns, flow_problem):
         tension, grounded = unknowns
-        return _integrate(flow_problem, grounding.touchdown_s(grounded, length),
-                          grounding.touchdown_state(tension, grounded, stiffness), s_other)
+        ground = flow_problem.grounding()                # its drag along the seabed scaled with the flow
+        return _integrate(flow_problem, ground.touchdown_s(grounded, length),
+                          ground.touchdown_state(tension, grounded, stiffness), s_other)
 
     def residual(unknowns, factor):
         return (shoot(unknowns, problem.with_flow(factor)).y[0:2, -1] - target) / length

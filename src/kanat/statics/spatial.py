@@ -30,7 +30,7 @@ import numpy as np
 
 from kanat.errors import SolverError
 from kanat.statics import budget
-from kanat.physics.drag import body_drag, cable_drag
+from kanat.physics.drag import axial_drag, body_drag, cable_drag
 from kanat.physics.immersion import float_buoyancy, sphere_fraction
 from kanat.statics.problem import LineProperties, PiecewiseFlow
 
@@ -281,11 +281,13 @@ def grounded_states(problem: CableBVP3, anchor: int, tension: float, grounded: f
     along = np.asarray(s, dtype=float)
     knots = np.linspace(0.0, grounded, 401)
     s_knots = knots if anchor == 0 else problem.length - knots
-    weight = np.array([problem.piece_at(min(max(v, 0.0), problem.length)).line.weight for v in s_knots])
-    stiffness = np.array([problem.piece_at(min(max(v, 0.0), problem.length)).line.axial_stiffness
-                          for v in s_knots])
+    lines = [problem.piece_at(min(max(v, 0.0), problem.length)).line for v in s_knots]
+    weight, stiffness = np.array([(line.weight, line.axial_stiffness) for line in lines]).T
     cos_slope = seabed.normal[2]
-    gradient = weight * (g @ UP + seabed.friction * cos_slope)        # dT/ds along the ground, from the anchor
+    u_along = problem.flow.at(root[2] + g[2] * knots) @ g           # the flow along the ground, away from the anchor
+    pull = axial_drag(u_along, [line.diameter for line in lines], [line.drag_tangential for line in lines],
+                      problem.density)
+    gradient = weight * (g @ UP + seabed.friction * cos_slope) - pull  # dT/ds along the ground, from the anchor
     rise = np.concatenate([[0.0], np.cumsum(0.5 * (gradient[1:] + gradient[:-1]) * np.diff(knots))])
     tensions = np.maximum(tension - (rise[-1] - rise), 0.0)
     stretch = np.concatenate([[0.0], np.cumsum(0.5 * np.diff(knots) * (
