@@ -176,12 +176,15 @@ def bending_tangent(A, bw, position, x, el, c_stiff):
 
 
 @inner
-def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
-    """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
-    (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
-    :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``."""
+def assemble(band, nodes, el, bodies, env, work, c_mass, c_damp, c_stiff):
+    """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in the band storage
+    ``band.factors`` (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
+    :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``; ``band`` is an
+    :class:`kanat.lumped.entries.Band`."""
     x, v, M, uw, bu = work.x, work.v, work.mass, work.water_velocity, work.load_velocity
-    K, C, D, Kc, Cc = blocks
+    A, bw, position = band.factors, band.half_width, band.position
+    K, C, D = band.element_stiffness, band.element_damping, band.element_drag
+    Kc, Cc = band.contact_stiffness, band.contact_damping
     A[:, :, :, :] = 0.0
     kernels.tangent_blocks(x, v, uw, el, K, C, D)
     el_i, el_j = el.first_node, el.second_node
@@ -229,12 +232,15 @@ def contact_changed(contact, normal_force, in_contact):
 
 
 @inner
-def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_pos, vm_vel, vm_head,
-                position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, out_x, out_v, out_a):
-    """One generalized-α step (implicit.py eqs. 1-3) by modified Newton from the predictor in
-    ``out_a``; returns the iterations used, or ``-iterations`` when it did not converge.
+def newton_step(t, h, scheme, x0, v0, a0, vm_pos, vm_vel, vm_head, nodes, el, bodies, env, work, band,
+                out_x, out_v, out_a):
+    """One generalized-α step (implicit.py eqs. 1-3) of ``scheme`` (an
+    :class:`kanat.lumped.entries.ImplicitScheme`) by modified Newton from the predictor in ``out_a``,
+    the factors and their memory in ``band`` (an :class:`kanat.lumped.entries.Band`); returns the
+    iterations used, or ``-iterations`` when it did not converge.
 
-    The factors of eq. (3) in ``A`` are kept across iterations and steps (``tangent[0]`` holds
+    The factors of eq. (3) in ``A = band.factors`` are kept across iterations and steps
+    (``tangent = band.memory``: ``tangent[0]`` holds
     the step they were built for, 0 for none) and rebuilt at the current iterate only where they
     no longer serve: a new step size, a node that touched or left the seabed (its contact
     stiffness is many times its inertia term), or an increment larger than :data:`CONTRACTION`
@@ -265,7 +271,10 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     iterate, which breaks the two-cycles a node sets up when its seabed contact switches on and
     off from one iterate to the next (Dennis & Schnabel, Numerical Methods for Unconstrained
     Optimization, 1983, §6.3, with the simple decrease test)."""
-    am, af, gamma, beta = coefficients
+    am, af, gamma, beta = scheme.alpha_m, scheme.alpha_f, scheme.gamma, scheme.beta
+    max_iterations, tolerance = scheme.max_iterations, scheme.tolerance
+    position, bw, A = band.position, band.half_width, band.factors
+    tangent, in_contact = band.memory, band.in_contact
     nf = x0.shape[0]
     free_index = nodes.free
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
@@ -311,8 +320,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
         norm_before, backtracks = norm, 0
         refreshed = refresh
         if refresh:
-            assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
-                     (1.0 - af) * beta * h * h)
+            assemble(band, nodes, el, bodies, env, work, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h)
             tangent[0] = h if band_factor(A, bw) else 0.0
             tangent[3], tangent[4] = 0.0, 0.0
             if tangent[0] == 0.0:
@@ -345,18 +353,22 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
 
 
 @kernel
-def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
-          position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, previous, snap, events):
-    """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
-    Returns (steps done, Newton iterations, events, failed): it stops before a step whose
-    Newton iteration fails, before the event buffer could overflow, or on a non-finite state.
+def steps(t0, h, count, scheme, x, v, a, mid_samples, end_samples, nodes, el, bodies, env, work, band, snap,
+          events):
+    """Up to ``count`` steps of ``scheme`` (an :class:`kanat.lumped.entries.ImplicitScheme`) from
+    ``(t0, x, v, a)`` (updated in place), tracking snaps after each. Returns (steps done, Newton
+    iterations, events, failed): it stops before a step whose Newton iteration fails, before the
+    event buffer could overflow, or on a non-finite state. The vessel is sampled at the steps'
+    force balance (``mid_samples``) and ends (``end_samples``), both :class:`kanat.lumped.entries.Track`.
 
-    ``tangent`` (5,): the step of the factors in ``A`` (:func:`newton_step`), the time and
-    step of the acceleration history ``previous`` (the acceleration one step before that time),
+    ``band`` (an :class:`kanat.lumped.entries.Band`) holds the factors and what persists between
+    calls: ``band.memory`` (5,), the step of the factors (:func:`newton_step`), the time and step
+    of the acceleration history ``band.previous`` (the acceleration one step before that time),
     the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
-    ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
-    calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
-    state and step, else ``a_1 = a``."""
+    ``band.in_contact`` (n,), the nodes on the seabed when the factors were built. Each step's
+    predictor is ``a_1 = 2 a - a_prev`` where the history is that of this state and step, else
+    ``a_1 = a``."""
+    tangent, previous = band.memory, band.previous
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
     y = np.empty(6 * nf)
@@ -369,9 +381,9 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         for f in range(nf):
             for r in range(3):
                 na[f, r] = 2.0 * a[f, r] - previous[f, r] if extrapolate else a[f, r]
-        used = newton_step(t0 + step * h, h, coefficients, max_iterations, tolerance, x, v, a,
-                           mid_samples[0][step], mid_samples[1][step], mid_samples[2][step],
-                           position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, nx, nv, na)
+        used = newton_step(t0 + step * h, h, scheme, x, v, a,
+                           mid_samples.position[step], mid_samples.velocity[step], mid_samples.heading[step],
+                           nodes, el, bodies, env, work, band, nx, nv, na)
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
