@@ -6,8 +6,9 @@ the arguments match it, numba's kernel otherwise (made on first use, so a run th
 numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
 The argument specifications below are the layouts the Python side builds, each group of arrays a
-named record (:func:`kanat.aot.record`) with one builder (``FusedArrays`` in
-:mod:`kanat.lumped.advance`, ``Network.elements`` in :mod:`kanat.lumped.network`); the stepping
+named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples`` and
+``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
+:mod:`kanat.lumped.network`, ``SnapTracker.kernel_arrays`` in :mod:`kanat.lumped.snap`); the stepping
 kernels come in one version per combination of the optional 6-DOF bodies and seabed contact
 (None when a network has none, which prunes their code).
 """
