@@ -128,7 +128,7 @@ Band = aot.record(
     "Band", "kanat.lumped.entries",
     position=I1,                            # each node's block row in the band order, -1 if prescribed (n,)
     half_width=INT,                         # the band's half-width in 3 x 3 node blocks
-    factors=F4,                             # the tangent of implicit.py eq. 3, then its block LU (n_free, 2 w + 1, 3, 3)
+    factors=F4,                             # the tangent (implicit.py eq. 3), then its block LU (n_free, 2 w + 1, 3, 3)
     element_stiffness=F3, element_damping=F3, element_drag=F3,   # K, C, D of kernels.tangent_blocks (m, 3, 3)
     contact_stiffness=F3, contact_damping=F3,   # K_c, C_c of kanat.physics.contact.contact_tangent (n, 3, 3)
     memory=F1,                              # (5,): the factors' step (0: none), the time and step of the history

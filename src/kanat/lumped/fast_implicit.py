@@ -236,11 +236,10 @@ def newton_step(t, h, scheme, x0, v0, a0, vm_pos, vm_vel, vm_head, nodes, el, bo
                 out_x, out_v, out_a):
     """One generalized-α step (implicit.py eqs. 1-3) of ``scheme`` (an
     :class:`kanat.lumped.entries.ImplicitScheme`) by modified Newton from the predictor in ``out_a``,
-    the factors and their memory in ``band`` (an :class:`kanat.lumped.entries.Band`); returns the
-    iterations used, or ``-iterations`` when it did not converge.
+    the factors ``A`` and their memory ``tangent`` in ``band`` (an :class:`kanat.lumped.entries.Band`:
+    ``factors``, ``memory``); returns the iterations used, or ``-iterations`` when it did not converge.
 
-    The factors of eq. (3) in ``A = band.factors`` are kept across iterations and steps
-    (``tangent = band.memory``: ``tangent[0]`` holds
+    The factors of eq. (3) in ``A`` are kept across iterations and steps (``tangent[0]`` holds
     the step they were built for, 0 for none) and rebuilt at the current iterate only where they
     no longer serve: a new step size, a node that touched or left the seabed (its contact
     stiffness is many times its inertia term), or an increment larger than :data:`CONTRACTION`
