@@ -1,7 +1,7 @@
 """Every use kanat makes of another library's private API, in one place (docs/kernels.md).
 
-Four touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
-numba or h5netcdf that changes one fails one test whose message names the library and version:
+Six touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
+numba, h5netcdf or SciPy that changes one fails one test whose message names the library and version:
 
 * :func:`compile_object_files` — ``numba.pycc.CC._compile_object_files``: the install compiles
   each module's kernels to an object file in a process of its own (numba compiles on one core)
@@ -11,6 +11,12 @@ numba or h5netcdf that changes one fails one test whose message names the librar
   of its keys: whether a run would compile, read without compiling (:func:`kanat.jit.is_cached`).
 * :func:`flush_hdf5` — h5netcdf's ``File._h5file``: the HDF5 file beneath a netCDF file being
   written, flushed so that a killed run leaves its outputs on disk (:mod:`kanat.io.stream`).
+* :func:`dispatcher_type` — numba's ``_numba_type_`` hook: numba's ``typeof`` takes any object's
+  ``_numba_type_`` as its type, which types a :class:`kanat.jit.Deferred` kernel as the dispatcher
+  it stands for, so kernels call each other by their plain names before numba is loaded.
+* :func:`named_tuple_type` — ``numba.core.types.BaseTuple.from_types``: numba's type of a named
+  record (:func:`kanat.aot.record`) made from its fields' types, as ``typeof`` types an instance;
+  the install-time build (:mod:`kanat.aot_build`) declares the entries' signatures with it.
 * :func:`banded_lapack` — SciPy's extension module ``scipy/linalg/_flapack``, loaded from its file
   without the ``scipy.linalg`` package around it: the continuum model's Newton steps call LAPACK's
   ``dgbsv`` from it, and ``import scipy.linalg`` costs a run 0.1-0.3 s of CPU (it imports
@@ -18,7 +24,7 @@ numba or h5netcdf that changes one fails one test whose message names the librar
   packages) against ~0.01 s for the module alone. Where the file is not found, the public
   ``scipy.linalg.lapack`` module (the same functions).
 
-The libraries are imported inside the functions: importing this module imports neither.
+The libraries are imported inside the functions: importing this module imports none of them.
 """
 from __future__ import annotations
 
@@ -122,3 +128,37 @@ def banded_lapack():
             return module
     from scipy.linalg import lapack
     return lapack
+
+
+def dispatcher_type(dispatcher):
+    """numba's type of the dispatcher ``dispatcher``: what a stand-in object gives as its
+    ``_numba_type_``, which numba's ``typeof`` takes as the object's type (:class:`kanat.jit.Deferred`).
+
+    Raises
+    ------
+    PrivateAPIChanged
+        numba's dispatcher has no ``_numba_type_``.
+    """
+    try:
+        return dispatcher._numba_type_
+    except AttributeError as error:
+        raise _changed("numba", "Dispatcher._numba_type_", error) from None
+
+
+def named_tuple_type(item_types, kind: type):
+    """numba's type of an instance of the named tuple class ``kind`` whose items have the numba
+    types ``item_types``, as ``numba.typeof`` types one (a ``NamedTuple``, or a ``NamedUniTuple``
+    where every item has one type), made without an instance.
+
+    Raises
+    ------
+    PrivateAPIChanged
+        numba's ``types.BaseTuple`` has no ``from_types`` taking the items' types and the class.
+    """
+    from numba.core import types
+
+    try:
+        from_types = types.BaseTuple.from_types
+    except AttributeError as error:
+        raise _changed("numba", "numba.core.types.BaseTuple.from_types", error) from None
+    return from_types(tuple(item_types), kind)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import importlib
 
 from kanat import aot, jit
+from kanat._private_api import named_tuple_type
 
 DECLARING = ("kanat.continuum.kernels2d", "kanat.continuum.kernels3d", "kanat.lumped.entries",
              "kanat.continuum.factorized.sweeps_compiled", "kanat.continuum.factorized.waves_compiled")
@@ -27,7 +28,7 @@ def numba_type(spec):
         return types.none
     if aot.is_record(spec):                 # a named tuple of the record's class, as numba types its instances
         spec = aot.as_record(spec)
-        return types.BaseTuple.from_types([numba_type(item) for item in spec.specification], spec.kind)
+        return named_tuple_type([numba_type(item) for item in spec.specification], spec.kind)
     if isinstance(spec, tuple):
         return types.Tuple(tuple(numba_type(item) for item in spec))
     if isinstance(spec, aot.Array):

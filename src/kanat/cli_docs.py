@@ -50,8 +50,6 @@ ATTRIBUTES = {
                            "the run warns, above 1 it fails",
     "time_error_time": "implicit lumped runs: the time of that step [s]",
     "time_error_displacement": "implicit lumped runs: the largest local displacement error of a node in one step [m]",
-    "time_error_tension": "implicit lumped runs: the largest tension change that displacement error makes, as a "
-                          "fraction of the network's largest tension at that step (an upper bound on stiff lines)",
 }
 """Global attributes of a result file and what they hold (the reference page lists them)."""
 

@@ -39,7 +39,7 @@ import time
 from dataclasses import dataclass
 
 from kanat import aot
-from kanat._private_api import disk_cached_signatures
+from kanat._private_api import dispatcher_type, disk_cached_signatures
 
 OPTIONS = {"kernel": {"cache": True, "error_model": "numpy", "no_cfunc_wrapper": True},
            "inner": {"cache": True, "error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
@@ -84,7 +84,7 @@ class Deferred:
     @property
     def _numba_type_(self):
         """numba's type of this kernel's dispatcher (what ``numba.typeof`` answers for the kernel)."""
-        return self._real()._numba_type_
+        return dispatcher_type(self._real())
 
     def __call__(self, *args):
         if aot.LOOKUP.interpreted:                        # KANAT_KERNELS=python: the plain twin

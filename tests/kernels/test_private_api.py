@@ -3,7 +3,8 @@
 A numba, h5netcdf or SciPy release that changes one of them fails its test here, with a message naming
 the library and its version (docs/kernels.md says what each touch point is for and what replaces
 it). Oracles: the object file on disk, numba's own compile of a one-line function (its signature),
-the HDF5 file read back by h5py in another process, and SciPy's public ``solve_banded``.
+the HDF5 file read back by h5py in another process, a result worked by hand, numba's own
+``typeof`` of an instance and SciPy's public ``solve_banded``.
 """
 import subprocess
 import sys
@@ -108,9 +109,48 @@ def test_scipy_lapack_loads_without_scipy_linalg():
     assert float(error) < 1e-15
 
 
+def test_numba_types_an_object_by_its_numba_type_hook():
+    """``_numba_type_``: an object that gives a dispatcher's type is called as that kernel from another
+    (how kernels call a ``kanat.jit.Deferred`` by its plain name). Oracle: ``2 x + 1`` by hand."""
+    @numba.njit
+    def twice(x):
+        return 2.0 * x
+
+    class StandIn:
+        @property
+        def _numba_type_(self):
+            return _private_api.dispatcher_type(twice)
+
+    stand_in = StandIn()
+
+    @numba.njit
+    def caller(x):
+        return stand_in(x) + 1.0
+
+    assert numba.typeof(stand_in) == numba.typeof(twice), f"{NUMBA} no longer types an object by _numba_type_"
+    assert caller(3.0) == 7.0, f"{NUMBA}: a kernel calling a stand-in by its _numba_type_"
+
+
+def test_numba_types_a_named_tuple_from_its_items_types():
+    """``types.BaseTuple.from_types``: a record's type made from its fields' types, as the install-time
+    build declares it, is the type ``numba.typeof`` gives an instance (mixed and uniform fields)."""
+    from collections import namedtuple
+
+    from numba import types
+
+    Mixed, Uniform = namedtuple("Mixed", "values count"), namedtuple("Uniform", "first second")
+    array = types.Array(types.float64, 1, "C")
+    for kind, items, instance in ((Mixed, (array, types.int64), Mixed(np.zeros(2), 3)),
+                                  (Uniform, (types.float64, types.float64), Uniform(1.0, 2.0))):
+        made = _private_api.named_tuple_type(items, kind)
+        assert made == numba.typeof(instance), f"{NUMBA}: {made} is not how numba types a {kind.__name__}"
+
+
 def test_a_missing_private_api_is_named_with_its_library_version():
     with pytest.raises(PrivateAPIChanged, match=f"h5netcdf {h5netcdf.__version__} changed File._h5file"):
         _private_api.flush_hdf5(object())
     with pytest.raises(PrivateAPIChanged, match=f"numba {numba.__version__} changed numba.pycc.CC"):
         _private_api.compile_object_files(object(), "build")
     assert _private_api.disk_cached_signatures(np.sin) is None
+    with pytest.raises(PrivateAPIChanged, match=f"numba {numba.__version__} changed Dispatcher._numba_type_"):
+        _private_api.dispatcher_type(object())

@@ -19,14 +19,16 @@ import pytest
 
 from kanat import aot
 from kanat.lumped import entries
-from kanat.lumped.advance import FusedArrays, track_samples
+from kanat.lumped.advance import FusedArrays, implicit_scheme, track_samples
+from kanat.lumped.integrators import GeneralizedAlphaLumped
 from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
 
 from test_lumped_fast import network_case
 
-RECORDS = (entries.Nodes, entries.Elements, entries.Bodies, entries.Environment, entries.Work, entries.Snap)
+RECORDS = (entries.Nodes, entries.Elements, entries.Bodies, entries.Environment, entries.Work, entries.Snap,
+           entries.Track, entries.ImplicitScheme, entries.Band)
 
 
 @pytest.fixture(scope="module")
@@ -62,6 +64,31 @@ def test_the_built_records_match_one_version_of_the_stepping_entries(built):
     for record in args[5:11]:
         assert type(record) in RECORDS and aot.matches(record, type(record)) or type(record) is entries.Bodies
     matching = [i for i, spec in enumerate(aot.ENTRIES["rk4_steps"].versions) if aot.matches(args, spec)]
+    assert matching == [0]                                   # no 6-DOF body, no seabed contact
+
+
+def implicit_arguments(system, arrays, snap):
+    n, steps = len(system.free_index), 2
+    track = track_samples(system, np.array([0.01, 0.02, 0.01, 0.02]))
+    mid, end = (entries.Track(*(part[rows] for part in track)) for rows in (slice(None, steps), slice(steps, None)))
+    x, v, a = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))
+    scheme = implicit_scheme(GeneralizedAlphaLumped())
+    return (0.0, 0.01, steps, scheme, x, v, a, mid, end, arrays.nodes, arrays.el, arrays.bodies, arrays.env,
+            arrays.work, arrays.band, snap, arrays.events)
+
+
+def test_the_implicit_steps_take_the_explicit_steps_records(built):
+    """The fused implicit call reads the very records the explicit one does (no second copy) and its own
+    scheme, band and vessel records, and matches exactly one declared version of its entry."""
+    implicit, explicit = implicit_arguments(*built), rk4_arguments(*built)
+    for got, want in zip(implicit[9:14] + implicit[15:], explicit[5:]):   # nodes ... work, snap, events
+        assert got is want
+    for record in (implicit[3], implicit[7], implicit[8], implicit[14]):   # scheme, mid, end, band
+        assert aot.matches(record, type(record))
+    scheme = GeneralizedAlphaLumped()
+    assert tuple(implicit[3][:4]) == scheme.coefficients
+    assert (implicit[3].max_iterations, implicit[3].tolerance) == (scheme.max_iterations, scheme.tolerance)
+    matching = [i for i, spec in enumerate(aot.ENTRIES["implicit_steps"].versions) if aot.matches(implicit, spec)]
     assert matching == [0]                                   # no 6-DOF body, no seabed contact
 
 

@@ -88,14 +88,14 @@ def steps_of(model, state, steps, path):
 def test_compiled_and_python_steps_estimate_alike():
     """MoorDyn's WD0050 chain driven at its fairlead, its first six steps of 0.1 s by each path, each from
     the same state (the compiled modified Newton and the Python full Newton agree to their tolerance):
-    the same node and element for the largest errors, eqs. (1)-(3) within 0.1 % (measured 2e-4)."""
+    the same node for the largest error, eqs. (1) and (2) within 0.1 % (measured 2e-4)."""
     model = LumpedModel(driven(1.0, 0.1))
     state = model.initial().scheme
     for _ in range(6):
         compiled_state, compiled = steps_of(model, state, 1, "compiled")
         _, python = steps_of(model, state, 1, "python")
-        assert compiled[[1, 2, 4, 6, 7]] == pytest.approx(python[[1, 2, 4, 6, 7]], abs=1e-9)   # times, node, element
-        assert compiled[[0, 3, 5, 8, 9]] == pytest.approx(python[[0, 3, 5, 8, 9]], rel=1e-3)
+        assert compiled[[1, 2, 4]] == pytest.approx(python[[1, 2, 4]], abs=1e-9)   # times, node
+        assert compiled[[0, 3]] == pytest.approx(python[[0, 3]], rel=1e-3)
         assert compiled[3] > 0.0
         state = compiled_state
 
@@ -112,7 +112,7 @@ def test_the_estimate_only_observes():
                                                         model._tensions)
     assert np.array_equal(observed.x, blind.x) and np.array_equal(observed.v, blind.v)
     assert np.array_equal(observed.a, blind.a)
-    assert np.all(record[[0, 3, 5]] > 0.0)
+    assert np.all(record[[0, 3]] > 0.0)
 
 
 @pytest.fixture(scope="module")

@@ -270,7 +270,9 @@ class LumpedModel:
         "failure") of :func:`kanat.lumped.time_error.verdict`; None otherwise and for explicit schemes."""
         if self.scheme.explicit:
             return None
-        found = time_error.verdict(time_error_estimate(self.system), self.dt, self.net.element_where)
+        system = self.system
+        found = time_error.verdict(time_error_estimate(system), self.dt,
+                                   lambda free: self.net.where(int(system.free_index[free])))
         return found[1] if found is not None and found[0] == kind else None
 
     def _below_seabed(self, x, t) -> str | None:

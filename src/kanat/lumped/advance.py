@@ -52,6 +52,12 @@ class FusedArrays:
     env : kanat.lumped.entries.Environment
     work : kanat.lumped.entries.Work
         The scratch arrays, their water kinematics set once where the water is still.
+    events : numpy.ndarray
+        The snap events' buffer (k, 4) the stepping kernels fill.
+    band : kanat.lumped.entries.Band
+        The implicit steps' band tangent in the band order of
+        :func:`kanat.lumped.fast_implicit.band_order`, its scratch blocks and what persists
+        between calls (:func:`kanat.lumped.fast_implicit.steps`).
     """
 
     def __init__(self, system):
@@ -92,15 +98,14 @@ class FusedArrays:
             if nb:
                 self.work.body_velocity[:] = cu[0]
         self.events = np.zeros((max(fast.EVENT_BUFFER_MIN, 4 * m), 4))
-        self.position, self.bandwidth = fast_implicit.band_order(net, system.free_index)
-        self.blocks = (np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((m, 3, 3)), np.zeros((n, 3, 3)),
-                       np.zeros((n, 3, 3)))
-        self.band = np.zeros((len(system.free_index), 2 * self.bandwidth + 1, 3, 3))   # 3 x 3 node blocks
-        # fast_implicit.steps: the step of the factors in band (0: none), the time and step of the history
-        # previous, the factors' contraction estimate and age; the nodes on the seabed when band was built
-        self.tangent = np.zeros(5)
-        self.in_contact = np.zeros(n, dtype=np.bool_)
-        self.previous = np.zeros((len(system.free_index), 3))
+        position, half_width = fast_implicit.band_order(net, system.free_index)
+        nf = len(system.free_index)
+        self.band = entries.Band(
+            position=position, half_width=half_width, factors=np.zeros((nf, 2 * half_width + 1, 3, 3)),
+            element_stiffness=np.zeros((m, 3, 3)), element_damping=np.zeros((m, 3, 3)),
+            element_drag=np.zeros((m, 3, 3)), contact_stiffness=np.zeros((n, 3, 3)),
+            contact_damping=np.zeros((n, 3, 3)), memory=np.zeros(5), in_contact=np.zeros(n, dtype=np.bool_),
+            previous=np.zeros((nf, 3)))
 
 
 def sea_arrays(sea) -> tuple:
@@ -116,11 +121,21 @@ def sea_arrays(sea) -> tuple:
             1.0 if sea.stretching == "wheeler" else 0.0, float(sea.ramp))
 
 
-def track_samples(system, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def track_samples(system, times: np.ndarray) -> entries.Track:
     """Vessel nodes' positions, velocities (k, n_vessel, 3) and the heading (k,) at ``times`` (k,)
-    (:meth:`kanat.lumped.system.LumpedSystem.vessel_points`: track and prescribed motion)."""
+    (:meth:`kanat.lumped.system.LumpedSystem.vessel_points`: track and prescribed motion), the
+    :class:`kanat.lumped.entries.Track` record's one builder."""
     pos, vel, heading = system.vessel_points(np.ascontiguousarray(times, dtype=float))
-    return np.ascontiguousarray(pos), np.ascontiguousarray(vel), np.ascontiguousarray(heading)
+    return entries.Track(position=np.ascontiguousarray(pos), velocity=np.ascontiguousarray(vel),
+                         heading=np.ascontiguousarray(heading))
+
+
+def implicit_scheme(scheme) -> entries.ImplicitScheme:
+    """A :class:`kanat.lumped.integrators.GeneralizedAlphaLumped` as the fused implicit steps read
+    it: the :class:`kanat.lumped.entries.ImplicitScheme` record's one builder."""
+    alpha_m, alpha_f, gamma, beta = (float(value) for value in scheme.coefficients)
+    return entries.ImplicitScheme(alpha_m=alpha_m, alpha_f=alpha_f, gamma=gamma, beta=beta,
+                                  max_iterations=int(scheme.max_iterations), tolerance=float(scheme.tolerance))
 
 
 def time_error_estimate(system) -> np.ndarray:
@@ -173,9 +188,8 @@ def _python_steps(scheme, system, state, h, steps, tracker, tensions):
         before = state
         state = scheme.step(system, state, h)
         if implicit:
-            x, v = system.full(state.t, state.x, state.v)[:2]
-            time_error.observe(time_error_estimate(system), state.t, h, scheme.coefficients, before.x, before.a, state.a,
-                               x, v, system.free_index, system.el_args)
+            time_error.observe(time_error_estimate(system), state.t, h, scheme.coefficients, before.x, before.a,
+                               state.a, state.x)
         tracker.update(state.t, tensions(state))
         if not _finite(state):
             return state, done + 1
@@ -209,9 +223,9 @@ def _abm4_run(scheme, system, state, h, steps, tracker, tensions):
 
 def _implicit_run(scheme, system, state, h, steps, tracker, tensions):
     """Generalized-α in compiled calls; a step a call fails is retaken by :func:`_retake`."""
-    arrays = _arrays(system)                 # each call starts afresh: a run resumed from a
-    arrays.tangent[:] = 0.0                  # checkpoint takes the very same iterations
-    arrays.in_contact[:] = False
+    band = _arrays(system).band              # each call starts afresh: a run resumed from a
+    band.memory[:] = 0.0                     # checkpoint takes the very same iterations
+    band.in_contact[:] = False
     taken = 0
     while taken < steps:
         state, done, iterations, failed = _fused_implicit(scheme, system, state, h, min(steps - taken, CALL_STEPS),
@@ -253,7 +267,7 @@ def _explicit(system, state, h, tracker):
                        tracker)
     xf, vf = (np.array(part) for part in unpack(sub.y))
     a = system.acceleration(sub.t, xf, vf) if done == count else np.full_like(xf, np.nan)
-    _arrays(system).tangent[:] = 0.0                    # the implicit factors start afresh
+    _arrays(system).band.memory[:] = 0.0                # the implicit factors start afresh
     time_error.restart(time_error_estimate(system))     # and the error estimate passes over the restart
     return replace(state, t=sub.t, x=xf, v=vf, a=a, explicit=state.explicit + done)
 
@@ -266,14 +280,12 @@ def _fused_implicit(scheme, system, state, h, steps, tracker):
     t0 = float(state.t)
     af = scheme.coefficients[1]
     step = np.arange(steps) + 1.0
-    pos, vel, heading = track_samples(system, t0 + h * np.concatenate([step - af, step]))    # one sampling
-    mid, end = (pos[:steps], vel[:steps], heading[:steps]), (pos[steps:], vel[steps:], heading[steps:])
+    track = track_samples(system, t0 + h * np.concatenate([step - af, step]))    # one sampling: balances, ends
+    mid, end = (entries.Track(*(part[rows] for part in track)) for rows in (slice(None, steps), slice(steps, None)))
     x, v, a = (np.array(value, dtype=float) for value in (state.x, state.v, state.a))
     done, iterations, count, failed = entries.implicit_steps(
-        t0, h, steps, scheme.coefficients, scheme.max_iterations, scheme.tolerance, x, v, a, mid, end,
-        arrays.position, arrays.bandwidth, arrays.nodes, arrays.el, arrays.bodies, arrays.env, arrays.work,
-        arrays.blocks, arrays.band, arrays.tangent, arrays.in_contact, arrays.previous, tracker.kernel_arrays(), arrays.events,
-        time_error_estimate(system))
+        t0, h, steps, implicit_scheme(scheme), x, v, a, mid, end, arrays.nodes, arrays.el, arrays.bodies,
+        arrays.env, arrays.work, arrays.band, tracker.kernel_arrays(), arrays.events, time_error_estimate(system))
     tracker.absorb(arrays.events[:count].copy())
     system.evaluations += iterations
     return replace(state, t=t0 + done * h, x=x, v=v, a=a), done, iterations, failed

@@ -6,8 +6,9 @@ the arguments match it, numba's kernel otherwise (made on first use, so a run th
 numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
 The argument specifications below are the layouts the Python side builds, each group of arrays a
-named record (:func:`kanat.aot.record`) with one builder (``FusedArrays`` in
-:mod:`kanat.lumped.advance`, ``Network.elements`` in :mod:`kanat.lumped.network`); the stepping
+named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples`` and
+``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
+:mod:`kanat.lumped.network`, ``SnapTracker.kernel_arrays`` in :mod:`kanat.lumped.snap`); the stepping
 kernels come in one version per combination of the optional 6-DOF bodies and seabed contact
 (None when a network has none, which prunes their code).
 """
@@ -18,7 +19,13 @@ from functools import partial
 from kanat import aot
 from kanat.aot import B1, BOOL, F1, F2, F3, F4, FLOAT, I1, I2, INT
 
-SAMPLES = (F3, F3, F1)                                   # vessel points' positions, velocities, headings
+Track = aot.record(
+    "Track", "kanat.lumped.entries",
+    position=F3, velocity=F3,               # the vessel's nodes at each sample time [m], [m/s] (k, n_vessel, 3)
+    heading=F1,                             # the vessel's heading at each sample time [rad] (k,)
+)
+"""The vessel's nodes sampled at the times a compiled call needs (row ``s`` for sample ``s``), built by
+:func:`kanat.lumped.advance.track_samples`."""
 Nodes = aot.record(
     "Nodes", "kanat.lumped.entries",
     free=I1,                                # the free nodes (their order is that of the state vector)
@@ -108,20 +115,43 @@ Snap = aot.record(
 )
 """The snap tracker's live arrays, updated in place by :func:`kanat.lumped.fast.snap_update`,
 built by :meth:`kanat.lumped.snap.SnapTracker.kernel_arrays`."""
+ImplicitScheme = aot.record(
+    "ImplicitScheme", "kanat.lumped.entries",
+    alpha_m=FLOAT, alpha_f=FLOAT,           # generalized-alpha weights of the old acceleration and state
+    gamma=FLOAT, beta=FLOAT,                # Newmark's parameters (kanat.lumped.implicit eq. 1)
+    max_iterations=INT,                     # Newton iterations a step may take
+    tolerance=FLOAT,                        # increment, relative to max(1 m/s^2, max |a|), that ends them
+)
+"""The generalized-alpha scheme as the fused implicit steps read it, built by
+:func:`kanat.lumped.advance.implicit_scheme`."""
+Band = aot.record(
+    "Band", "kanat.lumped.entries",
+    position=I1,                            # each node's block row in the band order, -1 if prescribed (n,)
+    half_width=INT,                         # the band's half-width in 3 x 3 node blocks
+    factors=F4,                             # the tangent (implicit.py eq. 3), then its block LU (n_free, 2 w + 1, 3, 3)
+    element_stiffness=F3, element_damping=F3, element_drag=F3,   # K, C, D of kernels.tangent_blocks (m, 3, 3)
+    contact_stiffness=F3, contact_damping=F3,   # K_c, C_c of kanat.physics.contact.contact_tangent (n, 3, 3)
+    memory=F1,                              # (5,): the factors' step (0: none), the time and step of the history
+                                            # previous, the factors' contraction estimate and their age in steps
+    in_contact=B1,                          # the nodes on the seabed when the factors were built (n,)
+    previous=F2,                            # the acceleration one step before the history's time (n_free, 3)
+)
+"""The fused implicit steps' band tangent, its scratch blocks and what they keep between calls
+(:func:`kanat.lumped.fast_implicit.steps`), built by :class:`kanat.lumped.advance.FusedArrays`."""
 register = partial(aot.register, module="_lumped")       # the lumped model's own extension module
 BODIES = tuple(Bodies.narrowed(rig=rig, contact=seabed) for rig in (None, RIG) for seabed in (None, SEABED))
 """The ``bodies`` argument with and without 6-DOF bodies and seabed contact."""
 
 register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
 register("rk4_steps", "kanat.lumped.fast",
-         *((FLOAT, FLOAT, INT, F1, SAMPLES, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, F1, Track, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
          returns=(INT, INT), module="_lumped_explicit")
 register("abm4_steps", "kanat.lumped.fast",
-         *((FLOAT, FLOAT, INT, F1, F2, SAMPLES, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, F1, F2, Track, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
          returns=(INT, INT), module="_lumped_explicit")
 register("implicit_steps", "kanat.lumped.fast_implicit",
-         *((FLOAT, FLOAT, INT, (FLOAT,) * 4, INT, FLOAT, F2, F2, F2, SAMPLES, SAMPLES, I1, INT, Nodes, Elements,
-            bodies, Environment, Work, (F3,) * 5, F4, F1, B1, F2, Snap, F2, F1) for bodies in BODIES),
+         *((FLOAT, FLOAT, INT, ImplicitScheme, F2, F2, F2, Track, Track, Nodes, Elements, bodies, Environment, Work,
+            Band, Snap, F2, F1) for bodies in BODIES),
          returns=(INT, INT, INT, BOOL), function="steps")
 register("elastic_row", "kanat.lumped.kernels", (I1, I1, F2, F2, INT, FLOAT), returns=(FLOAT, FLOAT))
 register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, Elements, F2, F2, F1, F1),

@@ -12,7 +12,8 @@ tests compare them.
 
 It applies to the lumped mass matrix and the built-in ``rk4`` and ``abm4`` schemes
 (:func:`supports`); the driver falls back to the Python path otherwise. The vessel's
-tow point is sampled on the half-step grid of each call by :func:`track_samples`.
+tow point is sampled on the half-step grid of each call (an :class:`kanat.lumped.entries.Track`,
+built by :func:`kanat.lumped.advance.track_samples`).
 """
 from __future__ import annotations
 
@@ -364,10 +365,11 @@ def loads(t, y, vpos, vvel, heading, nodes, el, bodies, env, work):
 
 @inner
 def derivative(t, y, s, samples, nodes, el, bodies, env, work, dy):
-    """``dy/dt`` of ``y = (q, q_dot)`` (flat) with the vessel at sample ``s`` — system eq. (1),
-    lumped mass; leaves the element tensions at ``y`` in ``work.tension``."""
+    """``dy/dt`` of ``y = (q, q_dot)`` (flat) with the vessel at sample ``s`` of ``samples`` (an
+    :class:`kanat.lumped.entries.Track`) — system eq. (1), lumped mass; leaves the element tensions
+    at ``y`` in ``work.tension``."""
     nf = nodes.free.shape[0]
-    loads(t, y, samples[0][s], samples[1][s], samples[2][s], nodes, el, bodies, env, work)
+    loads(t, y, samples.position[s], samples.velocity[s], samples.heading[s], nodes, el, bodies, env, work)
     for i in range(3 * nf):
         dy[i] = y[3 * nf + i]
     M, F, free_index = work.mass, work.force, nodes.free
@@ -426,7 +428,7 @@ def snap_update(t, T, snap, events, count):
 def tensions_at(y, s, samples, nodes, el, bodies, work):
     """Element tensions at ``y`` into ``work.tension`` (vessel at sample ``s``)."""
     x, v, T = work.x, work.v, work.tension
-    place(y, samples[0][s], samples[1][s], nodes, x, v)
+    place(y, samples.position[s], samples.velocity[s], nodes, x, v)
     place_rigid(x, v, bodies.rig)
     kernels.tensions(x, v, el, T)
 

@@ -35,7 +35,6 @@ CONTRACTION = 0.1           # an increment above this fraction of the one before
 FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (see newton_step)
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
-TENSION_FLOOR = 1.0         # N: the least tension scale of the time-error estimate (kanat.lumped.time_error)
 MOTION_FLOOR = 1e-6         # m per node: the least displacement of a step the time-error estimate divides by
 
 
@@ -178,12 +177,15 @@ def bending_tangent(A, bw, position, x, el, c_stiff):
 
 
 @inner
-def assemble(A, bw, position, nodes, el, bodies, env, work, blocks, c_mass, c_damp, c_stiff):
-    """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in band storage
-    (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
-    :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``."""
+def assemble(band, nodes, el, bodies, env, work, c_mass, c_damp, c_stiff):
+    """Tangent ``c_mass M + c_damp (C + D + D_body + C_c) + c_stiff (K + K_c)`` in the band storage
+    ``band.factors`` (kernels eq. tangent_blocks; body drag ``-dF/dv``; seabed contact ``K_c, C_c`` of
+    :func:`kanat.physics.contact.contact_tangent`), at the state in ``work``; ``band`` is an
+    :class:`kanat.lumped.entries.Band`."""
     x, v, M, uw, bu = work.x, work.v, work.mass, work.water_velocity, work.load_velocity
-    K, C, D, Kc, Cc = blocks
+    A, bw, position = band.factors, band.half_width, band.position
+    K, C, D = band.element_stiffness, band.element_damping, band.element_drag
+    Kc, Cc = band.contact_stiffness, band.contact_damping
     A[:, :, :, :] = 0.0
     kernels.tangent_blocks(x, v, uw, el, K, C, D)
     el_i, el_j = el.first_node, el.second_node
@@ -231,10 +233,12 @@ def contact_changed(contact, normal_force, in_contact):
 
 
 @inner
-def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_pos, vm_vel, vm_head,
-                position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, out_x, out_v, out_a):
-    """One generalized-α step (implicit.py eqs. 1-3) by modified Newton from the predictor in
-    ``out_a``; returns the iterations used, or ``-iterations`` when it did not converge.
+def newton_step(t, h, scheme, x0, v0, a0, vm_pos, vm_vel, vm_head, nodes, el, bodies, env, work, band,
+                out_x, out_v, out_a):
+    """One generalized-α step (implicit.py eqs. 1-3) of ``scheme`` (an
+    :class:`kanat.lumped.entries.ImplicitScheme`) by modified Newton from the predictor in ``out_a``,
+    the factors ``A`` and their memory ``tangent`` in ``band`` (an :class:`kanat.lumped.entries.Band`:
+    ``factors``, ``memory``); returns the iterations used, or ``-iterations`` when it did not converge.
 
     The factors of eq. (3) in ``A`` are kept across iterations and steps (``tangent[0]`` holds
     the step they were built for, 0 for none) and rebuilt at the current iterate only where they
@@ -267,7 +271,10 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
     iterate, which breaks the two-cycles a node sets up when its seabed contact switches on and
     off from one iterate to the next (Dennis & Schnabel, Numerical Methods for Unconstrained
     Optimization, 1983, §6.3, with the simple decrease test)."""
-    am, af, gamma, beta = coefficients
+    am, af, gamma, beta = scheme.alpha_m, scheme.alpha_f, scheme.gamma, scheme.beta
+    max_iterations, tolerance = scheme.max_iterations, scheme.tolerance
+    position, bw, A = band.position, band.half_width, band.factors
+    tangent, in_contact = band.memory, band.in_contact
     nf = x0.shape[0]
     free_index = nodes.free
     ym, rhs = np.empty(6 * nf), np.empty(3 * nf)           # (x_m, v_m) flat, as fast.loads takes them
@@ -313,8 +320,7 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
         norm_before, backtracks = norm, 0
         refreshed = refresh
         if refresh:
-            assemble(A, bw, position, nodes, el, bodies, env, work, blocks, 1.0 - am, (1.0 - af) * gamma * h,
-                     (1.0 - af) * beta * h * h)
+            assemble(band, nodes, el, bodies, env, work, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h)
             tangent[0] = h if band_factor(A, bw) else 0.0
             tangent[3], tangent[4] = 0.0, 0.0
             if tangent[0] == 0.0:
@@ -347,11 +353,10 @@ def newton_step(t, h, coefficients, max_iterations, tolerance, x0, v0, a0, vm_po
 
 
 @inner
-def perturbed_tensions(t, factor, h, x, a, na, nx, nv, y, s, end_samples, nodes, el, bodies, work, estimate, out):
+def observe_error(t, factor, h, x, a, na, nx, estimate):
     """The local displacement error ``e = factor h^2 (a_n+1 - a_n)`` of each free node at ``t = t_n+1``
     (:mod:`kanat.lumped.time_error`, eq. 1): its largest norm into ``estimate[0:3]`` (value, time, free node),
-    its 2-norm over the step's displacement's, eq. (2), into ``estimate[3:5]`` (value, time); the element
-    tensions at ``x_n+1 + e`` into ``out`` (m,)."""
+    its 2-norm over the step's displacement's, eq. (2), into ``estimate[3:5]`` (value, time)."""
     nf = a.shape[0]
     c = factor * h * h
     error, moved = 0.0, 0.0
@@ -361,52 +366,37 @@ def perturbed_tensions(t, factor, h, x, a, na, nx, nv, y, s, end_samples, nodes,
             e = c * (na[f, r] - a[f, r])
             size += e * e
             moved += (nx[f, r] - x[f, r]) ** 2
-            y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r] + e, nv[f, r]
         error += size
         if np.sqrt(size) > estimate[0]:
             estimate[0], estimate[1], estimate[2] = np.sqrt(size), t, f
     ratio = np.sqrt(error) / max(np.sqrt(moved), MOTION_FLOOR * np.sqrt(nf))
     if ratio > estimate[3]:
         estimate[3], estimate[4] = ratio, t
-    fast.tensions_at(y, s, end_samples, nodes, el, bodies, work)
-    for k in range(out.shape[0]):
-        out[k] = work.tension[k]
-
-
-@inner
-def tension_error(t, tension, perturbed, estimate):
-    """The largest ``|T(x + e) - T(x)| / max(max_k |T_k(x)|, TENSION_FLOOR)`` of a step
-    (:mod:`kanat.lumped.time_error`, eq. 3) into ``estimate[5:10]`` (value, time, element, error [N], scale [N])."""
-    scale = TENSION_FLOOR
-    for k in range(tension.shape[0]):
-        scale = max(scale, abs(tension[k]))
-    for k in range(tension.shape[0]):
-        error = abs(perturbed[k] - tension[k])
-        if error / scale > estimate[5]:
-            estimate[5], estimate[6], estimate[7], estimate[8], estimate[9] = error / scale, t, k, error, scale
 
 
 @kernel
-def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_samples, end_samples,
-          position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, previous, snap, events,
-          estimate):
-    """Up to ``count`` steps from ``(t0, x, v, a)`` (updated in place), tracking snaps after each.
-    Returns (steps done, Newton iterations, events, failed): it stops before a step whose
-    Newton iteration fails, before the event buffer could overflow, or on a non-finite state.
+def steps(t0, h, count, scheme, x, v, a, mid_samples, end_samples, nodes, el, bodies, env, work, band, snap,
+          events, estimate):
+    """Up to ``count`` steps of ``scheme`` (an :class:`kanat.lumped.entries.ImplicitScheme`) from
+    ``(t0, x, v, a)`` (updated in place), tracking snaps after each. Returns (steps done, Newton
+    iterations, events, failed): it stops before a step whose Newton iteration fails, before the
+    event buffer could overflow, or on a non-finite state. The vessel is sampled at the steps'
+    force balance (``mid_samples``) and ends (``end_samples``), both :class:`kanat.lumped.entries.Track`.
 
-    ``tangent`` (5,): the step of the factors in ``A`` (:func:`newton_step`), the time and
-    step of the acceleration history ``previous`` (the acceleration one step before that time),
+    ``band`` (an :class:`kanat.lumped.entries.Band`) holds the factors and what persists between
+    calls: ``band.memory`` (5,), the step of the factors (:func:`newton_step`), the time and step
+    of the acceleration history ``band.previous`` (the acceleration one step before that time),
     the factors' last contraction estimate ``eta`` and their age in steps (:func:`newton_step`);
-    ``in_contact`` (n,): the nodes on the seabed when ``A`` was built. They persist between
-    calls. Each step's predictor is ``a_1 = 2 a - a_prev`` where the history is that of this
-    state and step, else ``a_1 = a``. ``estimate`` (11,): the running maxima of the local time-integration
-    error estimate (:mod:`kanat.lumped.time_error`), updated after each step; it only observes."""
+    ``band.in_contact`` (n,), the nodes on the seabed when the factors were built. Each step's
+    predictor is ``a_1 = 2 a - a_prev`` where the history is that of this state and step, else
+    ``a_1 = a``. ``estimate`` (:data:`kanat.lumped.time_error.SIZE`,): the running maxima of the local
+    time-integration error estimate (:mod:`kanat.lumped.time_error`), updated after each step; it only
+    observes."""
+    tangent, previous = band.memory, band.previous
     nf = x.shape[0]
     nx, nv, na = np.empty((nf, 3)), np.empty((nf, 3)), np.empty((nf, 3))
     y = np.empty(6 * nf)
-    perturbed = np.empty(work.tension.shape[0])
-    am, af, gamma, beta = coefficients
-    factor = beta - 1.0 / 6.0 + 0.5 * (am - af)            # time_error eq. 1
+    factor = scheme.beta - 1.0 / 6.0 + 0.5 * (scheme.alpha_m - scheme.alpha_f)      # time_error eq. 1
     iterations, n_events = 0, np.int64(0)      # not a literal 0: see kanat.jit
     for step in range(count):
         if n_events + work.tension.shape[0] > events.shape[0]:
@@ -416,18 +406,16 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
         for f in range(nf):
             for r in range(3):
                 na[f, r] = 2.0 * a[f, r] - previous[f, r] if extrapolate else a[f, r]
-        used = newton_step(t0 + step * h, h, coefficients, max_iterations, tolerance, x, v, a,
-                           mid_samples[0][step], mid_samples[1][step], mid_samples[2][step],
-                           position, bw, nodes, el, bodies, env, work, blocks, A, tangent, in_contact, nx, nv, na)
+        used = newton_step(t0 + step * h, h, scheme, x, v, a,
+                           mid_samples.position[step], mid_samples.velocity[step], mid_samples.heading[step],
+                           nodes, el, bodies, env, work, band, nx, nv, na)
         if used < 0:
             return step, iterations, n_events, True
         iterations += used
-        observed = estimate[10] <= 0.0                          # past a start's steps (time_error.START_STEPS)
-        if observed:
-            perturbed_tensions(t + h, factor, h, x, a, na, nx, nv, y, step, end_samples, nodes, el, bodies, work,
-                               estimate, perturbed)
+        if estimate[5] <= 0.0:                                  # past a start's steps (time_error.START_STEPS)
+            observe_error(t + h, factor, h, x, a, na, nx, estimate)
         else:
-            estimate[10] -= 1.0
+            estimate[5] -= 1.0
         for f in range(nf):
             for r in range(3):
                 previous[f, r] = a[f, r]
@@ -435,8 +423,6 @@ def steps(t0, h, count, coefficients, max_iterations, tolerance, x, v, a, mid_sa
                 y[3 * f + r], y[3 * nf + 3 * f + r] = nx[f, r], nv[f, r]
         tangent[1], tangent[2], tangent[4] = t + h, h, tangent[4] + 1.0
         fast.tensions_at(y, step, end_samples, nodes, el, bodies, work)
-        if observed:
-            tension_error(t + h, work.tension, perturbed, estimate)
         n_events = fast.snap_update(t0 + (step + 1) * h, work.tension, snap, events, n_events)
         if not fast.finite(y):
             return step + 1, iterations, n_events, False
