@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from kanat import aot
-from kanat.lumped import entries
+from kanat.lumped import entries, time_error
 from kanat.lumped.advance import FusedArrays, implicit_scheme, track_samples
 from kanat.lumped.integrators import GeneralizedAlphaLumped
 from kanat.lumped.network import build_network
@@ -74,14 +74,14 @@ def implicit_arguments(system, arrays, snap):
     x, v, a = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))
     scheme = implicit_scheme(GeneralizedAlphaLumped())
     return (0.0, 0.01, steps, scheme, x, v, a, mid, end, arrays.nodes, arrays.el, arrays.bodies, arrays.env,
-            arrays.work, arrays.band, snap, arrays.events)
+            arrays.work, arrays.band, snap, arrays.events, time_error.empty())
 
 
 def test_the_implicit_steps_take_the_explicit_steps_records(built):
     """The fused implicit call reads the very records the explicit one does (no second copy) and its own
     scheme, band and vessel records, and matches exactly one declared version of its entry."""
     implicit, explicit = implicit_arguments(*built), rk4_arguments(*built)
-    for got, want in zip(implicit[9:14] + implicit[15:], explicit[5:]):   # nodes ... work, snap, events
+    for got, want in zip(implicit[9:14] + implicit[15:17], explicit[5:]):   # nodes ... work, snap, events
         assert got is want
     for record in (implicit[3], implicit[7], implicit[8], implicit[14]):   # scheme, mid, end, band
         assert aot.matches(record, type(record))
