@@ -39,7 +39,8 @@ def free_tails(case) -> list[tuple[str, bool]]:
 
 
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
-    """``x`` (n, 3) with every free tail's nodes placed by eq. (1), or None when the case has none.
+    """``x`` (n, 3) with every free tail's nodes placed by eq. (1), or None when the case has none or no
+    flow passes them (still water, no way on: a clamped beam or a hanging line keeps the network's guess).
 
     Parameters
     ----------
@@ -51,7 +52,10 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
         The steady frame's velocity ``U_frame`` [m/s].
     """
     tails = free_tails(case)
-    if not tails:
+    current = case.environment.current
+    still = not np.any(np.asarray(velocity, dtype=float)[:2]) and all(
+        not np.any(np.asarray(current.at(float(z)), dtype=float)[:2]) for z in np.unique(x[:, 2]))
+    if not tails or still:
         return None
     x = np.array(x, dtype=float)
     for name, reversed_ in tails:
