@@ -11,17 +11,22 @@ is that of its tilt, whatever its yaw, against closed forms:
   ``2 pi zeta / sqrt(1 - zeta^2)``, ``zeta = B_44 / (2 sqrt(C_44 (I_xx + A_44)))`` (rotation about
   the centre of gravity, which no horizontal force moves), and the tilt's history the same at
   every yaw to round-off;
-* the linearisation about a yawed equilibrium: ``K`` of the body's degrees of freedom symmetric.
+* the linearisation of the moored buoy of examples/mooring_buoy_waves.yaml: ``K`` of the body's
+  degrees of freedom symmetric, and the same for a hydrostatic reference of yaw 0 or 90 deg.
 """
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+import kanat
+from kanat.frequency.linearize import linearize
 from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem
 from kanat.model import Case
 
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 RHO, G = 1025.0, 9.81
 RADIUS, DRAFT, Z_G = 2.0, 4.0, -2.5                      # m: a vertical cylinder, G below the waterline
 VOLUME = math.pi * RADIUS ** 2 * DRAFT
@@ -128,3 +133,27 @@ def test_roll_decay_is_the_same_at_any_yaw(reference):
         assert np.mean(np.diff(tp)) == pytest.approx(damped, rel=2e-3), f"yaw {yaw}"
         assert np.mean(np.log(peak[:-1] / peak[1:])) == pytest.approx(decrement, rel=1e-2), f"yaw {yaw}"
         np.testing.assert_allclose(tilt, runs[0.0][1], rtol=0, atol=1e-12, err_msg=f"yaw {yaw}")
+
+
+def body_stiffness(reference_yaw):
+    """``K`` (6, 6) of the mooring buoy's degrees of freedom (examples/mooring_buoy_waves.yaml),
+    its hydrostatic reference turned to ``reference_yaw``, and its equilibrium angles [deg]."""
+    case = kanat.load_case(EXAMPLES / "mooring_buoy_waves.yaml").replace(
+        {"bodies.buoy.orientation_deg": [0.0, 0.0, reference_yaw]})
+    lin = linearize(case)
+    rigid = lin.net.rigid
+    dofs = np.flatnonzero(np.isin(lin.node, [rigid.ref_node[0], rigid.rot_node[0]]))
+    return lin.stiffness.toarray()[np.ix_(dofs, dofs)], np.degrees(lin.position[rigid.rot_node[0]])
+
+
+@pytest.mark.slow
+def test_the_linearised_stiffness_is_symmetric_and_blind_to_the_reference_heading():
+    """The three legs turn the buoy back to yaw 0 from a hydrostatic reference at 90 deg: with no
+    yaw stiffness of its own, the reference's heading changes nothing (the restoring acts on the
+    tilt), and ``K`` is symmetric (a potential's Hessian at the equilibrium)."""
+    level, angles_level = body_stiffness(0.0)
+    turned, angles_turned = body_stiffness(90.0)
+    np.testing.assert_allclose(angles_turned, angles_level, atol=1e-6)
+    for K in (level, turned):
+        assert np.linalg.norm(K - K.T) < 1e-8 * np.linalg.norm(K)
+    np.testing.assert_allclose(turned, level, rtol=0, atol=1e-8 * np.linalg.norm(level))
