@@ -88,7 +88,8 @@ def test_righting_moment_is_that_of_the_tilt_at_any_yaw(reference_yaw, yaw, roll
     z_body, e_z = R[:, 2], np.array([0.0, 0.0, 1.0])
     tilt = math.acos(z_body[2])
     assert np.linalg.norm(M) == pytest.approx(C44 * math.sin(tilt), rel=1e-12)
-    np.testing.assert_allclose(M, C44 * np.cross(z_body, e_z), rtol=0, atol=1e-9 * C44)   # about the tilt axis, restoring
+    # about the tilt axis, restoring: M = C44 (z_b x e_z)
+    np.testing.assert_allclose(M, C44 * np.cross(z_body, e_z), rtol=0, atol=1e-9 * C44)
 
 
 YAWS = [0.0, 90.0, 179.0, 180.0]
