@@ -5,6 +5,8 @@ is that of its tilt, whatever its yaw, against closed forms:
   axis, at any yaw and about a reference orientation of any yaw:
   ``|M| = (rho g (I_wp + V z_B) - m g z_G) sin(theta)`` (``I_wp = pi a^4 / 4``, ``V = pi a^2 T``,
   ``z_B = -T / 2`` for radius ``a`` and draft ``T``; ``m = rho V``), about the tilt axis, restoring;
+* a waterplane force straight down, ``-rho g A_w dz``, wherever the body is moved horizontally
+  from its reference and however it is tilted (buoyancy stays vertical);
 * its free roll decay at yaw 0, 90, 179 and 180 deg (from a reference yaw of 0: a body that has
   turned away from its reference heading; and from a reference of that yaw): period
   ``2 pi sqrt((I_xx + A_44) / C_44) / sqrt(1 - zeta^2)`` and logarithmic decrement
@@ -62,20 +64,26 @@ def rotation(roll, pitch, yaw):
                      [-sp, cp * sr, cp * cr]])
 
 
-def state(system, angles):
-    """Free coordinates and velocities (at rest) with the body at its reference point, turned by ``angles``."""
-    x = system.net.x_guess.copy()
+def state(system, angles, shift=(0.0, 0.0, 0.0)):
+    """Free coordinates and velocities (at rest) with the body (and its tether) ``shift`` from its
+    reference point, turned by ``angles``."""
+    x = system.net.x_guess + shift
     x[system.net.rigid.rot_node[0]] = angles
     xf = x[system.free_index]
     return xf, np.zeros_like(xf)
 
 
-def moment(system, angles):
-    """The moment about the reference point (global axes) on the body at rest turned by ``angles``."""
-    xf, vf = state(system, angles)
+def loads(system, angles, shift=(0.0, 0.0, 0.0)):
+    """The force and the moment about the reference point (global axes) on the body at rest,
+    ``shift`` from its reference point and turned by ``angles``."""
+    xf, vf = state(system, angles, shift)
     x, v, _, heading = system.full(0.0, xf, vf)
     F, _ = system.loads(0.0, x, v, heading)
-    return F[system.net.rigid.rot_node[0]].copy()
+    return F[system.net.rigid.ref_node[0]].copy(), F[system.net.rigid.rot_node[0]].copy()
+
+
+def moment(system, angles):
+    return loads(system, angles)[1]
 
 
 @pytest.mark.parametrize("reference_yaw", [0.0, 90.0, 180.0])
@@ -90,6 +98,20 @@ def test_righting_moment_is_that_of_the_tilt_at_any_yaw(reference_yaw, yaw, roll
     assert np.linalg.norm(M) == pytest.approx(C44 * math.sin(tilt), rel=1e-12)
     # about the tilt axis, restoring: M = C44 (z_b x e_z)
     np.testing.assert_allclose(M, C44 * np.cross(z_body, e_z), rtol=0, atol=1e-9 * C44)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 90.0, 180.0])
+def test_buoyancy_stays_vertical_and_blind_to_the_horizontal_offset(yaw):
+    """Moved 10 m in surge and 5 m in sway from its reference, pitched 4 deg and lifted 0.2 m, the
+    cylinder feels the waterplane's ``-rho g A_w dz`` straight down and the righting moment of its
+    tilt: still water has no horizontal preference."""
+    system = cylinder_system(0.0)
+    angles = np.radians([0.0, 4.0, yaw])
+    force, M = loads(system, angles, shift=(10.0, 5.0, 0.2))
+    heave = RHO * G * math.pi * RADIUS ** 2 * 0.2
+    np.testing.assert_allclose(force, [0.0, 0.0, -heave], rtol=0, atol=1e-2)      # N: the slack tether's pull
+    z_body = rotation(*angles)[:, 2]
+    np.testing.assert_allclose(M, C44 * np.cross(z_body, [0.0, 0.0, 1.0]), rtol=0, atol=1e-9 * C44)
 
 
 YAWS = [0.0, 90.0, 179.0, 180.0]
