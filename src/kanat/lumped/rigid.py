@@ -20,10 +20,21 @@ the centre of gravity::
 block and force of the line nodes at fairlead ``f`` (the lines' half elements ride on the
 body). Static loads: without hydrostatics, the weight ``m g`` at ``c`` and the buoyancy
 ``B = net_buoyancy + m g`` at the centre of buoyancy; with a hydrostatic stiffness ``C`` (given
-or ``rho g A_w``, ``B GM``), the net buoyancy at the reference point and the restoring
-``-T C T^T dxi`` about the body's given ``position`` and ``orientation_deg`` (``dxi`` the
-displacement, heave measured from the wave surface ``eta`` at ``r`` for a surface-piercing
-body) — ``C`` then holds the weight's and buoyancy's moments. Body-axes loads
+or ``rho g A_w``, ``B GM``; body axes), the net buoyancy at the reference point and the restoring
+about the body's given ``position`` and ``orientation_deg`` (``R_0``) — ``C`` then holds the
+weight's and buoyancy's moments::
+
+    (4)  [F; M] = -[H (C dxi)_t; R (C dxi)_r],   H = Rz(yaw),
+         dxi = (H^T (r - r_0 - eta e_z), k x k_0 + (yaw - yaw_0) k_0),   k = R^T e_z,   k_0 = R_0^T e_z
+
+(``eta`` the wave surface at ``r`` for a surface-piercing body, 0 otherwise). ``k x k_0`` is the
+tilt from the reference in body axes, of length ``sin`` of the angle between the two verticals:
+the restoring is that of the body's actual tilt whatever its heading (for ``C44 = C55 = B GM``
+and a level reference, ``M = B GM (z_b x e_z)``, ``|M| = B GM sin(tilt)``), and heave and surge
+follow the heading, not the tilt (buoyancy stays vertical). To first order about a level
+reference ``dxi = (H^T dr, R^T dphi)`` with ``dphi`` the small rotation in the global frame, so
+the linearised stiffness (:mod:`kanat.frequency.rigid`) is ``T C T^T`` in ``(dr, dphi)``: symmetric.
+Body-axes loads
 ``f_b = -B_1 nu - B_2 |nu| nu - 1/2 rho C_D A |nu_r| nu_r`` with ``nu = (R^T r_dot, R^T w)`` and
 ``nu_r`` the same relative to the water. Finally ``Theta_ddot = E^-1 (w_dot - E_dot Theta_dot)``.
 """
@@ -232,7 +243,7 @@ def rotate6(R, A, out):
 
 @inner
 def static_loads(b, x, R, eta, g_vec, rig, F6):
-    """Weight, buoyancy, hydrostatic restoring and constant force of body ``b`` into ``F6``."""
+    """Weight, buoyancy, hydrostatic restoring (module eq. 4) and constant force of body ``b`` into ``F6``."""
     ref, rot, hydro, cog, cob, sc, force, reference = rig[0], rig[1], rig[4], rig[8], rig[9], rig[10], rig[11], \
         rig[12]
     weight, buoyancy, hydro_on, surface = sc[b, 0], sc[b, 1], sc[b, 3], sc[b, 4]
@@ -240,23 +251,42 @@ def static_loads(b, x, R, eta, g_vec, rig, F6):
         F6[r] += force[b, r]
     F6[2] += buoyancy - weight
     if hydro_on > 0.0:
-        d = np.empty(6)
-        for r in range(3):
-            d[r] = x[ref[b], r] - reference[b, r]
-            d[3 + r] = x[rot[b], r] - reference[b, 3 + r]
-        if surface > 0.0:
-            d[2] -= eta
-        Cg = np.empty((6, 6))
-        rotate6(R, hydro[b], Cg)
+        d, load = np.empty(6), np.zeros(6)
+        hydrostatic_displacement(b, x, R, eta, surface, reference, rot, ref, d)
+        cy, sy = math.cos(x[rot[b], 2]), math.sin(x[rot[b], 2])
         for i in range(6):
             for j in range(6):
-                F6[i] -= Cg[i, j] * d[j]
+                load[i] -= hydro[b, i, j] * d[j]
+        F6[0] += cy * load[0] - sy * load[1]
+        F6[1] += sy * load[0] + cy * load[1]
+        F6[2] += load[2]
+        for r in range(3):
+            F6[3 + r] += R[r, 0] * load[3] + R[r, 1] * load[4] + R[r, 2] * load[5]
         return
     pg, pb = np.empty(3), np.empty(3)
     turn(R, cog[b], pg)
     turn(R, cob[b], pb)
     F6[3] += -pg[1] * weight + pb[1] * buoyancy
     F6[4] += pg[0] * weight - pb[0] * buoyancy
+
+
+@inner
+def hydrostatic_displacement(b, x, R, eta, surface, reference, rot, ref, d):
+    """``dxi`` (6,) of module eq. (4): the reference point's displacement in the heading frame
+    ``H = Rz(yaw)`` (heave from the wave surface ``eta`` for a surface-piercing body), then the tilt
+    ``k x k_0`` and the yaw change, in body axes."""
+    R0 = np.empty((3, 3))
+    rotation(reference[b, 3], reference[b, 4], reference[b, 5], R0)
+    cy, sy = math.cos(x[rot[b], 2]), math.sin(x[rot[b], 2])
+    dx, dy = x[ref[b], 0] - reference[b, 0], x[ref[b], 1] - reference[b, 1]
+    d[0], d[1] = cy * dx + sy * dy, -sy * dx + cy * dy
+    d[2] = x[ref[b], 2] - reference[b, 2] - (eta if surface > 0.0 else 0.0)
+    k0, k1, k2 = R[2, 0], R[2, 1], R[2, 2]                  # k = R^T e_z: the vertical in body axes
+    q0, q1, q2 = R0[2, 0], R0[2, 1], R0[2, 2]               # k_0, the same at the reference
+    turn_about = x[rot[b], 2] - reference[b, 5]
+    d[3] = k1 * q2 - k2 * q1 + q0 * turn_about
+    d[4] = k2 * q0 - k0 * q2 + q1 * turn_about
+    d[5] = k0 * q1 - k1 * q0 + q2 * turn_about
 
 
 @inner
