@@ -111,18 +111,24 @@ def test_band_lu_solves_as_scipys_sparse_lu(name):
 
 def test_singular_and_wide_matrices():
     """A singular matrix gives None (as SuperLU's failure did); a graph whose band would be wider than
-    the dense matrix (a star) goes to SciPy's sparse LU and solves the same."""
+    the dense matrix (a star of 31 nodes) goes to SciPy's sparse LU and solves the same; a small one
+    (a star of 8 nodes, 24 unknowns) stays on the band solver."""
     chain = [{1}, {0, 2}, {1}]
     rows, cols, values = block_matrix(chain, np.random.default_rng(2))
     values[rows // 3 == 1] = 0.0                                       # node 1's rows: zero
     assert NodeBandSolver(chain).solve(rows, cols, values, np.ones(9)) is None
-    star = [set(range(1, 8))] + [{0} for _ in range(7)]
+    star = [set(range(1, 31))] + [{0} for _ in range(30)]
     solver = NodeBandSolver(star)
     assert not solver.banded
     rows, cols, values = block_matrix(star, np.random.default_rng(3))
-    rhs = np.arange(24.0)
-    matrix = sp.csc_matrix((values, (rows, cols)), shape=(24, 24))
+    rhs = np.arange(93.0)
+    matrix = sp.csc_matrix((values, (rows, cols)), shape=(93, 93))
     assert np.allclose(matrix @ solver.solve(rows, cols, values, rhs), rhs, rtol=0, atol=1e-11)
+    small = [set(range(1, 8))] + [{0} for _ in range(7)]
+    rows, cols, values = block_matrix(small, np.random.default_rng(4))
+    matrix = sp.csc_matrix((values, (rows, cols)), shape=(24, 24))
+    assert NodeBandSolver(small).banded
+    assert np.allclose(matrix @ NodeBandSolver(small).solve(rows, cols, values, rhs[:24]), rhs[:24], atol=1e-11)
     with pytest.raises(ValueError, match="not neighbours"):
         NodeBandSolver([{1}, {0, 2}, {1, 3}, {2, 4}, {3, 5}, {4}]).solve(
             np.array([0, 15]), np.array([0, 0]), np.array([1.0, 1.0]), np.ones(18))

@@ -14,13 +14,16 @@ pivoting in band storage, Golub & Van Loan 2013 §4.3.5) solves it in ``O(n kl^2
 ``import scipy.sparse`` costs a process 0.1-0.3 s of CPU (it imports ``scipy._lib.array_api_compat``
 and through it NumPy's f2py, ma, testing and polynomial packages), as much as a short lumped run's
 stepping. Where the band's storage would exceed the dense matrix's (a network whose nodes no order
-keeps near each other), the solve is SciPy's sparse LU (SuperLU), imported there only.
+keeps near each other) and the matrix is not small (SMALL), the solve is SciPy's sparse LU
+(SuperLU), imported there only.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from kanat._private_api import banded_lapack
+
+SMALL = 48     # unknowns: a matrix this small goes to the band solver whatever its width (microseconds)
 
 
 def reverse_cuthill_mckee(neighbours) -> np.ndarray:
@@ -84,7 +87,9 @@ class NodeBandSolver:
     width : int
         Sub- and super-diagonals of the reordered ``A`` (``3 b + 2`` for a node half-width ``b``).
     banded : bool
-        Whether solves go to LAPACK's band solver (False: SciPy's sparse LU; module docstring).
+        Whether solves go to LAPACK's band solver: where the band's storage is no larger than the
+        dense matrix, or the matrix has at most SMALL unknowns (False: SciPy's sparse LU; module
+        docstring).
     """
 
     def __init__(self, neighbours):
@@ -95,7 +100,7 @@ class NodeBandSolver:
         rank[order] = np.arange(n)
         half = max((abs(int(rank[i]) - int(rank[j])) for i, near in enumerate(neighbours) for j in near), default=0)
         self.width = 3 * half + 2 if n else 0
-        self.banded = (3 * self.width + 1) <= self.size
+        self.banded = self.size <= SMALL or (3 * self.width + 1) <= self.size
         self.position = (3 * rank[:, None] + np.arange(3)).ravel()   # unknown -> its place in the band order
 
     def solve(self, rows, cols, values, rhs) -> np.ndarray | None:
@@ -113,6 +118,8 @@ class NodeBandSolver:
         ValueError
             An entry lies outside the node graph's band.
         """
+        if self.size == 0:
+            return np.zeros(0)
         if not self.banded:
             return _sparse_solve(rows, cols, values, rhs, self.size)
         n, w = self.size, self.width
