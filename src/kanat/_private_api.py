@@ -18,8 +18,9 @@ numba, h5netcdf or SciPy that changes one fails one test whose message names the
   record (:func:`kanat.aot.record`) made from its fields' types, as ``typeof`` types an instance;
   the install-time build (:mod:`kanat.aot_build`) declares the entries' signatures with it.
 * :func:`banded_lapack` — SciPy's extension module ``scipy/linalg/_flapack``, loaded from its file
-  without the ``scipy.linalg`` package around it: the continuum model's Newton steps call LAPACK's
-  ``dgbsv`` from it, and ``import scipy.linalg`` costs a run 0.1-0.3 s of CPU (it imports
+  without the ``scipy.linalg`` package around it: the continuum model's Newton steps and the lumped
+  model's equilibrium and Python implicit steps (:mod:`kanat.lumped.band_solve`) call LAPACK's
+  ``dgbsv`` from it, and ``import scipy.linalg`` (or ``scipy.sparse``) costs a run 0.1-0.3 s of CPU (it imports
   ``scipy._lib.array_api_compat``, which imports NumPy's f2py, ma, testing and polynomial
   packages) against ~0.01 s for the module alone. Where the file is not found, the public
   ``scipy.linalg.lapack`` module (the same functions).

@@ -15,7 +15,10 @@ Keyes 1998, SIAM J. Numer. Anal. 35, 508)::
 
 and it becomes Newton's method as ``dtau`` grows. ``dF/dq`` is the exact finite-difference
 Jacobian, built with a distance-2 colouring of the node graph (a node's force depends
-only on its neighbours), so it costs ``3 x colours`` force evaluations.
+only on its neighbours), so it costs ``3 x colours`` force evaluations; its linear systems are
+solved by LAPACK's band LU after a reverse Cuthill–McKee order of the free nodes
+(:class:`kanat.lumped.band_solve.NodeBandSolver`), which spares a run the import of SciPy's sparse
+package.
 
 Where all of that fails (lines held up by many small inline floats, whose sections go slack and
 taut from one iterate to the next), :func:`_relaxed_equilibrium` settles the softened network by
@@ -30,11 +33,10 @@ import dataclasses
 import functools
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from kanat.errors import SolverError
 from kanat.statics import budget
+from kanat.lumped.band_solve import NodeBandSolver
 from kanat.lumped.relaxation import relax
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.taut_newton import SeabedGuard, compression_forces, onset_stiffness, taut_newton
@@ -93,8 +95,18 @@ def distance2_colouring(net) -> np.ndarray:
 
 
 def _jacobian(force, free, xf, colour, step, neighbours_of):
-    """Sparse ``dF/dq`` (3 n_free square) of ``force(xf)`` by coloured central differences;
-    ``free`` the free nodes' indices."""
+    """Sparse ``dF/dq`` (3 n_free square, SciPy's CSC) of ``force(xf)`` by coloured central
+    differences (:func:`_jacobian_entries`); ``free`` the free nodes' indices."""
+    import scipy.sparse as sp                           # here only: the equilibrium's solves need no SciPy
+
+    rows, cols, vals = _jacobian_entries(force, free, xf, colour, step, neighbours_of)
+    size = 3 * len(free)
+    return sp.csc_matrix((vals, (rows, cols)), shape=(size, size))
+
+
+def _jacobian_entries(force, free, xf, colour, step, neighbours_of):
+    """``dF/dq`` (3 n_free square) of ``force(xf)`` by coloured central differences as
+    ``(rows, cols, values)``, no entry repeated; ``free`` the free nodes' indices."""
     position = {node: k for k, node in enumerate(free)}
     rows, cols, vals = [], [], []
     zero = np.zeros_like(xf)
@@ -111,8 +123,14 @@ def _jacobian(force, free, xf, colour, step, neighbours_of):
                         rows.extend(3 * m + np.arange(3))
                         cols.extend([3 * k + r] * 3)
                         vals.extend(dF[m])
-    size = 3 * len(free)
-    return sp.csc_matrix((vals, (rows, cols)), shape=(size, size))
+    return np.array(rows, dtype=np.int64), np.array(cols, dtype=np.int64), np.array(vals, dtype=float)
+
+
+def band_solver(free, neighbours_of) -> NodeBandSolver:
+    """The band solver of the matrices :func:`_jacobian_entries` builds over the free nodes ``free``
+    with the node graph ``neighbours_of`` (:func:`node_graph`)."""
+    position = {node: k for k, node in enumerate(free)}
+    return NodeBandSolver([{position[node] for node in neighbours_of[f] if node in position} for f in free])
 
 
 class _SteadyForces:
@@ -128,13 +146,15 @@ class _SteadyForces:
         return F[s.free_index].copy(), M[s.free_index].copy()
 
 
-def _newton(J, F, xf, forces, length):
-    """A Newton step ``-J dx = F`` shortened (halving, from at most MAX_STEP_FRACTION of an
-    element per node) until the residual's 2-norm falls; None if it never does."""
-    try:
-        direction = spla.splu((-J).tocsc()).solve(F.ravel()).reshape(-1, 3)
-    except RuntimeError:                                         # singular: slack parts
+def _newton(J, solver, F, xf, forces, length):
+    """A Newton step ``-J dx = F`` (``J`` as ``(rows, cols, values)``, solved by ``solver``)
+    shortened (halving, from at most MAX_STEP_FRACTION of an element per node) until the
+    residual's 2-norm falls; None if it never does."""
+    rows, cols, values = J
+    direction = solver.solve(rows, cols, -values, F.ravel())
+    if direction is None:                                        # singular: slack parts
         return None
+    direction = direction.reshape(-1, 3)
     alpha = min(1.0, MAX_STEP_FRACTION * length / max(np.max(np.linalg.norm(direction, axis=1)), 1e-300))
     norm2 = np.linalg.norm(F)
     for _ in range(LINE_SEARCH_HALVINGS):
@@ -145,13 +165,18 @@ def _newton(J, F, xf, forces, length):
     return None
 
 
-def _pseudo_transient(J, M, F, xf, forces, length, dtau, norm):
-    """One pseudo-transient step, eq. (1), clipped to MAX_STEP_FRACTION; None if it blows up."""
-    A = sp.block_diag(list(M / dtau**2), format="csc") - J
-    try:
-        dx = spla.splu(A.tocsc()).solve(F.ravel()).reshape(-1, 3)
-    except RuntimeError:                                         # singular: the caller shortens dtau
+def _pseudo_transient(J, solver, M, F, xf, forces, length, dtau, norm):
+    """One pseudo-transient step, eq. (1), clipped to MAX_STEP_FRACTION; None if it blows up.
+    ``J`` as ``(rows, cols, values)``, the system solved by ``solver``."""
+    rows, cols, values = J
+    block = 3 * np.arange(len(M))[:, None, None]
+    mass_rows = np.broadcast_to(block + np.arange(3)[:, None], M.shape).ravel()
+    mass_cols = np.broadcast_to(block + np.arange(3), M.shape).ravel()
+    dx = solver.solve(np.r_[mass_rows, rows], np.r_[mass_cols, cols], np.r_[(M / dtau**2).ravel(), -values],
+                      F.ravel())
+    if dx is None:                                               # singular: the caller shortens dtau
         return None
+    dx = dx.reshape(-1, 3)
     biggest = np.max(np.linalg.norm(dx, axis=1))
     if biggest > MAX_STEP_FRACTION * length:
         dx *= MAX_STEP_FRACTION * length / biggest
@@ -313,7 +338,7 @@ def _relaxed(net, case, x, velocity, friction, time, target):
     def force(q):
         return forces(0.0, q)[0]
 
-    relaxed = relax(force, lambda q: _jacobian(force, free, q, colour, step, neighbours), x[free], target)
+    relaxed = relax(force, lambda q: _jacobian_entries(force, free, q, colour, step, neighbours), x[free], target)
     x = x.copy()
     x[free] = relaxed.position
     return x, relaxed.steps
@@ -423,7 +448,8 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
     tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)
     step = FD_STEP * length
-    solved = _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours) if taut else None
+    solver = band_solver(free, neighbours)
+    solved = _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, solver) if taut else None
     if solved is not None:
         return _finish(net, system, *solved)
     dtau = INITIAL_PSEUDO_PERIOD * np.sqrt(np.max(net.el_length) * len(net.el_length) / case.environment.gravity)
@@ -433,9 +459,9 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
         if norm <= tolerance:
             break
         budget.check_time()
-        J = _jacobian(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
-        trials = [t for t in (_pseudo_transient(J, M, F, xf, forces, length, dtau, norm),
-                              _newton(J, F, xf, forces, length)) if t is not None]
+        J = _jacobian_entries(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
+        trials = [t for t in (_pseudo_transient(J, solver, M, F, xf, forces, length, dtau, norm),
+                              _newton(J, solver, F, xf, forces, length)) if t is not None]
         trial = min(trials, key=lambda t: np.max(np.abs(t[1]))) if trials else None   # the better of the two
         if trial is None:
             dtau *= 0.25
@@ -457,7 +483,7 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
     return _finish(net, system, xf, iteration, {"taut_iterations": 0})
 
 
-def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours):
+def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, solver):
     """:func:`kanat.lumped.taut_newton.taut_newton` from ``xf``: ``(xf, iterations, info)`` or None."""
     free = system.free_index
     stiffness = onset_stiffness(net)
@@ -468,9 +494,15 @@ def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours):
         return F + compression_forces(net, system.full(0.0, q, zero)[0], stiffness)[free]
 
     def jacobian(q):
-        return _jacobian(taut_forces, free, q, colour, FD_STEP * np.min(net.el_length), neighbours)
+        rows, cols, values = _jacobian_entries(taut_forces, free, q, colour, FD_STEP * np.min(net.el_length),
+                                               neighbours)
+        return rows, cols, -values
 
-    solved = taut_newton(lambda q: forces(0.0, q)[0], jacobian, xf, tolerance,
+    def newton_step(q, F):                                   # -J step = F_taut
+        step = solver.solve(*jacobian(q), F.ravel())
+        return None if step is None else step.reshape(-1, 3)
+
+    solved = taut_newton(lambda q: forces(0.0, q)[0], newton_step, xf, tolerance,
                          MAX_STEP_FRACTION * np.min(net.el_length), SeabedGuard(net, case, free), taut_forces)
     if solved is None:
         return None

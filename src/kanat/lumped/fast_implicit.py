@@ -26,6 +26,7 @@ import numpy as np
 from kanat.jit import inner, kernel
 
 from kanat.lumped import fast, kernels
+from kanat.lumped.band_solve import reverse_cuthill_mckee
 from kanat.lumped.bending import bending_blocks
 from kanat.physics.contact import contact_tangent
 
@@ -40,18 +41,19 @@ MOTION_FLOOR = 1e-6         # m per node: the least displacement of a step the t
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
     """Position of each free node in the band order (n_nodes,; -1 for prescribed nodes) and the
-    band's half-width in nodes (3 x 3 blocks)."""
-    import scipy.sparse as sp                          # here: the kernels' module loads without SciPy
-    from scipy.sparse.csgraph import reverse_cuthill_mckee
-
+    band's half-width in nodes (3 x 3 blocks): reverse Cuthill–McKee
+    (:func:`kanat.lumped.band_solve.reverse_cuthill_mckee`) on the graph of the elements and the
+    bending triples' outer nodes between free nodes."""
     n_free = len(free_index)
     local = -np.ones(net.n_nodes, dtype=np.int64)
     local[free_index] = np.arange(n_free)
     a, b = local[np.r_[net.el_i, net.bend[0]]], local[np.r_[net.el_j, net.bend[2]]]   # bending joins i-1, i+1
     keep = (a >= 0) & (b >= 0)
-    graph = sp.coo_matrix((np.ones(2 * keep.sum()), (np.r_[a[keep], b[keep]], np.r_[b[keep], a[keep]])),
-                          shape=(n_free, n_free)).tocsr()
-    order = reverse_cuthill_mckee(graph, symmetric_mode=True) if n_free else np.zeros(0, np.int64)
+    neighbours = [set() for _ in range(n_free)]
+    for i, j in zip(a[keep].tolist(), b[keep].tolist()):
+        neighbours[i].add(j)
+        neighbours[j].add(i)
+    order = reverse_cuthill_mckee(neighbours)
     rank = np.empty(n_free, dtype=np.int64)
     rank[order] = np.arange(n_free)
     position = -np.ones(net.n_nodes, dtype=np.int64)

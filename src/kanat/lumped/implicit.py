@@ -11,7 +11,8 @@ With ``(x, v, a)`` at ``t_n`` and the unknown ``a_1`` at ``t_n+1 = t_n + h``::
 (:func:`kanat.lumped.kernels.tangent_blocks`: axial, geometric, Kelvin–Voigt, drag), the
 body drag and the seabed contact (:func:`kanat.physics.contact.contact_tangent`); the added-mass, buoy and wave terms are left out of ``J`` (Newton then
 converges linearly rather than quadratically, to the same answer). ``J`` is sparse with
-the network's node graph; it is factorized by SuperLU at every iteration. An increment that
+the network's node graph; it is factorized at every iteration by LAPACK's band LU after a
+reverse Cuthill–McKee order of the nodes (:class:`kanat.lumped.band_solve.NodeBandSolver`). An increment that
 raises the residual's 2-norm is halved (the line search of
 :func:`kanat.lumped.fast_implicit.newton_step`). A step whose
 Newton iteration fails is halved, up to ``MAX_HALVINGS`` times (:class:`kanat.step_control.Halving`),
@@ -22,11 +23,9 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
-
 from kanat.errors import SolverError
 from kanat.lumped import kernels
+from kanat.lumped.band_solve import NodeBandSolver
 from kanat.lumped.bending import bending_blocks
 from kanat.lumped.fast_implicit import LINE_SEARCH_HALVINGS
 from kanat.physics.contact import contact_tangent
@@ -60,12 +59,19 @@ class TangentPattern:
         self.rows = np.concatenate([r.ravel() for r in rows])[self.keep]
         self.cols = np.concatenate([c.ravel() for c in cols])[self.keep]
         self.free_nodes = free_nodes
+        neighbours = [{k} for k in range(len(free_nodes))]
+        for i, j in zip(np.r_[dof[net.el_i], dof[net.bend[0]], dof[net.bend[0]], dof[net.bend[1]]].tolist(),
+                        np.r_[dof[net.el_j], dof[net.bend[1]], dof[net.bend[2]], dof[net.bend[2]]].tolist()):
+            if i >= 0 and j >= 0:                       # elements and bending triples join their nodes
+                neighbours[i].add(j)
+                neighbours[j].add(i)
+        self.solver = NodeBandSolver(neighbours)
 
-    def matrix(self, element_blocks, node_blocks):
-        """Sparse CSC matrix from ``element_blocks`` (4, m, 3, 3) for (ii, ij, ji, jj) and
-        ``node_blocks`` (n_free, 3, 3) on the diagonal."""
+    def entries(self, element_blocks, node_blocks):
+        """``(rows, cols, values)`` of the matrix made of ``element_blocks`` (4, m, 3, 3) for
+        (ii, ij, ji, jj) and ``node_blocks`` (n_free, 3, 3) on the diagonal."""
         data = np.concatenate([element_blocks.ravel(), node_blocks.ravel()])[self.keep]
-        return sp.csc_matrix((data, (self.rows, self.cols)), shape=(self.size, self.size))
+        return self.rows, self.cols, data
 
 
 def _pattern(system) -> TangentPattern:
@@ -75,7 +81,18 @@ def _pattern(system) -> TangentPattern:
 
 
 def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
-    """``c_mass M + c_damp C + c_stiff K`` over the free DOFs (eq. 3), sparse."""
+    """``c_mass M + c_damp C + c_stiff K`` over the free DOFs (eq. 3), a SciPy sparse CSC matrix
+    (:func:`jacobian_entries`'s; SciPy's sparse package is imported here only)."""
+    import scipy.sparse as sp
+
+    rows, cols, values = jacobian_entries(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks)
+    size = _pattern(system).size
+    return sp.csc_matrix((values, (rows, cols)), shape=(size, size))
+
+
+def jacobian_entries(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
+    """``c_mass M + c_damp C + c_stiff K`` over the free DOFs (eq. 3) as ``(rows, cols, values)``
+    (repeated entries summed)."""
     net = system.net
     m = net.n_elements
     K, C, D = np.empty((m, 3, 3)), np.empty((m, 3, 3)), np.empty((m, 3, 3))
@@ -97,17 +114,18 @@ def jacobian(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
         Kc, Cc = np.zeros((net.n_nodes, 3, 3)), np.zeros((net.n_nodes, 3, 3))
         contact_tangent(x, v, area, bed, params, system.normal_force, system._tangent, Kc, Cc)
         node = node + (c_stiff * Kc + c_damp * Cc)[pattern.free_nodes]
-    return pattern.matrix(np.stack([diag, off, off, diag]), node) + c_stiff * _bending(system, x)
+    rows, cols, values = pattern.entries(np.stack([diag, off, off, diag]), node)
+    bend_rows, bend_cols, bend_values = _bending(system, x)
+    return np.r_[rows, bend_rows], np.r_[cols, bend_cols], np.r_[values, c_stiff * bend_values]
 
 
 def _bending(system, x):
     """The bending's Gauss-Newton tangent (:func:`kanat.lumped.bending.bending_blocks`, eq. 4) over
-    the free DOFs, sparse."""
+    the free DOFs as ``(rows, cols, values)``."""
     net = system.net
-    size = 3 * len(system.free_index)
     before, node, after, k, _ = net.bend
     if not len(node):
-        return sp.csc_matrix((size, size))
+        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0)
     K = np.empty((len(node), 3, 3, 3, 3))
     bending_blocks(x, before, node, after, k, np.empty((3, 3, 3)), K)
     dof = -np.ones(net.n_nodes, dtype=np.int64)
@@ -119,7 +137,7 @@ def _bending(system, x):
     keep = np.broadcast_to((nodes[:, :, None] >= 0) & (nodes[:, None, :] >= 0), (len(node), 3, 3))
     keep = np.broadcast_to(keep[..., None, None], K.shape)
     rows, cols = np.broadcast_to(rows, K.shape), np.broadcast_to(cols, K.shape)
-    return sp.csc_matrix((K[keep], (rows[keep], cols[keep])), shape=(size, size))
+    return rows[keep], cols[keep], K[keep]
 
 
 def _body_damping(system, t, x, v):
@@ -176,11 +194,11 @@ def _attempt(scheme, system, state, h):
             a1 = a1 - last
             continue
         norm_before, backtracks = norm, 0
-        J = jacobian(system, tm, x, v, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h, M)
-        try:
-            delta = spla.splu(J).solve(-R.ravel()).reshape(-1, 3)
-        except RuntimeError:                                   # singular tangent
+        J = jacobian_entries(system, tm, x, v, 1.0 - am, (1.0 - af) * gamma * h, (1.0 - af) * beta * h * h, M)
+        delta = _pattern(system).solver.solve(*J, -R.ravel())
+        if delta is None:                                      # singular tangent
             return None, iteration
+        delta = delta.reshape(-1, 3)
         a1, last = a1 + delta, delta
         scale = max(np.max(np.abs(a1)), ACCELERATION_SCALE)
         if np.max(np.abs(delta)) <= scheme.tolerance * scale:

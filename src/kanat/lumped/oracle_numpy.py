@@ -1,12 +1,12 @@
 """Plain NumPy twins of the compiled kernels (:mod:`kanat.lumped.kernels`), written
 independently (vectorized over elements, ``np.add.at`` for the scatter) so that the
-tests can check each kernel against them. Same equations and numbering as there.
+tests can check each kernel against them. Same equations and numbering as there. The consistent
+mass twins use SciPy's sparse matrices, imported where they are used (a run that loads these twins
+for their element forces does not load SciPy).
 """
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 
 def elastic_numpy(kind, n, xs, ys, e):
@@ -94,6 +94,8 @@ def lumped_solve_into(M, F, free, a):
 
 def consistent_matrix(net, x, node_mass):
     """The consistent mass matrix (kernels eq. 9) as a sparse (3n, 3n) matrix."""
+    import scipy.sparse as sp
+
     n = len(x)
     d = x[net.el_j] - x[net.el_i]
     t = d / np.linalg.norm(d, axis=1)[:, None]
@@ -115,6 +117,8 @@ def consistent_matrix(net, x, node_mass):
 
 def consistent_solve_numpy(net, x, node_mass, F, free, a):
     """Twin of :func:`kernels.consistent_solve` by a sparse direct solve."""
+    import scipy.sparse.linalg as spla
+
     M = consistent_matrix(net, x, node_mass)
     dof = np.repeat(free, 3)
     a = np.array(a, dtype=float).ravel()

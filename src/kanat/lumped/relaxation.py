@@ -49,11 +49,12 @@ class Relaxed:
     peaks: int
 
 
-def fictitious_masses(jacobian, floor: float) -> np.ndarray:
-    """Eq. (2): each free node's mass (n_free,) from the sparse tangent ``dF/dq`` (3 n_free square),
-    at least MASS_FLOOR of the heaviest (a node whose elements are all slack has no tangent) and
-    ``floor``."""
-    rows = np.asarray(abs(jacobian).sum(axis=1)).ravel().reshape(-1, 3).max(axis=1)
+def fictitious_masses(jacobian, floor: float, n_free: int) -> np.ndarray:
+    """Eq. (2): each free node's mass (n_free,) from the sparse tangent ``dF/dq`` (3 n_free square)
+    given as ``(rows, cols, values)`` with no entry repeated, at least MASS_FLOOR of the heaviest
+    (a node whose elements are all slack has no tangent) and ``floor``."""
+    rows, _, values = jacobian
+    rows = np.bincount(rows, weights=np.abs(values), minlength=3 * n_free).reshape(-1, 3).max(axis=1)
     mass = 0.5 * MASS_SAFETY * rows
     return np.maximum(mass, max(MASS_FLOOR * np.max(mass, initial=0.0), floor))
 
@@ -66,7 +67,7 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
     force : callable
         ``force(q) -> F``, the free nodes' static forces (n_free, 3) [N] at positions ``q``.
     tangent : callable
-        ``tangent(q) -> dF/dq``, sparse (3 n_free square) [N/m].
+        ``tangent(q) -> dF/dq``, sparse (3 n_free square) [N/m], as ``(rows, cols, values)``.
     xf : ndarray, shape (n_free, 3)
         Start [m].
     target : float
@@ -81,7 +82,7 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
     x = np.array(xf, dtype=float)
     F = force(x)
     floor = 1e-12 * max(float(np.max(np.abs(F))), 1.0)
-    mass = fictitious_masses(tangent(x), floor)
+    mass = fictitious_masses(tangent(x), floor, len(x))
     v = np.zeros_like(x)
     energy, peaks, since_mass = 0.0, 0, 0
     anchor_x, first_norm = x.copy(), float(np.max(np.abs(F)))
@@ -110,7 +111,7 @@ def relax(force, tangent, xf: np.ndarray, target: float, max_steps: int = MAX_RE
             F = force(x)
             anchor_x = x.copy()
             if since_mass >= REMASS_PEAKS:
-                mass = np.maximum(mass, fictitious_masses(tangent(x), floor))
+                mass = np.maximum(mass, fictitious_masses(tangent(x), floor, len(x)))
                 since_mass = 0
         else:
             energy = kinetic

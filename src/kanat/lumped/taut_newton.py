@@ -22,7 +22,6 @@ solution leaves ``F`` unbalanced, and the caller goes on with its pseudo-transie
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from kanat.lumped import entries
 from kanat.physics.seabed import seabed_of
@@ -85,14 +84,15 @@ class SeabedGuard:
         return new
 
 
-def taut_newton(forces, jacobian, xf, tolerance, max_step, guard, taut_forces):
+def taut_newton(forces, newton_step, xf, tolerance, max_step, guard, taut_forces):
     """Newton's method on eq. (1) from ``xf`` (n_free, 3).
 
     Parameters
     ----------
     forces : callable ``xf -> F`` (n_free, 3)
         The true static forces.
-    jacobian : callable ``xf -> dF_taut/dq`` (sparse, 3 n_free square)
+    newton_step : callable ``(xf, F_taut) -> step`` (n_free, 3), or None where the tangent is singular
+        The solution of ``-dF_taut/dq step = F_taut`` at ``xf``.
     tolerance : float
         On ``max |F|`` [N].
     max_step : float
@@ -109,9 +109,8 @@ def taut_newton(forces, jacobian, xf, tolerance, max_step, guard, taut_forces):
         F = taut_forces(xf)
         if not np.all(np.isfinite(F)):
             return None
-        try:
-            step = spla.splu((-jacobian(xf)).tocsc()).solve(F.ravel()).reshape(-1, 3)
-        except RuntimeError:                                     # singular even when taut: leave it
+        step = newton_step(xf, F)
+        if step is None:                                         # singular even when taut: leave it
             return None
         size = np.linalg.norm(step, axis=1)
         step *= np.minimum(1.0, max_step / np.maximum(size, 1e-300))[:, None]
