@@ -297,7 +297,7 @@ class LumpedModel:
         slack: docs/lumped.md)."""
         net = self.net
         at_free_end = (net.kinds[net.el_i] == "free") | (net.kinds[net.el_j] == "free")   # no pull there anyway
-        types = sorted({net.el_type[k] for k in np.unique(elements)
+        types = sorted({net.el_type[k] for k in set(np.asarray(elements).tolist())    # np.unique imports numpy.ma
                         if not at_free_end[k] and self.case.line_types[net.el_type[k]].bending_stiffness > 0.0
                         and net.el_compression[k] == 0.0})
         if not types:
