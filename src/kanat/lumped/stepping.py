@@ -24,6 +24,14 @@ Bending stiffness adds the highest frequency of the discrete fourth difference,
 
 ``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
 imaginary axis; RK4's region reaches as far along the negative real axis, 2.79). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
+
+A case that names no scheme gets the cheaper of RK4 at its safe step and the implicit scheme at its
+step, by force evaluations per simulated second with the wave kinematics counted (eq. 6,
+:func:`choose_scheme`). The implicit step without ``dt`` is a number of steps
+(:func:`steps_per_period`) per shortest period of what drives the run, once the spectral tails
+under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
+of steps per period is the period error and algorithmic damping of eq. (8), :func:`period_error`
+(docs/lumped.md, "Default step of the implicit scheme").
 """
 from __future__ import annotations
 
