@@ -58,8 +58,9 @@ STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitat
                              # 4.2 at 0.025 s
 ACCURATE_STEPS_PER_PERIOD = 80.0   # implicit steps per period where accuracy alone sets them: generalized-alpha
                              # at rho_inf 0.5 lengthens the period by 0.11 % and damps 0.02 % of an amplitude a
-                             # period there (eq. 8, period_error); 0.05 s (79 steps per 3.93 s) is within 0.3 % of
-                             # rk4 in the three-leg storm's fairlead tension statistics (benchmarks/RESULTS.md)
+                             # period there (eq. 8, period_error); in the three-leg storm (3.93 s, fitted to
+                             # 0.045 s) fairlead tensions within 0.08 % in mean, 1.4 % in std, 0.3 % in maximum of
+                             # rk4 at its safe step (benchmarks/RESULTS.md, "default scheme in a storm")
 IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
                              # 0.05-0.1 s, 5.5 on Bezverkhyi's network in waves
 WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
@@ -223,10 +224,10 @@ def implicit_default(system, default: float) -> float:
     return default if period is None else min(default, period / steps_per_period(system))
 
 
-def period_error(steps_per_period: float, rho_inf: float = 0.5) -> tuple[float, float]:
+def period_error(steps: float, rho_inf: float = 0.5) -> tuple[float, float]:
     """Relative period elongation ``(T_h - T) / T`` and algorithmic damping ratio of the lumped
     generalized-alpha scheme (WBZ-alpha, ``alpha_f = 0``) on ``x'' + omega^2 x = 0`` at
-    ``steps_per_period`` steps a period, from its amplification matrix (Chung & Hulbert 1993, eqs.
+    ``steps`` steps a period, from its amplification matrix (Chung & Hulbert 1993, eqs.
     2-4 and section 4)::
 
         (8)  [1, 0, -beta h^2; 0, 1, -gamma h; omega^2, 0, 1 - alpha_m] X_n+1
@@ -238,7 +239,7 @@ def period_error(steps_per_period: float, rho_inf: float = 0.5) -> tuple[float, 
     """
     am = (rho_inf - 1.0) / (rho_inf + 1.0)
     gamma, beta = 0.5 - am, 0.25 * (1.0 - am) ** 2
-    big_omega = 2.0 * math.pi / steps_per_period          # omega h, with h = 1 / omega
+    big_omega = 2.0 * math.pi / steps          # omega h, with h = 1 / omega
     left = np.array([[1.0, 0.0, -beta], [0.0, 1.0, -gamma], [big_omega**2, 0.0, 1.0 - am]])
     right = np.array([[1.0, 1.0, 0.5 - beta], [0.0, 1.0, 1.0 - gamma], [0.0, 0.0, -am]])
     roots = np.linalg.eigvals(np.linalg.solve(left, right))
