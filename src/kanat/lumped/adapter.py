@@ -109,7 +109,8 @@ class LumpedModel:
         rigid = self.net.rigid.count > 0
         if spec is None:
             step = sim.dt if sim.dt is not None else stepping.implicit_default(self.system, sim.step_or_default)
-            chosen = stepping.choose_scheme(self.info, step, SCHEMES, explicit_only=rigid)
+            chosen = stepping.choose_scheme(self.info, step, SCHEMES, explicit_only=rigid,
+                                           wave_load=stepping.wave_load(self.system))
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
         chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
@@ -126,7 +127,7 @@ class LumpedModel:
                 return stepping.fit_step(sim.dt, out)
             h = stepping.fit_step(stepping.implicit_default(self.system, sim.step_or_default), out)
             self.notes.append(f"{scheme.name}: no dt given; stepping at {h:.4g} s (the default {sim.step_or_default:g} s, "
-                              f"or {stepping.STEPS_PER_PERIOD:g} steps per period of the shortest excitation)")
+                              f"or {stepping.steps_per_period(self.system):g} steps per period of the shortest excitation)")
             return h
         safe = info.safe_step(scheme)
         if sim.dt is None:

@@ -24,6 +24,14 @@ Bending stiffness adds the highest frequency of the discrete fourth difference,
 
 ``limit`` is the scheme's ``stability_limit`` (largest stable ``|lambda h|`` near the
 imaginary axis; RK4's region reaches as far along the negative real axis, 2.79). The consistent mass matrix raises the highest frequency by ``sqrt(3)``.
+
+A case that names no scheme gets the cheaper of RK4 at its safe step and the implicit scheme at its
+step, by force evaluations per simulated second with the wave kinematics counted (eq. 6,
+:func:`choose_scheme`). The implicit step without ``dt`` is a number of steps
+(:func:`steps_per_period`) per shortest period of what drives the run, once the spectral tails
+under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
+of steps per period is the period error and algorithmic damping of eq. (8), :func:`period_error`
+(docs/lumped.md, "Default step of the implicit scheme").
 """
 from __future__ import annotations
 
@@ -48,8 +56,18 @@ STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitat
                              # at 0.1 s as at 0.025 s (fairlead tension within 0.5 % of MoorDyn) but costs 5.2 s of
                              # CPU there (9 Newton iterations a step, 9741 steps retaken by rk4), 4.4 at 0.05 s,
                              # 4.2 at 0.025 s
+ACCURATE_STEPS_PER_PERIOD = 80.0   # implicit steps per period where accuracy alone sets them: generalized-alpha
+                             # at rho_inf 0.5 lengthens the period by 0.11 % and damps 0.02 % of an amplitude a
+                             # period there (eq. 8, period_error); in the three-leg storm (3.93 s, fitted to
+                             # 0.045 s) fairlead tensions within 0.08 % in mean, 1.4 % in std, 0.3 % in maximum of
+                             # rk4 at its safe step (benchmarks/RESULTS.md, "default scheme in a storm")
 IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
                              # 0.05-0.1 s, 5.5 on Bezverkhyi's network in waves
+WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
+                             # it: 0.73 ms for 200 components at 156 points against 0.07 ms (the three-leg
+                             # storm, benchmarks/RESULTS.md, "wave kernel"); the cost of both grows with the points
+NEGLIGIBLE_VARIANCE = 0.01   # a driving spectrum's high-frequency tail holding less than this share of its
+                             # variance (rms under 10 % of the whole) does not set the implicit step (eq. 7)
 
 
 @dataclass(frozen=True)
@@ -122,35 +140,110 @@ def fit_step(h_max: float, output_dt: float) -> float:
     return output_dt / math.ceil(output_dt / h_max - 1e-9)
 
 
-def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool = False):
+def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool = False,
+                  wave_load: float = 0.0):
     """The cheapest safe scheme for a case that names none: RK4 at its safe step, or the
-    implicit scheme at ``dt``, by force evaluations per simulated second (RK4 when
-    ``explicit_only``: 6-DOF bodies)."""
+    implicit scheme at ``dt``, by cost per simulated second (RK4 when ``explicit_only``: 6-DOF bodies).
+
+    In units of a force evaluation without waves, eq. (6)::
+
+        (6)  E = 1 + wave_load                                       a force evaluation
+             C_rk4      = 4 E / h_rk4
+             C_implicit = IMPLICIT_ITERATIONS (E + IMPLICIT_COST) / dt
+
+    An implicit iteration is one force evaluation (waves included) and a tangent with its band LU
+    (:data:`IMPLICIT_COST`, which reuses the evaluation's wave kinematics), so waves weigh on RK4's
+    many steps more than on the implicit scheme's few. ``wave_load`` is :func:`wave_load`.
+    """
     rk4, implicit = schemes["rk4"](), schemes["generalized-alpha-lumped"]()
     if explicit_only:
         return rk4
-    explicit_cost = rk4.evaluations_per_step / min(info.safe_step(rk4), dt)
-    implicit_cost = IMPLICIT_ITERATIONS * (1.0 + IMPLICIT_COST) / dt
+    evaluation = 1.0 + wave_load
+    explicit_cost = rk4.evaluations_per_step * evaluation / min(info.safe_step(rk4), dt)
+    implicit_cost = IMPLICIT_ITERATIONS * (evaluation + IMPLICIT_COST) / dt
     return rk4 if explicit_cost <= implicit_cost else implicit
 
 
+def wave_load(system) -> float:
+    """The wave kinematics' share of a force evaluation, relative to the rest (eq. 6):
+    :data:`WAVE_COMPONENT_COST` per component of the sea, 0 without waves."""
+    sea = system.sea
+    return 0.0 if sea is None else WAVE_COMPONENT_COST * len(sea.omega)
+
+
+def shortest_period(omega, amplitude, tail: float = NEGLIGIBLE_VARIANCE) -> float | None:
+    """The shortest period [s] of a sum of harmonics ``a_i sin(omega_i t + phi_i)`` once its
+    high-frequency tail holding less than ``tail`` of the variance is left out, eq. (7)::
+
+        (7)  T = 2 pi / omega_c,   omega_c = max { omega_j : sum_{omega_i >= omega_j} a_i^2 >= tail sum_i a_i^2 }
+
+    (the variance of a harmonic is ``a^2 / 2``). None when every amplitude is zero.
+    """
+    omega, amplitude = np.asarray(omega, float), np.abs(np.asarray(amplitude, float))
+    variance = amplitude**2
+    total = float(np.sum(variance))
+    if total <= 0.0:
+        return None
+    order = np.argsort(omega)[::-1]
+    above = np.cumsum(variance[order])
+    cut = int(np.searchsorted(above, tail * total * (1.0 - 1e-12)))
+    return 2.0 * math.pi / float(omega[order][cut])
+
+
 def excitation_period(system) -> float | None:
-    """The shortest period [s] of what drives the run: the prescribed motion's harmonics and the
-    sea's components (those of at least a tenth of the largest amplitude); None without either."""
+    """The shortest period [s] of what drives the run, eq. (7): each degree of freedom of the
+    prescribed harmonic motion and the sea's elevation without their high-frequency tails holding
+    less than :data:`NEGLIGIBLE_VARIANCE` of their variance; None without either."""
     from kanat.physics.motion import Harmonics
 
     periods = []
-    if isinstance(system.motion, Harmonics):
-        periods.extend(2.0 * math.pi / system.motion.omega[system.motion.amplitude > 0.0])
+    motion = system.motion
+    if isinstance(motion, Harmonics):
+        for dof in np.unique(motion.dof):
+            on = motion.dof == dof
+            periods.append(shortest_period(motion.omega[on], motion.amplitude[on]))
     sea = system.sea
     if sea is not None and len(sea.omega):
-        amplitude = np.asarray(sea.amplitude, float)
-        periods.extend(2.0 * math.pi / np.asarray(sea.omega, float)[amplitude >= 0.1 * amplitude.max()])
+        periods.append(shortest_period(sea.omega, sea.amplitude))
+    periods = [p for p in periods if p is not None]
     return min(periods) if periods else None
+
+
+def steps_per_period(system) -> float:
+    """Implicit steps per :func:`excitation_period`: :data:`STEPS_PER_PERIOD`, or
+    :data:`ACCURATE_STEPS_PER_PERIOD` where the wave kinematics outweigh the tangent
+    (:func:`wave_load` above :data:`IMPLICIT_COST`), so that an implicit iteration's cost is mostly its
+    force evaluation and fewer steps pay (benchmarks/RESULTS.md, "default scheme in a storm")."""
+    return ACCURATE_STEPS_PER_PERIOD if wave_load(system) > IMPLICIT_COST else STEPS_PER_PERIOD
 
 
 def implicit_default(system, default: float) -> float:
     """The implicit scheme's step without ``dt``: ``default`` (``simulation.step_or_default``), or
-    less where the run is driven: :data:`STEPS_PER_PERIOD` steps per :func:`excitation_period`."""
+    less where the run is driven: :func:`steps_per_period` steps per :func:`excitation_period`."""
     period = excitation_period(system)
-    return default if period is None else min(default, period / STEPS_PER_PERIOD)
+    return default if period is None else min(default, period / steps_per_period(system))
+
+
+def period_error(steps: float, rho_inf: float = 0.5) -> tuple[float, float]:
+    """Relative period elongation ``(T_h - T) / T`` and algorithmic damping ratio of the lumped
+    generalized-alpha scheme (WBZ-alpha, ``alpha_f = 0``) on ``x'' + omega^2 x = 0`` at
+    ``steps`` steps a period, from its amplification matrix (Chung & Hulbert 1993, eqs.
+    2-4 and section 4)::
+
+        (8)  [1, 0, -beta h^2; 0, 1, -gamma h; omega^2, 0, 1 - alpha_m] X_n+1
+                 = [1, h, (1/2 - beta) h^2; 0, 1, (1 - gamma) h; 0, 0, -alpha_m] X_n,   X = (x, v, a)
+
+    with ``alpha_m = (rho_inf - 1)/(rho_inf + 1)``, ``gamma = 1/2 - alpha_m``, ``beta = (1 - alpha_m)^2/4``.
+    Its principal roots ``lambda = exp(h omega_h (-xi +- i sqrt(1 - xi^2)))`` give ``omega_h h =
+    |ln lambda|``, ``xi = -ln|lambda| / |ln lambda|`` and ``T_h / T = omega / omega_h``.
+    """
+    am = (rho_inf - 1.0) / (rho_inf + 1.0)
+    gamma, beta = 0.5 - am, 0.25 * (1.0 - am) ** 2
+    big_omega = 2.0 * math.pi / steps          # omega h, with h = 1 / omega
+    left = np.array([[1.0, 0.0, -beta], [0.0, 1.0, -gamma], [big_omega**2, 0.0, 1.0 - am]])
+    right = np.array([[1.0, 1.0, 0.5 - beta], [0.0, 1.0, 1.0 - gamma], [0.0, 0.0, -am]])
+    roots = np.linalg.eigvals(np.linalg.solve(left, right))
+    root = roots[np.argmax(np.abs(roots.imag))]
+    log = np.log(complex(root))
+    discrete = abs(log)
+    return big_omega / discrete - 1.0, -log.real / discrete
