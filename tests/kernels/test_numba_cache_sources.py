@@ -65,7 +65,7 @@ def package(tmp_path):
         assert done.returncode == 0, done.stderr
         return float(done.stdout.strip().splitlines()[-1])
 
-    return SimpleNamespace(root=tmp_path, callee=tmp_path / "src" / "kanat" / CALLEE, run=run)
+    return SimpleNamespace(root=tmp_path, callee=tmp_path / "src" / "kanat" / CALLEE, run=run, env=env)
 
 
 @pytest.mark.slow
@@ -98,3 +98,41 @@ def test_the_install_time_build_neither_reads_nor_writes_numbas_cache(build, tmp
     assert float(done.stdout.split()[-1]) == pytest.approx(penetration(0.0), rel=1e-12)
     written = sorted(path.name for path in cache.rglob("*.nb*")) if cache.exists() else []
     assert (written == []) == build, written
+
+
+BUILD = '''
+import sys
+import numpy as np
+import kanat.aot_build
+from kanat import jit
+
+kanat.aot_build.compiler("_lumped_explicit")          # the build's process, as setup.py makes it
+from numba.pycc import CC
+import caller
+
+cc = CC("built")
+cc.output_dir = sys.argv[1]
+cc.verbose = False
+cc.export("depth", "f8(f8, f8, f8[::1])")(kanat.aot_build._calling(jit.dispatcher_of(caller.depth), 3))
+cc.compile()
+sys.path.insert(0, sys.argv[1])
+import built
+print(repr(built.depth(2.0, -30.0, np.array([0.0, 40.0, 0.1, 0.8, 0.6]))))
+'''
+"""An install-time module built the way :mod:`kanat.aot_build` builds one (numba's ``pycc``, the
+entry calling numba's kernel), of the kernel of ``CALLER``."""
+
+
+@pytest.mark.slow
+def test_a_module_built_with_a_reused_cache_holds_the_changed_callee(package):
+    """The incident: numba's kernels run (cache filled), a callee edited, the module built again
+    with the same ``NUMBA_CACHE_DIR``: it holds the edited callee."""
+    assert package.run() == pytest.approx(penetration(0.0), rel=1e-12)
+    package.callee.write_text(package.callee.read_text().replace(FORMULA, EDITED))
+    (package.root / "build.py").write_text(BUILD)
+    output = package.root / "out"
+    output.mkdir()
+    done = subprocess.run([sys.executable, str(package.root / "build.py"), str(output)], env=package.env,
+                          capture_output=True, text=True, timeout=600, cwd=package.root)
+    assert done.returncode == 0, done.stderr
+    assert float(done.stdout.split()[-1]) == pytest.approx(penetration(0.25), rel=1e-12)
