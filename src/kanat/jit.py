@@ -7,8 +7,9 @@ one place:
 - :data:`inner` — a helper called only from other kernels: numba builds no Python entry
   for it, which saves compile time on functions whose arguments are large tuples.
 
-Both cache the machine code on disk (``__pycache__`` beside the source, or
-``NUMBA_CACHE_DIR``), so a kernel compiles once per machine and source version. Neither imports
+Both cache the machine code on disk, in a folder of its own per version of the kernel sources
+(:func:`cache_directory`), so a kernel compiles once per machine and source version and never
+runs a callee's stale code (numba's cache checks a kernel's own file only). Neither imports
 numba: they return a :class:`Deferred` kernel, and numba loads when a kernel is first used
 (:func:`load_numba`), which a run with the kernels compiled at install (:mod:`kanat.aot`) never
 does. No module's namespace is rewritten: a kernel's name is its :class:`Deferred` throughout.
@@ -35,19 +36,29 @@ family's seconds go, function by function.
 from __future__ import annotations
 
 import logging
+import os
 import time
 from dataclasses import dataclass
+from pathlib import Path
 
 from kanat import aot
 from kanat._private_api import dispatcher_type, disk_cached_signatures
 
-OPTIONS = {"kernel": {"cache": True, "error_model": "numpy", "no_cfunc_wrapper": True},
-           "inner": {"cache": True, "error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
-"""numba's options of the two decorators. error_model "numpy": a division by zero gives inf or nan
+OPTIONS = {"kernel": {"error_model": "numpy", "no_cfunc_wrapper": True},
+           "inner": {"error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
+"""numba's options of the two decorators (the disk cache is turned on apart, :func:`cache_directory`).
+error_model "numpy": a division by zero gives inf or nan
 (the kernels' callers test for non-finite results) instead of a check and an exception on every
 division, which costs compile time and stops vectorization. no_cfunc_wrapper: numba otherwise
 builds a C-callable wrapper of every kernel for use as a first-class function value, which kanat
 never does."""
+
+CACHE_ENVIRONMENT = "KANAT_JIT_CACHE"
+"""The environment variable that turns numba's disk cache of the kernels off (``0``): the
+install-time build sets it (:mod:`kanat.aot_build`), so that it compiles every kernel from its
+source and writes no cache."""
+CACHE_KEEP = 8
+"""Cache folders kept (:func:`cache_directory`): those of the most recently used source versions."""
 
 COMPILE_SECONDS = [0.0]
 """Seconds numba has spent compiling kernels in this process (outermost calls only;
@@ -78,7 +89,11 @@ class Deferred:
     def _real(self):
         if self.dispatcher is None:
             load_numba()
-            self.dispatcher = _numba(**self.options)(self.py_func)
+            dispatcher = _numba(**self.options)(self.py_func)
+            directory = cache_directory()
+            if directory is not None:
+                _enable_cache(dispatcher, directory)
+            self.dispatcher = dispatcher
         return self.dispatcher
 
     @property
@@ -118,6 +133,62 @@ inner = _decorator("inner")
 def dispatcher_of(function):
     """numba's dispatcher of a kernel (deferred or not); loads numba."""
     return function._real() if isinstance(function, Deferred) else function
+
+
+def cache_directory() -> Path | None:
+    """The folder of numba's disk cache of the kernels: ``kanat-<fingerprint>`` (the digest
+    :func:`kanat.aot.fingerprint` of every kernel source, :data:`kanat.aot.SOURCES`, in hex) in
+    ``NUMBA_CACHE_DIR``, or in ``$XDG_CACHE_HOME/kanat/numba`` (else ``~/.cache/kanat/numba``)
+    when that is not set; None when :data:`CACHE_ENVIRONMENT` is ``0`` (no disk cache).
+
+    Why a folder per version of the sources: numba's cache answers a kernel from its index when the
+    kernel's own file is unchanged (its index is keyed by that file's time stamp and size, and by
+    the kernel's bytecode), but the machine code it holds includes every kernel it calls, compiled
+    when it was cached. A callee edited in another file (or a record's fields, or a constant read
+    from another module) would run as it was before: stale code, or NaN where the arguments no
+    longer mean what the old code reads (numba issue #6845, "cache invalidation does not track
+    dependent functions"). With the folder named after every kernel source, any edit starts an
+    empty cache, and the kernels are compiled afresh, each with its current callees.
+    """
+    if os.environ.get(CACHE_ENVIRONMENT) == "0":
+        return None
+    from numba import config
+
+    base = config.CACHE_DIR or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "kanat", "numba")
+    return Path(base) / f"kanat-{aot.fingerprint():015x}"
+
+
+def _enable_cache(dispatcher, directory: Path) -> None:
+    """Turn on numba's disk cache of ``dispatcher`` in ``directory`` (numba's cache of a function
+    is placed by ``numba.config.CACHE_DIR`` when it is made, here set for that moment only)."""
+    from numba import config
+
+    if not directory.is_dir():
+        _prune(directory.parent)
+    chosen = config.CACHE_DIR
+    config.CACHE_DIR = str(directory)
+    try:
+        dispatcher.enable_caching()
+    finally:
+        config.CACHE_DIR = chosen
+    try:
+        os.utime(directory)                                     # in use: kept by _prune
+    except OSError:
+        pass
+
+
+def _prune(base: Path, keep: int = CACHE_KEEP) -> None:
+    """Remove all but the ``keep - 1`` most recently used ``kanat-*`` cache folders of ``base``
+    (a new one is about to be made; :func:`_enable_cache` marks a folder used)."""
+    import shutil
+
+    try:
+        folders = sorted(base.glob("kanat-*"), key=lambda path: path.stat().st_mtime, reverse=True)
+    except OSError:
+        return
+    for old in folders[keep - 1:]:
+        shutil.rmtree(old, ignore_errors=True)
 
 
 def compiled_versions() -> dict:
