@@ -5,9 +5,9 @@ they cannot be built (no C compiler, say), or with ``KANAT_AOT=0`` in the enviro
 install goes on without them and runs compile their kernels with numba on first use. Compiled
 once per machine: a later install with the same kernel sources, numba, NumPy and Python copies
 them from a user cache directory (``kanat.aot_cache``; ``KANAT_KERNEL_CACHE`` names it, ``0``
-turns it off). What is compiled is compiled from the sources, never from numba's own disk cache
-(``kanat.aot_build`` turns it off in this process: a reused ``NUMBA_CACHE_DIR`` could otherwise
-put callees as they were before an upgrade into the modules; docs/kernels.md).
+turns it off). numba's own disk cache is read and written only in the folder of the current kernel
+sources (``kanat.jit.cache_directory``: a reused ``NUMBA_CACHE_DIR`` could otherwise put callees as
+they were before an upgrade into the modules; docs/kernels.md).
 """
 import multiprocessing
 import os

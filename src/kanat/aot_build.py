@@ -6,19 +6,18 @@ the signature its argument specifications give; every module also exports ``fing
 the digest of the sources it was compiled from. The kernels are the same Python functions numba
 compiles just in time.
 
-The build compiles every kernel from its source: it turns numba's disk cache off in its process
-(:data:`kanat.jit.CACHE_ENVIRONMENT`) before it makes a dispatcher. A cache filled by an earlier
-build or run would otherwise answer a kernel whose own file is unchanged with machine code that
-holds its callees as they were then (numba's cache checks a kernel's own file only), and the
-extension would carry that stale code, or NaN where the callees' arguments changed meaning
-(docs/kernels.md, "numba's disk cache"). Compiling without the cache also saves writing it.
+The build compiles through the same numba dispatchers a run makes, so it reads and writes numba's
+disk cache in the folder of the current kernel sources (:func:`kanat.jit.cache_directory`): a cache
+filled by an earlier build or run over other sources is never read (it would answer a kernel whose
+own file is unchanged with machine code holding its callees as they were then, and the extension
+would carry that stale code: docs/kernels.md, "numba's disk cache"), and numba's kernels run after
+the install find the build's cache warm.
 
 Imported by the build and the tests only (it needs numba and a C compiler).
 """
 from __future__ import annotations
 
 import importlib
-import os
 
 from kanat import aot, jit
 from kanat._private_api import named_tuple_type
@@ -63,7 +62,6 @@ def compiler(module: str, output_dir=None):
     from numba import types
     from numba.pycc import CC
 
-    os.environ[jit.CACHE_ENVIRONMENT] = "0"           # compile from the sources, never from numba's cache
     cc = CC(module)
     cc.verbose = False
     if output_dir is not None:
