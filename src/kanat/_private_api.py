@@ -1,6 +1,6 @@
 """Every use kanat makes of another library's private API, in one place (docs/kernels.md).
 
-Six touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
+Seven touch points, each tested on its own (tests/kernels/test_private_api.py), so that a release of
 numba, h5netcdf or SciPy that changes one fails one test whose message names the library and version:
 
 * :func:`compile_object_files` — ``numba.pycc.CC._compile_object_files``: the install compiles
@@ -17,6 +17,9 @@ numba, h5netcdf or SciPy that changes one fails one test whose message names the
 * :func:`named_tuple_type` — ``numba.core.types.BaseTuple.from_types``: numba's type of a named
   record (:func:`kanat.aot.record`) made from its fields' types, as ``typeof`` types an instance;
   the install-time build (:mod:`kanat.aot_build`) declares the entries' signatures with it.
+* :func:`enable_disk_cache` — numba's ``Dispatcher.enable_caching()``, which places a function's
+  disk cache by ``numba.config.CACHE_DIR`` when it is called: set for that call only, so that the
+  kernels cache in a folder per version of their sources (:func:`kanat.jit.cache_directory`).
 * :func:`banded_lapack` — SciPy's extension module ``scipy/linalg/_flapack``, loaded from its file
   without the ``scipy.linalg`` package around it: the continuum model's Newton steps and the lumped
   model's equilibrium and Python implicit steps (:mod:`kanat.lumped.band_solve`) call LAPACK's
@@ -129,6 +132,27 @@ def banded_lapack():
             return module
     from scipy.linalg import lapack
     return lapack
+
+
+def enable_disk_cache(dispatcher, directory: str) -> None:
+    """Turn on numba's disk cache of ``dispatcher`` (made without ``cache=True``) in ``directory``.
+
+    Raises
+    ------
+    PrivateAPIChanged
+        numba's dispatcher has no ``enable_caching`` or its configuration no ``CACHE_DIR``.
+    """
+    from numba.core import config
+
+    try:
+        enable, chosen = dispatcher.enable_caching, config.CACHE_DIR
+    except AttributeError as error:
+        raise _changed("numba", "Dispatcher.enable_caching or config.CACHE_DIR", error) from None
+    config.CACHE_DIR = directory
+    try:
+        enable()
+    finally:
+        config.CACHE_DIR = chosen
 
 
 def dispatcher_type(dispatcher):

@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from kanat import aot
-from kanat._private_api import dispatcher_type, disk_cached_signatures
+from kanat._private_api import dispatcher_type, disk_cached_signatures, enable_disk_cache
 
 OPTIONS = {"kernel": {"error_model": "numpy", "no_cfunc_wrapper": True},
            "inner": {"error_model": "numpy", "no_cpython_wrapper": True, "no_cfunc_wrapper": True}}
@@ -160,18 +160,11 @@ def cache_directory() -> Path | None:
 
 
 def _enable_cache(dispatcher, directory: Path) -> None:
-    """Turn on numba's disk cache of ``dispatcher`` in ``directory`` (numba's cache of a function
-    is placed by ``numba.config.CACHE_DIR`` when it is made, here set for that moment only)."""
-    from numba import config
-
+    """Turn on numba's disk cache of ``dispatcher`` in ``directory``
+    (:func:`kanat._private_api.enable_disk_cache`), pruning old folders first when it is new."""
     if not directory.is_dir():
         _prune(directory.parent)
-    chosen = config.CACHE_DIR
-    config.CACHE_DIR = str(directory)
-    try:
-        dispatcher.enable_caching()
-    finally:
-        config.CACHE_DIR = chosen
+    enable_disk_cache(dispatcher, str(directory))
     try:
         os.utime(directory)                                     # in use: kept by _prune
     except OSError:

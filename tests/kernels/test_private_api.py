@@ -146,6 +146,25 @@ def test_numba_types_a_named_tuple_from_its_items_types():
         assert made == numba.typeof(instance), f"{NUMBA}: {made} is not how numba types a {kind.__name__}"
 
 
+def test_numba_caches_a_dispatcher_in_the_folder_given(tmp_path):
+    """``enable_caching`` under a ``CACHE_DIR`` set for the call: the compiled function's index and
+    data land in that folder, and numba's own setting is restored."""
+    import numba
+    from numba.core import config
+
+    @numba.njit
+    def thrice(x):
+        return 3.0 * x
+
+    before = config.CACHE_DIR
+    _private_api.enable_disk_cache(thrice, str(tmp_path))
+    assert config.CACHE_DIR == before
+    assert thrice(2.0) == 6.0
+    written = sorted(path.suffix for path in tmp_path.rglob("*.nb*"))
+    assert ".nbi" in written and ".nbc" in written, (
+        f"numba {numba.__version__}: enable_caching wrote {written} in the folder given")
+
+
 def test_a_missing_private_api_is_named_with_its_library_version():
     with pytest.raises(PrivateAPIChanged, match=f"h5netcdf {h5netcdf.__version__} changed File._h5file"):
         _private_api.flush_hdf5(object())
