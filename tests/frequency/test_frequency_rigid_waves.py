@@ -133,19 +133,30 @@ def test_the_buoy_in_a_small_regular_wave_against_the_time_domain():
     rad at every node."""
     waves = {"type": "regular", "height": 0.5, "period": PERIOD, "heading_deg": 0.0, "ramp": 2 * PERIOD}
     fd, td = frequency_and_time(buoy_in_waves(waves, 12 * PERIOD, "frequency"), buoy_in_waves(waves, 12 * PERIOD))
+    rao, motion = body_motions(fd, td, 0.25)
+    for dof in (0, 2, 4):                                          # surge, heave, pitch
+        assert abs(rao[dof]) == pytest.approx(abs(motion[dof]), rel=0.05), dof
+        assert abs(phase_gap(np.angle(rao[dof]), np.angle(motion[dof]))) < 0.05, dof
+    assert_tensions_agree(fd, td)
+
+
+def body_motions(fd, td, amplitude):
+    """The body's six complex motions at the wave's frequency for a wave of ``amplitude`` [m]: the
+    frequency domain's RAOs times it, and the time domain's fitted over its last three periods."""
     assert fd.attrs["status"] == "ok" and td.attrs["status"] == "ok"
     t = td.time.values
     keep = t >= t[-1] - 3 * PERIOD
-    omega = 2 * math.pi / PERIOD
-    _, position = harmonic_fit(t[keep], td.body_position.values[keep, 0], omega)
-    _, attitude = harmonic_fit(t[keep], td.body_attitude.values[keep, 0], omega)
-    motion = np.r_[np.ravel(position), np.ravel(attitude)]
-    for dof in (0, 2, 4):                                          # surge, heave, pitch
-        rao = 0.25 * float(fd.body_motion_rao_amplitude[0, 0, dof]) * np.exp(
-            1j * float(fd.body_motion_rao_phase[0, 0, dof]))
-        assert abs(rao) == pytest.approx(abs(motion[dof]), rel=0.05), dof
-        assert abs(phase_gap(np.angle(rao), np.angle(motion[dof]))) < 0.05, dof
-    _, tension = harmonic_fit(t[keep], td.tension.values[keep], omega)
+    _, position = harmonic_fit(t[keep], td.body_position.values[keep, 0], 2 * math.pi / PERIOD)
+    _, attitude = harmonic_fit(t[keep], td.body_attitude.values[keep, 0], 2 * math.pi / PERIOD)
+    rao = amplitude * fd.body_motion_rao_amplitude.values[0, 0] * np.exp(1j * fd.body_motion_rao_phase.values[0, 0])
+    return rao, np.r_[np.ravel(position), np.ravel(attitude)]
+
+
+def assert_tensions_agree(fd, td):
+    """The tension at every node within 5 % and 0.05 rad of the time domain's over its last three periods."""
+    t = td.time.values
+    keep = t >= t[-1] - 3 * PERIOD
+    _, tension = harmonic_fit(t[keep], td.tension.values[keep], 2 * math.pi / PERIOD)
     np.testing.assert_allclose(fd.tension_amplitude.values[0], np.abs(tension), rtol=0.05)
     np.testing.assert_allclose(phase_gap(fd.tension_phase.values[0], np.angle(tension)), 0.0, atol=0.05)
 
@@ -161,19 +172,10 @@ def test_the_buoy_in_an_oblique_regular_wave_moves_in_all_six_dofs_as_the_time_d
     legs' drag being far from linear there, while the other motions stay within 0.6 %."""
     waves = {"type": "regular", "height": 0.25, "period": PERIOD, "heading_deg": 30.0, "ramp": 2 * PERIOD}
     fd, td = frequency_and_time(buoy_in_waves(waves, 40 * PERIOD, "frequency"), buoy_in_waves(waves, 40 * PERIOD))
-    assert fd.attrs["status"] == "ok" and td.attrs["status"] == "ok"
-    t = td.time.values
-    keep = t >= t[-1] - 3 * PERIOD
-    omega = 2 * math.pi / PERIOD
-    _, position = harmonic_fit(t[keep], td.body_position.values[keep, 0], omega)
-    _, attitude = harmonic_fit(t[keep], td.body_attitude.values[keep, 0], omega)
-    motion = np.r_[np.ravel(position), np.ravel(attitude)]
-    rao = 0.125 * fd.body_motion_rao_amplitude.values[0, 0] * np.exp(1j * fd.body_motion_rao_phase.values[0, 0])
+    rao, motion = body_motions(fd, td, 0.125)
     np.testing.assert_allclose(np.abs(rao), np.abs(motion), rtol=0.05)
     assert np.all(np.abs(phase_gap(np.angle(rao), np.angle(motion))) <= [0.05] * 5 + [0.25])
-    _, tension = harmonic_fit(t[keep], td.tension.values[keep], omega)
-    np.testing.assert_allclose(fd.tension_amplitude.values[0], np.abs(tension), rtol=0.05)
-    np.testing.assert_allclose(phase_gap(fd.tension_phase.values[0], np.angle(tension)), 0.0, atol=0.05)
+    assert_tensions_agree(fd, td)
 
 
 def linear_series(fd, case, times, amplitude, phase):
