@@ -249,6 +249,20 @@ def phase_gap(a, b):
     return np.angle(np.exp(1j * (np.asarray(a) - np.asarray(b))))
 
 
+def assert_tensions_agree(fd, td, omega, window: float, rtol=0.05, atol: float = 0.05):
+    """Every node's tension amplitude in the frequency-domain result ``fd`` within ``rtol`` and its
+    phase within ``atol`` [rad] of the time-domain run ``td``'s, fitted at ``omega`` [rad/s] (a
+    frequency, or several fitted together, ``rtol`` then one or one per frequency) over its last
+    ``window`` seconds."""
+    t = td.time.values
+    keep = t >= t[-1] - window
+    _, fitted = harmonic_fit(t[keep], td.tension.values[keep], omega)
+    fitted = fitted.reshape(np.size(omega), -1)
+    for f, (tension, tolerance) in enumerate(zip(fitted, np.broadcast_to(rtol, len(fitted)))):
+        np.testing.assert_allclose(fd.tension_amplitude.values[f], np.abs(tension), rtol=tolerance)
+        np.testing.assert_allclose(phase_gap(fd.tension_phase.values[f], np.angle(tension)), 0.0, atol=atol)
+
+
 def frequency_and_time(frequency_case, time_case=None):
     """The frequency-domain solution of ``frequency_case`` and the time-domain run of ``time_case``
     (default: the same case with ``simulation.method: time``), warnings and progress silenced."""
