@@ -10,7 +10,6 @@ from scipy.optimize import brentq
 
 import kanat
 from kanat.errors import CaseError
-from kanat.model.case import Case
 from kanat.statics.setup3d import cable_problem3
 from kanat.statics.solve3d import solve_cable3
 
@@ -19,6 +18,8 @@ from kanat.continuum import kernels3d as k3
 from kanat.continuum import oracle_complex_step2d, oracle_complex_step3d
 from kanat.continuum.model2d import EndCondition, parameters
 from kanat.physics.immersion import float_buoyancy, sphere_fraction
+
+from helpers_float import D, DEPTH, EA, FE, FULL, G, ME, MF, SF, TOP, W, tethered_float
 
 N = 12
 JUNCTION = 6                                 # the interval holding the float
@@ -106,30 +107,9 @@ def test_spatial_jacobian_of_a_float_matches_complex_step(height):
     assert np.max(np.abs(band - band2)) <= 1e-12 * np.max(np.abs(band2))
 
 
-# A 0.5 m spherical float (10 kg) clamped 20 m up a soft vertical tether from an anchor 20.25 m down, a
-# 0.5 m tail above it to a small body pulled up by 5 N: the tether's stretch puts the float at the
-# surface, where its immersed share balances the tension; eq. (1) and the stretch of the line give
-# its height in closed form (brentq on one equation).
-RHO, G = 1025.0, 9.81
-D, MF = 0.5, 10.0
-FULL = RHO * G * math.pi / 6 * D**3                  # buoyancy fully submerged [N]
-W, EA, DEPTH, SF, TOP = 5.0, 2.0e4, 20.25, 20.0, 0.5
-ME, FE = 0.1, 5.0
-
-
 def tether_case(duration=0.05, dt=0.05, waves=None):
-    environment = {"water_density": RHO, "gravity": G, "depth": 100.0}
-    if waves:
-        environment["waves"] = waves
-    return Case.model_validate({
-        "name": "tethered-float", "model": "continuum", "environment": environment,
-        "line_types": {"tether": {"diameter": 0.02, "mass": W / G + RHO * math.pi * 0.01**2, "weight_in_water": W,
-                                  "axial_stiffness": EA, "drag_normal": 1.2, "drag_tangential": 0.01}},
-        "bodies": {"float": {"mass": MF, "net_buoyancy": FULL - MF * G, "drag_area": 0.1, "diameter": D},
-                   "lift": {"mass": ME, "net_buoyancy": -ME * G, "force": [0, 0, FE], "drag_area": 0.01}},
-        "cables": [{"name": "tether", "line_type": "tether", "length": SF + TOP, "segments": 41,
-                    "from": f"anchor:[0, 0, {-DEPTH}]", "to": "lift", "attachments": [{"body": "float", "s": SF}]}],
-        "simulation": {"duration": duration, "dt": dt, "output_dt": min(1.0, duration), "dimensions": 2}})
+    """The tethered float (tests/helpers_float.py) in the planar continuum model."""
+    return tethered_float("continuum", duration, dt, waves, dimensions=2)
 
 
 def waterline(eta=0.0):

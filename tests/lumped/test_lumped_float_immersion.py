@@ -19,29 +19,8 @@ import pytest
 from scipy.optimize import brentq
 
 import kanat
-from kanat.model import Case
 
-RHO, G = 1025.0, 9.81
-D, MF = 0.5, 10.0
-FULL = RHO * G * math.pi / 6 * D**3                  # buoyancy fully submerged [N]
-W, EA, DEPTH, SF, TOP, DL = 5.0, 2.0e4, 20.25, 20.0, 0.5, 0.02
-ME, FE = 0.1, 5.0
-AREA_WEIGHT = RHO * G * math.pi * DL**2 / 4          # rho g A of the tether [N/m]
-
-
-def tether_case(duration=0.05, dt=0.05, waves=None):
-    environment = {"water_density": RHO, "gravity": G, "depth": 100.0}
-    if waves:
-        environment["waves"] = waves
-    return Case.model_validate({
-        "name": "tethered-float", "model": "lumped", "environment": environment,
-        "line_types": {"tether": {"diameter": DL, "mass": (W + AREA_WEIGHT) / G, "weight_in_water": W,
-                                  "axial_stiffness": EA, "drag_normal": 1.2, "drag_tangential": 0.01}},
-        "bodies": {"float": {"mass": MF, "net_buoyancy": FULL - MF * G, "drag_area": 0.1, "diameter": D},
-                   "lift": {"mass": ME, "net_buoyancy": -ME * G, "force": [0, 0, FE], "drag_area": 0.01}},
-        "cables": [{"name": "tether", "line_type": "tether", "length": SF + TOP, "segments": 41,
-                    "from": f"anchor:[0, 0, {-DEPTH}]", "to": "lift", "attachments": [{"body": "float", "s": SF}]}],
-        "simulation": {"duration": duration, "dt": dt, "output_dt": min(1.0, duration)}})
+from helpers_float import AREA_WEIGHT, D, DEPTH, DL, EA, FE, FULL, G, ME, MF, SF, TOP, W, tethered_float
 
 
 def cap_share(z, eta):
@@ -75,7 +54,7 @@ def run(case):
 def test_lumped_float_floats_at_its_waterline():
     z = waterline()
     assert 0.0 < cap_share(z, 0.0) < 1.0                              # at the surface, partly immersed
-    ds = run(tether_case())
+    ds = run(tethered_float("lumped"))
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
     assert float(ds["body_position"].sel(body="float").values[0, 2]) == pytest.approx(z, abs=1e-9)   # 2e-16 m
 
@@ -86,7 +65,7 @@ def test_lumped_float_without_a_diameter_is_refused_above_the_water():
     EA`` with all of ``B_f`` and the tail in the air, to 1 mm: the element under the float is half out
     of the water too): the run refuses that
     state at t = 0, naming the float and where it is, and what to give it instead."""
-    case = tether_case()
+    case = tethered_float("lumped")
     bodies = {n: b.model_dump(exclude_none=True) for n, b in case.bodies.items()}
     bodies["float"].pop("diameter")
     status = run(case.replace({"bodies": bodies})).attrs["status"]
@@ -105,7 +84,7 @@ def test_lumped_float_follows_a_long_wave():
     of the wave's elevation over it, ``eta = 0.05 cos(2 pi t / 40)`` at x = 0, once the start's
     transient (the run starts from the still-water state) has died out: the compiled kernels' floats."""
     waves = {"type": "regular", "height": 0.1, "period": 40.0, "heading_deg": 0}
-    ds = run(tether_case(20.0, 0.05, waves))
+    ds = run(tethered_float("lumped", 20.0, 0.05, waves))
     assert ds.attrs["status"] == "ok", ds.attrs["status"]
     z = ds["body_position"].sel(body="float").values[:, 2]
     late = ds.time.values >= 15.0
@@ -125,7 +104,7 @@ def test_compiled_float_loads_match_the_python_twin(lift):
     from kanat.lumped.network import build_network
     from kanat.lumped.system import LumpedSystem
 
-    case = tether_case(waves={"type": "regular", "height": 1.0, "period": 6.0, "heading_deg": 30.0})
+    case = tethered_float("lumped", waves={"type": "regular", "height": 1.0, "period": 6.0, "heading_deg": 30.0})
     net = build_network(case)
     x = equilibrium(net, case)[0]
     x[net.free, 2] += lift
