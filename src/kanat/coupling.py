@@ -53,7 +53,8 @@ The forces (N, 6) are, body by body, the lines' resultant and moment about ``(x,
 Inside a step the lumped model takes substeps of its own scheme (``simulation.scheme``, else the
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
 ``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
-scheme's default step, cut to divide the coupling step exactly. The state after a step is what a
+scheme's default step, cut to divide the coupling step exactly: the scheme and step a run of the
+case takes (:func:`kanat.lumped.stepping.default_scheme`, the waves' cost and period counted). The state after a step is what a
 run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/lumped/test_coupling.py).
 """
 from __future__ import annotations
@@ -247,7 +248,7 @@ class Coupling:
                                   self.case.environment.seabed)
         self.info = info
         if spec is None:
-            chosen = stepping.choose_scheme(info, self._implicit_step(), SCHEMES, explicit_only=rigid)
+            chosen = stepping.default_scheme(self.system, info, sim, SCHEMES, explicit_only=rigid)
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
         chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)
@@ -256,10 +257,6 @@ class Coupling:
                              f"'{self.net.rigid.names[0]}'); use scheme abm4 or rk4")
         return chosen
 
-    def _implicit_step(self) -> float:
-        sim = self.case.simulation
-        return sim.dt if sim.dt is not None else sim.step_or_default
-
     def inner_step(self, dt: float) -> float:
         """The lumped model's step [s] inside a coupling step ``dt`` (module docstring)."""
         sim = self.case.simulation
@@ -267,7 +264,7 @@ class Coupling:
             top = self.info.safe_step(self.scheme)
             top = min(top, sim.dt) if sim.dt is not None else top
         else:
-            top = self._implicit_step()
+            top = stepping.implicit_step(self.system, sim)
         return stepping.fit_step(min(top, dt), dt)
 
     # --- the host's calls ------------------------------------------------------------------

@@ -15,7 +15,9 @@ import pytest
 
 import kanat
 from kanat.errors import KanatError
+from kanat import api
 from kanat.io import load_case
+from kanat.lumped import stepping
 from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem
 
@@ -86,7 +88,9 @@ def test_points_are_a_moordyn_files_coupled_points_in_file_order():
     assert pull[0] == pytest.approx(pull[1], rel=1e-4)                 # the file's coordinates to 6 digits
 
 
-def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
+def two_chains(**keys):
+    """Two 120 m chains (10 elements each, 100 kg/m, EA 1e8 N) from anchors 110 m either side, 50 m
+    down, to vessel points 1 m either side of the origin, 5 m down; a statics case, changed by ``keys``."""
     east = {"name": "east", "line_type": "chain", "length": 120.0, "segments": 10,
             "from": {"vessel": [1.0, 0.0, -5.0]}, "to": {"anchor": [110.0, 0.0, -50.0]}}
     west = {"name": "west", "line_type": "chain", "length": 120.0, "segments": 10,
@@ -94,6 +98,11 @@ def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
     case = kanat.load_case({"name": "two", "model": "statics", "environment": {"depth": 50.0},
                             "line_types": {"chain": {"diameter": 0.1, "mass": 100.0, "axial_stiffness": 1e8}},
                             "cables": [east, west]})
+    return case.replace(keys) if keys else case
+
+
+def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
+    case = two_chains()
     coupling = kanat.Coupling(case)
     assert coupling.points == ["east.from", "west.to"]
     implicit = kanat.Coupling(case, scheme="generalized-alpha-lumped")
@@ -108,6 +117,38 @@ def test_points_are_a_yaml_cases_vessel_ends_in_cable_order():
         coupling.step(0.0, 0.1, [[1.0, 0.0, -5.0]], [[0.0, 0.0, 0.0]])
     with pytest.raises(KanatError, match="the coupling is at t = 0"):
         coupling.step(1.0, 0.1, [[1.0, 0.0, -5.0], [-1.0, 0.0, -5.0]], np.zeros((2, 3)))
+
+
+SEAS = {"regular": ({"type": "regular", "height": 2.0, "period": 8.0}, "rk4"),
+        "jonswap": ({"type": "jonswap", "hs": 4.0, "tp": 10.0, "seed": 1}, "generalized-alpha-lumped")}
+
+
+@pytest.mark.parametrize("waves, expected", SEAS.values(), ids=SEAS.keys())
+def test_a_coupling_in_waves_takes_the_scheme_and_step_of_a_run(waves, expected):
+    """The two chains in waves, neither scheme nor dt named, outputs every 0.5 s: the coupling takes the
+    run's scheme and step, eq. (6) of :mod:`kanat.lumped.stepping` by hand with the waves' cost per force
+    evaluation ``E = 1 + 0.052 n`` (``n`` sea components) and the implicit step of 400 steps per wave
+    period (a regular 8 s wave: 0.02 s), 80 where the waves outweigh the tangent (200 components: ``E =
+    11.4``) per the shortest period of the sea: RK4 at its safe step (7.7 ms) in the regular wave, the
+    implicit scheme at 1/12 of the output in the sea. (Before, the coupling weighed no waves and stepped
+    the implicit scheme at 0.1 s.)"""
+    case = two_chains(**{"model": "lumped", "environment.waves": waves,
+                         "simulation": {"duration": 10.0, "output_dt": 0.5}})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        run = api.dynamic_model(case)
+        coupling = kanat.Coupling(case)
+    sea = run.system.sea
+    evaluation = 1.0 + 0.052 * len(sea.omega)
+    period = 8.0 if waves["type"] == "regular" else stepping.excitation_period(run.system)
+    implicit = period / (400.0 if evaluation - 1.0 <= 9.0 else 80.0)
+    safe = 0.8 * 2.8 / coupling.info.omega_max                  # RK4 at 0.8 of its limit, eq. (5)
+    costs = {"rk4": 4 * evaluation / min(safe, implicit), "generalized-alpha-lumped": 3 * (evaluation + 9) / implicit}
+    assert min(costs, key=costs.get) == expected
+    step = 0.5 / math.ceil(0.5 / (safe if expected == "rk4" else implicit))
+    assert run.scheme.name == coupling.scheme.name == expected
+    assert run.dt == pytest.approx(step, rel=1e-12)
+    assert coupling.inner_step(0.5) == run.dt
 
 
 @pytest.mark.parametrize("scheme", ["generalized-alpha-lumped", "rk4"])

@@ -108,9 +108,7 @@ class LumpedModel:
         spec = scheme if scheme is not None else sim.scheme
         rigid = self.net.rigid.count > 0
         if spec is None:
-            step = sim.dt if sim.dt is not None else stepping.implicit_default(self.system, sim.step_or_default)
-            chosen = stepping.choose_scheme(self.info, step, SCHEMES, explicit_only=rigid,
-                                           wave_load=stepping.wave_load(self.system))
+            chosen = stepping.default_scheme(self.system, self.info, sim, SCHEMES, explicit_only=rigid)
             self.notes.append(f"no scheme named: chose {chosen.name} as the fastest safe one")
             spec = chosen.name
         chosen = get_scheme(spec, SCHEMES, lambda_inf=sim.lambda_inf)

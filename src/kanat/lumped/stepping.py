@@ -27,7 +27,7 @@ imaginary axis; RK4's region reaches as far along the negative real axis, 2.79).
 
 A case that names no scheme gets the cheaper of RK4 at its safe step and the implicit scheme at its
 step, by force evaluations per simulated second with the wave kinematics counted (eq. 6,
-:func:`choose_scheme`). The implicit step without ``dt`` is a number of steps
+:func:`choose_scheme`; :func:`default_scheme` for a run and a coupling alike). The implicit step without ``dt`` is a number of steps
 (:func:`steps_per_period`) per shortest period of what drives the run, once the spectral tails
 under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
 of steps per period is the period error and algorithmic damping of eq. (8), :func:`period_error`
@@ -222,6 +222,19 @@ def implicit_default(system, default: float) -> float:
     less where the run is driven: :func:`steps_per_period` steps per :func:`excitation_period`."""
     period = excitation_period(system)
     return default if period is None else min(default, period / steps_per_period(system))
+
+
+def implicit_step(system, simulation) -> float:
+    """The implicit scheme's largest step [s]: ``simulation.dt``, else :func:`implicit_default`."""
+    return simulation.dt if simulation.dt is not None else implicit_default(system, simulation.step_or_default)
+
+
+def default_scheme(system, info: StepInfo, simulation, schemes: dict, explicit_only: bool = False):
+    """The scheme of a case that names none, for a run and a coupling alike: :func:`choose_scheme`
+    at the :func:`implicit_step` with the :func:`wave_load` of ``system`` (a
+    :class:`kanat.lumped.system.LumpedSystem`), eq. (6)."""
+    return choose_scheme(info, implicit_step(system, simulation), schemes, explicit_only=explicit_only,
+                         wave_load=wave_load(system))
 
 
 def period_error(steps: float, rho_inf: float = 0.5) -> tuple[float, float]:
