@@ -1,5 +1,6 @@
 """The lumped model's steady tow of a cable with a free tail (examples/towed_array.yaml), against the
-closed form of a straight tail at the critical angle and the continuum model side by side.
+closed form of a straight tail at the critical angle and the continuum model side by side; its first
+guess (:func:`kanat.lumped.tow_guess.free_tail_guess`) against the same closed form.
 
 In a uniform relative flow ``U`` an inextensible free tail lies straight at the critical angle
 ``phi`` (``R sin^2 phi = w cos phi``, ``R = 0.5 rho d C_n U^2``), and its tension at the tow point
@@ -19,6 +20,8 @@ import pytest
 from helpers import EXAMPLES
 from kanat import api, load_case
 from kanat.lumped.equilibrium import equilibrium
+from kanat.lumped.network import build_network
+from kanat.lumped.tow_guess import free_tail_guess
 from kanat.physics.drag import critical_angle
 
 RHO = 1025.0
@@ -37,16 +40,16 @@ def steady(case):
     return out["position"], out["tension"]
 
 
-def closed_form(case):
-    """``(phi, T_top)`` of the inextensible straight tail (module docstring)."""
+def closed_form(case, speed=SPEED):
+    """``(phi, T_top)`` of the inextensible straight tail (module docstring) in a flow of ``speed`` [m/s]."""
     lt = case.line_types["array"]
     w = lt.weight_in_water_value(RHO, 9.81)
-    r = 0.5 * RHO * lt.diameter * lt.drag_normal * SPEED**2           # R sin^2 phi = w cos phi
+    r = 0.5 * RHO * lt.diameter * lt.drag_normal * speed**2           # R sin^2 phi = w cos phi
     phi = math.acos((-w + math.sqrt(w * w + 4 * r * r)) / (2 * r))
     assert r * math.sin(phi) ** 2 == pytest.approx(w * math.cos(phi), rel=1e-12)
-    assert critical_angle(w, r / SPEED**2, SPEED) == pytest.approx(phi, rel=1e-12)
+    assert critical_angle(w, r / speed**2, speed) == pytest.approx(phi, rel=1e-12)
     length = case.cables[0].length
-    drag = 0.5 * RHO * np.pi * lt.diameter * lt.drag_tangential * (SPEED * np.cos(phi)) ** 2
+    drag = 0.5 * RHO * np.pi * lt.diameter * lt.drag_tangential * (speed * np.cos(phi)) ** 2
     return phi, length * (w * np.sin(phi) + drag)
 
 
@@ -58,6 +61,32 @@ def test_the_example_finds_its_steady_tow_from_the_free_tail_guess():
     assert info["first_guess"] == "free tail"
     assert info["residual"] < 1e-6 * closed_form(case)[1]
     assert info["taut_iterations"] <= 10
+
+
+STILL_TOP = [[0.0, 0.0, 0.0, 0.0], [-350.0, 0.0, 0.0, 0.0], [-400.0, 0.5, 0.0, 0.0]]
+CURRENTS = {"none": ({"velocity": [0.0, 0.0, 0.0]}, None),
+            "still profile": ({"profile": [[0.0, 0.0, 0.0, 0.0], [-400.0, 0.0, 0.0, 0.0]]}, None),
+            "uniform profile": ({"profile": [[0.0, 0.5, 0.0, 0.0], [-400.0, 0.5, 0.0, 0.0]]}, 0.5),
+            "current below the tail only": ({"profile": STILL_TOP}, 0.0)}
+
+
+@pytest.mark.parametrize("current, speed", CURRENTS.values(), ids=CURRENTS.keys())
+def test_the_free_tail_guess_reads_still_water_from_the_current_table(current, speed):
+    """The array held still (no way on) in a current: no guess where no row of the current's table
+    flows (the network's own guess stays); in a uniform 0.5 m/s profile every element trails
+    downstream at the closed form's critical angle; in a current that flows only below 350 m, where
+    no node of the 300 m tail reaches, the tail hangs straight down in the still water above it,
+    eq. (1) at ``U = 0`` (``phi = pi / 2``)."""
+    case = array_case(segments=10, **{"environment.current": current})
+    net = build_network(case)
+    x = free_tail_guess(net, case, net.x_guess, np.zeros(3))
+    if speed is None:
+        assert x is None
+        return
+    along = np.diff(x[net.node_index], axis=0)
+    phi = closed_form(case, speed)[0] if speed > 0.0 else 0.5 * np.pi
+    expected = 30.0 * np.array([np.cos(phi), 0.0, -np.sin(phi)])               # 10 elements of 30 m
+    np.testing.assert_allclose(along, np.broadcast_to(expected, along.shape), atol=1e-9)
 
 
 def test_a_stiff_tail_lies_straight_at_the_critical_angle_with_the_closed_form_tension():

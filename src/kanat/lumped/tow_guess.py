@@ -41,6 +41,8 @@ def free_tails(case) -> list[tuple[str, bool]]:
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     """``x`` (n, 3) with every free tail's nodes placed by eq. (1), or None when the case has none or no
     flow passes them (still water, no way on: a clamped beam or a hanging line keeps the network's guess).
+    Still water is the case's current definition without a horizontal velocity in any row of its table
+    (:meth:`kanat.model.environment.Current.table`), wherever the nodes are.
 
     Parameters
     ----------
@@ -52,9 +54,8 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
         The steady frame's velocity ``U_frame`` [m/s].
     """
     tails = free_tails(case)
-    current = case.environment.current
-    still = not np.any(np.asarray(velocity, dtype=float)[:2]) and all(
-        not np.any(np.asarray(current.at(float(z)), dtype=float)[:2]) for z in np.unique(x[:, 2]))
+    _, currents = case.environment.current.table()
+    still = not np.any(np.asarray(velocity, dtype=float)[:2]) and not np.any(currents[:, :2])
     if not tails or still:
         return None
     x = np.array(x, dtype=float)
