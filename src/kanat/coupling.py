@@ -54,8 +54,8 @@ Inside a step the lumped model takes substeps of its own scheme (``simulation.sc
 cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` given, or
 ``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
 scheme's default step, cut to divide the coupling step exactly: the scheme and step a run of the
-case takes (:func:`kanat.lumped.stepping.default_scheme`, the waves' cost and period counted). The state after a step is what a
-run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/lumped/test_coupling.py).
+case takes (:func:`kanat.lumped.stepping.default_scheme`, the waves' cost and period counted). The
+state after a step is what a run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/lumped/test_coupling.py).
 """
 from __future__ import annotations
 

@@ -27,9 +27,9 @@ imaginary axis; RK4's region reaches as far along the negative real axis, 2.79).
 
 A case that names no scheme gets the cheaper of RK4 at its safe step and the implicit scheme at its
 step, by force evaluations per simulated second with the wave kinematics counted (eq. 6,
-:func:`choose_scheme`; :func:`default_scheme` for a run and a coupling alike). The implicit step without ``dt`` is a number of steps
-(:func:`steps_per_period`) per shortest period of what drives the run, once the spectral tails
-under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
+:func:`choose_scheme`; :func:`default_scheme` for a run and a coupling alike). The implicit step
+without ``dt`` is a number of steps (:func:`steps_per_period`) per shortest period of what drives
+the run, once the spectral tails under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
 of steps per period is the period error and algorithmic damping of eq. (8), :func:`period_error`
 (docs/lumped.md, "Default step of the implicit scheme").
 """
