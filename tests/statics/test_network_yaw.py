@@ -1,0 +1,68 @@
+"""Network statics of a yawed 6-DOF body (kanat.statics.network, eq. 2's hydrostatic restoring from
+the body's actual tilt): the same physical system turned about the vertical has the same
+equilibrium turned.
+
+The buoy of examples/mooring_3leg.yaml, pushed sideways by a constant force so that its legs pitch
+and roll it by a few degrees, is turned with its anchors, its force and its hydrostatic reference
+by 0, 90, 180 and 270 deg: its reference point turns with them, its roll and pitch stay, its yaw
+turns by the same angle, and every tension is the same (still water and a level seabed have no
+horizontal preference). Raw Euler-angle differences, ``C (Theta - Theta_0)``, fail this: at 90 deg
+they restore the roll about the wrong axis, at 180 deg with the wrong sign.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import kanat
+from kanat.statics import solve_statics
+
+from helpers import ROOT
+
+PUSH = np.array([1.5e5, 0.6e5, 0.0])      # N: a constant force on the buoy, off the legs' axes
+
+
+def turned_buoy(degrees: float):
+    """examples/mooring_3leg.yaml pushed by PUSH, everything turned by ``degrees`` about the vertical."""
+    angle = math.radians(degrees)
+    c, s = math.cos(angle), math.sin(angle)
+    turn = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = kanat.load_case(ROOT / "examples" / "mooring_3leg.yaml", solver="statics")
+    changes = {"bodies.buoy.orientation_deg": [0.0, 0.0, degrees], "bodies.buoy.force": (turn @ PUSH).tolist()}
+    for k, cable in enumerate(case.cables):
+        changes[f"cables[{k}].from"] = {"anchor": (turn @ np.asarray(cable.from_.position)).tolist()}
+    return case.replace(changes), turn
+
+
+@pytest.fixture(scope="module")
+def level():
+    case, _ = turned_buoy(0.0)
+    return solve_statics(case)
+
+
+def test_the_push_tilts_the_buoy(level):
+    """The legs pull below the waterline: the pushed buoy rolls and pitches by degrees."""
+    roll, pitch, _ = np.degrees(level.attitudes["buoy"])
+    assert abs(roll) > 0.5 and abs(pitch) > 0.5
+
+
+@pytest.mark.parametrize("degrees", [90.0, 180.0, 270.0])
+def test_the_turned_system_has_the_turned_equilibrium(level, degrees):
+    case, turn = turned_buoy(degrees)
+    result = solve_statics(case)
+    np.testing.assert_allclose(result.bodies["buoy"], turn @ level.bodies["buoy"], rtol=0, atol=1e-8)
+    attitude = result.attitudes["buoy"]
+    np.testing.assert_allclose(attitude[:2], level.attitudes["buoy"][:2], rtol=0, atol=1e-10)
+    yaw_change = (attitude[2] - level.attitudes["buoy"][2] - math.radians(degrees) + math.pi) % (2 * math.pi) - math.pi
+    assert abs(yaw_change) < 1e-10
+    for name, cable in level.cables.items():
+        np.testing.assert_allclose(result.cables[name].tension, cable.tension, rtol=1e-8, atol=0)
+        np.testing.assert_allclose(result.anchor_forces[f"{name}.from"], turn @ level.anchor_forces[f"{name}.from"],
+                                   rtol=0, atol=1e-8 * np.max(cable.tension))
+    np.testing.assert_allclose(result.body_moments["buoy"], turn @ level.body_moments["buoy"], rtol=0,
+                               atol=1e-8 * np.linalg.norm(level.body_moments["buoy"]))
