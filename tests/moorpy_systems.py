@@ -86,9 +86,9 @@ def moorpy_system(case, vessel: str = "fixed"):
 def _buoyancy_lever(body, C, r6, g) -> np.ndarray:
     """MoorPy's ``rM``, where the buoyancy acts: the centre of buoyancy for a body with a heave
     spring only; for a body on its waterplane with equal roll and pitch restoring (``C44 = C55 =
-    B GM``, centres of gravity and buoyancy on its axis, level reference), the metacentre ``z_M = (C44 + m g z_G)
-    / B`` on the axis, so that MoorPy's turning weight and buoyancy give ``C44 (z_b x e_z)``, the
-    righting moment of the tilt kanat applies."""
+    B GM``, centres of gravity and buoyancy on its axis, level reference), the metacentre
+    ``z_M = (C44 + m g z_G) / B`` on the axis, so that MoorPy's turning weight and buoyancy give
+    ``C44 (z_b x e_z)``, the righting moment of the tilt kanat applies."""
     heave_only = np.zeros((6, 6))
     heave_only[2, 2] = C[2, 2]
     if C[2, 2] and r6[2]:
@@ -96,10 +96,12 @@ def _buoyancy_lever(body, C, r6, g) -> np.ndarray:
     if np.allclose(C, heave_only):
         return np.array(body.buoyancy_point)
     righting = np.diag([0.0, 0.0, C[2, 2], C[3, 3], C[3, 3], 0.0])
-    if not np.allclose(C, righting) or np.any(body.center_of_gravity[:2]) or np.any(body.buoyancy_point[:2]) or np.any(r6[3:5]):
+    off_axis = np.any(body.center_of_gravity[:2]) or np.any(body.buoyancy_point[:2])
+    if not np.allclose(C, righting) or off_axis or np.any(r6[3:5]):
         raise ValueError("MoorPy's body restores roll and pitch by its turning weight and buoyancy only: give "
                          "the body hydrostatic_stiffness [0, 0, C33, 0, 0, 0], or a waterplane with equal "
-                         "metacentric heights, its centres of gravity and buoyancy on its axis and a level orientation")
+                         "metacentric heights, its centres of gravity and buoyancy on its axis and a level "
+                         "orientation")
     buoyancy = body.buoyancy(g)
     return np.array([0.0, 0.0, (C[3, 3] + body.mass * g * body.center_of_gravity[2]) / buoyancy])
 
