@@ -91,9 +91,9 @@ def restoring_load(stiffness, R, dR, R0, dr, yaw, yaw0) -> tuple[np.ndarray, np.
     for j in range(3):
         D[3:, 3 + j] = np.cross(dR[j][2], k0)               # d k / d angle_j = (dR_j)^T e_z
     D[3:, 5] += k0
-    body = -C @ d
-    jacobian = np.vstack([H @ (-C @ D)[:3], R @ (-C @ D)[3:]])
-    jacobian[:3, 5] += dH @ body[:3]
+    body, d_body = -C @ d, -C @ D                           # the load in body axes and its derivative
+    jacobian = np.vstack([H @ d_body[:3], R @ d_body[3:]])
+    jacobian[:3, 5] += dH @ body[:3]                        # the heading frame and the body turn too
     for j in range(3):
         jacobian[3:, 3 + j] += dR[j] @ body[3:]
     return np.concatenate([H @ body[:3], R @ body[3:]]), jacobian
