@@ -26,6 +26,8 @@ import kanat
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.network import build_network
 from kanat.statics import solve_statics
+from kanat.statics.network import assemble
+from kanat.statics.network_setup import network_problem
 
 from helpers import ROOT
 
@@ -58,6 +60,22 @@ def test_the_push_tilts_the_buoy(level):
     """The legs pull below the waterline: the pushed buoy rolls and pitches by degrees."""
     roll, pitch, _ = np.degrees(level.attitudes["buoy"])
     assert abs(roll) > 0.5 and abs(pitch) > 0.5
+
+
+@pytest.mark.parametrize("degrees", [90.0, 180.0])
+def test_the_network_jacobian_of_a_yawed_tilted_buoy_is_its_finite_difference(degrees):
+    """dR/dq of the turned buoy (its restoring about a yawed reference included), rolled, pitched and
+    yawed away from it, against central differences."""
+    case, _ = turned_buoy(degrees)
+    problem = network_problem(case)
+    q = np.array([6.0, -4.0, -0.3, *np.radians([7.0, -4.0, degrees + 25.0])])
+    _, J, _, _ = assemble(problem, q)
+    fd = np.zeros_like(J)
+    for k in range(len(q)):
+        step = np.zeros(len(q))
+        step[k] = 1e-6 if k < 3 else 1e-8
+        fd[:, k] = (assemble(problem, q + step)[0] - assemble(problem, q - step)[0]) / (2 * step[k])
+    np.testing.assert_allclose(J, fd, rtol=0, atol=2e-5 * np.max(np.abs(fd)))
 
 
 @pytest.mark.parametrize("degrees", [90.0, 180.0, 270.0])
