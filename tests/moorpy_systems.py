@@ -4,7 +4,8 @@ side-by-side comparisons with kanat's network statics.
 :func:`moorpy_system` builds a MoorPy ``System`` from a kanat case, object by object:
 anchors and vessel fairleads are fixed points, network points and point bodies are free
 points (mass and volume giving the same net buoyancy), a rigid body is a MoorPy body
-(weight at its centre of gravity, buoyancy at its centre of buoyancy as MoorPy's ``rM``),
+(weight at its centre of gravity, buoyancy at its centre of buoyancy as MoorPy's ``rM``, or at
+its metacentre for a body on its waterplane with equal metacentric heights),
 its fairleads points on it; a cable of several sections or with attachments becomes one
 MoorPy line per stretch, joined by free points that carry the attachments' mass and
 volume; a sloped seabed is MoorPy's uniform slope (``xSlope``). MoorPy 1.3's ``System`` applies no seabed friction (``Line.staticSolve``
@@ -57,13 +58,8 @@ def moorpy_system(case, vessel: str = "fixed"):
         if body.dof == 6:
             r6 = [*(body.position or (0.0, 0.0, 0.0)), *np.radians(body.orientation_deg)]
             C = body.hydrostatic_stiffness_matrix(rho, g)
-            heave_only = np.zeros((6, 6))
-            heave_only[2, 2] = C[2, 2]
-            if not np.allclose(C, heave_only) or (C[2, 2] and r6[2]):
-                raise ValueError("MoorPy's body has a heave spring about z = 0 only: give the body "
-                                 "hydrostatic_stiffness [0, 0, C33, 0, 0, 0] and position z = 0")
             ms.addBody(0, r6, m=body.mass, v=body.buoyancy(g) / (rho * g), rCG=np.array(body.center_of_gravity),
-                       rM=np.array(body.buoyancy_point), AWP=C[2, 2] / (rho * g),
+                       rM=_buoyancy_lever(body, C, r6, g), AWP=C[2, 2] / (rho * g),
                        f6Ext=np.array([*body.force, 0.0, 0.0, 0.0]))
             names["bodies"][name] = len(ms.bodyList)
     for cable in case.cables:
@@ -85,6 +81,29 @@ def moorpy_system(case, vessel: str = "fixed"):
     with contextlib.redirect_stdout(io.StringIO()):
         ms.initialize()
     return ms, names
+
+
+def _buoyancy_lever(body, C, r6, g) -> np.ndarray:
+    """MoorPy's ``rM``, where the buoyancy acts: the centre of buoyancy for a body with a heave
+    spring only; for a body on its waterplane with equal roll and pitch restoring (``C44 = C55 =
+    B GM``, centres of gravity and buoyancy on its axis, level reference), the metacentre
+    ``z_M = (C44 + m g z_G) / B`` on the axis, so that MoorPy's turning weight and buoyancy give
+    ``C44 (z_b x e_z)``, the righting moment of the tilt kanat applies."""
+    heave_only = np.zeros((6, 6))
+    heave_only[2, 2] = C[2, 2]
+    if C[2, 2] and r6[2]:
+        raise ValueError("MoorPy's body has a heave spring about z = 0 only: give the body position z = 0")
+    if np.allclose(C, heave_only):
+        return np.array(body.buoyancy_point)
+    righting = np.diag([0.0, 0.0, C[2, 2], C[3, 3], C[3, 3], 0.0])
+    off_axis = np.any(body.center_of_gravity[:2]) or np.any(body.buoyancy_point[:2])
+    if not np.allclose(C, righting) or off_axis or np.any(r6[3:5]):
+        raise ValueError("MoorPy's body restores roll and pitch by its turning weight and buoyancy only: give "
+                         "the body hydrostatic_stiffness [0, 0, C33, 0, 0, 0], or a waterplane with equal "
+                         "metacentric heights, its centres of gravity and buoyancy on its axis and a level "
+                         "orientation")
+    buoyancy = body.buoyancy(g)
+    return np.array([0.0, 0.0, (C[3, 3] + body.mass * g * body.center_of_gravity[2]) / buoyancy])
 
 
 def _end(ms, case, cable, end, label, names) -> int:

@@ -47,7 +47,7 @@ from typing import Callable
 
 import numpy as np
 
-SOURCES = ("jit.py", "aot.py", "aot_build.py", "physics/seabed.py", "physics/contact.py",
+SOURCES = ("jit.py", "aot.py", "aot_build.py", "physics/seabed.py", "physics/contact.py", "physics/hydrostatics.py",
            "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "continuum/kernels2d.py",
            "continuum/layout3d.py", "continuum/loads3d.py", "continuum/rows3d.py", "continuum/bending3d.py",
            "continuum/kernels3d.py", "lumped/kernels.py", "lumped/rigid.py", "lumped/fast.py", "lumped/fast_implicit.py",

@@ -22,7 +22,7 @@ body). Static loads: without hydrostatics, the weight ``m g`` at ``c`` and the b
 ``B = net_buoyancy + m g`` at the centre of buoyancy; with a hydrostatic stiffness ``C`` (given
 or ``rho g A_w``, ``B GM``; body axes), the net buoyancy at the reference point and the restoring
 about the body's given ``position`` and ``orientation_deg`` (``R_0``) — ``C`` then holds the
-weight's and buoyancy's moments::
+weight's and buoyancy's moments (:mod:`kanat.physics.hydrostatics`, shared with network statics)::
 
     (4)  [F; M] = -[H (C dxi)_t; R (C dxi)_r],   H = Rz(yaw),
          dxi = (H^T (r - r_0 - eta e_z), k x k_0 + (yaw - yaw_0) k_0),   k = R^T e_z,   k_0 = R_0^T e_z
@@ -46,6 +46,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.jit import inner, kernel
+from kanat.physics.hydrostatics import restoring_displacement
 
 
 @dataclass(frozen=True, eq=False)
@@ -272,21 +273,17 @@ def static_loads(b, x, R, eta, g_vec, rig, F6):
 
 @inner
 def hydrostatic_displacement(b, x, R, eta, surface, reference, rot, ref, d):
-    """``dxi`` (6,) of module eq. (4): the reference point's displacement in the heading frame
-    ``H = Rz(yaw)`` (heave from the wave surface ``eta`` for a surface-piercing body), then the tilt
-    ``k x k_0`` and the yaw change, in body axes."""
-    R0 = np.empty((3, 3))
+    """``dxi`` (6,) of module eq. (4) (:func:`kanat.physics.hydrostatics.restoring_displacement`):
+    the reference point's displacement in the heading frame ``H = Rz(yaw)`` (heave from the wave
+    surface ``eta`` for a surface-piercing body), then the tilt ``k x k_0`` and the yaw change,
+    in body axes."""
+    R0, dr = np.empty((3, 3)), np.empty(3)
     rotation(reference[b, 3], reference[b, 4], reference[b, 5], R0)
-    cy, sy = math.cos(x[rot[b], 2]), math.sin(x[rot[b], 2])
-    dx, dy = x[ref[b], 0] - reference[b, 0], x[ref[b], 1] - reference[b, 1]
-    d[0], d[1] = cy * dx + sy * dy, -sy * dx + cy * dy
-    d[2] = x[ref[b], 2] - reference[b, 2] - (eta if surface > 0.0 else 0.0)
-    k0, k1, k2 = R[2, 0], R[2, 1], R[2, 2]                  # k = R^T e_z: the vertical in body axes
-    q0, q1, q2 = R0[2, 0], R0[2, 1], R0[2, 2]               # k_0, the same at the reference
-    turn_about = x[rot[b], 2] - reference[b, 5]
-    d[3] = k1 * q2 - k2 * q1 + q0 * turn_about
-    d[4] = k2 * q0 - k0 * q2 + q1 * turn_about
-    d[5] = k0 * q1 - k1 * q0 + q2 * turn_about
+    for r in range(3):
+        dr[r] = x[ref[b], r] - reference[b, r]
+    if surface > 0.0:
+        dr[2] -= eta
+    restoring_displacement(R, R0, dr, x[rot[b], 2], reference[b, 5], d)
 
 
 @inner

@@ -5,14 +5,21 @@ each line is solved exactly in its own vertical plane (:mod:`kanat.statics.line_
 between its two ends, which gives the forces it puts on them and their derivatives. The
 residual is every free node's force (and a rigid body's moment about its reference point)::
 
-    (1)  R(q) = sum_lines f_end(q) + F_node(q) = 0
-    (2)  M(q) = sum_lines (R o) x f_end + (R c_G) x W + (R c_B) x B - C_rot (q - q_ref) = 0
+    (1)  R(q) = sum_lines f_end(q) + F_node(q) + F_C(q) = 0
+    (2)  M(q) = sum_lines (R o) x f_end + (R c_G) x W + (R c_B) x B + M_C(q) = 0
 
 with ``o`` a fairlead in body axes, ``W = (0, 0, -m g)`` at the centre of gravity, ``B`` the
-buoyancy at the centre of buoyancy and ``C`` the hydrostatic stiffness about the reference
-``q_ref`` (the body's given position and attitude). When ``C`` has a roll or pitch restoring
-(a metacentric height), weight and buoyancy keep their reference-attitude levers, the
-restoring being in ``C`` already.
+buoyancy at the centre of buoyancy and ``(F_C, M_C)`` the restoring of the hydrostatic
+stiffness ``C`` (body axes) about the body's given position ``r_0`` and attitude ``R_0``, from
+its actual tilt (:mod:`kanat.physics.hydrostatics`, as the lumped model)::
+
+    [F_C; M_C] = -[H (C dxi)_t; R (C dxi)_r],   H = Rz(yaw),
+    dxi = (H^T (r - r_0), k x k_0 + (yaw - yaw_0) k_0),   k = R^T e_z,   k_0 = R_0^T e_z
+
+so a body tilted by ``theta`` about any horizontal axis, at any yaw, feels ``C44 sin(theta)``
+about that axis (``C44 = C55``, level reference), and heave and surge act in the heading
+frame. When ``C`` has a roll or pitch restoring (a metacentric height), weight and buoyancy
+keep their reference-attitude levers, the restoring being in ``C`` already.
 
 A 3-D line of in-plane tensions ``(H, V_B)`` with unit horizontal direction ``e_h`` from A
 to B pulls B by ``f_B = -(H e_h + V_B e_z)`` and A by ``f_A = H_A e_h + V_A e_z``; with
@@ -38,6 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.physics.hydrostatics import restoring_load
 from kanat.statics import budget
 from kanat.statics.line_solve import LineSolution, solve_line
 from kanat.statics.network_setup import NetworkProblem, fairlead_rotation
@@ -186,6 +194,15 @@ def fairlead(problem: NetworkProblem, q, end):
     return r + lever, np.hstack([np.eye(3), np.column_stack([m @ end.point for m in dR])])
 
 
+def _restoring(node, q6) -> tuple[np.ndarray, np.ndarray]:
+    """Hydrostatic restoring of a 6-DOF node at ``q6`` (position, roll, pitch, yaw) about its
+    given position and attitude, eq. (2)'s ``F_C``, and its derivative (6, 6)."""
+    reference = np.zeros(3) if node.position is None else node.position
+    rot, d_rot = fairlead_rotation(q6[3:])
+    return restoring_load(node.hydrostatic, rot, d_rot, fairlead_rotation(node.orientation)[0], q6[:3] - reference,
+                          float(q6[5]), float(node.orientation[2]))
+
+
 def _own_loads(problem: NetworkProblem, q, R, J) -> None:
     """Add the nodes' own loads (weight, buoyancy, hydrostatics, constant forces) to R, J."""
     up = np.array([0.0, 0.0, 1.0])
@@ -194,9 +211,10 @@ def _own_loads(problem: NetworkProblem, q, R, J) -> None:
         R[i:i + 3] += node.force
         if node.dof == 3:
             continue
-        ref = np.concatenate([np.zeros(3) if node.position is None else node.position, node.orientation])
-        R[i:i + 6] -= node.hydrostatic @ (q[i:i + 6] - ref)
-        J[i:i + 6, i:i + 6] -= node.hydrostatic
+        if np.any(node.hydrostatic):
+            load, d_load = _restoring(node, q[i:i + 6])
+            R[i:i + 6] += load
+            J[i:i + 6, i:i + 6] += d_load
         R[i + 2] += node.buoyancy - node.weight
         weight, buoyancy = -node.weight * up, node.buoyancy * up
         turned = node.orientation if node.fixed_levers else q[i + 3:i + 6]
