@@ -80,7 +80,7 @@ def test_a_still_free_tail_hangs_plumb_with_the_tension_of_the_part_beyond(weigh
 @pytest.mark.parametrize("flow", FLOWS, ids=list(FLOWS))
 def test_a_buoyant_tail_in_flow_meets_the_lumped_equilibrium_within_their_grid_convergence(flow):
     """Both models at 30 and 60 elements: at 60 they differ by less than their own changes from 30, and
-    their Richardson extrapolations (second order) agree to 1e-6 of the tension and 1 mm at the tail."""
+    their Richardson extrapolations (second order) agree to 1e-6 of the tension and 0.1 mm at the tail."""
     changes = {**BUOYANT, **FLOWS[flow]}
     if "line_types" in changes:                                         # the whole block: no per-type key
         del changes["line_types.array.weight_in_water"]
@@ -97,7 +97,7 @@ def test_a_buoyant_tail_in_flow_meets_the_lumped_equilibrium_within_their_grid_c
     extrapolated = {model: (tops[model][1] + np.diff(tops[model])[0] / 3, tails[model][1] + np.diff(tails[model], axis=0)[0] / 3)
                     for model in tops}
     assert extrapolated["lumped"][0] == pytest.approx(extrapolated["continuum"][0], rel=1e-6)
-    np.testing.assert_allclose(extrapolated["lumped"][1], extrapolated["continuum"][1], atol=1e-3)
+    np.testing.assert_allclose(extrapolated["lumped"][1], extrapolated["continuum"][1], atol=1e-4)
     assert fine["continuum"][1][2] > lowest + 1.0                                   # the tail rises
 
 
