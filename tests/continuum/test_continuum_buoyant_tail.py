@@ -21,6 +21,7 @@ import pytest
 from helpers import EXAMPLES
 from kanat import api, load_case
 from kanat.continuum.adapter import ContinuumModel
+from kanat.continuum.tail import free_tail_guess
 
 BUOYANT = {"line_types.array.weight_in_water": -2.0, "vessel.tow_point": [0, 0, -100.0]}
 STILL = [{"straight": {"speed_kn": 0, "duration": 200}}]
@@ -64,6 +65,11 @@ def with_segments(changes: dict, segments: int) -> dict:
     return {**changes, "cables[0]": cable}
 
 
+def richardson(values: np.ndarray) -> np.ndarray:
+    """The second-order extrapolation of ``values`` on a grid and on one twice as fine: ``f_2 + (f_2 - f_1) / 3``."""
+    return values[1] + (values[1] - values[0]) / 3
+
+
 @pytest.mark.parametrize("weight", [2.0, -2.0], ids=["heavy", "buoyant"])
 def test_a_still_free_tail_hangs_plumb_with_the_tension_of_the_part_beyond(weight):
     case = array_case(**{**BUOYANT, "line_types.array.weight_in_water": weight, "vessel.track": STILL,
@@ -94,11 +100,28 @@ def test_a_buoyant_tail_in_flow_meets_the_lumped_equilibrium_within_their_grid_c
     change = {model: (abs(np.diff(tops[model])[0]), np.max(np.abs(np.diff(tails[model], axis=0)))) for model in tops}
     assert abs(fine["lumped"][0] - fine["continuum"][0]) <= change["lumped"][0] + change["continuum"][0]
     assert np.max(np.abs(fine["lumped"][1] - fine["continuum"][1])) <= change["lumped"][1] + change["continuum"][1]
-    extrapolated = {model: (tops[model][1] + np.diff(tops[model])[0] / 3, tails[model][1] + np.diff(tails[model], axis=0)[0] / 3)
-                    for model in tops}
+    extrapolated = {model: (richardson(tops[model]), richardson(tails[model])) for model in tops}
     assert extrapolated["lumped"][0] == pytest.approx(extrapolated["continuum"][0], rel=1e-6)
     np.testing.assert_allclose(extrapolated["lumped"][1], extrapolated["continuum"][1], atol=1e-4)
     assert fine["continuum"][1][2] > lowest + 1.0                                   # the tail rises
+
+
+@pytest.mark.parametrize("weight", [2.0, -2.0], ids=["heavy", "buoyant"])
+def test_the_guess_trails_at_the_critical_angle_above_or_below_the_flow(weight):
+    """The inextensible straight tail: ``R sin^2 phi = |w| cos phi`` and
+    ``T_top = L (|w| sin phi + 0.5 rho pi d C_t U^2 cos^2 phi)`` (tests/lumped/test_lumped_free_tail.py)."""
+    case = array_case(**{**BUOYANT, "line_types.array.weight_in_water": weight})
+    rho, lt, length = case.environment.water_density, case.line_types["array"], case.cables[0].length
+    speed = case.vessel.initial_speed
+    r = 0.5 * rho * lt.diameter * lt.drag_normal * speed**2
+    phi = np.arccos((-abs(weight) + np.sqrt(weight**2 + 4 * r * r)) / (2 * r))
+    drag = 0.5 * rho * np.pi * lt.diameter * lt.drag_tangential * (speed * np.cos(phi))**2
+    top = length * (abs(weight) * np.sin(phi) + drag)
+    guess = free_tail_guess(case, np.linspace(0.0, length, 31))
+    assert guess.tension[0] == pytest.approx(top, rel=1e-12)
+    np.testing.assert_allclose(guess.angle, np.pi - phi if weight < 0 else phi - np.pi, atol=1e-12)
+    assert guess.z[-1] - guess.z[0] == pytest.approx(-np.sign(weight) * length * np.sin(phi), rel=1e-12)
+    assert guess.tension[-1] == pytest.approx(1e-6 * top, rel=1e-9)          # the floor: an angle at the tail
 
 
 def test_a_buoyant_tail_rises_as_the_mirror_image_of_a_heavy_one():
