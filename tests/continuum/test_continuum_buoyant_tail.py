@@ -13,13 +13,16 @@ Oracles:
   second order in the element length (tests/lumped/test_lumped_free_tail.py; a straight tail of
   one line type is exact on any grid of the continuum model): at 30 and 60 elements they differ
   by less than their own grid changes, and their Richardson extrapolations agree;
-* a buoyant tail is the mirror image of a heavy one about the tow point's depth.
+* a buoyant tail is the mirror image of a heavy one about the tow point's depth;
+* a still buoyant tail too long for its tow depth stands out of the water by the closed form's
+  height, which the model's check refuses at t = 0 (half a diameter plus 2 mm under the surface: ok).
 """
 import numpy as np
 import pytest
 
 from helpers import EXAMPLES
 from kanat import api, load_case
+from kanat.api import RunFailedWarning
 from kanat.continuum.adapter import ContinuumModel
 from kanat.continuum.tail import free_tail_guess
 
@@ -150,3 +153,27 @@ def test_a_state_holding_nan_fails_the_models_check(where):
     broken = type(state)(state.t, y, state.rate, state.xz)
     problem = model.check(broken, model.outputs(broken))
     assert problem is not None and "not finite" in problem and "node 7" in problem
+
+
+@pytest.mark.parametrize("tow_depth, height", [(30.0, 270.045), (299.0, 1.045)], ids=["far out", "just out"])
+def test_a_still_buoyant_tail_that_reaches_out_of_the_water_fails_at_the_start(tow_depth, height):
+    """The continuum model keeps the line submerged, so a still buoyant tail stands straight up from the
+    tow point, out of the water: its top ``L + |w| L^2 / (2 EA) - depth`` above the surface (the still
+    oracle above). The run fails at t = 0 naming the node and the height."""
+    case = array_case(segments=30, **{**BUOYANT, "vessel.tow_point": [0, 0, -tow_depth], "simulation.duration": 2.0,
+                                      "vessel.track": STILL})
+    with pytest.warns(RunFailedWarning):
+        status = api.simulate(case).attrs["status"]
+    assert status.startswith("failed: node 30 of cable 'array' (s = 300 m), on its buoyant part, is "), status
+    assert float(status.split(" is ")[1].split(" m above")[0]) == pytest.approx(height, abs=1e-3)
+
+
+def test_a_buoyant_tail_just_under_the_surface_passes_the_check():
+    """The same still tail with its top half a diameter (plus 2 mm) under the surface: ok."""
+    lt_diameter, stretched = 0.08, 300.0 + 2.0 * 300.0**2 / (2 * 2.0e6)
+    depth = stretched + 0.5 * lt_diameter + 0.002
+    case = array_case(segments=30, **{**BUOYANT, "vessel.tow_point": [0, 0, -depth], "simulation.duration": 2.0,
+                                      "vessel.track": STILL})
+    result = api.simulate(case)
+    assert result.attrs["status"] == "ok", result.attrs["status"]
+    assert result.position.values[0, -1, 2] == pytest.approx(-0.5 * lt_diameter - 0.002, abs=1e-8)
