@@ -314,8 +314,7 @@ class ContinuumModel:
         return (f"node {node} of cable '{cable.name}' (s = {self._s(state)[node]:.4g} m), on its buoyant part, is "
                 f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model keeps the whole "
                 "line submerged, so buoyancy it no longer has pushes it up without limit; put the tow point deeper "
-                "or shorten the buoyant part so that it stays under water, or run model: lumped, whose elements "
-                "crossing the surface are partly dry")
+                "or shorten the buoyant part so that it stays under water")
 
     def _finite(self, state, values) -> str | None:
         """A message naming the first node whose state or outputs are not finite (NaN or inf), or None."""

@@ -7,9 +7,9 @@ stop it: a buoyant free tail towed from too shallow a tow point stands straight 
 in its steady state (270 m above it for ``examples/towed_array.yaml`` with the array's weight in
 water reversed, the tow point 30 m deep and the vessel still). A node of a buoyant interval whose
 centreline is more than half a diameter above the water surface (the mean surface, or the wave
-elevation over the node) is wholly dry, and fails the run: the lumped model, whose elements
-crossing the surface are partly dry (:mod:`kanat.lumped.kernels`), or a deeper tow point, is the
-way on.
+elevation over the node) is wholly dry, and fails the run; a deeper tow point or a shorter
+buoyant part keeps it in the water. (The lumped model's elements crossing the surface are partly
+dry, :mod:`kanat.lumped.kernels`.)
 """
 from __future__ import annotations
 
