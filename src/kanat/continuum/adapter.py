@@ -6,6 +6,8 @@ and a scheme of the generalized-α family or Kaliukh & Vusatiuk's factorized sch
 :data:`kanat.continuum.stepper.MAX_CUTS` levels: :class:`kanat.step_control.Halving`, the step
 control both models share) before the run stops with a message saying where and what to try. Its checks of every output:
 
+* finite: a state or output holding NaN or inf fails, before the checks below (which compare
+  numbers, and a NaN passes every comparison);
 * compression: a perfectly flexible cable (``EI = 0``) cannot carry it; a line with bending
   stiffness is a rod and may, up to the Euler load of one segment ``pi^2 EI / (2 ds)^2``
   (beyond it the grid no longer resolves the buckled shape: :func:`rod_advice` says how fine a
@@ -15,7 +17,9 @@ control both models share) before the run stops with a message saying where and 
   attribute and a note; with ``stop`` the check fails the run;
 * strain within the line type's range;
 * seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
-  penetration ``w / (k_b d)`` below the seabed (a node falling through it).
+  penetration ``w / (k_b d)`` below the seabed (a node falling through it);
+* surface: no node of a buoyant interval wholly out of the water (:mod:`kanat.continuum.surface`:
+  the model keeps its line submerged, so such a node has lost a buoyancy the model still applies).
 """
 from __future__ import annotations
 
@@ -29,6 +33,7 @@ from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
+from kanat.continuum.surface import dry_buoyant_node
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
@@ -293,8 +298,36 @@ class ContinuumModel:
     def check(self, state, values: dict) -> str | None:
         if self.winch is not None:                           # the checks look at the nodes in the water
             values = self.cable_model.outputs(state)
+        finite = self._finite(state, values)
+        if finite is not None:                               # the other checks compare numbers: NaN passes them
+            return finite
         slack = self._compression(state, values) if self.slack is None else None
-        return slack or self._strain(state, values) or self._seabed(state, values)
+        return slack or self._strain(state, values) or self._seabed(state, values) or self._dry(state, values)
+
+    def _dry(self, state, values) -> str | None:
+        """A buoyant node out of the water (:mod:`kanat.continuum.surface`), or None."""
+        cable = self.cable_model.cable
+        dry = dry_buoyant_node(self._facts(state).rows, values["position"], cable.sea, state.t)
+        if dry is None:
+            return None
+        node, height = dry
+        return (f"node {node} of cable '{cable.name}' (s = {self._s(state)[node]:.4g} m), on its buoyant part, is "
+                f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model keeps the whole "
+                "line submerged, so buoyancy it no longer has pushes it up without limit; put the tow point deeper "
+                "or shorten the buoyant part so that it stays under water")
+
+    def _finite(self, state, values) -> str | None:
+        """A message naming the first node whose state or outputs are not finite (NaN or inf), or None."""
+        arrays = [np.asarray(state.y).reshape(len(state.y), -1)]
+        arrays += [np.asarray(v).reshape(len(state.y), -1) for v in values.values()
+                   if np.ndim(v) and len(v) == len(state.y)]
+        bad = ~np.all(np.isfinite(np.hstack(arrays)), axis=1)
+        if not np.any(bad):
+            return None
+        node = int(np.flatnonzero(bad)[0])
+        return (f"the state is not finite (NaN or inf) at t = {state.t:.6g} s on cable "
+                f"'{self.cable_model.cable.name}' at node {node} (s = {self._s(state)[node]:.4g} m); reduce dt, "
+                "use a more dissipative scheme (lambda_inf closer to 0) or refine the grid")
 
     def _compression(self, state, values) -> str | None:
         cable = self.cable_model.cable

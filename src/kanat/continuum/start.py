@@ -8,10 +8,8 @@ bodies, a surface buoy, a current with a y component or anything else off the pl
 """
 from __future__ import annotations
 
-import numpy as np
-
+from kanat.continuum.tail import free_tail_guess
 from kanat.model.plane import out_of_plane
-from kanat.physics.drag import critical_angle
 from kanat.statics import CableSolution
 from kanat.statics.budget import budget
 from kanat.statics.march import steady_guess
@@ -50,8 +48,10 @@ def static_shape(case, name, s) -> CableSolution:
     """The statics solution of the case's cable at stations ``s`` (the initial guess).
 
     A cable with a free tail has no statics solution of its own (statics refuses free ends);
-    its guess is :func:`free_tail_guess`, which the discrete steady solve then corrects. The
-    statics solve has the budget of any (:mod:`kanat.statics.budget`).
+    its guess is :func:`kanat.continuum.tail.free_tail_guess` (each interval trailing at the
+    critical angle of the flow, below it for a heavy line and above it for a buoyant one), which
+    the discrete steady solve then corrects. The statics solve has the budget of any
+    (:mod:`kanat.statics.budget`).
     """
     if case.cables[0].to.kind == "free":
         return free_tail_guess(case, s)
@@ -62,24 +62,3 @@ def static_shape(case, name, s) -> CableSolution:
 
             return solve_cable3(cable_problem3(case), "auto", s)
         return steady_guess(cable_problems(case)[name], s)
-
-
-def free_tail_guess(case, s) -> CableSolution:
-    """A straight cable trailing from the tow point at the critical angle of the relative flow.
-
-    ``cos(phi_c) = (-w + sqrt(w^2 + 4R^2)) / (2R)``, ``R = 0.5 rho d C_n U^2`` (theory/continuum.md eq. (C15),
-    :func:`kanat.physics.drag.critical_angle`); the
-    tension grows from 0 at the tail with the tangential weight and drag. Vertical in still water.
-    """
-    env, cable = case.environment, case.cables[0]
-    lt = case.line_types[cable.line_type]
-    w = lt.weight_in_water_value(env.water_density, env.gravity)
-    speed = case.vessel.initial_speed - env.current.at(0.0)[0]
-    phi = critical_angle(w, 0.5 * env.water_density * lt.diameter * lt.drag_normal, speed)
-    along = np.array([-np.sign(speed) * np.cos(phi) if speed else 0.0, -np.sin(phi)])
-    per_length = w * np.sin(phi) + 0.5 * env.water_density * np.pi * lt.diameter * lt.drag_tangential * (
-        speed * np.cos(phi))**2
-    tension = np.maximum(per_length * (cable.length - s), 1e-6 * w * cable.length)
-    origin = np.array([case.vessel.tow_point[0], case.vessel.tow_point[2]])
-    xz = origin + np.outer(s, along)
-    return CableSolution(s, xz[:, 0], xz[:, 1], np.outer(tension, along), "free-tail guess")

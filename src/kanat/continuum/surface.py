@@ -1,0 +1,74 @@
+"""The check that a buoyant part of a continuum cable stays in the water.
+
+The continuum model keeps its whole cable submerged: every interval carries its weight in water
+``w`` wherever it is (theory/continuum.md §1). Out of the water a heavy line is then a little too
+light, but a buoyant one (``w < 0``) is pushed up by a buoyancy it no longer has, with nothing to
+stop it: a buoyant free tail towed from too shallow a tow point stands straight up out of the sea
+in its steady state (270 m above it for ``examples/towed_array.yaml`` with the array's weight in
+water reversed, the tow point 30 m deep and the vessel still). A node of a buoyant interval whose
+centreline is more than half a diameter above the water surface (the mean surface, or the wave
+elevation over the node) is wholly dry, and fails the run; a deeper tow point or a shorter
+buoyant part keeps it in the water. (The lumped model's elements crossing the surface are partly
+dry, :mod:`kanat.lumped.kernels`.)
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kanat.continuum import kernels2d as k
+
+DRY_MARGIN = 1e-3
+"""How far [m] beyond half a diameter above the surface a node counts as out of the water (round-off
+on a line floating at the surface)."""
+
+
+def buoyant_nodes(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes of buoyant intervals and the largest diameter of their buoyant intervals.
+
+    Parameters
+    ----------
+    rows : ndarray, shape (n - 1, P)
+        The grid's parameter rows (:mod:`kanat.continuum.grid`).
+
+    Returns
+    -------
+    nodes : ndarray of int
+        Nodes that end a cable interval with ``w < 0`` (the first end, prescribed, excluded).
+    diameter : ndarray, shape (len(nodes),)
+        [m].
+    """
+    n = len(rows) + 1
+    buoyant = (rows[:, k.KIND] == k.CABLE) & (rows[:, k.W0] < 0.0)
+    diameter = np.zeros(n)
+    for side in (0, 1):
+        which = np.flatnonzero(buoyant) + side
+        diameter[which] = np.maximum(diameter[which], rows[buoyant, k.DIAM])
+    nodes = np.flatnonzero(diameter > 0.0)
+    nodes = nodes[nodes > 0]
+    return nodes, diameter[nodes]
+
+
+def dry_buoyant_node(rows: np.ndarray, position: np.ndarray, sea, t: float) -> tuple[int, float] | None:
+    """The buoyant node highest out of the water, ``(node, height of its centreline above the
+    surface)`` [m], or None when every buoyant node is in it (module docstring).
+
+    Parameters
+    ----------
+    rows : ndarray, shape (n - 1, P)
+    position : ndarray, shape (n, 3)
+        Node positions [m].
+    sea : kanat.physics.waves.LinearSea or None
+        The waves (their elevation over each node), or None: the mean surface ``z = 0``.
+    t : float
+        Time [s].
+    """
+    nodes, diameter = buoyant_nodes(rows)
+    if not len(nodes):
+        return None
+    xyz = position[nodes]
+    surface = np.zeros(len(nodes)) if sea is None else sea.elevation(xyz[:, 0], xyz[:, 1], t)
+    height = xyz[:, 2] - surface
+    worst = int(np.argmax(height - 0.5 * diameter))
+    if height[worst] - 0.5 * diameter[worst] <= DRY_MARGIN:
+        return None
+    return int(nodes[worst]), float(height[worst])
