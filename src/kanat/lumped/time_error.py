@@ -173,10 +173,17 @@ def attributes(estimate) -> dict:
     return out
 
 
+def findings(estimate, h: float, where) -> dict:
+    """``{"steps": (kind, sentence), "start": (kind, sentence)}`` for eq. (2) and eq. (3) past :data:`WARNING`
+    (``kind`` "warning" or "failure"; a cause below it is left out); ``where(f)`` names free node ``f``."""
+    found = {"steps": _stepping(estimate, h, where), "start": _start(estimate, h)}
+    return {cause: part for cause, part in found.items() if part is not None}
+
+
 def verdict(estimate, h: float, where) -> tuple[str, str] | None:
     """``("warning" | "failure", sentence)`` when eq. (2) or eq. (3) is past :data:`WARNING` (the graver
-    kind, both sentences), else None; ``where(f)`` names free node ``f``."""
-    found = [part for part in (_stepping(estimate, h, where), _start(estimate, h)) if part is not None]
+    kind, the sentences of both causes), else None; ``where(f)`` names free node ``f``."""
+    found = list(findings(estimate, h, where).values())
     if not found:
         return None
     kind = "failure" if any(part[0] == "failure" for part in found) else "warning"
