@@ -21,6 +21,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from kanat.errors import SolverError
 from kanat.lumped import entries, fast, fast_implicit, stepping, time_error
 from kanat.lumped.integrators import ABM4, RK4, ExplicitState, GeneralizedAlphaLumped, pack, unpack
 from kanat.lumped.snap import SnapTracker
@@ -188,24 +189,28 @@ def check_start(scheme, system, state, h: float, tensions) -> None:
     :data:`kanat.lumped.time_error.START_STEPS` steps taken again at ``h`` and at ``h/2`` (by
     :func:`advance`, on copies, with snap tracking of their own), their tensions compared at the steps'
     ends; kept in the estimate's ``[6:8]``. It only observes: the estimate's other entries and the
-    system's force count are put back. A pair that turns non-finite is compared up to there."""
+    system's force count are put back. A pair that turns non-finite or fails is compared up to there."""
     estimate = time_error_estimate(system)
     kept, evaluations = estimate.copy(), system.evaluations
     estimate[6] = 0.0                                           # checked: the pair's own steps do not recurse
     times, tension = [], {1: [], 2: []}
     runs = {k: state for k in (1, 2)}
-    for step in range(time_error.START_STEPS):
-        for k in (1, 2):
-            tracker = SnapTracker(runs[k].t, tensions(runs[k]).copy())
-            runs[k], taken = advance(scheme, system, runs[k], h / k, k, tracker, tensions)
-        if not (_finite(runs[1]) and _finite(runs[2])):
-            break
-        times.append(runs[1].t)
-        for k in (1, 2):
-            tension[k].append(tensions(runs[k]).copy())
-    estimate[:] = kept
+    try:
+        for _ in range(time_error.START_STEPS):
+            for k in (1, 2):
+                tracker = SnapTracker(runs[k].t, tensions(runs[k]).copy())
+                runs[k] = advance(scheme, system, runs[k], h / k, k, tracker, tensions)[0]
+            if not (_finite(runs[1]) and _finite(runs[2])):
+                break
+            times.append(runs[1].t)
+            for k in (1, 2):
+                tension[k].append(tensions(runs[k]).copy())
+    except SolverError:
+        pass                                                    # the run itself will say what failed
+    finally:
+        estimate[:] = kept
+        system.evaluations = evaluations
     estimate[6:8] = time_error.start_difference(np.array(times), np.array(tension[1]), np.array(tension[2]))
-    system.evaluations = evaluations
 
 
 def _python_steps(scheme, system, state, h, steps, tracker, tensions):
