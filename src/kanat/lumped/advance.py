@@ -13,7 +13,8 @@ safe step (:func:`_explicit`, counted in the state's ``explicit`` and said in th
 implicit run never fails where ``rk4`` succeeds. Each scheme's compiled run is found in
 :data:`COMPILED` by its class. Every implicit step, on either path, also updates the run's
 estimate of its local time-integration error (:mod:`kanat.lumped.time_error`, kept as
-:func:`time_error_estimate`), which only observes.
+:func:`time_error_estimate`), which only observes; its start is judged once by a step pair
+(:func:`check_start`).
 """
 from __future__ import annotations
 
