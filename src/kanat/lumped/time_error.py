@@ -77,9 +77,10 @@ START_STEPS = 10
 """Steps after a start (the run's, or the implicit scheme's restart after explicit steps) eq. (2) passes over.
 A step from rest moves by ``O(h^2)``, not ``h v``: there eq. (2) compares the error with a displacement that
 is not the motion's, and reads the same whatever the step. Measured on ``examples/lazy_wave.yaml`` (a line at
-rest whose fairlead starts at 1.3 m/s) at dt 0.2, 0.1 and 0.05 s: 0.25 on the first step for all three
+rest whose fairlead starts from rest at 0.79 m/s^2) at dt 0.2, 0.1 and 0.05 s: 0.25 on the first step for all three
 (``(beta - 1/6 + alpha_m/2) / beta`` for a step from rest), 0.013, 0.037 and 0.061 on the second (growing as
-the step shrinks), below 0.02 after the third; on WD0050 likewise. The run's start is judged by eq. (3)
+the step shrinks), 0.02 or less from the third; on WD0050 0.25 on the first step at 0.1 and 0.05 s
+(``tests/lumped/test_time_error_start.py``). The run's start is judged by eq. (3)
 instead (:func:`start_difference`), which does not divide by the start's displacement. A restart after
 explicit steps (a moving state) passes over the same steps: the generalized-α accelerations the restart
 hands the scheme are the equations', which the scheme's own lag by ``(alpha_m - alpha_f) h``."""
