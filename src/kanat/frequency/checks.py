@@ -123,7 +123,7 @@ def _touchdown(model, ex, ds, case) -> list[str]:
                      "time domain; check the touchdown zone with method: time")
     if not np.any(grounded):
         return notes
-    stiffness = (case.environment.seabed.stiffness * net.node_contact_area)[idx]
+    stiffness = (case.environment.with_seabed_contact().seabed.stiffness * net.node_contact_area)[idx]
     lift = grounded & (stiffness * motion[:, 2] > model.contact_force[idx])
     if np.any(lift):
         notes.append(f"{int(lift.sum())} grounded node(s) whose contact force swings beyond its static value "
@@ -142,11 +142,15 @@ def _touchdown(model, ex, ds, case) -> list[str]:
 
 
 def _clearance(model, case) -> np.ndarray:
-    """Each node's height above the seabed plane at the equilibrium (n,) [m] (inf without a seabed)."""
+    """Each node's height above the seabed at the equilibrium (n,) [m] (inf without ``depth``): the
+    seabed every model applies (:meth:`kanat.model.Environment.with_seabed_contact`), so that a case
+    giving ``depth`` alone is checked against its seabed too, even when no line reaches it at rest
+    (a buoyant line, which then has no contact model)."""
     x = model.lin.position
-    if case.environment.seabed is None:
+    environment = case.environment.with_seabed_contact()
+    if environment.seabed is None:
         return np.full(len(x), np.inf)
-    bed = seabed_of(case.environment)
+    bed = seabed_of(environment)
     return x[:, 2] - np.asarray(bed.height(x[:, 0], x[:, 1]), float)
 
 
