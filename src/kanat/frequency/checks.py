@@ -20,6 +20,10 @@
   the motion is outside the linear range: a warning (in ``notes`` and as a
   :class:`~kanat.errors.CaseWarning`) with the measured ``r``; beyond
   :data:`~kanat.frequency.nonlinearity.REFUSE` it fails the result.
+* **body motion**: a body's degree of freedom both driven and damped by the lines' drag, and
+  sensitive to its equivalent linearisation (:mod:`kanat.frequency.body_linearity` eq. 2, beyond
+  :data:`~kanat.frequency.body_linearity.LIMIT`), may be far from the time domain however small
+  the tension's nonlinearity: a warning naming the body and the degree of freedom.
 """
 from __future__ import annotations
 
@@ -28,7 +32,7 @@ import warnings
 import numpy as np
 
 from kanat.errors import CaseWarning, SolverError
-from kanat.frequency import nonlinearity
+from kanat.frequency import body_linearity, nonlinearity
 from kanat.physics.seabed import seabed_of
 
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
@@ -57,6 +61,9 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
     failure, note = _offset(model, ex, response, ds, case)
     failures += [failure] if failure else []
     notes += [note] if note else []
+    for warning in body_linearity.body_notes(model, ex, response, list(model.lin.net.body_names)):
+        warnings.warn(f"the frequency-domain result: {warning}", CaseWarning, stacklevel=3)
+        notes.append("warning: " + warning)
     status = "ok" if not failures else "failed: " + "; ".join(failures)
     return status, "; ".join(notes)
 
