@@ -7,7 +7,6 @@ From 30 deg at 0.5 m its yaw, a small difference of the legs' drag that the drag
 3.6 % off, every other motion within 0.5 %: test_frequency_rigid_waves.py) and at 0.5 m head on
 (surge, heave and pitch within 5 %) it stays silent.
 """
-import math
 import warnings
 
 import numpy as np
