@@ -50,16 +50,12 @@ def drag_measures(model, ex, response) -> tuple[np.ndarray, np.ndarray, np.ndarr
     """``(e, s, r, size)`` of eqs. (1)-(2), each (body, 6): the elasticity, the drag-forced part,
     their product and the response ``X`` (amplitude or standard deviation [m or rad]); NaN for a
     point body's rotations."""
-    omega = ex.omega
     water = linear_response.water_kinematics(model, ex) * ex.wave[:, None, None]
-    D = linear_response._equivalent(model.pairs, water, model.maps.velocities(response.free), ex)
-    fixed = _vessel_forcing(model, ex, response.prescribed) + linear_response.wave_excitation(model, ex, water)
-    base = model.lin.damping - model.drag_at_mean
+    D = linear_response.equivalent_drag(model, ex, water, response.free)
+    fixed = linear_response.fixed_forcing(model, ex, water, response.prescribed)
 
     def motion(scale: float, drag_forcing: bool = True) -> np.ndarray:
-        forcing = model.maps.forces(np.einsum("fprq,fpq->fpr", scale * D, water)) if drag_forcing else 0.0
-        X = linear_response._solve_all(model.lin, linear_response._dampings(model.maps, base, scale * D), omega,
-                                       fixed + forcing)
+        X = linear_response.solve_linear(model, ex, scale * D, water, fixed, drag_forcing)
         return _body_size(model, ex, X, response.prescribed)
 
     size = motion(1.0)
@@ -83,9 +79,9 @@ def body_notes(model, ex, response, body_names) -> list[str]:
             continue
         which = ", ".join(f"{DOFS[d]} (r = {r[b, d]:.2g}: elasticity {e[b, d]:.2g}, drag-forced "
                           f"{100 * s[b, d]:.2g} %)" for d in poor)
-        notes.append(f"body '{name}': the drag's linearisation decides its {which}, beyond the "
-                     f"{LIMIT:g} the frequency domain matched the time domain to; that motion may be tens of % off "
-                     "(the lines' drag is far from linear there): check it with method: time")
+        notes.append(f"body '{name}': its {which} is decided by the lines' drag and its equivalent "
+                     f"linearisation (r beyond {LIMIT:g}): the time domain may differ by tens of % (a buoy's yaw "
+                     "at r = 0.22: 27 %, docs/frequency.md); check it with method: time")
     return notes
 
 
@@ -97,13 +93,6 @@ def judged_dofs(size: np.ndarray) -> np.ndarray:
         group = np.nan_to_num(size[part])
         out[part] = (group > 0.0) & (group >= NEGLIGIBLE * group.max(initial=0.0))
     return out
-
-
-def _vessel_forcing(model, ex, prescribed: np.ndarray) -> np.ndarray:
-    """The vessel's forcing ``f_p`` of :mod:`kanat.frequency.assembly` eq. (1), (nf, n_dof)."""
-    vessel = prescribed.reshape(len(ex.omega), -1)
-    return np.stack([model.coupling @ vessel[f] + 1j * w * (model.coupling_rate @ vessel[f])
-                     + w * w * (model.coupling_mass @ vessel[f]) for f, w in enumerate(ex.omega)])
 
 
 def _body_size(model, ex, X: np.ndarray, prescribed: np.ndarray) -> np.ndarray:
