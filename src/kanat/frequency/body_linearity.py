@@ -13,8 +13,8 @@ degree of freedom ``d`` of each body gets:
       (1)  e_d = |X_d((1 + h) D) - X_d((1 - h) D)| / (2 h |X_d(D)|),   h = STEP
 
   (0 for a motion the drag does not touch; about 1 for a resonant motion damped by drag alone,
-  ``X ~ F / D``; more where the drag both excites and damps it, a small difference of the lines'
-  large drag forces);
+  ``X ~ F / D``; more for a motion that is a small difference of terms the drag sets: the yaw of
+  a buoy between its legs, 2.1);
 * the drag-forced part of its response: ``s_d = |X_d - X_d(no f_D)| / |X_d|``, ``X(no f_D)``
   the response with the drag's wave forcing ``P_f D u_w`` left out (its damping kept);
 
@@ -22,8 +22,9 @@ and the measure::
 
     (2)  r_d = e_d s_d
 
-A motion both driven and damped by the drag, and sensitive to it, has ``r`` near 1; a motion the
-drag only damps (``s`` small) or hardly touches (``e`` small) has ``r`` near 0. Beyond
+A motion both driven by the drag and sensitive to its linearisation has a large ``r``; a motion
+the drag only damps (``s`` small) or hardly touches (``e`` small) has ``r`` near 0. The measure
+and its limit are empirical, calibrated on one moored buoy against the time domain (:data:`LIMIT`). Beyond
 :data:`LIMIT` the frequency domain warns, naming the body and the degree of freedom. A translation
 (rotation) below :data:`NEGLIGIBLE` of the body's largest translation (rotation) is not judged: a
 head sea's sway, roll and yaw of a nearly symmetric system, 1e-6 of its surge and 1e-5 of its
