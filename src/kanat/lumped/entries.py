@@ -6,9 +6,11 @@ the arguments match it, numba's kernel otherwise (made on first use, so a run th
 numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
 The argument specifications below are the layouts the Python side builds, each group of arrays a
-named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples`` and
-``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
-:mod:`kanat.lumped.network`, ``SnapTracker.kernel_arrays`` in :mod:`kanat.lumped.snap`); the stepping
+named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples``,
+``sea_arrays`` and ``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
+:mod:`kanat.lumped.network`, ``RigidBodies.arrays`` in :mod:`kanat.lumped.rigid`, the seabed's
+``Contact`` and ``Laid`` in :mod:`kanat.lumped.system`, ``SnapTracker.kernel_arrays`` in
+:mod:`kanat.lumped.snap`); the stepping
 kernels come in one version per combination of the optional 6-DOF bodies and seabed contact
 (None when a network has none, which prunes their code).
 """
@@ -61,13 +63,14 @@ property, filled by :meth:`kanat.lumped.network.Network.elements` and nowhere el
 Rig = aot.record(
     "Rig", "kanat.lumped.entries",
     reference_node=I1, angle_node=I1,       # per body b: the pseudo-nodes of its reference point r and Euler angles
-    rigid_mass=F3,                          # rigid-body mass matrix M_rb about r, body axes [kg, kg m, kg m^2] (nb, 6, 6)
+    rigid_mass=F3,                          # rigid-body mass M_rb about r, body axes [kg, kg m, kg m^2] (nb, 6, 6)
     added_mass=F3,                          # added mass A, body axes (nb, 6, 6)
     hydrostatic_stiffness=F3,               # C of rigid eq. 4, body axes [N/m, N m/rad] (nb, 6, 6)
     linear_damping=F3, quadratic_damping=F3,    # B_1 [N s/m], B_2 [N s^2/m^2] of rigid eq. 3, body axes (nb, 6, 6)
     drag_area=F2,                           # C_D A per degree of freedom [m^2, m^5] (nb, 6)
     gravity_centre=F2, buoyancy_centre=F2,  # c_g, c_b in body axes [m] (nb, 3)
-    scalars=F2,                             # m g [N], B [N], B / g [kg], hydrostatics on, surface-piercing, m [kg] (nb, 6)
+    scalars=F2,                             # m g [N], B [N], B / g [kg], hydrostatics on, surface-piercing (1/0),
+                                            # m [kg] (nb, 6)
     force=F2,                               # constant external force [N] (nb, 3)
     rest=F2,                                # position [m] and orientation [rad] the restoring acts about (nb, 6)
     fairlead_node=I1, fairlead_body=I1,     # per fairlead f: its node and its body
@@ -86,8 +89,8 @@ Laid = aot.record(
 Contact = aot.record(
     "Contact", "kanat.lumped.entries",
     area=F1,                                # contact area A_n per node [m^2] (n,)
-    seabed=F1,                              # kanat.physics.contact.seabed_arrays: kind, depth [m], tan, cos, sin of the slope
-    parameters=F1,                          # kanat.physics.contact.contact_parameters: k_b, c_b, mu_a, mu_l, v_s, mode, u_s
+    seabed=F1,                              # physics.contact.seabed_arrays: kind, depth [m], slope's tan, cos, sin
+    parameters=F1,                          # physics.contact.contact_parameters: k_b, c_b, mu_a, mu_l, v_s, mode, u_s
     laid=Laid,                              # where each node lay (equilibrium friction)
 )
 """The seabed contact as the kernels read it (:mod:`kanat.physics.contact`, eqs. 1-4), built by

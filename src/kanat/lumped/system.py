@@ -100,8 +100,8 @@ class LumpedSystem:
         self._last_motion: tuple | None = None      # (t, q, q_dot) of the last single-time sample
 
     def _contact(self, case, net) -> entries.Contact:
-        """The seabed contact :func:`kanat.physics.contact.contact_forces` takes (:class:`kanat.lumped.entries.Contact`),
-        its arrays empty without a seabed."""
+        """The seabed contact :func:`kanat.physics.contact.contact_forces` takes
+        (:class:`kanat.lumped.entries.Contact`), its arrays empty without a seabed."""
         block = case.environment.seabed
         if block is None:
             empty = np.zeros(0)
