@@ -82,7 +82,7 @@ class FusedArrays:
             float_node=net.body_node[net.float_body].astype(np.int64), float_diameter=net.float_diameter.astype(float),
             float_buoyancy=net.float_buoyancy.astype(float),
             rig=system.rig if net.rigid.count else None,                          # None: pruned from the kernels
-            contact=system.contact if len(system.contact[0]) else None)
+            contact=system.contact if len(system.contact.area) else None)
         cz, cu = system.current.table()
         ramp = float(system.current.ramp)
         still = system.sea is None and len(cz) == 1 and ramp == 0.0   # water kinematics constant in space and time
@@ -111,17 +111,20 @@ class FusedArrays:
             previous=np.zeros((nf, 3)))
 
 
-def sea_arrays(sea) -> tuple:
-    """A :class:`kanat.physics.waves.LinearSea` (or None) as the tuple :func:`fast.sea_add` takes;
-    ``depth <= 0`` stands for deep water, then 1.0 for Wheeler stretching (0.0 none) and the ramp [s]."""
+def sea_arrays(sea) -> entries.Sea:
+    """A :class:`kanat.physics.waves.LinearSea` (or None: no components) as the record
+    :func:`fast.sea_add` takes (:class:`kanat.lumped.entries.Sea`, its one builder); ``depth <= 0``
+    stands for deep water."""
     if sea is None:
         empty = np.zeros(0)
-        return empty, empty, empty, empty, empty, empty, 0.0, empty, 0.0, 0.0
+        return entries.Sea(amplitude=empty, omega=empty, wavenumber=empty, cos_direction=empty, sin_direction=empty,
+                           phase=empty, depth=0.0, depth_factor=empty, wheeler=0.0, ramp=0.0)
     depth = 0.0 if sea.depth is None else float(sea.depth)
     inv = 1.0 / (1.0 - np.exp(-2.0 * sea.k * depth)) if depth > 0 else np.ones_like(sea.k)
-    return (np.asarray(sea.amplitude, float), np.asarray(sea.omega, float), np.asarray(sea.k, float),
-            np.cos(sea.direction), np.sin(sea.direction), np.asarray(sea.phase, float), depth, inv,
-            1.0 if sea.stretching == "wheeler" else 0.0, float(sea.ramp))
+    return entries.Sea(amplitude=np.asarray(sea.amplitude, float), omega=np.asarray(sea.omega, float),
+                       wavenumber=np.asarray(sea.k, float), cos_direction=np.cos(sea.direction),
+                       sin_direction=np.sin(sea.direction), phase=np.asarray(sea.phase, float), depth=depth,
+                       depth_factor=inv, wheeler=1.0 if sea.stretching == "wheeler" else 0.0, ramp=float(sea.ramp))
 
 
 def track_samples(system, times: np.ndarray) -> entries.Track:
