@@ -121,3 +121,13 @@ def test_a_tail_floating_on_still_water_is_refused_with_its_plumb_height():
     with pytest.warns(RunFailedWarning):
         status = api.simulate(case).attrs["status"]
     assert status.startswith("failed: no initial state: cable 'array' is a buoyant free tail"), status
+
+
+def test_a_tail_reaching_still_surface_water_over_a_current_below_is_refused():
+    """The vessel still, a 0.5 m/s current only below 350 m: the buoyant tail, 100 m down, stands up through
+    the still water above it and would float on still water, so it is refused as on still water."""
+    profile = [[0.0, 0.0, 0.0, 0.0], [-350.0, 0.0, 0.0, 0.0], [-400.0, 0.5, 0.0, 0.0]]
+    case = array_case("lumped", 10, **{**BUOYANT, "vessel.track": STILL, "environment.current": {"profile": profile}})
+    with pytest.raises(SolverError, match=r"cable 'array' is a buoyant free tail that reaches the surface where "
+                                          r"the water is still"):
+        equilibrium(build_network(case), case, friction=False)

@@ -62,7 +62,7 @@ def free_tails(case) -> list[tuple[str, bool]]:
 
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     """``x`` (n, 3) with every free tail's nodes placed by eq. (1), floating at eq. (2) where a buoyant
-    tail reaches the surface in a flow, or None when the case has no free tail to place (none, or only
+    tail reaches the surface in a flow there, or None when the case has no free tail to place (none, or only
     tails clamped at their attached end in still water). Still water is the case's current definition
     without a horizontal velocity in any row of its table (:meth:`kanat.model.environment.Current.table`)
     and no way on, wherever the nodes are. Elements are stretched by the network guess's
@@ -80,7 +80,8 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     Raises
     ------
     SolverError
-        A buoyant tail that would reach the surface in still water (module docstring).
+        A buoyant tail that would float on still water: in still water, or where the current leaves the
+        surface still (module docstring).
     """
     _, currents = case.environment.current.table()
     still = not np.any(np.asarray(velocity, dtype=float)[:2]) and not np.any(currents[:, :2])
@@ -93,9 +94,9 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     for name, reversed_ in tails:
         nodes, elements = _tail(net, name, reversed_)
         for node, after, element in zip(nodes[:-1], nodes[1:], elements):
-            x[after], floating = _next_node(net, case, element, x[node], velocity)
-            if floating and still:
-                raise SolverError(_still_float_message(net, name, x[nodes[0]], elements))
+            x[after], stranded = _next_node(net, case, element, x[node], velocity)
+            if stranded:
+                raise SolverError(_still_float_message(net, name, x[nodes[0]], elements, still))
     return x
 
 
@@ -119,7 +120,8 @@ def _flow(case, position, velocity) -> np.ndarray:
 
 def _next_node(net, case, element, position, velocity) -> tuple[np.ndarray, bool]:
     """The lower node (3,) of an element whose upper node is at ``position``: along eq. (1), or up to and
-    along the surface at eq. (2) for a buoyant element that would rise above it (then True)."""
+    along the surface at eq. (2) for a buoyant element that would rise above it; and True where the
+    water at the surface is still, so that the element would float with nothing to lay it out."""
     length = GUESS_STRETCH * float(net.el_length[element])
     weight = float(net.el_weight[element])
     after = position + length * trailing_direction(weight, net.el_cn[element], _flow(case, position, velocity))
@@ -129,17 +131,23 @@ def _next_node(net, case, element, position, velocity) -> tuple[np.ndarray, bool
     rise = max(height - float(position[2]), 0.0)
     surface = _flow(case, np.array([0.0, 0.0, height]), velocity)
     speed = float(np.hypot(surface[0], surface[1]))
-    along = surface / speed if speed > 0.0 else np.zeros(2)
+    if speed == 0.0:
+        return after, True
     reach = np.sqrt(max(length**2 - rise**2, 0.0))
-    return position + np.array([reach * along[0], reach * along[1], rise]), True
+    return position + np.array([reach * surface[0] / speed, reach * surface[1] / speed, rise]), False
 
 
-def _still_float_message(net, name, origin, elements) -> str:
-    """Why a buoyant tail on still water has no equilibrium to find, and what to change."""
+def _still_float_message(net, name, origin, elements, still) -> str:
+    """Why a buoyant tail afloat on still water has no equilibrium to find, and what to change: in still
+    water, the height its plumb top would stand above the surface (unstretched, heavy parts straight down)."""
+    reason = ("floating there it carries no tension, and its place and shape on the surface are not "
+              "determined (the lumped model has no unique equilibrium for it)")
+    if not still:
+        return (f"cable '{name}' is a buoyant free tail that reaches the surface where the water is still: "
+                f"{reason}; give the tow point more depth, a current at the surface or way on, or a shorter "
+                "buoyant part")
     heights = float(origin[2]) - np.cumsum(np.sign(net.el_weight[elements]) * net.el_length[elements])
-    top = float(np.max(heights))                                  # unstretched, heavy parts straight down
-    return (f"cable '{name}' is a buoyant free tail in still water that would stand straight up to "
-            f"{top:.3f} m above the surface: floating there it "
-            "carries no tension, and its place and shape on the surface are not determined (the lumped model "
-            "has no unique equilibrium for it); give the tow point at least that much more depth, a current "
-            "or way on, or a shorter buoyant part")
+    top = float(np.max(heights))
+    return (f"cable '{name}' is a buoyant free tail in still water that would stand straight up to {top:.3f} m "
+            f"above the surface: {reason}; give the tow point at least that much more depth, a current or way "
+            "on, or a shorter buoyant part")
