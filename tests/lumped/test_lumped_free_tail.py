@@ -20,7 +20,7 @@ import pytest
 from helpers import EXAMPLES
 from kanat import api, load_case
 from kanat.lumped.equilibrium import equilibrium
-from kanat.lumped.network import build_network
+from kanat.lumped.network import GUESS_STRETCH, build_network
 from kanat.lumped.tow_guess import free_tail_guess
 from kanat.physics.drag import critical_angle
 
@@ -64,28 +64,25 @@ def test_the_example_finds_its_steady_tow_from_the_free_tail_guess():
 
 
 STILL_TOP = [[0.0, 0.0, 0.0, 0.0], [-350.0, 0.0, 0.0, 0.0], [-400.0, 0.5, 0.0, 0.0]]
-CURRENTS = {"none": ({"velocity": [0.0, 0.0, 0.0]}, None),
-            "still profile": ({"profile": [[0.0, 0.0, 0.0, 0.0], [-400.0, 0.0, 0.0, 0.0]]}, None),
+CURRENTS = {"none": ({"velocity": [0.0, 0.0, 0.0]}, 0.0),
+            "still profile": ({"profile": [[0.0, 0.0, 0.0, 0.0], [-400.0, 0.0, 0.0, 0.0]]}, 0.0),
             "uniform profile": ({"profile": [[0.0, 0.5, 0.0, 0.0], [-400.0, 0.5, 0.0, 0.0]]}, 0.5),
             "current below the tail only": ({"profile": STILL_TOP}, 0.0)}
 
 
 @pytest.mark.parametrize("current, speed", CURRENTS.values(), ids=CURRENTS.keys())
-def test_the_free_tail_guess_reads_still_water_from_the_current_table(current, speed):
-    """The array held still (no way on) in a current: no guess where no row of the current's table
-    flows (the network's own guess stays); in a uniform 0.5 m/s profile every element trails
-    downstream at the closed form's critical angle; in a current that flows only below 350 m, where
-    no node of the 300 m tail reaches, the tail hangs straight down in the still water above it,
-    eq. (1) at ``U = 0`` (``phi = pi / 2``)."""
+def test_the_free_tail_guess_trails_in_the_flow_at_each_node_and_hangs_plumb_in_still_water(current, speed):
+    """The array held still (no way on) in a current: in a uniform 0.5 m/s profile every element trails
+    downstream at the closed form's critical angle; with no current, a current table that never flows, or
+    a current that flows only below 350 m, where no node of the 300 m tail reaches, the tail hangs
+    straight down, eq. (1) at ``U = 0`` (``phi = pi / 2``). Each element is stretched by the network
+    guess's factor."""
     case = array_case(segments=10, **{"environment.current": current})
     net = build_network(case)
     x = free_tail_guess(net, case, net.x_guess, np.zeros(3))
-    if speed is None:
-        assert x is None
-        return
     along = np.diff(x[net.node_index], axis=0)
     phi = closed_form(case, speed)[0] if speed > 0.0 else 0.5 * np.pi
-    expected = 30.0 * np.array([np.cos(phi), 0.0, -np.sin(phi)])               # 10 elements of 30 m
+    expected = 30.0 * GUESS_STRETCH * np.array([np.cos(phi), 0.0, -np.sin(phi)])     # 10 elements of 30 m
     np.testing.assert_allclose(along, np.broadcast_to(expected, along.shape), atol=1e-9)
 
 
@@ -116,8 +113,10 @@ def test_the_lumped_tow_converges_to_the_continuum_steady_state_at_second_order(
 def test_a_surface_tow_point_differs_from_the_continuum_by_the_dry_top_element():
     """At a tow point on the surface the lumped model's top elements are partly dry (no buoyancy,
     no drag on the dry part; the continuum model keeps the whole line wet): the tension at the
-    vessel falls by about the lost drag and buoyancy of the ~0.8 m within half a diameter of the
-    surface, 0.1-0.2 % of the tow, whatever the grid."""
+    vessel falls by about the lost drag and buoyancy of the part within half a diameter of the
+    surface, 0.1-0.2 % of the tow at 60 elements. The difference shrinks as the grid refines (the
+    partly dry top element's share of the line shrinks with it): measured -0.142 % at 30 elements,
+    -0.126 % at 60, -0.103 % at 120, -0.075 % at 240, -0.065 % at 480."""
     _, T_ref = steady(array_case("continuum", 60))
     _, T = steady(array_case("lumped", 60))
     assert -3e-3 < T[0] / T_ref[0] - 1.0 < -5e-4

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum.vessel_motion import vessel_track
-from kanat.physics.drag import critical_angle
+from kanat.physics.drag import trailing_direction
 from kanat.statics import CableSolution
 
 TAIL_TENSION = 1e-6
@@ -87,11 +87,10 @@ def _interval_loads(case, middle: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 
 
 def _trailing(weight: float, normal: float, tangential: float, flow: np.ndarray) -> tuple[np.ndarray, float]:
-    """Unit direction (3,) from an interval's upper node to its lower one (eq. (1)) and the tension it
-    adds per unit length (eq. (2)) in the horizontal relative flow ``flow`` (2,) [m/s]."""
-    speed = float(np.hypot(flow[0], flow[1]))
-    phi = critical_angle(weight, normal, speed)
-    along = flow / speed if speed > 0.0 else np.zeros(2)
-    rise = np.sin(phi) if weight < 0.0 else -np.sin(phi)                 # a buoyant tail trails above the flow
-    direction = np.array([np.cos(phi) * along[0], np.cos(phi) * along[1], rise])
-    return direction, abs(weight) * np.sin(phi) + tangential * (speed * np.cos(phi)) ** 2
+    """Unit direction (3,) from an interval's upper node to its lower one (eq. (1),
+    :func:`kanat.physics.drag.trailing_direction`) and the tension it adds per unit length (eq. (2)) in
+    the horizontal relative flow ``flow`` (2,) [m/s]: ``|w| sin(phi)`` is the direction's vertical
+    component times ``|w|``, ``|u| cos(phi)`` its horizontal component along the flow."""
+    direction = trailing_direction(weight, normal, flow)
+    along = float(direction[:2] @ np.asarray(flow, dtype=float)[:2])          # |u| cos(phi)
+    return direction, abs(weight) * abs(direction[2]) + tangential * along**2

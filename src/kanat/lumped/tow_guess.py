@@ -1,5 +1,5 @@
 """A first guess for the lumped equilibrium of a cable with a free tail: each element trailing at
-the critical angle of the relative flow.
+the critical angle of the relative flow, floating where it reaches the surface.
 
 A free tail carries no tension at its end, so near it the line lies where its normal drag carries
 its weight; in a uniform flow a whole inextensible tail does (theory/continuum.md eq. (C15),
@@ -12,19 +12,41 @@ The guess marches from the attached end, element by element, each along the hori
 flow ``u`` at its upper node's depth, inclined by its own line type's ``phi`` below it (above it
 for a buoyant line): the exact steady shape of an inextensible line of one line type in a uniform
 flow, a close one otherwise (sections, a sheared current, stretch), which Newton's method corrects
-in a few iterations.
+in a few iterations. In still water (``phi = pi/2``) a heavy tail hangs straight down and a buoyant
+one stands straight up, its tension the weight in water of the part beyond (closed form); a tail
+clamped at its attached end keeps the network's guess along the clamp (a cantilever is no plumb line).
+
+A buoyant tail that reaches the surface floats there (the lumped model's elements are partly dry
+near the surface, :mod:`kanat.lumped.kernels` eq. (7)): a horizontal element of diameter ``d`` at
+centreline height ``z`` is wet over the fraction ``phi_w = 1/2 - z/d`` of its height, and floats where
+the buoyancy it keeps carries its weight, ``w + (1 - phi_w) B = 0`` (``B = m g - w`` the weight of the
+water it displaces per unit length)::
+
+    (2)  z_float = -d (1/2 + w / B)          (w < 0)
+
+The guess lays such a tail from where it would cross ``z_float`` along the surface flow at
+``z_float``: the floating part's exact shape, which carries only its tangential drag. On still
+water a floating tail carries no tension, and the lumped model has no unique equilibrium for it:
+its place on the surface is free, and so is its shape, since an element's wetted fraction depends
+only on its highest and lowest points (a sawtooth of nodes alternately at the surface and 1 m down,
+every element wet over the same fraction, balances as well as the flat line: the iteration ends in
+one, residual 3e-9 N, for examples/towed_array.yaml with the array buoyant, 2 N/m, from 30 m down).
+The guess refuses that case with the plumb top's height above the surface.
 
 Without it the network's own guess leaves such a tail at 45 degrees below the tow point
 (:func:`kanat.lumped.network._guess_positions`): for ``examples/towed_array.yaml`` (300 m at 8 kn,
 a critical angle of 2.8 degrees) the tail's 190 m to go at 0.25 element per iteration takes the
 iteration through states stretched to 10 % (residual 2e5 N against a 5 kN tow) and it fails in
-400 iterations; from eq. (1) the taut phase converges in 6.
+400 iterations; from eq. (1) the taut phase converges in 6. A still buoyant tail 400 m down, left at
+45 degrees below the tow point, failed in 400 iterations (88 N left at 30 elements); plumb, it converges in 1.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from kanat.physics.drag import critical_angle
+from kanat.errors import SolverError
+from kanat.lumped.network import GUESS_STRETCH
+from kanat.physics.drag import trailing_direction
 
 
 def free_tails(case) -> list[tuple[str, bool]]:
@@ -39,10 +61,12 @@ def free_tails(case) -> list[tuple[str, bool]]:
 
 
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
-    """``x`` (n, 3) with every free tail's nodes placed by eq. (1), or None when the case has none or no
-    flow passes them (still water, no way on: a clamped beam or a hanging line keeps the network's guess).
-    Still water is the case's current definition without a horizontal velocity in any row of its table
-    (:meth:`kanat.model.environment.Current.table`), wherever the nodes are.
+    """``x`` (n, 3) with every free tail's nodes placed by eq. (1), floating at eq. (2) where a buoyant
+    tail reaches the surface in a flow there, or None when the case has no free tail to place (none, or only
+    tails clamped at their attached end in still water). Still water is the case's current definition
+    without a horizontal velocity in any row of its table (:meth:`kanat.model.environment.Current.table`)
+    and no way on, wherever the nodes are. Elements are stretched by the network guess's
+    ``GUESS_STRETCH``, so that the equilibrium's tangent is regular from the start.
 
     Parameters
     ----------
@@ -52,30 +76,78 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
         The guess of every other node; the attached ends' places are taken from it [m].
     velocity : ndarray, shape (3,)
         The steady frame's velocity ``U_frame`` [m/s].
+
+    Raises
+    ------
+    SolverError
+        A buoyant tail that would float on still water: in still water, or where the current leaves the
+        surface still (module docstring).
     """
-    tails = free_tails(case)
     _, currents = case.environment.current.table()
     still = not np.any(np.asarray(velocity, dtype=float)[:2]) and not np.any(currents[:, :2])
-    if not tails or still:
+    cables = {cable.name: cable for cable in case.cables}
+    tails = [(name, reversed_) for name, reversed_ in free_tails(case)
+             if not (still and (cables[name].end_b if reversed_ else cables[name].end_a).clamped)]
+    if not tails:
         return None
     x = np.array(x, dtype=float)
     for name, reversed_ in tails:
-        nodes = net.node_index[net.node_cable == name]
-        first = net.cable_first_element[net.cable_names.index(name)]
-        elements = np.arange(first, first + len(nodes) - 1)
-        if reversed_:
-            nodes, elements = nodes[::-1], elements[::-1]
+        nodes, elements = _tail(net, name, reversed_)
         for node, after, element in zip(nodes[:-1], nodes[1:], elements):
-            x[after] = x[node] + net.el_length[element] * _trailing_direction(net, case, element, x[node], velocity)
+            x[after], stranded = _next_node(net, case, element, x[node], velocity)
+            if stranded:
+                raise SolverError(_still_float_message(net, name, x[nodes[0]], elements, still))
     return x
 
 
-def _trailing_direction(net, case, element, position, velocity) -> np.ndarray:
-    """Unit vector (3,) from an element's upper node to its lower one, eq. (1)."""
-    flow = np.asarray(case.environment.current.at(float(position[2])), dtype=float) - np.asarray(velocity)
-    horizontal = flow[:2]
-    speed = float(np.linalg.norm(horizontal))
+def floating_height(net, element) -> float:
+    """Centreline height [m] at which a horizontal buoyant element floats on the mean surface, eq. (2)."""
+    return -float(net.el_diameter[element]) * (0.5 + float(net.el_weight[element] / net.el_buoyancy[element]))
+
+
+def _tail(net, name, reversed_) -> tuple[np.ndarray, np.ndarray]:
+    """A tail's nodes and elements, from its attached end to its free one."""
+    nodes = net.node_index[net.node_cable == name]
+    first = net.cable_first_element[net.cable_names.index(name)]
+    elements = np.arange(first, first + len(nodes) - 1)
+    return (nodes[::-1], elements[::-1]) if reversed_ else (nodes, elements)
+
+
+def _flow(case, position, velocity) -> np.ndarray:
+    """Horizontal relative flow (2,) at ``position``'s depth [m/s]."""
+    return (np.asarray(case.environment.current.at(float(position[2])), dtype=float) - np.asarray(velocity))[:2]
+
+
+def _next_node(net, case, element, position, velocity) -> tuple[np.ndarray, bool]:
+    """The lower node (3,) of an element whose upper node is at ``position``: along eq. (1), or up to and
+    along the surface at eq. (2) for a buoyant element that would rise above it; and True where the
+    water at the surface is still, so that the element would float with nothing to lay it out."""
+    length = GUESS_STRETCH * float(net.el_length[element])
     weight = float(net.el_weight[element])
-    phi = critical_angle(weight, net.el_cn[element], speed)
-    along = horizontal / speed if speed > 0.0 else np.zeros(2)
-    return np.array([np.cos(phi) * along[0], np.cos(phi) * along[1], -np.sign(weight) * np.sin(phi)])
+    after = position + length * trailing_direction(weight, net.el_cn[element], _flow(case, position, velocity))
+    height = floating_height(net, element) if weight < 0.0 else np.inf
+    if after[2] <= height:
+        return after, False
+    rise = max(height - float(position[2]), 0.0)
+    surface = _flow(case, np.array([0.0, 0.0, height]), velocity)
+    speed = float(np.hypot(surface[0], surface[1]))
+    if speed == 0.0:
+        return after, True
+    reach = np.sqrt(max(length**2 - rise**2, 0.0))
+    return position + np.array([reach * surface[0] / speed, reach * surface[1] / speed, rise]), False
+
+
+def _still_float_message(net, name, origin, elements, still) -> str:
+    """Why a buoyant tail afloat on still water has no equilibrium to find, and what to change: in still
+    water, the height its plumb top would stand above the surface (unstretched, heavy parts straight down)."""
+    reason = ("floating there it carries no tension, and its place and shape on the surface are not "
+              "determined (the lumped model has no unique equilibrium for it)")
+    if not still:
+        return (f"cable '{name}' is a buoyant free tail that reaches the surface where the water is still: "
+                f"{reason}; give the tow point more depth, a current at the surface or way on, or a shorter "
+                "buoyant part")
+    heights = float(origin[2]) - np.cumsum(np.sign(net.el_weight[elements]) * net.el_length[elements])
+    top = float(np.max(heights))
+    return (f"cable '{name}' is a buoyant free tail in still water that would stand straight up to {top:.3f} m "
+            f"above the surface: {reason}; give the tow point at least that much more depth, a current or way "
+            "on, or a shorter buoyant part")

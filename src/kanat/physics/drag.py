@@ -91,3 +91,34 @@ def critical_angle(weight, normal_drag, speed):
         cosine = np.where(r > 0.0, (-w + np.sqrt(w * w + 4.0 * r * r)) / (2.0 * np.where(r > 0.0, r, 1.0)), 0.0)
     phi = np.arccos(np.clip(cosine, 0.0, 1.0))
     return float(phi) if np.ndim(phi) == 0 else phi
+
+
+def trailing_direction(weight, normal_drag, flow) -> np.ndarray:
+    """Unit direction (3,) along a free tail at rest in a uniform horizontal flow, from its attached
+    end towards its free end: along ``flow`` at the critical angle ``phi`` (:func:`critical_angle`)
+    below it for a heavy line (``w > 0``) and above it for a buoyant one (``w < 0``); straight down
+    or straight up in still water (``phi = pi/2``)::
+
+        t = (cos(phi) u / |u|, -sign(w) sin(phi)),   R sin^2(phi) = |w| cos(phi),   R = C |u|^2
+
+    theory/continuum.md eq. (C15). A line neutral in water (``w = 0``) takes the heavy side.
+
+    Parameters
+    ----------
+    weight : float
+        Weight in water per unit length ``w`` [N/m].
+    normal_drag : float
+        ``C = 0.5 rho d C_n`` [N s^2/m^3].
+    flow : array_like, shape (2,)
+        Horizontal relative flow ``u`` (water past the line) [m/s].
+
+    Returns
+    -------
+    ndarray, shape (3,)
+    """
+    flow = np.asarray(flow, dtype=float)[:2]
+    speed = float(np.hypot(flow[0], flow[1]))
+    phi = critical_angle(weight, normal_drag, speed)
+    along = flow / speed if speed > 0.0 else np.zeros(2)
+    rise = np.sin(phi) if weight < 0.0 else -np.sin(phi)
+    return np.array([np.cos(phi) * along[0], np.cos(phi) * along[1], rise])
