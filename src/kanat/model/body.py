@@ -223,6 +223,19 @@ class Body(KanatModel):
             return ZERO3
         return tuple(self.center_of_buoyancy)
 
+    @property
+    def tilt_in_stiffness(self) -> bool:
+        """True when the body's hydrostatics restore roll or pitch: ``metacentric_heights`` (a
+        metacentric height, from the centre of gravity to the metacentre, holds the levers of weight
+        and buoyancy along the body's vertical, whatever its value) or a ``hydrostatic_stiffness``
+        with roll or pitch terms. Both models then turn the body by the centres' offsets across its
+        vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
+        if self.metacentric_heights is not None:
+            return True
+        if self.hydrostatic_stiffness is None:
+            return False
+        return any(self.hydrostatic_stiffness[i][j] != 0.0 for i in (3, 4) for j in (3, 4))
+
     def _check_rigid(self) -> None:
         import numpy as np
 
