@@ -267,8 +267,8 @@ def static_loads(b, x, R, eta, g_vec, rig, F6):
         F6[2] += load[2]
         for r in range(3):
             F6[3 + r] += R[r, 0] * load[3] + R[r, 1] * load[4] + R[r, 2] * load[5]
-    roll0, pitch0 = reference[b, 3], reference[b, 4]
-    k0 = np.array([-math.sin(pitch0), math.cos(pitch0) * math.sin(roll0), math.cos(pitch0) * math.cos(roll0)])
+    roll0, pitch0, k0 = reference[b, 3], reference[b, 4], np.empty(3)   # k0 = R_0^T e_z
+    k0[0], k0[1], k0[2] = -math.sin(pitch0), math.cos(pitch0) * math.sin(roll0), math.cos(pitch0) * math.cos(roll0)
     weight_buoyancy_moment(R, k0, cog[b], cob[b], weight, buoyancy, 1.0 if hydro_on > 1.5 else 0.0, F6[3:])
 
 
