@@ -18,8 +18,15 @@ the run (the last segment's tension in both codes) against MoorDyn at its file's
 1 ms). MoorDyn's faster settings count as "best MoorDyn" only within 1 % of that reference in mean
 and 3 % in range and maximum (the issue's tolerances for kanat).
 
-Run: ``python benchmarks/bench_wd0050_moordyn.py [--repeats 3] [--duration 200] [--kanat-schemes default rk4]``; prints the
-Markdown table kept in benchmarks/RESULTS.md.
+``--friction MU`` runs both codes with the file's ``FrictionCoefficient`` replaced by ``MU`` (0.5 in
+the file). The two codes' friction differs: kanat's is Coulomb's, ``mu N`` regularized below 1 mm/s
+(``kanat.physics.contact``); MoorDyn-C's is ``mu FricDamp |v|`` (``FricDamp`` 200 s/m by default)
+capped at ``mu N``, a damper of 100 N s/m per node at ``mu = 0.5`` that reaches the cap only at
+tens of m/s on this chain, so ``--friction 0`` changes MoorDyn's fairlead tension by about 1e-5 and
+kanat's range by about 1 % (benchmarks/RESULTS.md).
+
+Run: ``python benchmarks/bench_wd0050_moordyn.py [--repeats 3] [--duration 200] [--kanat-schemes default rk4]
+[--friction MU]``; prints the Markdown table kept in benchmarks/RESULTS.md.
 """
 from __future__ import annotations
 
@@ -79,7 +86,18 @@ def timed(command: list) -> tuple[subprocess.CompletedProcess, float, float]:
     return done, wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
 
 
-def kanat_case(folder: Path, scheme: str, duration: float) -> Path:
+def input_file(folder: Path, friction: float | None) -> Path:
+    """MoorDyn's file in ``folder`` (MoorDyn writes its outputs beside its input), with its friction
+    coefficient replaced by ``friction`` unless None."""
+    text = FILE.read_text()
+    if friction is not None:
+        text = re.sub(r"^\S+(\s+FrictionCoefficient)", rf"{friction}\1", text, flags=re.M)
+    path = folder / FILE.name
+    path.write_text(text)
+    return path
+
+
+def kanat_case(folder: Path, scheme: str, duration: float, friction: float | None = None) -> Path:
     """The MoorDyn file imported, with the fairlead's motion; the default scheme names none."""
     import warnings
 
@@ -88,7 +106,7 @@ def kanat_case(folder: Path, scheme: str, duration: float) -> Path:
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")                       # the file's MoorDyn-only settings
-        case = load_case(FILE)
+        case = load_case(input_file(folder, friction))
     keys = {"model": "lumped", "vessel.motion": MOTION, "simulation.duration": duration,
             "simulation.output_dt": 0.1}
     if scheme != "default":
@@ -114,12 +132,11 @@ def run_kanat(case_path: Path, folder: Path):
         return (whole, cpu), float(ds.attrs["solver_time_s"]), series, extra
 
 
-def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
+def run_moordyn(scheme: str, dt: float, duration: float, folder: Path, friction: float | None = None):
     script = folder / "moordyn_run.py"
     script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING))
     out = folder / f"moordyn_{scheme}_{dt}.npy"
-    copy = folder / FILE.name                      # MoorDyn writes its outputs beside its input
-    copy.write_text(FILE.read_text())
+    copy = input_file(folder, friction)
     done, whole, cpu = timed([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)])
     if done.returncode != 0:                       # MoorDyn-C raises when a step diverges
         lines = done.stderr.strip().splitlines() or ["no message"]
@@ -140,6 +157,7 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--duration", type=float, default=200.0)
     parser.add_argument("--kanat-schemes", nargs="+", default=["default", "rk4"], choices=["default", "rk4"])
+    parser.add_argument("--friction", type=float, default=None, help="the seabed friction coefficient of both runs")
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp())
     configs = [c for c in CONFIGS if c[0] == "MoorDyn" or c[1] in args.kanat_schemes]
@@ -149,9 +167,9 @@ def main() -> None:
         for config in configs:
             code, scheme, dt = config
             if code == "kanat":
-                whole, stepping, series, extra = run_kanat(kanat_case(folder, scheme, args.duration), folder)
+                whole, stepping, series, extra = run_kanat(kanat_case(folder, scheme, args.duration, args.friction), folder)
             else:
-                whole, stepping, series, extra = run_moordyn(scheme, dt, args.duration, folder)
+                whole, stepping, series, extra = run_moordyn(scheme, dt, args.duration, folder, args.friction)
             times[config].append({"wall": whole[0], "cpu": whole[1], "stepping": stepping})
             results[config] = statistics(series, args.duration) if not isinstance(series, str) else series
             extras[config] = extra

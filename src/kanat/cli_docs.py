@@ -50,6 +50,10 @@ ATTRIBUTES = {
                            "the run warns, above 1 it fails",
     "time_error_time": "implicit lumped runs: the time of that step [s]",
     "time_error_displacement": "implicit lumped runs: the largest local displacement error of a node in one step [m]",
+    "time_error_start": "implicit lumped runs: the start's tensions over its first 10 steps at dt against dt/2, their "
+                        "largest difference as a fraction of the largest tension (lumped.md, \"Time-step error "
+                        "estimate\"); above 0.02 the run warns, above 1 it fails",
+    "time_error_start_time": "implicit lumped runs: the time of that difference [s]",
 }
 """Global attributes of a result file and what they hold (the reference page lists them)."""
 

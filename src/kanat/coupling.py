@@ -55,19 +55,23 @@ cheapest safe one as for a run, :mod:`kanat.lumped.stepping`): the ``substep`` g
 ``simulation.dt`` if the case gives it, else the explicit scheme's safe step or the implicit
 scheme's default step, cut to divide the coupling step exactly: the scheme and step a run of the
 case takes (:func:`kanat.lumped.stepping.default_scheme`, the waves' cost and period counted). The
-state after a step is what a run of the same case with the same motion and ``output_dt = dt`` has at that output (tests/lumped/test_coupling.py).
+state after a step is what a run of the same case with the same motion and ``output_dt = dt`` has at
+that output (tests/lumped/test_coupling.py). The implicit scheme's time-step error estimate is judged
+after every step as a run judges it (:attr:`Coupling.time_error`); the start's step pair (eq. (3) of
+:mod:`kanat.lumped.time_error`) moves the points on at the first step's velocities, eq. (1).
 """
 from __future__ import annotations
 
 import dataclasses
+import warnings
 from dataclasses import dataclass
 from os import PathLike
 
 import numpy as np
 
-from kanat.errors import KanatError, SolverError
-from kanat.lumped import stepping
-from kanat.lumped.advance import advance
+from kanat.errors import CaseWarning, KanatError, SolverError
+from kanat.lumped import stepping, time_error
+from kanat.lumped.advance import advance, time_error_estimate
 from kanat.lumped.equilibrium import STARTING_DIFFERENCE, equilibrium
 from kanat.lumped.integrators import SCHEMES, state_positions
 from kanat.lumped.network import build_network
@@ -198,6 +202,10 @@ class Coupling:
         Decisions taken for the user (scheme, parts of the case not used).
     time : float
         The time of the state [s] (None before :meth:`initialize`).
+    time_error : dict
+        The implicit scheme's time-step error estimate so far, as a run's ``time_error_*`` attributes
+        (docs/lumped.md, "Time-step error estimate"); past its warning threshold a step adds a note and
+        warns (:class:`kanat.errors.CaseWarning`), past its failure threshold it raises, as a run warns or fails.
     """
 
     def __init__(self, case: Case | str | PathLike, scheme=None, rigid_vessel: bool = False,
@@ -226,6 +234,7 @@ class Coupling:
         self.scheme = self._choose(scheme)
         self._state = self._snaps = None
         self._T = np.zeros(self.net.n_elements)
+        self._time_error_notes: dict[str, int] = {}           # cause -> its note's index
 
     def _held(self, case: Case) -> Case:
         """The case without the vessel's track and motion (the host moves the points), noted."""
@@ -344,7 +353,8 @@ class Coupling:
         Raises
         ------
         kanat.errors.SolverError
-            When a step cannot be taken (non-finite state): the message says when.
+            When a step cannot be taken (non-finite state), or the implicit scheme's time-step error
+            estimate is past its failure threshold: the message says when.
         """
         if self._state is None:
             raise KanatError("call initialize(positions) before step(...)")
@@ -363,13 +373,43 @@ class Coupling:
             raise SolverError(f"the lines' state became non-finite at t = {state.t:.6g} s (substep {h:.3g} s, "
                               f"{self.scheme.name}); the coupling stays at t = {self.time:.6g} s: pass a smaller "
                               "substep, or scheme='rk4'")
+        self._judge_time_error(h)
         self._state = state
         return self.forces()
+
+    def _judge_time_error(self, h: float) -> None:
+        """The implicit scheme's time-step error estimate judged as a run judges it
+        (:func:`kanat.lumped.time_error.findings`): past its failure threshold a :class:`SolverError` (the
+        coupling stays where it was); past its warning threshold a :class:`CaseWarning` the first time for
+        each cause (the steps, the start) and a note, kept at the cause's latest sentence."""
+        if self.scheme.explicit:
+            return
+        system = self.system
+        found = time_error.findings(time_error_estimate(system), h,
+                                    lambda free: self.net.where(int(system.free_index[free])))
+        for cause, (kind, sentence) in found.items():
+            if kind == "failure":
+                raise SolverError(f"{sentence}; the coupling stays at t = {self.time:.6g} s")
+            if cause in self._time_error_notes:
+                self.notes[self._time_error_notes[cause]] = sentence
+                continue
+            self._time_error_notes[cause] = len(self.notes)
+            self.notes.append(sentence)
+            warnings.warn(sentence, CaseWarning, stacklevel=3)
 
     # --- what the host may read -------------------------------------------------------------
     @property
     def time(self) -> float | None:
         return None if self._state is None else float(self._state.t)
+
+    @property
+    def time_error(self) -> dict:
+        """The implicit scheme's time-step error estimate so far, as a run's ``time_error_*`` attributes
+        (:func:`kanat.lumped.time_error.attributes`: eq. (2)'s largest value and time, a node's largest
+        error in one step, eq. (3) of the start); empty for an explicit scheme."""
+        if self.scheme.explicit:
+            return {}
+        return time_error.attributes(time_error_estimate(self.system))
 
     def forces(self) -> np.ndarray:
         """The lines' forces (len(points), 3) on the driven points at :attr:`time` [N]; for rigid

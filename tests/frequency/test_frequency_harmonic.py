@@ -232,3 +232,20 @@ def test_a_node_moving_down_to_the_seabed_is_noted():
     assert float(ds.motion_amplitude[0, 2, 2]) == pytest.approx(0.5, rel=0.02)       # quasi-static: (omega/omega_1)^2 = 1 %
     assert "3 suspended node(s) move down to the seabed" in ds.attrs["notes"]     # 0.5, 0.75, 1 m > 0.4 m
     assert ds.attrs["status"].startswith("failed: outside the linear range")
+
+
+@pytest.mark.parametrize("environment", [{"depth": 50.0}, {"depth": 50.0, "seabed": {"stiffness": 3e6}}],
+                         ids=["depth-alone", "seabed-block"])
+def test_a_buoyant_line_moving_down_to_the_seabed_is_noted_with_depth_alone(environment):
+    """The line of the test above made slightly buoyant (-0.01 N/m: it cannot reach the seabed at rest,
+    so a case giving ``depth`` alone has no contact model): its vessel end moves 1 m down from 0.4 m
+    above the seabed, and the note says so whether the case gives a seabed block or only
+    ``environment.depth`` (the seabed every model applies, 50 m down); the middle node, lifted by
+    the buoyancy, clears it."""
+    case = bar(segments=4, amplitude=1.0, omega=0.03, z=-49.6, dof="heave", phase_deg=0.0, environment=environment)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = kanat.solve_frequency(case.replace({"line_types.bar.weight_in_water": -0.01}))
+    assert float(ds.motion_amplitude[0, 2, 2]) == pytest.approx(0.5, rel=0.02)
+    assert float(ds.position[4, 2]) == pytest.approx(-49.6, abs=1e-3)           # 0.4 m above z = -50
+    assert "2 suspended node(s) move down to the seabed (node 4: 1 m of motion, 0.4 m above it)" in ds.attrs["notes"]

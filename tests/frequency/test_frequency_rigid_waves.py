@@ -134,6 +134,7 @@ def test_the_buoy_in_a_small_regular_wave_against_the_time_domain():
     waves = {"type": "regular", "height": 0.5, "period": PERIOD, "heading_deg": 0.0, "ramp": 2 * PERIOD}
     fd, td = frequency_and_time(buoy_in_waves(waves, 12 * PERIOD, "frequency"), buoy_in_waves(waves, 12 * PERIOD))
     rao, motion = body_motions(fd, td, 0.25)
+    assert "body 'buoy'" not in fd.attrs["notes"]                  # no motion warned of (body_linearity)
     for dof in (0, 2, 4):                                          # surge, heave, pitch
         assert abs(rao[dof]) == pytest.approx(abs(motion[dof]), rel=0.05), dof
         assert abs(phase_gap(np.angle(rao[dof]), np.angle(motion[dof]))) < 0.05, dof
@@ -159,10 +160,12 @@ def test_the_buoy_in_an_oblique_regular_wave_moves_in_all_six_dofs_as_the_time_d
     0.5 %, 0.02 %, 0.04 %, 0.1 %, 3.6 %), phases within 0.05 rad but yaw's, 0.25 (0.19 rad: a yaw
     of 0.07 deg, the small difference of the legs' wave drag); tension within 5 % and 0.05 rad at
     every node (1.4 %, 0.032 rad). At 0.5 m the yaw is 26 % off: it grows less than the wave, the
-    legs' drag being far from linear there, while the other motions stay within 0.6 %."""
+    legs' drag being far from linear there, while the other motions stay within 0.6 %, and the run
+    warns of the yaw (tests/frequency/test_frequency_body_linearity.py)."""
     waves = {"type": "regular", "height": 0.25, "period": PERIOD, "heading_deg": 30.0, "ramp": 2 * PERIOD}
     fd, td = frequency_and_time(buoy_in_waves(waves, 40 * PERIOD, "frequency"), buoy_in_waves(waves, 40 * PERIOD))
     rao, motion = body_motions(fd, td, 0.125)
+    assert "body 'buoy'" not in fd.attrs["notes"]                  # no motion warned of (body_linearity)
     np.testing.assert_allclose(np.abs(rao), np.abs(motion), rtol=0.05)
     assert np.all(np.abs(phase_gap(np.angle(rao), np.angle(motion))) <= [0.05] * 5 + [0.25])
     assert_tensions_agree(fd, td, 2 * math.pi / PERIOD, window=3 * PERIOD)

@@ -3,7 +3,12 @@
 * Every record is what numba and the install-time compiler take: a named tuple of its class whose
   fields have the declared types; the records a system's one builder makes
   (:class:`kanat.lumped.advance.FusedArrays`, the snap tracker) match exactly one declared version
-  of the stepping entries (the one without 6-DOF bodies and seabed, for a towed network).
+  of the stepping entries (the one without 6-DOF bodies and seabed, for a towed network; the one
+  with both, for a buoy moored on the seabed in waves, whose 6-DOF bodies, seabed contact and sea
+  are records too).
+* The 6-DOF bodies' record read by field name places the fairleads where module eq. (1) of
+  :mod:`kanat.lumped.rigid` puts them (oracle: ``r + R p_b`` and ``r_dot + w x (R p_b)`` in NumPy,
+  with :func:`kanat.physics.motion.rotation_matrix` and ``angular_velocity``).
 * The guarantee: a record with a field of another dtype, or a plain tuple of the same arrays,
   never reaches the install-time code; it goes to numba's kernel, which gives the answer of the
   right record (oracle: numba's kernel on the record as built, bit for bit).
@@ -17,18 +22,21 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from kanat import aot
+from kanat import aot, api
 from kanat.lumped import entries, time_error
 from kanat.lumped.advance import FusedArrays, implicit_scheme, track_samples
 from kanat.lumped.integrators import GeneralizedAlphaLumped
 from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
+from kanat.physics.motion import angular_velocity, rotation_matrix
 
+from helpers import EXAMPLES
 from test_lumped_fast import network_case
 
 RECORDS = (entries.Nodes, entries.Elements, entries.Bodies, entries.Environment, entries.Work, entries.Snap,
-           entries.Track, entries.ImplicitScheme, entries.Band)
+           entries.Track, entries.ImplicitScheme, entries.Band, entries.Rig, entries.Contact, entries.Laid,
+           entries.Sea)
 
 
 @pytest.fixture(scope="module")
@@ -65,6 +73,46 @@ def test_the_built_records_match_one_version_of_the_stepping_entries(built):
         assert type(record) in RECORDS and aot.matches(record, type(record)) or type(record) is entries.Bodies
     matching = [i for i, spec in enumerate(aot.ENTRIES["rk4_steps"].versions) if aot.matches(args, spec)]
     assert matching == [0]                                   # no 6-DOF body, no seabed contact
+
+
+@pytest.fixture(scope="module")
+def moored():
+    """A buoy (a 6-DOF body) moored by three chains resting on the seabed, in irregular waves."""
+    case = api.load_case(EXAMPLES / "mooring_buoy_waves.yaml")
+    system = LumpedSystem(build_network(case), case)
+    return system, FusedArrays(system), SnapTracker(0.0, np.zeros(system.net.n_elements)).kernel_arrays()
+
+
+def test_the_bodies_seabed_and_sea_are_records_of_the_version_with_both(moored):
+    system, arrays, snap = moored
+    rig, contact, sea = arrays.bodies.rig, arrays.bodies.contact, arrays.env.sea
+    for record, kind in ((rig, entries.Rig), (contact, entries.Contact), (contact.laid, entries.Laid),
+                         (sea, entries.Sea)):
+        assert type(record) is kind and aot.matches(record, kind)
+    assert rig.rigid_mass is system.net.rigid.mass6 and rig.fairlead_offset is system.net.rigid.fairlead_offset
+    assert contact.area is system.net.node_contact_area and np.count_nonzero(contact.area) > 10
+    np.testing.assert_array_equal(sea.amplitude, system.sea.amplitude)
+    assert len(sea.amplitude) > 10 and sea.depth == 100.0
+    versions = aot.ENTRIES["rk4_steps"].versions
+    matching = [i for i, spec in enumerate(versions) if aot.matches(rk4_arguments(system, arrays, snap), spec)]
+    assert matching == [3]                                   # 6-DOF bodies and seabed contact (entries.BODIES)
+    assert aot.matches((np.zeros((3, 3)), np.zeros((3, 3)), tuple(rig)), aot.ENTRIES["place_fairleads"].versions[0]) \
+        is False                                             # a plain tuple never reaches the compiled code
+
+
+def test_the_rig_record_places_the_fairleads_by_eq_1(moored):
+    system, arrays, _ = moored
+    rig, rng = arrays.bodies.rig, np.random.default_rng(5)
+    x, v = rng.normal(0.0, 20.0, (system.net.n_nodes, 3)), rng.normal(0.0, 1.0, (system.net.n_nodes, 3))
+    x[rig.angle_node] = rng.uniform(-0.4, 0.4, (len(rig.angle_node), 3))
+    entries.place_fairleads(x, v, rig)
+    for node, body, offset in zip(rig.fairlead_node, rig.fairlead_body, rig.fairlead_offset):
+        ref, angles = rig.reference_node[body], rig.angle_node[body]
+        arm = rotation_matrix(*x[angles]) @ offset
+        np.testing.assert_allclose(x[node], x[ref] + arm, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(v[node], v[ref] + np.cross(angular_velocity(x[angles], v[angles]), arm),
+                                   rtol=0, atol=1e-12)
+    assert len(rig.fairlead_node) == 3 and np.abs(x[rig.fairlead_node] - x[rig.reference_node[0]]).max() > 2.0
 
 
 def implicit_arguments(system, arrays, snap):

@@ -17,6 +17,7 @@ from kanat import api
 from kanat.io import load_case
 from kanat.lumped.adapter import LumpedModel
 from kanat.lumped.integrators import GeneralizedAlphaLumped
+from kanat.lumped.system import nowhere
 from kanat.physics import contact
 
 import helpers_moordyn
@@ -88,7 +89,7 @@ def test_the_friction_tangent_is_the_derivative_at_the_slip():
     area = np.array([0.0, 1.0, 0.0])
     bed = contact.seabed_arrays(contact.PlaneSeabed(depth=100.0))
     params = np.array([1e5, 0.0, 0.5, 0.3, contact.SLIP_VELOCITY, 0.0, contact.SLIP_DISPLACEMENT])
-    empty = (np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(3))
+    empty = nowhere(3)                                      # no equilibrium friction (kanat.lumped.entries.Laid)
     v = np.zeros((3, 3))
     v[1] = [2.5e-3, -1.5e-3, 0.0]
 

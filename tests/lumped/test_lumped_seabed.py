@@ -20,7 +20,7 @@ from kanat import api
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.mooring_outputs import anchor_forces
 from kanat.lumped.network import build_network
-from kanat.lumped.system import LumpedSystem
+from kanat.lumped.system import LumpedSystem, nowhere
 from kanat.model import Case
 from kanat.physics import contact
 from kanat.statics.catenary import elastic_catenary
@@ -222,7 +222,7 @@ def test_contact_kernel_matches_its_numpy_twin():
     params = contact.contact_parameters(case.environment.seabed)
     params[3] = 0.2                                         # lateral unlike axial
     F, N = np.zeros_like(full), np.zeros(net.n_nodes)
-    empty = (np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3)), np.zeros(net.n_nodes))
+    empty = nowhere(net.n_nodes)                            # no equilibrium friction (kanat.lumped.entries.Laid)
     contact.contact_forces(full, v, net.el_i, net.el_j, net.node_contact_area, bed, params, empty,
                            np.zeros_like(full), F, N)
     want = contact_twin(full, v, net.el_i, net.el_j, net.node_contact_area, bed, params)

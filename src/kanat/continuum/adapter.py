@@ -33,7 +33,7 @@ from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
-from kanat.continuum.surface import dry_buoyant_node
+from kanat.continuum.surface import DryLength, dry_buoyant_node
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
@@ -103,6 +103,7 @@ class ContinuumModel:
                          if cable.winch is not None else None)
         self._own, self._winch_facts = RowFacts(cable.rows(), cable.seabed), None
         self.slack = SlackLog() if sim.slack == "continue" else None
+        self.dry = DryLength()
         if cable.winch is not None:
             self.notes.append(f"winch: the grid grows from the winch (a node every {cable.winch.segment:.4g} m paid "
                               f"out); s is each node's arclength at t = 0 (negative: still on the drum, where "
@@ -307,6 +308,7 @@ class ContinuumModel:
     def _dry(self, state, values) -> str | None:
         """A buoyant node out of the water (:mod:`kanat.continuum.surface`), or None."""
         cable = self.cable_model.cable
+        self.dry.observe(self._s(state), values["position"], cable.sea, state.t)
         dry = dry_buoyant_node(self._facts(state).rows, values["position"], cable.sea, state.t)
         if dry is None:
             return None
@@ -384,7 +386,11 @@ class ContinuumModel:
     # 6. finish ---------------------------------------------------------------------------
     def final(self, state) -> tuple[dict, dict]:
         """The slack events (``simulation.slack: continue``) as variables on dimension ``slack_event``,
-        their count as attribute ``slack_events``, and a note naming the worst."""
+        their count as attribute ``slack_events``, and a note naming the worst; a note on the cable
+        above the water surface, if any (:class:`kanat.continuum.surface.DryLength`)."""
+        dry = self.dry.note(self.cable_model.cable.name)
+        if dry is not None:
+            self.notes.append(dry)
         if self.slack is None:
             return {}, {}
         events = self.slack.events

@@ -1,4 +1,5 @@
-"""The check that a buoyant part of a continuum cable stays in the water.
+"""The check that a buoyant part of a continuum cable stays in the water, and the note on a heavy
+part above it.
 
 The continuum model keeps its whole cable submerged: every interval carries its weight in water
 ``w`` wherever it is (theory/continuum.md §1). Out of the water a heavy line is then a little too
@@ -10,6 +11,17 @@ centreline is more than half a diameter above the water surface (the mean surfac
 elevation over the node) is wholly dry, and fails the run; a deeper tow point or a shorter
 buoyant part keeps it in the water. (The lumped model's elements crossing the surface are partly
 dry, :mod:`kanat.lumped.kernels`.)
+
+A heavy part above the water (a tow point on deck, a stern heaving out of the sea) is not
+refused: it hangs as it would, only with its weight in water for its weight in air and the
+water's drag and added mass on it. :class:`DryLength` keeps the largest length of cable whose
+centreline is above the surface over a run, for the run's note (interval by interval, the part
+of each interval above the surface by linear interpolation of its ends' heights)::
+
+    (1)  L_dry = sum_i  ds_i * f(h_i, h_i+1),   f = 1 both ends above, 0 both below,
+                                                 max(h_i, h_i+1) / |h_i+1 - h_i| crossing
+
+with ``h`` a node's height above the surface (the mean surface, or the wave elevation over it).
 """
 from __future__ import annotations
 
@@ -72,3 +84,43 @@ def dry_buoyant_node(rows: np.ndarray, position: np.ndarray, sea, t: float) -> t
     if height[worst] - 0.5 * diameter[worst] <= DRY_MARGIN:
         return None
     return int(nodes[worst]), float(height[worst])
+
+
+def heights(position: np.ndarray, sea, t: float) -> np.ndarray:
+    """Height [m] of each node's centreline above the water surface (negative under it): the mean
+    surface ``z = 0``, or the wave elevation over the node when ``sea`` is given."""
+    position = np.asarray(position, dtype=float)
+    if sea is None:
+        return position[:, 2].copy()
+    return position[:, 2] - sea.elevation(position[:, 0], position[:, 1], t)
+
+
+def dry_length(s: np.ndarray, height: np.ndarray) -> float:
+    """Eq. (1): the length [m] of cable above the surface, from the nodes' arclengths ``s`` and
+    heights ``height`` (:func:`heights`)."""
+    h0, h1 = height[:-1], height[1:]
+    ds = np.diff(s)
+    crossing = (h0 > 0.0) != (h1 > 0.0)
+    share = np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
+                     (h0 > 0.0).astype(float))
+    return float(np.sum(ds * share))
+
+
+class DryLength:
+    """The largest eq. (1) over a run's outputs, its time, and the note that says so."""
+
+    def __init__(self):
+        self.length, self.time = 0.0, 0.0
+
+    def observe(self, s: np.ndarray, position: np.ndarray, sea, t: float) -> None:
+        length = dry_length(s, heights(position, sea, t))
+        if length > self.length:
+            self.length, self.time = length, t
+
+    def note(self, cable: str) -> str | None:
+        """The run's note, or None when no part of the cable was ever above the surface."""
+        if self.length <= 0.0:
+            return None
+        return (f"up to {self.length:.4g} m of cable '{cable}' was above the water surface (at t = "
+                f"{self.time:.6g} s); the continuum model keeps its weight in water and the water's drag and "
+                "added mass on it (the lumped model treats the part above the surface as dry)")

@@ -20,6 +20,10 @@
   the motion is outside the linear range: a warning (in ``notes`` and as a
   :class:`~kanat.errors.CaseWarning`) with the measured ``r``; beyond
   :data:`~kanat.frequency.nonlinearity.REFUSE` it fails the result.
+* **body motion**: a body's degree of freedom both driven and damped by the lines' drag, and
+  sensitive to its equivalent linearisation (:mod:`kanat.frequency.body_linearity` eq. 2, beyond
+  :data:`~kanat.frequency.body_linearity.LIMIT`), may be far from the time domain however small
+  the tension's nonlinearity: a warning naming the body and the degree of freedom.
 """
 from __future__ import annotations
 
@@ -28,7 +32,7 @@ import warnings
 import numpy as np
 
 from kanat.errors import CaseWarning, SolverError
-from kanat.frequency import nonlinearity
+from kanat.frequency import body_linearity, nonlinearity
 from kanat.physics.seabed import seabed_of
 
 EXTREME_SIGMAS = 3.0       # sigma multiple taken as a spectral response's excursion in the touchdown check
@@ -57,6 +61,9 @@ def trust_checks(model, ex, ds, response, case) -> tuple[str, str]:
     failure, note = _offset(model, ex, response, ds, case)
     failures += [failure] if failure else []
     notes += [note] if note else []
+    for warning in body_linearity.body_notes(model, ex, response, list(model.lin.net.body_names)):
+        warnings.warn(f"the frequency-domain result: {warning}", CaseWarning, stacklevel=3)
+        notes.append("warning: " + warning)
     status = "ok" if not failures else "failed: " + "; ".join(failures)
     return status, "; ".join(notes)
 
@@ -123,7 +130,7 @@ def _touchdown(model, ex, ds, case) -> list[str]:
                      "time domain; check the touchdown zone with method: time")
     if not np.any(grounded):
         return notes
-    stiffness = (case.environment.seabed.stiffness * net.node_contact_area)[idx]
+    stiffness = (case.environment.with_seabed_contact().seabed.stiffness * net.node_contact_area)[idx]
     lift = grounded & (stiffness * motion[:, 2] > model.contact_force[idx])
     if np.any(lift):
         notes.append(f"{int(lift.sum())} grounded node(s) whose contact force swings beyond its static value "
@@ -142,11 +149,15 @@ def _touchdown(model, ex, ds, case) -> list[str]:
 
 
 def _clearance(model, case) -> np.ndarray:
-    """Each node's height above the seabed plane at the equilibrium (n,) [m] (inf without a seabed)."""
+    """Each node's height above the seabed at the equilibrium (n,) [m] (inf without ``depth``): the
+    seabed every model applies (:meth:`kanat.model.Environment.with_seabed_contact`), so that a case
+    giving ``depth`` alone is checked against its seabed too, even when no line reaches it at rest
+    (a buoyant line, which then has no contact model)."""
     x = model.lin.position
-    if case.environment.seabed is None:
+    environment = case.environment.with_seabed_contact()
+    if environment.seabed is None:
         return np.full(len(x), np.inf)
-    bed = seabed_of(case.environment)
+    bed = seabed_of(environment)
     return x[:, 2] - np.asarray(bed.height(x[:, 0], x[:, 1]), float)
 
 

@@ -74,28 +74,47 @@ def water_kinematics(model: LinearModel, ex: Excitation) -> np.ndarray:
 def solve(model: LinearModel, ex: Excitation) -> Response:
     """Eq. (1) at every frequency of ``ex``, iterated on the equivalent drag."""
     pairs, omega = model.pairs, ex.omega
-    size = model.size
     water = water_kinematics(model, ex) * ex.wave[:, None, None]
     prescribed = vessel_displacement(ex.motion, model.arms, model.heading)
-    vessel = prescribed.reshape(len(omega), -1)
-    fixed = np.stack([(model.coupling @ vessel[f] + 1j * omega[f] * (model.coupling_rate @ vessel[f])
-                       + omega[f] ** 2 * (model.coupling_mass @ vessel[f])) for f in range(len(omega))])
-    fixed += wave_excitation(model, ex, water)
-    maps, lin = model.maps, model.lin
-    base = lin.damping - model.drag_at_mean
+    fixed = fixed_forcing(model, ex, water, prescribed)
     D = _equivalent(pairs, water, np.zeros((len(omega), len(pairs.node), 3), complex), ex)
     change, iterations = np.inf, 0
     while iterations < MAX_ITERATIONS:
-        X = _solve_all(lin, _dampings(maps, base, D), omega,
-                       fixed + maps.forces(np.einsum("fprq,fpq->fpr", D, water)))
+        X = solve_linear(model, ex, D, water, fixed)
         iterations += 1
-        new = _equivalent(pairs, water, maps.velocities(X), ex)
+        new = equivalent_drag(model, ex, water, X)
         scale = max(float(np.max(np.abs(new))), float(np.max(np.abs(D))), 1e-300)
         change = float(np.max(np.abs(new - D))) / scale
         if change < TOLERANCE:
             break
         D = 0.5 * (D + new)
     return Response(X, prescribed, iterations, change < TOLERANCE, change)
+
+
+def fixed_forcing(model: LinearModel, ex: Excitation, water: np.ndarray, prescribed: np.ndarray) -> np.ndarray:
+    """The right-hand side of eq. (1) but the drag's, (nf, n_dof) complex: the vessel's forcing
+    ``f_p`` (``prescribed`` (nf, p, 3) its nodes' displacements) and :func:`wave_excitation`."""
+    vessel = prescribed.reshape(len(ex.omega), -1)
+    fixed = np.stack([(model.coupling @ vessel[f] + 1j * w * (model.coupling_rate @ vessel[f])
+                       + w ** 2 * (model.coupling_mass @ vessel[f])) for f, w in enumerate(ex.omega)])
+    return fixed + wave_excitation(model, ex, water)
+
+
+def solve_linear(model: LinearModel, ex: Excitation, D: np.ndarray, water: np.ndarray, fixed: np.ndarray,
+                 drag_forcing: bool = True) -> np.ndarray:
+    """``X`` (nf, n_dof) of eq. (1) for a given equivalent drag ``D`` (nf, p, 3, 3), ``water`` the
+    pairs' water velocity (nf, p, 3) and ``fixed`` the rest of the right-hand side
+    (:func:`fixed_forcing`); without ``drag_forcing`` the drag's wave forcing ``D u_w`` is left
+    out (its damping kept)."""
+    rhs = (fixed + model.maps.forces(np.einsum("fprq,fpq->fpr", D, water))) if drag_forcing else fixed
+    base = model.lin.damping - model.drag_at_mean
+    return _solve_all(model.lin, _dampings(model.maps, base, D), ex.omega, rhs)
+
+
+def equivalent_drag(model: LinearModel, ex: Excitation, water: np.ndarray, X: np.ndarray) -> np.ndarray:
+    """``D`` (nf, p, 3, 3) of the response ``X`` (nf, n_dof): the drag's equivalent linearisation
+    at the relative velocity it leaves (:func:`_equivalent`)."""
+    return _equivalent(model.pairs, water, model.maps.velocities(X), ex)
 
 
 def wave_excitation(model: LinearModel, ex: Excitation, water: np.ndarray | None = None) -> np.ndarray:

@@ -13,7 +13,8 @@ safe step (:func:`_explicit`, counted in the state's ``explicit`` and said in th
 implicit run never fails where ``rk4`` succeeds. Each scheme's compiled run is found in
 :data:`COMPILED` by its class. Every implicit step, on either path, also updates the run's
 estimate of its local time-integration error (:mod:`kanat.lumped.time_error`, kept as
-:func:`time_error_estimate`), which only observes.
+:func:`time_error_estimate`), which only observes; its start is judged once by a step pair
+(:func:`check_start`).
 """
 from __future__ import annotations
 
@@ -21,8 +22,10 @@ from dataclasses import replace
 
 import numpy as np
 
+from kanat.errors import SolverError
 from kanat.lumped import entries, fast, fast_implicit, stepping, time_error
 from kanat.lumped.integrators import ABM4, RK4, ExplicitState, GeneralizedAlphaLumped, pack, unpack
+from kanat.lumped.snap import SnapTracker
 from kanat.step_control import Halving, StepRefused
 
 COMPILED_HALVINGS = 3       # a failed compiled implicit step is retried as 2, 4, 8 compiled half steps
@@ -79,7 +82,7 @@ class FusedArrays:
             float_node=net.body_node[net.float_body].astype(np.int64), float_diameter=net.float_diameter.astype(float),
             float_buoyancy=net.float_buoyancy.astype(float),
             rig=system.rig if net.rigid.count else None,                          # None: pruned from the kernels
-            contact=system.contact if len(system.contact[0]) else None)
+            contact=system.contact if len(system.contact.area) else None)
         cz, cu = system.current.table()
         ramp = float(system.current.ramp)
         still = system.sea is None and len(cz) == 1 and ramp == 0.0   # water kinematics constant in space and time
@@ -108,17 +111,20 @@ class FusedArrays:
             previous=np.zeros((nf, 3)))
 
 
-def sea_arrays(sea) -> tuple:
-    """A :class:`kanat.physics.waves.LinearSea` (or None) as the tuple :func:`fast.sea_add` takes;
-    ``depth <= 0`` stands for deep water, then 1.0 for Wheeler stretching (0.0 none) and the ramp [s]."""
+def sea_arrays(sea) -> entries.Sea:
+    """A :class:`kanat.physics.waves.LinearSea` (or None: no components) as the record
+    :func:`fast.sea_add` takes (:class:`kanat.lumped.entries.Sea`, its one builder); ``depth <= 0``
+    stands for deep water."""
     if sea is None:
         empty = np.zeros(0)
-        return empty, empty, empty, empty, empty, empty, 0.0, empty, 0.0, 0.0
+        return entries.Sea(amplitude=empty, omega=empty, wavenumber=empty, cos_direction=empty, sin_direction=empty,
+                           phase=empty, depth=0.0, depth_factor=empty, wheeler=0.0, ramp=0.0)
     depth = 0.0 if sea.depth is None else float(sea.depth)
     inv = 1.0 / (1.0 - np.exp(-2.0 * sea.k * depth)) if depth > 0 else np.ones_like(sea.k)
-    return (np.asarray(sea.amplitude, float), np.asarray(sea.omega, float), np.asarray(sea.k, float),
-            np.cos(sea.direction), np.sin(sea.direction), np.asarray(sea.phase, float), depth, inv,
-            1.0 if sea.stretching == "wheeler" else 0.0, float(sea.ramp))
+    return entries.Sea(amplitude=np.asarray(sea.amplitude, float), omega=np.asarray(sea.omega, float),
+                       wavenumber=np.asarray(sea.k, float), cos_direction=np.cos(sea.direction),
+                       sin_direction=np.sin(sea.direction), phase=np.asarray(sea.phase, float), depth=depth,
+                       depth_factor=inv, wheeler=1.0 if sea.stretching == "wheeler" else 0.0, ramp=float(sea.ramp))
 
 
 def track_samples(system, times: np.ndarray) -> entries.Track:
@@ -175,9 +181,40 @@ def advance(scheme, system, state, h: float, steps: int, tracker, tensions):
     taken : int
         Steps taken (fewer than ``steps`` only when the state became non-finite).
     """
+    if isinstance(scheme, GeneralizedAlphaLumped) and time_error.start_pending(time_error_estimate(system)):
+        check_start(scheme, system, state, h, tensions)
     if not supports(system, scheme):
         return _python_steps(scheme, system, state, h, steps, tracker, tensions)
     return COMPILED[type(scheme)](scheme, system, state, h, steps, tracker, tensions)
+
+
+def check_start(scheme, system, state, h: float, tensions) -> None:
+    """Eq. (3) of :mod:`kanat.lumped.time_error` for the start at ``state``: its first
+    :data:`kanat.lumped.time_error.START_STEPS` steps taken again at ``h`` and at ``h/2`` (by
+    :func:`advance`, on copies, with snap tracking of their own), their tensions compared at the steps'
+    ends; kept in the estimate's ``[6:8]``. It only observes: the estimate's other entries and the
+    system's force count are put back. A pair that turns non-finite or fails is compared up to there."""
+    estimate = time_error_estimate(system)
+    kept, evaluations = estimate.copy(), system.evaluations
+    estimate[6] = 0.0                                           # checked: the pair's own steps do not recurse
+    times, tension = [], {1: [], 2: []}
+    runs = {k: state for k in (1, 2)}
+    try:
+        for _ in range(time_error.START_STEPS):
+            for k in (1, 2):
+                tracker = SnapTracker(runs[k].t, tensions(runs[k]).copy())
+                runs[k] = advance(scheme, system, runs[k], h / k, k, tracker, tensions)[0]
+            if not (_finite(runs[1]) and _finite(runs[2])):
+                break
+            times.append(runs[1].t)
+            for k in (1, 2):
+                tension[k].append(tensions(runs[k]).copy())
+    except SolverError:
+        pass                                                    # the run itself will say what failed
+    finally:
+        estimate[:] = kept
+        system.evaluations = evaluations
+    estimate[6:8] = time_error.start_difference(np.array(times), np.array(tension[1]), np.array(tension[2]))
 
 
 def _python_steps(scheme, system, state, h, steps, tracker, tensions):

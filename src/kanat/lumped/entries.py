@@ -6,9 +6,11 @@ the arguments match it, numba's kernel otherwise (made on first use, so a run th
 numba's kernels compiles nothing). Compiled kernels call each other directly, in their own modules.
 
 The argument specifications below are the layouts the Python side builds, each group of arrays a
-named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples`` and
-``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
-:mod:`kanat.lumped.network`, ``SnapTracker.kernel_arrays`` in :mod:`kanat.lumped.snap`); the stepping
+named record (:func:`kanat.aot.record`) with one builder (``FusedArrays``, ``track_samples``,
+``sea_arrays`` and ``implicit_scheme`` in :mod:`kanat.lumped.advance`, ``Network.elements`` in
+:mod:`kanat.lumped.network`, ``RigidBodies.arrays`` in :mod:`kanat.lumped.rigid`, the seabed's
+``Contact`` and ``Laid`` in :mod:`kanat.lumped.system`, ``SnapTracker.kernel_arrays`` in
+:mod:`kanat.lumped.snap`); the stepping
 kernels come in one version per combination of the optional 6-DOF bodies and seabed contact
 (None when a network has none, which prunes their code).
 """
@@ -58,15 +60,60 @@ Elements = aot.record(
 """The elements of a network as the kernels read them (``elements.length[k]``): one field per
 property, filled by :meth:`kanat.lumped.network.Network.elements` and nowhere else
 (theory/lumped.md §2; docs/contributing.md, adding a line property)."""
-RIG = (I1, I1, F3, F3, F3, F3, F3, F2, F2, F2, F2, F2, F2, I1, I1, F2)   # 6-DOF bodies (kanat.lumped.rigid)
-CONTACT = (F2, F2, F1)                                   # seabed: plane, tangents, parameters
-SEABED = (F1, F1, F1, CONTACT)                           # contact areas, seabed, parameters, where laid
-SEA = (F1, F1, F1, F1, F1, F1, FLOAT, F1, FLOAT, FLOAT)  # kanat.lumped.advance.sea_arrays
+Rig = aot.record(
+    "Rig", "kanat.lumped.entries",
+    reference_node=I1, angle_node=I1,       # per body b: the pseudo-nodes of its reference point r and Euler angles
+    rigid_mass=F3,                          # rigid-body mass M_rb about r, body axes [kg, kg m, kg m^2] (nb, 6, 6)
+    added_mass=F3,                          # added mass A, body axes (nb, 6, 6)
+    hydrostatic_stiffness=F3,               # C of rigid eq. 4, body axes [N/m, N m/rad] (nb, 6, 6)
+    linear_damping=F3, quadratic_damping=F3,    # B_1 [N s/m], B_2 [N s^2/m^2] of rigid eq. 3, body axes (nb, 6, 6)
+    drag_area=F2,                           # C_D A per degree of freedom [m^2, m^5] (nb, 6)
+    gravity_centre=F2, buoyancy_centre=F2,  # c_g, c_b in body axes [m] (nb, 3)
+    scalars=F2,                             # m g [N], B [N], B / g [kg], hydrostatics on, surface-piercing (1/0),
+                                            # m [kg] (nb, 6)
+    force=F2,                               # constant external force [N] (nb, 3)
+    rest=F2,                                # position [m] and orientation [rad] the restoring acts about (nb, 6)
+    fairlead_node=I1, fairlead_body=I1,     # per fairlead f: its node and its body
+    fairlead_offset=F2,                     # p_b of rigid eq. 1, body axes [m] (k, 3)
+)
+"""The 6-DOF bodies as the kernels read them (kanat.lumped.rigid, eqs. 1-4), built by
+:meth:`kanat.lumped.rigid.RigidBodies.arrays`."""
+Laid = aot.record(
+    "Laid", "kanat.lumped.entries",
+    origin=F2,                              # x_ref: where each node's line was laid from [m] (n, 3)
+    direction=F2,                           # a: the direction it was laid in, zero for none (n, 3)
+    distance=F1,                            # s: the node's distance along it [m] (n,)
+)
+"""Where each node lay, ``x_ref + s a``, for the equilibrium's seabed friction
+(:mod:`kanat.physics.contact`), built by :func:`kanat.lumped.system.laid_lines`."""
+Contact = aot.record(
+    "Contact", "kanat.lumped.entries",
+    area=F1,                                # contact area A_n per node [m^2] (n,)
+    seabed=F1,                              # physics.contact.seabed_arrays: kind, depth [m], slope's tan, cos, sin
+    parameters=F1,                          # physics.contact.contact_parameters: k_b, c_b, mu_a, mu_l, v_s, mode, u_s
+    laid=Laid,                              # where each node lay (equilibrium friction)
+)
+"""The seabed contact as the kernels read it (:mod:`kanat.physics.contact`, eqs. 1-4), built by
+:class:`kanat.lumped.system.LumpedSystem`."""
+Sea = aot.record(
+    "Sea", "kanat.lumped.entries",
+    amplitude=F1,                           # a_j [m] (n,): the components of the linear sea (waves eq. 2)
+    omega=F1,                               # angular frequency [rad/s] (n,)
+    wavenumber=F1,                          # k_j [1/m] (n,)
+    cos_direction=F1, sin_direction=F1,     # cos, sin of the heading of propagation (n,)
+    phase=F1,                               # phi_j [rad] (n,)
+    depth=FLOAT,                            # water depth h [m]; <= 0: deep water
+    depth_factor=F1,                        # 1 / (1 - e^{-2 k_j h}) (1 in deep water) (n,)
+    wheeler=FLOAT,                          # 1.0: Wheeler stretching (waves eq. 7), 0.0: none
+    ramp=FLOAT,                             # the waves' ramp-up time (waves eq. 8) [s]
+)
+"""The linear sea as the kernels read it (:mod:`kanat.lumped.fast`, ``sea_add``), built by
+:func:`kanat.lumped.advance.sea_arrays`; no components in calm water."""
 Environment = aot.record(
     "Environment", "kanat.lumped.entries",
     rho=FLOAT, g=FLOAT,                     # water density [kg/m^3], gravity [m/s^2]
     current_depths=F1, current_velocities=F2,   # the current table: depths z [m], velocities (k, 3) [m/s]
-    sea=SEA,                                # the linear sea's components (kanat.lumped.advance.sea_arrays)
+    sea=Sea,                                # the linear sea's components
     still=BOOL,                             # water kinematics constant in space and time
     elevation_bound=FLOAT,                  # >= the largest surface elevation [m] (0: no waves)
     current_ramp=FLOAT,                     # the current's ramp-up time [s]
@@ -79,8 +126,8 @@ Bodies = aot.record(
     spreading=F1,                           # otter boards' spreading force coefficient per loaded node
     fluid_inertia=F1,                       # added mass and Froude-Krylov per loaded node [kg]
     buoy_node=I1, buoy_area=F1, buoy_height=F1,   # surface buoys: keel node, waterplane area [m^2], height [m]
-    rig=RIG,                                # 6-DOF bodies (kanat.lumped.rigid), or None
-    contact=SEABED,                         # seabed contact (kanat.physics.contact), or None
+    rig=Rig,                                # 6-DOF bodies (kanat.lumped.rigid), or None
+    contact=Contact,                        # seabed contact (kanat.physics.contact), or None
     float_node=I1, float_diameter=F1,       # spherical inline floats: node, diameter [m] and buoyancy fully
     float_buoyancy=F1,                      # submerged [N] (kanat.physics.immersion)
 )
@@ -139,7 +186,7 @@ Band = aot.record(
 """The fused implicit steps' band tangent, its scratch blocks and what they keep between calls
 (:func:`kanat.lumped.fast_implicit.steps`), built by :class:`kanat.lumped.advance.FusedArrays`."""
 register = partial(aot.register, module="_lumped")       # the lumped model's own extension module
-BODIES = tuple(Bodies.narrowed(rig=rig, contact=seabed) for rig in (None, RIG) for seabed in (None, SEABED))
+BODIES = tuple(Bodies.narrowed(rig=rig, contact=seabed) for rig in (None, Rig) for seabed in (None, Contact))
 """The ``bodies`` argument with and without 6-DOF bodies and seabed contact."""
 
 register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
@@ -159,9 +206,9 @@ register("element_forces", "kanat.lumped.kernels", (F2, F2, F2, F2, F1, F2, F1, 
 register("lumped_solve", "kanat.lumped.kernels", (F3, F2, B1, F2), twin="kanat.lumped.oracle_numpy.lumped_solve_into")
 register("tensions", "kanat.lumped.kernels", (F2, F2, Elements, F1))
 register("add_body_loads", "kanat.lumped.kernels", (F2, F2, F2, F2, I1, F1, F1, F1, FLOAT, FLOAT, F2))
-register("place_fairleads", "kanat.lumped.rigid", (F2, F2, RIG))
-register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, RIG, F3))
-register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, CONTACT, F2, F2, F1))
+register("place_fairleads", "kanat.lumped.rigid", (F2, F2, Rig))
+register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, Rig, F3))
+register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, Laid, F2, F2, F1))
 
 
 # the entry points Python code calls (``entries.element_forces(...)``; kanat.aot.EntryPoint)

@@ -107,7 +107,7 @@ def stretched(z, eta, depth, wheeler):
 @inner
 def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
     """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5,
-    stretched by eq. 7 and ramped by eq. 8).
+    stretched by eq. 7 and ramped by eq. 8) of the linear ``sea`` (:class:`kanat.lumped.entries.Sea`).
 
     ``spare`` (4, n) holds the point-independent factors of the ``n`` components at ``t``
     (:func:`sea_factors`) and, in its last two rows, room for ``cos theta_j`` and ``sin theta_j``:
@@ -117,8 +117,9 @@ def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
     In finite depth ``C`` and ``S`` of eq. (5) come from one exponential,
     ``C, S = (E +- e^{-2 k h} / E) / (1 - e^{-2 k h})`` with ``E = e^{k z}``.
     """
-    amp, omega, k, cosd, sind, phase, depth, inv = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5], sea[6], sea[7]
-    ramp, n = ramp_at(t, sea[9]), amp.shape[0]
+    amp, omega, k, cosd, sind = sea.amplitude, sea.omega, sea.wavenumber, sea.cos_direction, sea.sin_direction
+    phase, depth, inv = sea.phase, sea.depth, sea.depth_factor
+    ramp, n = ramp_at(t, sea.ramp), amp.shape[0]
     deep, wt, ct, st = spare[0], spare[1], spare[2], spare[3]
     eta = 0.0
     if reach[0] * (abs(x) + abs(y)) + reach[1] <= SINCOS_REACH:
@@ -131,7 +132,7 @@ def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
             ct[j], st[j] = math.cos(theta), math.sin(theta)
             eta += amp[j] * ct[j]
     if n > 0:
-        z = stretched(z, ramp * eta, depth, sea[8])
+        z = stretched(z, ramp * eta, depth, sea.wheeler)
     zc = min(z, 0.0) if depth <= 0.0 else min(max(z, -depth), 0.0)
     for j in range(n):
         e = math.exp(k[j] * zc)
@@ -155,7 +156,7 @@ def sea_factors(t, sea, spare, reach):
     the factors :func:`sea_add` shares between points at one instant, and ``reach`` with
     ``max k_j`` and ``max |omega_j t| + |phi_j|`` (``|theta_j|`` is at most the first times
     ``|x| + |y|`` plus the second)."""
-    k, omega, phase, depth = sea[2], sea[1], sea[5], sea[6]
+    k, omega, phase, depth = sea.wavenumber, sea.omega, sea.phase, sea.depth
     reach[0], reach[1] = 0.0, 0.0
     for j in range(k.shape[0]):
         spare[0, j] = math.exp(-2.0 * k[j] * depth) if depth > 0.0 else 0.0
@@ -166,11 +167,12 @@ def sea_factors(t, sea, spare, reach):
 @inner
 def sea_elevation(x, y, t, sea):
     """Surface elevation at ``(x, y)`` (waves eq. 2, ramped by eq. 8)."""
-    amp, omega, k, cosd, sind, phase = sea[0], sea[1], sea[2], sea[3], sea[4], sea[5]
+    amp, omega, k, cosd, sind = sea.amplitude, sea.omega, sea.wavenumber, sea.cos_direction, sea.sin_direction
+    phase = sea.phase
     eta = 0.0
     for j in range(amp.shape[0]):
         eta += amp[j] * math.cos(k[j] * (x * cosd[j] + y * sind[j]) - omega[j] * t + phase[j])
-    return ramp_at(t, sea[9]) * eta
+    return ramp_at(t, sea.ramp) * eta
 
 
 @inner
@@ -178,7 +180,7 @@ def water(points, t, cz, cu, current_ramp, sea, u, a):
     """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current (ramped over
     ``current_ramp`` seconds) + waves."""
     scale = ramp_at(t, current_ramp)
-    spare, reach = np.empty((4, sea[0].shape[0])), np.empty(2)
+    spare, reach = np.empty((4, sea.amplitude.shape[0])), np.empty(2)
     sea_factors(t, sea, spare, reach)
     for p in range(points.shape[0]):
         current_at(points[p, 2], cz, cu, scale, u, p)
@@ -276,8 +278,8 @@ def place_rigid(x, v, rig):
 def seabed_loads(x, v, el_i, el_j, contact, work):
     """Seabed contact forces into ``work.force``; nothing (and nothing compiled) when ``contact`` is None."""
     if contact is not None:
-        area, bed, params, laid = contact
-        contact_forces(x, v, el_i, el_j, area, bed, params, laid, work.line_tangent, work.force, work.normal_force)
+        contact_forces(x, v, el_i, el_j, contact.area, contact.seabed, contact.parameters, contact.laid,
+                       work.line_tangent, work.force, work.normal_force)
 
 
 @inner
@@ -293,7 +295,7 @@ def rigid_water_and_loads(t, rig, env, work):
     rho, cz, cu, sea = env.rho, env.current_depths, env.current_velocities, env.sea
     x, v, F, M, acc = work.x, work.v, work.force, work.mass, work.body_acceleration
     ru, ra, reta, rx = work.body_velocity, work.body_water_acceleration, work.body_elevation, work.body_position
-    ref = rig[0]
+    ref = rig.reference_node
     for b in range(ref.shape[0]):
         for r in range(3):
             rx[b, r] = x[ref[b], r]

@@ -93,11 +93,10 @@ def own_loads(system, t, x, v, heading, bodies) -> np.ndarray:
         out[node, 2] += system.rho * system.g * net.buoy_area[k] * immersion
     bearing = np.array([system.case.bodies[net.body_names[b]].seabed_area for b in bodies])
     if np.any(bearing > 0.0):
-        area, bed, params, laid = system.contact
-        contact = np.zeros_like(out)
-        contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, np.zeros_like(out), contact,
-                       np.zeros(net.n_nodes))
-        out[nodes] += (bearing / area[nodes])[:, None] * contact[nodes]
+        seabed, contact = system.contact, np.zeros_like(out)
+        contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.parameters, seabed.laid,
+                       np.zeros_like(out), contact, np.zeros(net.n_nodes))
+        out[nodes] += (bearing / seabed.area[nodes])[:, None] * contact[nodes]
     return out[nodes]
 
 

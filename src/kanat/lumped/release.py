@@ -165,7 +165,8 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
         ``anchor_force`` (NaN) after its release; the vessel's outputs are the case's vessel at the
         run's times; snap events on the run's clock; the last phase's attributes but for the case
         itself (``case_yaml``, ``case_sha256``: the case as written, with its releases) and for the
-        implicit scheme's error estimate (``time_error_*``), the phase's with the largest.
+        implicit scheme's error estimate (``time_error_*``), the phase's with the largest (eq. (3), of the
+        phases' starts, apart).
     """
     import xarray as xr
 
@@ -190,6 +191,10 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
     if "time_error_estimate" in worst[1].attrs:                                          # largest error estimate
         out.attrs.update({k: v for k, v in worst[1].attrs.items() if k.startswith("time_error_")})
         out.attrs["time_error_time"] = worst[1].attrs["time_error_time"] + worst[0].start
+    start = max(parts, key=lambda part: part[1].attrs.get("time_error_start", -1.0))     # eq. (3): each phase's
+    if "time_error_start" in start[1].attrs:                                            # start (a release's too)
+        out.attrs["time_error_start"] = start[1].attrs["time_error_start"]
+        out.attrs["time_error_start_time"] = start[1].attrs["time_error_start_time"] + start[0].start
     for name in ("s", "cable", "segment_cable", "segment_length", "cable_name"):
         if name in first.coords:
             out = out.assign_coords({name: first[name]})

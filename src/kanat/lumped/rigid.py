@@ -48,6 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.jit import inner, kernel
+from kanat.lumped.entries import Rig
 from kanat.physics.hydrostatics import restoring_displacement, weight_buoyancy_moment
 
 
@@ -101,11 +102,14 @@ class RigidBodies:
     def count(self) -> int:
         return len(self.names)
 
-    def arrays(self) -> tuple:
-        """The tuple the compiled kernels take."""
-        return (self.ref_node, self.rot_node, self.mass6, self.added6, self.hydro, self.linear, self.quadratic,
-                self.drag, self.cog, self.cob, self.scalars, self.force, self.reference, self.fairlead_node,
-                self.fairlead_body, self.fairlead_offset)
+    def arrays(self) -> Rig:
+        """The record the compiled kernels take (:class:`kanat.lumped.entries.Rig`)."""
+        return Rig(reference_node=self.ref_node, angle_node=self.rot_node, rigid_mass=self.mass6,
+                   added_mass=self.added6, hydrostatic_stiffness=self.hydro, linear_damping=self.linear,
+                   quadratic_damping=self.quadratic, drag_area=self.drag, gravity_centre=self.cog,
+                   buoyancy_centre=self.cob, scalars=self.scalars, force=self.force, rest=self.reference,
+                   fairlead_node=self.fairlead_node, fairlead_body=self.fairlead_body,
+                   fairlead_offset=self.fairlead_offset)
 
 
 def _matrix(value) -> np.ndarray:
@@ -177,8 +181,10 @@ def omega_of(th, thd, w):
 
 @kernel
 def place_fairleads(x, v, rig):
-    """Fairlead nodes' positions and velocities from their bodies' pseudo-nodes (eq. 1)."""
-    ref, rot, offset, owner, nodes = rig[0], rig[1], rig[15], rig[14], rig[13]
+    """Fairlead nodes' positions and velocities from their bodies' pseudo-nodes (eq. 1); ``rig`` a
+    :class:`kanat.lumped.entries.Rig`."""
+    ref, rot, offset, owner, nodes = rig.reference_node, rig.angle_node, rig.fairlead_offset, rig.fairlead_body, \
+        rig.fairlead_node
     R, w = np.empty((3, 3)), np.empty(3)
     for f in range(nodes.shape[0]):
         b = owner[f]
@@ -249,8 +255,9 @@ def rotate6(R, A, out):
 @inner
 def static_loads(b, x, R, eta, g_vec, rig, F6):
     """Weight, buoyancy, hydrostatic restoring (module eq. 4) and constant force of body ``b`` into ``F6``."""
-    ref, rot, hydro, cog, cob, sc, force, reference = rig[0], rig[1], rig[4], rig[8], rig[9], rig[10], rig[11], \
-        rig[12]
+    ref, rot, hydro, cog, cob = rig.reference_node, rig.angle_node, rig.hydrostatic_stiffness, rig.gravity_centre, \
+        rig.buoyancy_centre
+    sc, force, reference = rig.scalars, rig.force, rig.rest
     weight, buoyancy, hydro_on, surface = sc[b, 0], sc[b, 1], sc[b, 3], sc[b, 4]
     for r in range(3):
         F6[r] += force[b, r]
@@ -290,7 +297,7 @@ def hydrostatic_displacement(b, x, R, eta, surface, reference, rot, ref, d):
 @inner
 def body_axes_loads(b, R, vel, w, uw, rho, rig, F6):
     """Damping and drag of body ``b`` (module eq. 3, ``f_b``) turned to the global frame."""
-    linear, quadratic, drag = rig[5], rig[6], rig[7]
+    linear, quadratic, drag = rig.linear_damping, rig.quadratic_damping, rig.drag_area
     nu, nur, fb = np.empty(6), np.empty(6), np.zeros(6)
     for r in range(3):
         nu[r] = R[0, r] * vel[0] + R[1, r] * vel[1] + R[2, r] * vel[2]
@@ -310,7 +317,7 @@ def body_axes_loads(b, R, vel, w, uw, rho, rig, F6):
 def fairlead_terms(b, x, F, M, w, rig, M6, F6):
     """The lines' nodes at body ``b``'s fairleads riding on it: ``J^T M_f J`` and ``J^T (F_f - M_f w x
     (w x p))`` (module eq. 2); ``M`` packed (n, 6) blocks (kernels.PACKED order)."""
-    ref, nodes, owner = rig[0], rig[13], rig[14]
+    ref, nodes, owner = rig.reference_node, rig.fairlead_node, rig.fairlead_body
     Mf, S, MS = np.empty((3, 3)), np.empty((3, 3)), np.empty((3, 3))
     SMS, SM = np.empty((3, 3)), np.empty((3, 3))
     for f in range(nodes.shape[0]):
@@ -349,8 +356,9 @@ def rigid_accelerations(x, v, F, M, uw, aw, eta, rho, rig, acc):
     """Accelerations of every 6-DOF body (module eqs. 2-3): ``acc`` (nb, 2, 3) holds ``a`` and
     ``Theta_ddot``; the bodies' pseudo-node rows of ``F`` (n, 3) and packed ``M`` (n, 6) get the
     force, moment and diagonal mass blocks (for the equilibrium). ``uw, aw`` (nb, 3) and ``eta``
-    (nb,) the water at the reference points."""
-    ref, rot, mass6, added6, cog, sc = rig[0], rig[1], rig[2], rig[3], rig[8], rig[10]
+    (nb,) the water at the reference points; ``rig`` a :class:`kanat.lumped.entries.Rig`."""
+    ref, rot, mass6, added6, cog, sc = rig.reference_node, rig.angle_node, rig.rigid_mass, rig.added_mass, \
+        rig.gravity_centre, rig.scalars
     R, w, Mg, M6, F6 = np.empty((3, 3)), np.empty(3), np.empty((6, 6)), np.empty((6, 6)), np.empty(6)
     c, wc, Iw = np.empty(3), np.empty(3), np.empty(3)
     g_vec = np.zeros(3)

@@ -99,20 +99,20 @@ class LumpedSystem:
         self._steady_vessel = None
         self._last_motion: tuple | None = None      # (t, q, q_dot) of the last single-time sample
 
-    def _contact(self, case, net) -> tuple:
-        """``(area, bed, params, laid)`` for :func:`kanat.physics.contact.contact_forces`, or empty."""
+    def _contact(self, case, net) -> entries.Contact:
+        """The seabed contact :func:`kanat.physics.contact.contact_forces` takes
+        (:class:`kanat.lumped.entries.Contact`), its arrays empty without a seabed."""
         block = case.environment.seabed
         if block is None:
             empty = np.zeros(0)
-            return empty, empty, empty, (np.zeros((0, 3)), np.zeros((0, 3)), empty)
+            return entries.Contact(area=empty, seabed=empty, parameters=empty, laid=nowhere(0))
         static = self.steady_velocity is not None
         bed = contact.seabed_arrays(seabed_of(case.environment))
-        laid = laid_lines(net, bed) if static else (np.zeros((net.n_nodes, 3)), np.zeros((net.n_nodes, 3)),
-                                                    np.zeros(net.n_nodes))
+        laid = laid_lines(net, bed) if static else nowhere(net.n_nodes)
         params = contact.contact_parameters(block, int(static))
         if not self.friction:
             params[2:4] = 0.0
-        return net.node_contact_area, bed, params, laid
+        return entries.Contact(area=net.node_contact_area, seabed=bed, parameters=params, laid=laid)
 
     # --- prescribed motion and environment -------------------------------------------------
     def vessel_points(self, times, arms=None):
@@ -285,10 +285,10 @@ class LumpedSystem:
         self.evaluations += 1
         if len(net.bend[1]):
             bending_forces(x, *net.bend[:4], self._F)
-        area, bed, params, laid = self.contact
-        if len(area):
-            entries.contact_forces(x, v, net.el_i, net.el_j, area, bed, params, laid, self._tangent, self._F,
-                                   self.normal_force)
+        seabed = self.contact
+        if len(seabed.area):
+            entries.contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.parameters, seabed.laid,
+                                   self._tangent, self._F, self.normal_force)
         if len(net.load_node):
             self._body_loads(t, x, v, heading)
         if len(net.float_body):
@@ -385,7 +385,12 @@ def phase_table(track) -> np.ndarray:
     return np.array([[getattr(ph, f) for f in fields] for ph in track.phases], float)
 
 
-def laid_lines(net, bed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def nowhere(n: int) -> entries.Laid:
+    """``n`` nodes laid nowhere (no direction: no equilibrium friction, :class:`kanat.lumped.entries.Laid`)."""
+    return entries.Laid(origin=np.zeros((n, 3)), direction=np.zeros((n, 3)), distance=np.zeros(n))
+
+
+def laid_lines(net, bed) -> entries.Laid:
     """Where each cable node lay for the equilibrium's seabed friction (:mod:`kanat.physics.contact`):
     from the cable's anchor (its first anchor end), straight along the seabed towards the other
     end's first guess; nodes of cables without an anchor, and cable ends, get no direction."""
@@ -409,4 +414,4 @@ def laid_lines(net, bed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         d /= np.linalg.norm(d)
         inner = nodes[1:-1]
         ref[inner], direction[inner], s[inner] = net.x_guess[start], d, arc[1:-1]
-    return ref, direction, s
+    return entries.Laid(origin=ref, direction=direction, distance=s)

@@ -93,8 +93,9 @@ def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal
         :func:`seabed_arrays`.
     params : ndarray
         :func:`contact_parameters`.
-    laid : tuple (ref (n, 3), direction (n, 3), s (n,))
-        Where each node lay (equilibrium friction): ``x_ref + s a``; a zero direction: none.
+    laid : record of ``origin`` (n, 3), ``direction`` (n, 3), ``distance`` (n,)
+        Where each node lay (equilibrium friction): ``x_ref + s a`` (origin, direction, distance);
+        a zero direction: none (the lumped model's :class:`kanat.lumped.entries.Laid`).
     tangent : ndarray, shape (n, 3)
         Work array.
     """
@@ -152,7 +153,7 @@ def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
     """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form)."""
     t0, t1, t2 = plane_tangent(a, nx, nz, tangent)
     if mode > 0.0:
-        ref, direction, s = laid
+        ref, direction, s = laid.origin, laid.direction, laid.distance
         d0, d1, d2 = direction[a, 0], direction[a, 1], direction[a, 2]
         if d0 == 0.0 and d1 == 0.0 and d2 == 0.0:
             return
