@@ -5,7 +5,7 @@ side-by-side comparisons with kanat's network statics.
 anchors and vessel fairleads are fixed points, network points and point bodies are free
 points (mass and volume giving the same net buoyancy), a rigid body is a MoorPy body
 (weight at its centre of gravity, buoyancy at its centre of buoyancy as MoorPy's ``rM``, or at
-its metacentre for a body on its waterplane with equal metacentric heights),
+its metacentre above it for a body on its waterplane with equal metacentric heights),
 its fairleads points on it; a cable of several sections or with attachments becomes one
 MoorPy line per stretch, joined by free points that carry the attachments' mass and
 volume; a sloped seabed is MoorPy's uniform slope (``xSlope``). MoorPy 1.3's ``System`` applies no seabed friction (``Line.staticSolve``
@@ -85,25 +85,26 @@ def moorpy_system(case, vessel: str = "fixed"):
 
 def _buoyancy_lever(body, C, r6, g) -> np.ndarray:
     """MoorPy's ``rM``, where the buoyancy acts: the centre of buoyancy for a body with a heave
-    spring only; for a body on its waterplane with equal roll and pitch restoring (``C44 = C55 =
-    B GM``, centres of gravity and buoyancy on its axis, level reference), the metacentre
-    ``z_M = (C44 + m g z_G) / B`` on the axis, so that MoorPy's turning weight and buoyancy give
-    ``C44 (z_b x e_z)``, the righting moment of the tilt kanat applies."""
+    spring only (weight and buoyancy turn it at their centres in both codes); for a body on its
+    waterplane with equal roll and pitch restoring (``C44 = C55 = B GM``, level reference), the
+    metacentre ``r_M = (b_x, b_y, (C44 + m g z_G) / B)`` above the centre of buoyancy ``b``, so that
+    MoorPy's turning weight and buoyancy give ``C44 (z_b x e_z)``, the righting moment of the tilt
+    kanat applies, and the centres' horizontal offsets turn the body as in kanat
+    (kanat.physics.hydrostatics eq. 3)."""
     heave_only = np.zeros((6, 6))
     heave_only[2, 2] = C[2, 2]
     if C[2, 2] and r6[2]:
         raise ValueError("MoorPy's body has a heave spring about z = 0 only: give the body position z = 0")
-    if np.allclose(C, heave_only):
+    if np.allclose(C, heave_only) and not body.tilt_in_stiffness:
         return np.array(body.buoyancy_point)
     righting = np.diag([0.0, 0.0, C[2, 2], C[3, 3], C[3, 3], 0.0])
-    off_axis = np.any(body.center_of_gravity[:2]) or np.any(body.buoyancy_point[:2])
-    if not np.allclose(C, righting) or off_axis or np.any(r6[3:5]):
+    if not np.allclose(C, righting) or np.any(r6[3:5]):
         raise ValueError("MoorPy's body restores roll and pitch by its turning weight and buoyancy only: give "
                          "the body hydrostatic_stiffness [0, 0, C33, 0, 0, 0], or a waterplane with equal "
-                         "metacentric heights, its centres of gravity and buoyancy on its axis and a level "
-                         "orientation")
+                         "metacentric heights and a level orientation")
     buoyancy = body.buoyancy(g)
-    return np.array([0.0, 0.0, (C[3, 3] + body.mass * g * body.center_of_gravity[2]) / buoyancy])
+    b = body.buoyancy_point
+    return np.array([b[0], b[1], (C[3, 3] + body.mass * g * body.center_of_gravity[2]) / buoyancy])
 
 
 def _end(ms, case, cable, end, label, names) -> int:

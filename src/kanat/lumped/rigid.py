@@ -18,11 +18,13 @@ the centre of gravity::
 ``M_rb`` the rigid-body mass matrix about the reference point (:meth:`Body.rigid_body_mass_matrix`),
 ``A`` the added mass (body axes; its Coriolis terms neglected), ``M_f, F_f`` the lumped mass
 block and force of the line nodes at fairlead ``f`` (the lines' half elements ride on the
-body). Static loads: without hydrostatics, the weight ``m g`` at ``c`` and the buoyancy
-``B = net_buoyancy + m g`` at the centre of buoyancy; with a hydrostatic stiffness ``C`` (given
-or ``rho g A_w``, ``B GM``; body axes), the net buoyancy at the reference point and the restoring
-about the body's given ``position`` and ``orientation_deg`` (``R_0``) — ``C`` then holds the
-weight's and buoyancy's moments (:mod:`kanat.physics.hydrostatics`, shared with network statics)::
+body). Static loads: the net buoyancy at the reference point, the moment of the weight ``m g`` at
+``c`` and the buoyancy ``B = net_buoyancy + m g`` at the centre of buoyancy, and with a hydrostatic
+stiffness ``C`` (given or ``rho g A_w``, ``B GM``; body axes) the restoring about the body's given
+``position`` and ``orientation_deg`` (``R_0``). When ``C`` restores roll or pitch (a metacentric
+height) it holds the weight's and buoyancy's levers along the body's vertical at the reference,
+and only the centres' offsets across it turn the body; otherwise the whole levers turn
+(:mod:`kanat.physics.hydrostatics` eqs. 1-3, shared with network statics)::
 
     (4)  [F; M] = -[H (C dxi)_t; R (C dxi)_r],   H = Rz(yaw),
          dxi = (H^T (r - r_0 - eta e_z), k x k_0 + (yaw - yaw_0) k_0),   k = R^T e_z,   k_0 = R_0^T e_z
@@ -47,7 +49,7 @@ import numpy as np
 
 from kanat.jit import inner, kernel
 from kanat.lumped.entries import Rig
-from kanat.physics.hydrostatics import restoring_displacement
+from kanat.physics.hydrostatics import restoring_displacement, weight_buoyancy_moment
 
 
 @dataclass(frozen=True, eq=False)
@@ -66,8 +68,9 @@ class RigidBodies:
         ``C_D A`` per degree of freedom [m^2, m^5].
     cog, cob : ndarray, shape (nb, 3)
     scalars : ndarray, shape (nb, 6)
-        ``m g`` [N], buoyancy ``B`` [N], displaced mass ``B / g`` [kg], hydrostatics on (1/0),
-        surface-piercing (1/0), mass ``m`` [kg].
+        ``m g`` [N], buoyancy ``B`` [N], displaced mass ``B / g`` [kg], hydrostatics (0 none, 1 without
+        roll or pitch restoring, 2 with it: :attr:`Body.tilt_in_stiffness`), surface-piercing (1/0),
+        mass ``m`` [kg].
     force : ndarray, shape (nb, 3)
         Constant external force [N].
     reference : ndarray, shape (nb, 6)
@@ -134,9 +137,10 @@ def rigid_bodies(case, builder) -> RigidBodies:
         rows["drag"].append(np.zeros(6) if body.drag_areas is None else np.asarray(body.drag_areas, float))
         rows["cog"].append(np.asarray(body.center_of_gravity, float))
         rows["cob"].append(np.asarray(body.buoyancy_point, float))
-        hydro_on = body.hydrostatic_stiffness is not None or body.waterplane_area is not None
+        hydro_on = float(body.hydrostatic_stiffness is not None or body.waterplane_area is not None)
+        hydro_on += float(body.tilt_in_stiffness)              # 2: C holds the tilt (module docstring)
         buoyancy = body.buoyancy(g)
-        rows["scalars"].append([body.mass * g, buoyancy, buoyancy / g, float(hydro_on),
+        rows["scalars"].append([body.mass * g, buoyancy, buoyancy / g, hydro_on,
                                 float(body.waterplane_area is not None), body.mass])
         rows["force"].append(np.asarray(body.force, float))
         rows["reference"].append(np.concatenate([position, angles]))
@@ -270,12 +274,9 @@ def static_loads(b, x, R, eta, g_vec, rig, F6):
         F6[2] += load[2]
         for r in range(3):
             F6[3 + r] += R[r, 0] * load[3] + R[r, 1] * load[4] + R[r, 2] * load[5]
-        return
-    pg, pb = np.empty(3), np.empty(3)
-    turn(R, cog[b], pg)
-    turn(R, cob[b], pb)
-    F6[3] += -pg[1] * weight + pb[1] * buoyancy
-    F6[4] += pg[0] * weight - pb[0] * buoyancy
+    roll0, pitch0, k0 = reference[b, 3], reference[b, 4], np.empty(3)   # k0 = R_0^T e_z
+    k0[0], k0[1], k0[2] = -math.sin(pitch0), math.cos(pitch0) * math.sin(roll0), math.cos(pitch0) * math.cos(roll0)
+    weight_buoyancy_moment(R, k0, cog[b], cob[b], weight, buoyancy, 1.0 if hydro_on > 1.5 else 0.0, F6[3:])
 
 
 @inner

@@ -167,12 +167,16 @@ class Body(KanatModel):
     metacentric_heights: tuple[float, float] | None = quantity(
         None, unit="m",
         description="dof 6, surface-piercing: [GM_roll, GM_pitch]; roll and pitch stiffness "
-                    "(net_buoyancy + mass * g) * GM (give waterplane_area with it)")
+                    "(net_buoyancy + mass * g) * GM (give waterplane_area with it). GM holds the levers of "
+                    "weight and buoyancy along the body's axis; their centres' offsets across it still "
+                    "turn the body (a centre of gravity off the axis trims it)")
     hydrostatic_stiffness: Matrix6 | None = quantity(
         None, unit="N/m, N/rad, N m/rad",
         description="dof 6: hydrostatic restoring stiffness about the reference point, 6 "
                     "numbers (diagonal) or 6x6; instead of waterplane_area and "
-                    "metacentric_heights")
+                    "metacentric_heights. With roll or pitch terms it holds the levers of weight and "
+                    "buoyancy along the body's axis, as metacentric heights do; without (a heave spring "
+                    "only), weight and buoyancy turn the body at their centres")
     linear_damping: Matrix6 | None = quantity(
         None, unit="N s/m, N m s/rad",
         description="dof 6: linear damping on the body velocity, force -B v, 6 numbers "
@@ -222,6 +226,19 @@ class Body(KanatModel):
         if self.buoyancy_at == "reference":
             return ZERO3
         return tuple(self.center_of_buoyancy)
+
+    @property
+    def tilt_in_stiffness(self) -> bool:
+        """True when the body's hydrostatics restore roll or pitch: ``metacentric_heights`` (a
+        metacentric height, from the centre of gravity to the metacentre, holds the levers of weight
+        and buoyancy along the body's vertical, whatever its value) or a ``hydrostatic_stiffness``
+        with roll or pitch terms. Both models then turn the body by the centres' offsets across its
+        vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
+        if self.metacentric_heights is not None:
+            return True
+        if self.hydrostatic_stiffness is None:
+            return False
+        return any(self.hydrostatic_stiffness[i][j] != 0.0 for i in (3, 4) for j in (3, 4))
 
     def _check_rigid(self) -> None:
         import numpy as np

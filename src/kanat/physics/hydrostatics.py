@@ -19,6 +19,24 @@ put a yawed body's roll restoring about the wrong axis (reversed at 180 deg).
 call it (:mod:`kanat.lumped.rigid`), and network statics through :func:`restoring_load`, which
 adds eq. (1) and its derivatives with respect to the position and the Euler angles in plain
 Python (its Python function, ``restoring_displacement.py_func``: statics loads no numba).
+
+Weight ``W`` at the centre of gravity ``c`` and buoyancy ``B`` at the centre of buoyancy ``b``
+(body axes) turn with the body; a metacentric height holds their levers along the body's vertical
+at the reference, ``k_0``, so with ``h = 1`` when ``C`` restores the tilt (0 otherwise)::
+
+    (3)  M_WB = (R m) x (-e_z),   m = W (c - h (c . k_0) k_0) - B (b - h (b . k_0) k_0)
+
+:func:`weight_buoyancy_moment`, shared by both models. Without tilt restoring in ``C`` (no
+hydrostatics, or a heave spring only: MoorPy's ``AWP`` body) eq. (3) is the moment of the turning
+weight and buoyancy, which restores a body whose centre of buoyancy is above its centre of
+gravity. With it (``metacentric_heights``: ``C44 = B GM``, and ``GM`` is the distance from the
+centre of gravity to the metacentre, the vertical levers of weight and buoyancy included), only
+the centres' offsets across ``k_0`` act: at the reference attitude they give the moment of the
+weight and buoyancy there (the trim moment of a centre of gravity off the axis, as the net
+buoyancy is the heave force there), and they turn with the body, so the moment follows its
+heading. For a level reference and ``C44 = C55`` eqs. (1) + (3) are MoorPy's body with its
+buoyancy at the metacentre ``r_M = (b_x, b_y, (C44 + W c_z) / B)``: ``(R r_c) x (-W e_z) + (R r_M)
+x (B e_z)`` exactly, at any tilt.
 """
 from __future__ import annotations
 
@@ -28,7 +46,7 @@ import numpy as np
 
 from kanat.jit import inner
 
-__all__ = ["restoring_displacement", "restoring_load"]
+__all__ = ["restoring_displacement", "restoring_load", "weight_buoyancy_moment", "weight_buoyancy_load"]
 
 
 @inner
@@ -97,3 +115,51 @@ def restoring_load(stiffness, R, dR, R0, dr, yaw, yaw0) -> tuple[np.ndarray, np.
     for j in range(3):
         jacobian[3:, 3 + j] += dR[j] @ body[3:]
     return np.concatenate([H @ body[:3], R @ body[3:]]), jacobian
+
+
+@inner
+def weight_buoyancy_moment(R, k0, cog, cob, weight, buoyancy, held, out):
+    """Add the moment of module eq. (3) about the reference point (global axes) to ``out`` (3,).
+
+    The moment is linear in ``R``: given ``dR/dangle`` for ``R`` it adds the moment's derivative.
+
+    Parameters
+    ----------
+    R : ndarray, shape (3, 3)
+        The body's rotation (body axes to global), or its derivative.
+    k0 : ndarray, shape (3,)
+        The vertical in body axes at the reference attitude, ``R_0^T e_z``.
+    cog, cob : ndarray, shape (3,)
+        Centres of gravity and buoyancy in body axes from the reference point [m].
+    weight, buoyancy : float
+        ``W = m g`` and ``B`` [N].
+    held : float
+        ``h``: 1 when the hydrostatic stiffness restores roll or pitch (it holds the centres'
+        levers along ``k0``), 0 otherwise.
+    out : ndarray, shape (3,)
+    """
+    along_g = held * (cog[0] * k0[0] + cog[1] * k0[1] + cog[2] * k0[2])
+    along_b = held * (cob[0] * k0[0] + cob[1] * k0[1] + cob[2] * k0[2])
+    m0 = weight * (cog[0] - along_g * k0[0]) - buoyancy * (cob[0] - along_b * k0[0])
+    m1 = weight * (cog[1] - along_g * k0[1]) - buoyancy * (cob[1] - along_b * k0[1])
+    m2 = weight * (cog[2] - along_g * k0[2]) - buoyancy * (cob[2] - along_b * k0[2])
+    p0 = R[0, 0] * m0 + R[0, 1] * m1 + R[0, 2] * m2
+    p1 = R[1, 0] * m0 + R[1, 1] * m1 + R[1, 2] * m2
+    out[0] -= p1                                            # (R m) x (-e_z) = (-p_y, p_x, 0)
+    out[1] += p0
+
+
+def weight_buoyancy_load(R, dR, k0, cog, cob, weight, buoyancy, held) -> tuple[np.ndarray, np.ndarray]:
+    """The moment of module eq. (3) and its derivative with respect to roll, pitch, yaw (3, 3).
+
+    Parameters as :func:`weight_buoyancy_moment`; ``dR`` the three ``dR/dangle`` (3, 3).
+    """
+    args = (np.asarray(k0, dtype=float), np.asarray(cog, dtype=float), np.asarray(cob, dtype=float),
+            float(weight), float(buoyancy), float(held))
+    moment, jacobian = np.zeros(3), np.zeros((3, 3))
+    weight_buoyancy_moment.py_func(R, *args, moment)
+    for j in range(3):
+        column = np.zeros(3)
+        weight_buoyancy_moment.py_func(dR[j], *args, column)
+        jacobian[:, j] = column
+    return moment, jacobian

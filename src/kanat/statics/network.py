@@ -6,10 +6,11 @@ between its two ends, which gives the forces it puts on them and their derivativ
 residual is every free node's force (and a rigid body's moment about its reference point)::
 
     (1)  R(q) = sum_lines f_end(q) + F_node(q) + F_C(q) = 0
-    (2)  M(q) = sum_lines (R o) x f_end + (R c_G) x W + (R c_B) x B + M_C(q) = 0
+    (2)  M(q) = sum_lines (R o) x f_end + M_WB(q) + M_C(q) = 0
 
-with ``o`` a fairlead in body axes, ``W = (0, 0, -m g)`` at the centre of gravity, ``B`` the
-buoyancy at the centre of buoyancy and ``(F_C, M_C)`` the restoring of the hydrostatic
+with ``o`` a fairlead in body axes, ``M_WB`` the moment of the weight ``m g`` at the centre of
+gravity and the buoyancy at the centre of buoyancy (:mod:`kanat.physics.hydrostatics` eq. 3, as
+the lumped model) and ``(F_C, M_C)`` the restoring of the hydrostatic
 stiffness ``C`` (body axes) about the body's given position ``r_0`` and attitude ``R_0``, from
 its actual tilt (:mod:`kanat.physics.hydrostatics`, as the lumped model)::
 
@@ -18,8 +19,9 @@ its actual tilt (:mod:`kanat.physics.hydrostatics`, as the lumped model)::
 
 so a body tilted by ``theta`` about any horizontal axis, at any yaw, feels ``C44 sin(theta)``
 about that axis (``C44 = C55``, level reference), and heave and surge act in the heading
-frame. When ``C`` has a roll or pitch restoring (a metacentric height), weight and buoyancy
-keep their reference-attitude levers, the restoring being in ``C`` already.
+frame. When ``C`` has a roll or pitch restoring (a metacentric height), it holds the levers of
+weight and buoyancy along the body's vertical at the reference, and only their offsets across it
+turn with the body in ``M_WB``; otherwise the whole levers turn.
 
 A 3-D line of in-plane tensions ``(H, V_B)`` with unit horizontal direction ``e_h`` from A
 to B pulls B by ``f_B = -(H e_h + V_B e_z)`` and A by ``f_A = H_A e_h + V_A e_z``; with
@@ -45,7 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kanat.errors import SolverError
-from kanat.physics.hydrostatics import restoring_load
+from kanat.physics.hydrostatics import restoring_load, weight_buoyancy_load
 from kanat.statics import budget
 from kanat.statics.line_solve import LineSolution, solve_line
 from kanat.statics.network_setup import NetworkProblem, fairlead_rotation
@@ -205,7 +207,6 @@ def _restoring(node, q6) -> tuple[np.ndarray, np.ndarray]:
 
 def _own_loads(problem: NetworkProblem, q, R, J) -> None:
     """Add the nodes' own loads (weight, buoyancy, hydrostatics, constant forces) to R, J."""
-    up = np.array([0.0, 0.0, 1.0])
     for n, node in enumerate(problem.nodes):
         i = problem.offsets[n]
         R[i:i + 3] += node.force
@@ -216,14 +217,11 @@ def _own_loads(problem: NetworkProblem, q, R, J) -> None:
             R[i:i + 6] += load
             J[i:i + 6, i:i + 6] += d_load
         R[i + 2] += node.buoyancy - node.weight
-        weight, buoyancy = -node.weight * up, node.buoyancy * up
-        turned = node.orientation if node.fixed_levers else q[i + 3:i + 6]
-        rot, d_rot = fairlead_rotation(turned)
-        R[i + 3:i + 6] += cross(rot @ node.cog, weight) + cross(rot @ node.cob, buoyancy)
-        if not node.fixed_levers:
-            for k in range(3):
-                J[i + 3:i + 6, i + 3 + k] += (cross(d_rot[k] @ node.cog, weight)
-                                               + cross(d_rot[k] @ node.cob, buoyancy))
+        rot, d_rot = fairlead_rotation(q[i + 3:i + 6])
+        moment, d_moment = weight_buoyancy_load(rot, d_rot, fairlead_rotation(node.orientation)[0][2], node.cog,
+                                                node.cob, node.weight, node.buoyancy, float(node.tilt_in_stiffness))
+        R[i + 3:i + 6] += moment
+        J[i + 3:i + 6, i + 3:i + 6] += d_moment
 
 
 def assemble(problem: NetworkProblem, q, starts=None):

@@ -66,10 +66,11 @@ class NetworkNode:
         6-DOF: centres of gravity and buoyancy in body axes [m].
     hydrostatic : ndarray, shape (6, 6)
         6-DOF: hydrostatic stiffness about the reference point (zeros when none).
-    fixed_levers : bool
-        6-DOF: True when ``hydrostatic`` holds a roll or pitch restoring (its metacentric
-        height already includes the lever of weight and buoyancy, so these act at their
-        reference-attitude levers); False: they act at the turning CG and CB.
+    tilt_in_stiffness : bool
+        6-DOF: True when the hydrostatics restore roll or pitch (:attr:`Body.tilt_in_stiffness`: the
+        metacentric height holds the levers of weight and buoyancy along the body's vertical, and
+        their offsets across it turn the body); False: the whole levers turn it
+        (:mod:`kanat.physics.hydrostatics` eq. 3).
     """
 
     name: str
@@ -83,7 +84,7 @@ class NetworkNode:
     cog: np.ndarray = field(default_factory=lambda: np.zeros(3))
     cob: np.ndarray = field(default_factory=lambda: np.zeros(3))
     hydrostatic: np.ndarray = field(default_factory=lambda: np.zeros((6, 6)))
-    fixed_levers: bool = False
+    tilt_in_stiffness: bool = False
 
 
 @dataclass(frozen=True, eq=False)
@@ -228,7 +229,7 @@ def _node(case, name: str) -> NetworkNode:
                        weight=body.mass * g, buoyancy=body.buoyancy(g),
                        cog=np.asarray(body.center_of_gravity, dtype=float),
                        cob=np.asarray(body.buoyancy_point, dtype=float), hydrostatic=stiffness,
-                       fixed_levers=bool(np.any(stiffness[3:5, 3:5])))
+                       tilt_in_stiffness=body.tilt_in_stiffness)
 
 
 def _vector(value) -> np.ndarray | None:
