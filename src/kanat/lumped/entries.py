@@ -69,8 +69,8 @@ Rig = aot.record(
     linear_damping=F3, quadratic_damping=F3,    # B_1 [N s/m], B_2 [N s^2/m^2] of rigid eq. 3, body axes (nb, 6, 6)
     drag_area=F2,                           # C_D A per degree of freedom [m^2, m^5] (nb, 6)
     gravity_centre=F2, buoyancy_centre=F2,  # c_g, c_b in body axes [m] (nb, 3)
-    scalars=F2,                             # m g [N], B [N], B / g [kg], hydrostatics on, surface-piercing (1/0),
-                                            # m [kg] (nb, 6)
+    scalars=F2,                             # m g [N], B [N], B / g [kg], hydrostatics (0 none, 1 without the
+                                            # tilt, 2 with it), surface-piercing (1/0), m [kg] (nb, 6)
     force=F2,                               # constant external force [N] (nb, 3)
     rest=F2,                                # position [m] and orientation [rad] the restoring acts about (nb, 6)
     fairlead_node=I1, fairlead_body=I1,     # per fairlead f: its node and its body
