@@ -5,10 +5,14 @@ import logging
 import sys
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
 from kanat.cli_output import Stream
+
+if TYPE_CHECKING:
+    from rich.text import Text
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 """Typer context settings of every command: ``-h`` is ``--help``."""
@@ -90,11 +94,19 @@ def setup_logging(quiet: bool = False, verbose: bool = False, log_file: Path | N
     log.propagate = False
 
 
-def show(text) -> None:
-    """Print a result line (a string or a :class:`rich.text.Text`) on standard output (nothing with
-    ``--quiet``) and keep it in the log file."""
+def show(text: str | Text) -> None:
+    """Print a result line on standard output (nothing with ``--quiet``) and keep it in the log file."""
     out.print(text, markup=False, emoji=False)
-    log.info(text if isinstance(text, str) else text.plain, extra={"shown": True})
+    log.info(_plain_text(text), extra={"shown": True})
+
+
+def _plain_text(text: str | Text) -> str:
+    """The text of a rich :class:`~rich.text.Text` (rich is loaded if one exists), else ``text``."""
+    if isinstance(text, str) or "rich.text" not in sys.modules:
+        return text
+    from rich.text import Text
+
+    return text.plain if isinstance(text, Text) else text
 
 
 def describe(case) -> str:

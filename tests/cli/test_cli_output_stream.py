@@ -106,3 +106,16 @@ def test_validate_does_not_import_rich_off_a_terminal():
     done = subprocess.run([sys.executable, "-c", script, "validate", str(case)], capture_output=True, text=True,
                           env={k: v for k, v in os.environ.items() if k != "FORCE_COLOR"})
     assert done.stdout.splitlines() == [f"{case}: valid (0 warning(s))", "0 0"], done.stderr
+
+
+def test_show_prints_and_logs_the_plain_text_of_a_string_or_a_rich_text(monkeypatch, caplog):
+    from kanat import cli_common
+
+    cli_common.setup_logging()                    # the default: not quiet
+    monkeypatch.setattr(sys, "stdout", io.StringIO())
+    monkeypatch.setattr(cli_common.log, "propagate", True)
+    with caplog.at_level("INFO", logger="kanat"):
+        cli_common.show("wrote out.nc")
+        cli_common.show(Text("pass  sphere-alpha0", style="green"))
+    assert sys.stdout.getvalue() == "wrote out.nc\npass  sphere-alpha0\n"
+    assert [r.getMessage() for r in caplog.records] == ["wrote out.nc", "pass  sphere-alpha0"]
