@@ -225,7 +225,7 @@ def _with_progress(duration: float, start):
 
     columns = (TextColumn("t = {task.completed:.1f} / {task.total:g} s"), BarColumn(), TimeElapsedColumn(),
                TextColumn("{task.fields[info]}"))
-    with Progress(*columns, console=console, transient=True) as bar:
+    with Progress(*columns, console=console.rich, transient=True) as bar:
         task = bar.add_task("run", total=duration, info="")
 
         def progress(t, info):

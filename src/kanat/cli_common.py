@@ -5,18 +5,20 @@ import logging
 import sys
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
-from rich.console import Console
-from rich.panel import Panel
-from rich.table import Table
-from rich.text import Text
+
+from kanat.cli_output import Stream
+
+if TYPE_CHECKING:
+    from rich.text import Text
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 """Typer context settings of every command: ``-h`` is ``--help``."""
-console = Console(stderr=True, soft_wrap=True)
-"""Messages and progress (standard error)."""
-out = Console(soft_wrap=True, highlight=False)
+console = Stream(stderr=True, soft_wrap=True)
+"""Messages and progress (standard error; rich built on first need, :mod:`kanat.cli_output`)."""
+out = Stream(soft_wrap=True, highlight=False)
 """Results and tables (standard output); soft-wrapped: a pipe gets whole lines."""
 log = logging.getLogger("kanat")
 
@@ -73,7 +75,7 @@ def setup_logging(quiet: bool = False, verbose: bool = False, log_file: Path | N
     if console.is_terminal:
         from rich.logging import RichHandler
 
-        handler: logging.Handler = RichHandler(console=console, show_time=False, show_path=False, markup=False)
+        handler: logging.Handler = RichHandler(console=console.rich, show_time=False, show_path=False, markup=False)
     else:
         handler = _Stderr()
         handler.setFormatter(_PlainFormatter())
@@ -95,7 +97,16 @@ def setup_logging(quiet: bool = False, verbose: bool = False, log_file: Path | N
 def show(text: str | Text) -> None:
     """Print a result line on standard output (nothing with ``--quiet``) and keep it in the log file."""
     out.print(text, markup=False, emoji=False)
-    log.info(text.plain if isinstance(text, Text) else text, extra={"shown": True})
+    log.info(_plain_text(text), extra={"shown": True})
+
+
+def _plain_text(text: str | Text) -> str:
+    """The text of a rich :class:`~rich.text.Text` (rich is loaded if one exists), else ``text``."""
+    if isinstance(text, str) or "rich.text" not in sys.modules:
+        return text
+    from rich.text import Text
+
+    return text.plain if isinstance(text, Text) else text
 
 
 def describe(case) -> str:
@@ -132,9 +143,12 @@ def _explain(text: str, title: str) -> None:
     """A red panel on a terminal, a plain unwrapped ``kanat: error: TITLE: ...`` elsewhere (a pipe, a
     CI log); the log file keeps it either way."""
     if console.is_terminal:
+        from rich.panel import Panel
+        from rich.text import Text
+
         console.print(Panel(Text(text, overflow="fold"), title=title, border_style="red", expand=False))
     else:
-        console.print(Text(f"kanat: error: {title}: {text}"))
+        console.print(f"kanat: error: {title}: {text}", markup=False, emoji=False, highlight=False)
     if log.handlers:                            # set up by the command line: the log file keeps it
         log.error(f"{title}: {text}", extra={"shown": True})
 
@@ -148,8 +162,11 @@ def print_problems(problems) -> None:
         return
     if not console.is_terminal:
         for p in problems:
-            console.print(Text(str(p)))
+            console.print(str(p), markup=False, emoji=False, highlight=False)
         return
+    from rich.table import Table
+    from rich.text import Text
+
     table = Table(show_header=True, header_style="bold", expand=False)
     for column in ("where", "key", "severity", "problem"):
         table.add_column(column, overflow="fold")

@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import Optional
 
 import typer
-from rich.text import Text
 
 from kanat.cli_common import console, fail, load, log, show
 from kanat.errors import KanatError
@@ -29,6 +28,8 @@ def register(app: typer.Typer) -> None:
                debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
         """Design checks: utilisation of every line intact and damaged, fatigue life (docs/design.md)."""
         from kanat.design_checks import design as check, write_tables
+        from rich.text import Text
+
         from kanat.report.html_design import design_page
 
         loaded = load(case, debug)

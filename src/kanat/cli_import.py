@@ -10,7 +10,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.text import Text
 
 from kanat.cli_common import console, log, print_problems, show
 
@@ -23,6 +22,8 @@ def import_file(source: Path, output: Path) -> int:
     int
         0 when written, 1 when the file cannot be imported (its problems are printed).
     """
+    from rich.text import Text
+
     from kanat.errors import KanatError
     from kanat.model.validation import validate_data
     from kanat.io.moordyn import case_yaml, looks_like_moordyn, read_moordyn

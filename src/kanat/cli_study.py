@@ -11,7 +11,6 @@ from pathlib import Path
 from typing import List, Optional
 
 import typer
-from rich.text import Text
 
 from kanat.cli_common import CONTEXT, console, fail, load, log, show
 from kanat.errors import KanatError
@@ -59,6 +58,8 @@ def sweep(case: Path = typer.Argument(..., help="Base case file (YAML)."),
           report: Optional[Path] = typer.Option(None, "--report", help="Also write the study's HTML report."),
           debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run a parameter study: every combination of the varied values, one result file per case."""
+    from rich.text import Text
+
     from kanat.io.outputs import check_output_file
     from kanat.report.html_report import report_inputs
     from kanat.sweep import sweep as run_sweep
@@ -114,6 +115,8 @@ def validate_suite(output: Path = typer.Option(..., "-o", "--output", help="HTML
                    only: Optional[List[str]] = typer.Option(None, "--only", help="Run only these check ids."),
                    debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
     """Run the fast validation cases and write their report (exit 1 if any fails)."""
+    from rich.text import Text
+
     from kanat.io.outputs import check_output_file
     from kanat.report.html_validation import validation_report as write_validation_report
     from kanat.validation import run_suite
