@@ -285,8 +285,13 @@ def _equilibrium_from(net, case, x0, velocity, solve, start):
 
 
 def _scaled(net, factor):
-    """``net`` with every elastic law's force scaled by ``factor`` (the continuation's softer line)."""
-    return net if factor == 1.0 else dataclasses.replace(net, law_y=net.law_y * factor)
+    """``net`` with every elastic law's force and its seabed contact's stiffness scaled by ``factor``
+    (the relaxation's softer line, :func:`_relaxed_equilibrium`): the contact area ``A_n`` of
+    :mod:`kanat.physics.contact` eq. (1) is scaled, so that the contact's normal force ``k_b delta A_n``
+    keeps its ratio to the line's axial forces."""
+    if factor == 1.0:
+        return net
+    return dataclasses.replace(net, law_y=net.law_y * factor, node_contact_area=net.node_contact_area * factor)
 
 
 def _load_scale(net) -> float:
