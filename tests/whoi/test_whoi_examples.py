@@ -320,9 +320,6 @@ def test_bottom_mooring_in_waves_runs_in_the_lumped_model():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="since the lumped model applies the default seabed to a case giving "
-                                       "environment.depth alone, the dynamic relaxation of these S-tethers "
-                                       "stalls (without the seabed: ok in 40 s)")
 @pytest.mark.parametrize("name", ["deep_s", "surface"])
 def test_lumped_equilibrium_of_a_mooring_with_many_floats(name):
     """The S-tether (3500 m of water, a 13.35 kN subsurface float at s = 3413.5 m, a weakly restrained
