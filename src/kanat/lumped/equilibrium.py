@@ -303,10 +303,11 @@ def _load_scale(net) -> float:
 
 def _relaxed_equilibrium(net, case, velocity, friction, time):
     """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
-    of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
-    guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
-    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`), relaxed
-    again at its own stiffness first where Newton's method does not converge from the last.
+    of the line softened to RELAXATION_STIFFNESS, its seabed contact with it (:func:`_scaled`), from
+    the still-water catenaries (or the network's guess) down to RELAXATION_TARGET of the load scale,
+    then the stiffness continuation of :func:`_equilibrium_from` from there, each stage by Newton's
+    method (:func:`_solve`), relaxed again at its own stiffness first where Newton's method does not
+    converge from the last.
 
     Returns as :func:`_solve`, with ``fallback = "dynamic relaxation"`` and the relaxation's
     ``relaxation_steps`` in the info."""
