@@ -65,3 +65,42 @@ def test_fictitious_masses_bound_the_unit_step():
     largest = np.max(np.abs(np.linalg.eigvals(dense / m[:, None])))
     assert largest <= 2.0 + 1e-9
     assert largest == pytest.approx(2.0, rel=0.6)             # and not far heavier than needed
+
+
+def grounded_chain():
+    """examples/mooring_current.yaml in still water at 35 segments, lumped, with the default seabed it
+    gets from ``environment.depth`` (stiffness 3e6 Pa/m): 529 m of its 700 m chain on the seabed."""
+    from helpers import EXAMPLES
+    from kanat import load_case
+
+    return load_case(EXAMPLES / "mooring_current.yaml").replace({
+        "model": "lumped", "cables[0].segments": 35, "environment.current": {"profile": [[0, 0, 0, 0]]},
+        "simulation": {"duration": 1.0, "dt": 0.05}}).with_seabed_contact()
+
+
+@pytest.mark.slow
+def test_relaxation_lays_a_chain_on_the_seabed_as_newtons_method_and_the_catenary_do():
+    """The fallback (equilibrium._relaxed_equilibrium) softens the seabed contact with the line, so a node
+    on the seabed is not 1e4 times stiffer than its neighbours in the fictitious masses: 632 relaxation
+    steps here, where the contact left at its true stiffness took 92,070 (53 s; WHOI's deep_s stalled).
+    Oracles: the same discrete equilibrium by Newton's method from the catenary guess (the equilibrium's
+    direct path) to 1e-6 m; the anchor tension against the elastic catenary on a frictionless seabed
+    (network statics), within 2 % (20 m elements: the touchdown moves by whole elements; 0.5 % at
+    70 segments); no node deeper than the run's seabed check allows."""
+    from kanat import solve_statics
+    from kanat.lumped.equilibrium import _relaxed_equilibrium, equilibrium
+    from kanat.lumped.mooring_outputs import allowed_penetration
+    from kanat.lumped.network import build_network
+    from kanat.physics.seabed import seabed_of
+
+    case = grounded_chain()
+    net = build_network(case)
+    relaxed, info = _relaxed_equilibrium(net, case, None, True, 0.0)
+    direct, _ = equilibrium(net, case)
+    assert info["fallback"] == "dynamic relaxation" and info["relaxation_steps"] < 5_000
+    assert np.max(np.abs(relaxed - direct)) < 1e-6
+    stretched = np.linalg.norm(relaxed[net.el_j[0]] - relaxed[net.el_i[0]]) / net.el_length[0] - 1
+    anchor_tension = net.law_y[0, 0] * stretched                  # the chain's linear law: EA strain
+    catenary = solve_statics(case.replace({"model": "statics"}))
+    assert anchor_tension == pytest.approx(float(catenary["tension"].values[0]), rel=0.02)
+    assert np.all(seabed_of(case.environment).penetration(relaxed) <= allowed_penetration(net, case.environment))

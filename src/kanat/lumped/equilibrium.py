@@ -59,7 +59,9 @@ RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dyna
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
 STAGE_ITERATIONS = 100        # Newton's first try at a relaxed stage: from a relaxed state it converges in a few
 #                                or not at all (deep_s: 400 failed iterations at four stages, 43 s of 110 s)
-RETRY_TARGET = 1e-3            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
+RETRY_TARGET = 1e-2            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
+#                                (Newton's method finishes from there in 8-90 iterations; at 1e-3, in 2-5, but the
+#                                relaxation's slowest modes took deep_s 232,000 steps instead of 127,000)
 
 
 def node_graph(net) -> list[set]:
@@ -285,8 +287,13 @@ def _equilibrium_from(net, case, x0, velocity, solve, start):
 
 
 def _scaled(net, factor):
-    """``net`` with every elastic law's force scaled by ``factor`` (the continuation's softer line)."""
-    return net if factor == 1.0 else dataclasses.replace(net, law_y=net.law_y * factor)
+    """``net`` with every elastic law's force and its seabed contact's stiffness scaled by ``factor``
+    (the relaxation's softer line, :func:`_relaxed_equilibrium`): the contact area ``A_n`` of
+    :mod:`kanat.physics.contact` eq. (1) is scaled, so that the contact's normal force ``k_b delta A_n``
+    keeps its ratio to the line's axial forces."""
+    if factor == 1.0:
+        return net
+    return dataclasses.replace(net, law_y=net.law_y * factor, node_contact_area=net.node_contact_area * factor)
 
 
 def _load_scale(net) -> float:
@@ -296,10 +303,11 @@ def _load_scale(net) -> float:
 
 def _relaxed_equilibrium(net, case, velocity, friction, time):
     """The fallback where :func:`_equilibrium` fails: dynamic relaxation (:mod:`kanat.lumped.relaxation`)
-    of the line softened to RELAXATION_STIFFNESS from the still-water catenaries (or the network's
-    guess) down to RELAXATION_TARGET of the load scale, then the stiffness continuation of
-    :func:`_equilibrium_from` from there, each stage by Newton's method (:func:`_solve`), relaxed
-    again at its own stiffness first where Newton's method does not converge from the last.
+    of the line softened to RELAXATION_STIFFNESS, its seabed contact with it (:func:`_scaled`), from
+    the still-water catenaries (or the network's guess) down to RELAXATION_TARGET of the load scale,
+    then the stiffness continuation of :func:`_equilibrium_from` from there, each stage by Newton's
+    method (:func:`_solve`), relaxed again at its own stiffness first where Newton's method does not
+    converge from the last.
 
     Returns as :func:`_solve`, with ``fallback = "dynamic relaxation"`` and the relaxation's
     ``relaxation_steps`` in the info."""
