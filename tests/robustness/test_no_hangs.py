@@ -66,11 +66,11 @@ def test_a_1000_m_s_vertical_current_ends_within_the_time_budget(monkeypatch, tm
     monkeypatch.setenv(budget.SECONDS_ENV, "2")
     case = kanat.load_case(VERTICAL_CURRENT)
     out = tmp_path / "steady.nc"
-    start = time.perf_counter()
-    with pytest.raises(budget.BudgetExceeded, match=r"the statics of cable 'mooring' gave up after 2(\.\d+)? s "
-                                                    r"\(the limit is 2 s;"):
+    start = time.process_time()
+    with pytest.raises(budget.BudgetExceeded, match=r"the statics of cable 'mooring' gave up after 2(\.\d+)? s of "
+                                                    r"CPU \(the limit is 2 s;"):
         api.run(case, output=out, model="statics")
-    assert time.perf_counter() - start < 2.0 + 3.0        # the limit, one clock reading late at most
+    assert time.process_time() - start < 2.0 + 3.0        # the limit (CPU), one clock reading late at most
     status = read_result(out).attrs["status"]
     assert status.startswith("failed: the statics of cable 'mooring' gave up") and "no steady state" in status
 
@@ -79,12 +79,12 @@ def test_a_dynamic_run_whose_initial_statics_makes_no_progress_fails_within_the_
     monkeypatch.setenv(budget.SECONDS_ENV, "2")
     case = kanat.load_case(example("surface_mooring_waves.yaml", **{
         "environment.current": {"profile": [[0, 0.5, 0, 0], [-50, 0.5, 0, 1000], [-100, 0.5, 0, 0]]}}))
-    start = time.perf_counter()
+    start = time.process_time()
     with pytest.warns(api.RunFailedWarning):
         outcome = api.run(case)
-    assert time.perf_counter() - start < 2.0 + 8.0                   # the budget, and the model's set-up
+    assert time.process_time() - start < 2.0 + 8.0                   # the budget (CPU), and the model's set-up
     assert re.match(r"failed: no initial state: the statics of cable 'mooring' \(the initial state of the run\) "
-                    r"gave up after 2(\.\d+)? s \(the limit is 2 s", outcome.status), outcome.status
+                    r"gave up after 2(\.\d+)? s of CPU \(the limit is 2 s", outcome.status), outcome.status
 
 
 def test_the_lumped_equilibrium_has_the_time_budget(monkeypatch):
@@ -92,7 +92,7 @@ def test_the_lumped_equilibrium_has_the_time_budget(monkeypatch):
     with pytest.warns(api.RunFailedWarning):
         outcome = api.run(kanat.load_case(EXAMPLES / "trawl_head_8s_1to2.yaml"))
     assert re.match(r"failed: no initial state: the equilibrium of the lumped network gave up after "
-                    r"[0-9.]+ s \(the limit is 0.01 s\)", outcome.status), outcome.status
+                    r"[0-9.]+ s of CPU \(the limit is 0.01 s\)", outcome.status), outcome.status
 
 
 def test_the_budget_counts_evaluations_and_time():
