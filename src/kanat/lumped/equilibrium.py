@@ -59,7 +59,6 @@ RELAXATION_STIFFNESS = 1e4     # N: stiffest elastic law coefficient of the dyna
 RELAXATION_TARGET = 5e-3       # of the nodal load scale: where the relaxation hands over to Newton's method
 STAGE_ITERATIONS = 100        # Newton's first try at a relaxed stage: from a relaxed state it converges in a few
 #                                or not at all (deep_s: 400 failed iterations at four stages, 43 s of 110 s)
-BENDING_STAGES = (1e-3, 1e-2, 1e-1, 1.0)   # fractions of the bending stiffness, after the flexible line's equilibrium
 RETRY_TARGET = 1e-2            # of RELAXATION_TARGET: a stage whose Newton iteration failed is relaxed this far
 #                                (Newton's method finishes from there in 8-90 iterations; at 1e-3, in 2-5, but the
 #                                relaxation's slowest modes took deep_s 232,000 steps instead of 127,000)
@@ -212,81 +211,19 @@ def equilibrium(net, case, x0=None, velocity=None, friction=True, time=0.0):
     equilibrium fails as fast as before).
     """
     if x0 is None and len(net.float_body):
-        if _has_bending(net):          # relaxing a stiff beam is slow (mpl: 200,000 steps, 35 s, not settled)
-            return _bending_continuation(net, case, velocity, friction, time)
         return _floats_first(net, case, velocity, friction, time)
     with budget.budget("the equilibrium of the lumped network"):
         try:
             return _equilibrium(net, case, x0, velocity, friction, time)
         except SolverError as error:
-            if not any(cable.attachments for cable in case.cables) and not _has_bending(net):
+            if not any(cable.attachments for cable in case.cables):
                 raise
             failure = error
-    if _has_bending(net):
-        try:
-            return _bending_continuation(net, case, velocity, friction, time)
-        except SolverError:
-            if not any(cable.attachments for cable in case.cables):
-                raise failure from None
     with budget.budget("the equilibrium of the lumped network by dynamic relaxation"):
         try:
             return _relaxed_equilibrium(net, case, velocity, friction, time)
         except SolverError:
             raise failure from None
-
-
-def _has_bending(net) -> bool:
-    """Whether any interior node (or clamp) of ``net`` has bending stiffness."""
-    return bool(np.any(net.bend[3] > 0.0))
-
-
-def _with_bending(net, factor):
-    """``net`` with every bending stiffness ``k`` of :mod:`kanat.lumped.bending` eq. (1) (clamps' included)
-    scaled by ``factor``: 0 gives the flexible line."""
-    before, node, after, k, span = net.bend
-    return dataclasses.replace(net, bend=(before, node, after, k * factor, span))
-
-
-def _bending_continuation(net, case, velocity, friction, time):
-    """:func:`equilibrium` of a network with bending stiffness by continuation in ``EI``: the flexible
-    line's equilibrium first (:func:`equilibrium` of ``net`` with ``EI = 0``, by whichever of its paths
-    finds it), then ``EI`` raised through BENDING_STAGES, each stage's Newton iteration (:func:`_solve`)
-    starting from the last stage's equilibrium and, where it does not converge from there, relaxed at its
-    own stiffness first (:func:`_relaxed`), as the stiffness stages of :func:`_relaxed_equilibrium`.
-
-    A stiff line's own Newton iteration from the flexible shape (or the statics guess) can jump across
-    the solution, where the bending moments of a shape far from the equilibrium's swamp its weight and
-    tension; each stage here starts where the bending moments it adds are a tenfold step on the last.
-
-    Returns as :func:`_solve`, with ``fallback = "bending continuation"``, the flexible solve's
-    ``relaxation_steps`` (plus the stages' own) and ``bending_stages`` in the info.
-
-    Raises
-    ------
-    SolverError
-        Naming the stage (its fraction of ``EI``) that did not converge.
-    """
-    x, info = equilibrium(_with_bending(net, 0.0), case, None, velocity, friction, time)
-    steps = info.get("relaxation_steps", 0)
-    if velocity is None:
-        velocity = LumpedSystem(net, case, waves=False).frame_velocity()
-    target = RETRY_TARGET * RELAXATION_TARGET * _load_scale(net)
-    with budget.budget("the equilibrium of the lumped network by continuation in bending stiffness"):
-        for factor in BENDING_STAGES:
-            stage = _with_bending(net, factor)
-            try:
-                try:
-                    x, info = _solve(stage, case, x, velocity, STAGE_ITERATIONS, taut=False, friction=friction,
-                                     time=time)
-                except SolverError:
-                    x, more = _relaxed(stage, case, x, velocity, friction, time, target)
-                    steps += more
-                    x, info = _solve(stage, case, x, velocity, MAX_ITERATIONS, taut=False, friction=friction,
-                                     time=time)
-            except SolverError as error:
-                raise SolverError(f"{error} (continuation in bending stiffness, at {factor:g} of EI)") from None
-    return x, {**info, "first_guess": "flexible line", "fallback": "bending continuation",
-               "relaxation_steps": steps, "bending_stages": len(BENDING_STAGES)}
 
 
 def _floats_first(net, case, velocity, friction, time):
@@ -416,12 +353,7 @@ def _relaxed(net, case, x, velocity, friction, time, target):
 
 
 def relaxation_note(info: dict) -> str:
-    """The run's note that its initial equilibrium came from a fallback: dynamic relaxation, or the
-    continuation in bending stiffness (:func:`_bending_continuation`)."""
-    if info.get("fallback") == "bending continuation":
-        return (f"initial equilibrium by continuation in bending stiffness: the flexible line's equilibrium, "
-                f"then EI raised over {info['bending_stages']} stages ({info['relaxation_steps']} steps of "
-                f"dynamic relaxation in all; residual {info['residual']:.3g} N)")
+    """The run's note that its initial equilibrium came from the dynamic-relaxation fallback."""
     return (f"initial equilibrium by dynamic relaxation ({info['relaxation_steps']} steps of the line softened "
             f"to {RELAXATION_STIFFNESS:g} N, then Newton's method over {info['continuation_stages']} stiffness "
             f"stages; residual {info['residual']:.3g} N): "
