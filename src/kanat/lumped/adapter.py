@@ -243,8 +243,9 @@ class LumpedModel:
         T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
-        F, M = system.loads(t, x, v, heading)
-        if len(self._mooring.point_bodies):          # eq. (O1) of mooring_outputs needs their acceleration
+        accelerations = len(self._mooring.point_bodies) > 0      # eq. (O1) of mooring_outputs needs them
+        F, M = system.loads(t, x, v, heading, masses=accelerations)
+        if accelerations:
             a = system.solve_mass(x, F, M, a)
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
