@@ -154,3 +154,46 @@ def test_a_non_finite_scalar_output_is_found(heading):
 def test_finite_scalars_and_integer_arrays_pass():
     point = Point(2, 0.5, {"tension": np.arange(4), "vessel_heading": 0.25, "count": 3}, None, Steps(), None)
     assert _non_finite(LAYOUT, point) is None
+
+
+def jacobian_entries_one_by_one(force, free, xf, colour, step, neighbours_of):
+    """The equilibrium's coloured differences entry by entry (the loop :func:`_jacobian_entries` replaces)."""
+    position = {node: k for k, node in enumerate(free)}
+    rows, cols, vals = [], [], []
+    for c in range(colour[free].max() + 1):
+        group = np.flatnonzero(colour[free] == c)
+        for r in range(3):
+            dx = np.zeros_like(xf)
+            dx[group, r] = step
+            dF = (force(xf + dx) - force(xf - dx)) / (2 * step)
+            for k in group:
+                for node in neighbours_of[free[k]]:
+                    if node in position:
+                        m = position[node]
+                        rows.extend(3 * m + np.arange(3))
+                        cols.extend([3 * k + r] * 3)
+                        vals.extend(dF[m])
+    return np.array(rows, dtype=np.int64), np.array(cols, dtype=np.int64), np.array(vals, dtype=float)
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_the_equilibriums_jacobian_entries_are_those_worked_out_one_by_one(name):
+    from kanat.lumped.equilibrium import _jacobian_entries, distance2_colouring, node_graph
+
+    model = model_of(name)
+    system, net = model.system, model.net
+    free = system.free_index
+    _, x, v, _, heading = moved(model)
+
+    def force(q):
+        y = x.copy()
+        y[free] = q
+        return system.loads(0.0, y, v, heading)[0][free].copy()
+
+    neighbours = node_graph(net)
+    colour = distance2_colouring(net)
+    got = _jacobian_entries(force, free, x[free], colour, 1e-4, neighbours)
+    expected = jacobian_entries_one_by_one(force, free, x[free], colour, 1e-4, neighbours)
+    for part, reference in zip(got, expected):
+        assert part.dtype == reference.dtype and part.tobytes() == reference.tobytes()
+    assert len(got[0]) > 9 * len(free)

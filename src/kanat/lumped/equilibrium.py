@@ -106,24 +106,31 @@ def _jacobian(force, free, xf, colour, step, neighbours_of):
 
 def _jacobian_entries(force, free, xf, colour, step, neighbours_of):
     """``dF/dq`` (3 n_free square) of ``force(xf)`` by coloured central differences as
-    ``(rows, cols, values)``, no entry repeated; ``free`` the free nodes' indices."""
+    ``(rows, cols, values)``, no entry repeated; ``free`` the free nodes' indices.
+
+    Each colour's group of nodes is moved in one direction ``r`` at a time; every node ``m`` whose force
+    depends on a moved node ``k`` (its neighbour) gets the three entries ``dF_m / dq_k,r``, in the order
+    of ``k`` and then of ``k``'s neighbours."""
     position = {node: k for k, node in enumerate(free)}
     rows, cols, vals = [], [], []
     zero = np.zeros_like(xf)
+    block = np.arange(3)
     for c in range(colour[free].max() + 1):
         group = np.flatnonzero(colour[free] == c)
+        pairs = np.array([(k, position[node]) for k in group for node in neighbours_of[free[k]] if node in position],
+                         dtype=np.int64).reshape(-1, 2)
+        moved, touched = pairs[:, 0], pairs[:, 1]
+        pair_rows = (3 * touched[:, None] + block).ravel()
         for r in range(3):
             dx = zero.copy()
             dx[group, r] = step
             dF = (force(xf + dx) - force(xf - dx)) / (2 * step)
-            for k in group:
-                for node in neighbours_of[free[k]]:
-                    if node in position:
-                        m = position[node]
-                        rows.extend(3 * m + np.arange(3))
-                        cols.extend([3 * k + r] * 3)
-                        vals.extend(dF[m])
-    return np.array(rows, dtype=np.int64), np.array(cols, dtype=np.int64), np.array(vals, dtype=float)
+            rows.append(pair_rows)
+            cols.append(np.repeat(3 * moved + r, 3))
+            vals.append(dF[touched].ravel())
+    if not rows:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0)
+    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals).astype(float)
 
 
 def band_solver(free, neighbours_of) -> NodeBandSolver:
