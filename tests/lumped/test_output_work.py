@@ -197,3 +197,16 @@ def test_the_equilibriums_jacobian_entries_are_those_worked_out_one_by_one(name)
     for part, reference in zip(got, expected):
         assert part.dtype == reference.dtype and part.tobytes() == reference.tobytes()
     assert len(got[0]) > 9 * len(free)
+
+
+@pytest.mark.parametrize("file", ["lazy_wave.yaml", "subsurface_mooring.yaml"])
+def test_body_loads_in_a_uniform_current_are_those_of_the_water_at_each_body(file):
+    case = load_case(EXAMPLES / file).replace({"model": "lumped", "simulation.scheme": "rk4",
+                                               "environment.current": {"velocity": [0.4, -0.1, 0.0]}})
+    model = LumpedModel(case)
+    system = model.system
+    assert system._uniform and len(system.net.load_node)
+    _, x, v, _, heading = moved(model)
+    F = system.loads(0.2, x, v, heading)[0].copy()
+    system._uniform = False                                  # the water sampled at the bodies and midpoints
+    assert system.loads(0.2, x, v, heading)[0].tobytes() == F.tobytes()

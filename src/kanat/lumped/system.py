@@ -90,6 +90,8 @@ class LumpedSystem:
         self._uniform = env.current.profile is None and self.sea is None and env.current.ramp == 0.0
         self._u_uniform = np.broadcast_to(env.current.at(0.0), (m, 3)).copy()
         self._zero_m3 = np.zeros((m, 3))
+        self._u_loads = np.broadcast_to(env.current.at(0.0), (len(net.load_node), 3)).copy()   # read-only for the kernel
+        self._zero_loads = np.zeros((len(net.load_node), 3))
         self.eta_bound = float(np.sum(self.sea.amplitude)) if self.sea is not None else 0.0
         self.evaluations = 0
         self.el_args = net.elements()           # kanat.lumped.entries.Elements
@@ -309,9 +311,12 @@ class LumpedSystem:
     def _body_loads(self, t, x, v, heading):
         net, F = self.net, self._F
         nodes = net.load_node
-        u, a = self.water(t, x[nodes])
-        kernels.body_loads(x, v, np.ascontiguousarray(u), np.ascontiguousarray(a), nodes, net.load_drag_area,
-                           net.load_spreading, net.node_fluid_inertia, self.rho, heading, F)
+        if self._uniform:                                   # the uniform current, as C-ordered arrays once
+            u, a = self._u_loads, self._zero_loads
+        else:
+            u, a = (np.ascontiguousarray(part) for part in self.water(t, x[nodes]))
+        kernels.body_loads(x, v, u, a, nodes, net.load_drag_area, net.load_spreading, net.node_fluid_inertia,
+                           self.rho, heading, F)
         if len(net.buoy_body):
             keel = x[net.body_node[net.buoy_body]]
             eta = self.sea.elevation(keel[:, 0], keel[:, 1], t) if self.sea is not None else 0.0
