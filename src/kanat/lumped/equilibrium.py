@@ -152,6 +152,12 @@ class _SteadyForces:
         F, M = s.loads(t, x, v, heading)
         return F[s.free_index].copy(), M[s.free_index].copy()
 
+    def force(self, t, xf):
+        """The forces alone (the coloured differences' evaluations): the mass blocks not unpacked."""
+        s = self.system
+        x, v, _, heading = s.full(t, xf, np.zeros_like(xf))
+        return s.loads(t, x, v, heading, masses=False)[0][s.free_index]
+
 
 def _newton(J, solver, F, xf, forces, length):
     """A Newton step ``-J dx = F`` (``J`` as ``(rows, cols, values)``, solved by ``solver``)
@@ -343,7 +349,7 @@ def _relaxed(net, case, x, velocity, friction, time, target):
     step = FD_STEP * np.min(net.el_length)
 
     def force(q):
-        return forces(0.0, q)[0]
+        return forces.force(0.0, q)
 
     relaxed = relax(force, lambda q: _jacobian_entries(force, free, q, colour, step, neighbours), x[free], target)
     x = x.copy()
@@ -467,7 +473,7 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
         if norm <= tolerance:
             break
         budget.check_time()
-        J = _jacobian_entries(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
+        J = _jacobian_entries(lambda q: forces.force(0.0, q), free, xf, colour, step, neighbours)
         trials = [t for t in (_pseudo_transient(J, solver, M, F, xf, forces, length, dtau, norm),
                               _newton(J, solver, F, xf, forces, length)) if t is not None]
         trial = min(trials, key=lambda t: np.max(np.abs(t[1]))) if trials else None   # the better of the two
@@ -498,7 +504,7 @@ def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, so
     zero = np.zeros_like(xf)
 
     def taut_forces(q):
-        F = forces(0.0, q)[0]
+        F = forces.force(0.0, q)
         return F + compression_forces(net, system.full(0.0, q, zero)[0], stiffness)[free]
 
     def jacobian(q):
@@ -510,7 +516,7 @@ def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, so
         step = solver.solve(*jacobian(q), F.ravel())
         return None if step is None else step.reshape(-1, 3)
 
-    solved = taut_newton(lambda q: forces(0.0, q)[0], newton_step, xf, tolerance,
+    solved = taut_newton(lambda q: forces.force(0.0, q), newton_step, xf, tolerance,
                          MAX_STEP_FRACTION * np.min(net.el_length), SeabedGuard(net, case, free), taut_forces)
     if solved is None:
         return None
