@@ -41,6 +41,7 @@ output passed the checks.
 from __future__ import annotations
 
 import logging
+import math
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -527,9 +528,9 @@ def _initial_problem(model, layout: Layout, values: dict) -> str | None:
 def _non_finite(layout: Layout, point: Point) -> str | None:
     """A message naming the first non-finite output, or None."""
     for name, values in point.values.items():
-        values = np.asarray(values)
-        if np.all(np.isfinite(values)):
+        if _finite(values):
             continue
+        values = np.asarray(values)
         where = ""
         if values.ndim and "s" in layout.static and len(values) == len(layout.static["s"][1]):
             node = int(np.flatnonzero(~np.all(np.isfinite(values.reshape(len(values), -1)), axis=1))[0])
@@ -538,6 +539,16 @@ def _non_finite(layout: Layout, point: Point) -> str | None:
         return (f"the state became non-finite (NaN or inf) at t = {point.time:.6g} s in {name}{where}; "
                 "reduce dt, use an implicit scheme, or refine the grid")
     return None
+
+
+def _finite(values) -> bool:
+    """Whether every entry of an output is finite: ``np.isfinite(...).all()`` of an array, ``math.isfinite``
+    of a Python or NumPy scalar, without NumPy's function dispatch (every output of a run passes here)."""
+    if type(values) is np.ndarray:
+        return bool(np.isfinite(values).all())
+    if isinstance(values, (float, int, np.floating, np.integer)):
+        return math.isfinite(values)
+    return bool(np.all(np.isfinite(np.asarray(values))))
 
 
 def _summary(model, status, done: Steps, index, start, setup, solver, compiling, output, extra=None) -> RunSummary:

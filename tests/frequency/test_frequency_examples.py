@@ -55,14 +55,16 @@ def test_the_taut_line_in_a_two_component_sea_against_the_time_domain():
 
 @pytest.mark.slow
 def test_the_lazy_wave_heaved_and_surged_against_the_time_domain():
-    """``lazy_wave.yaml`` (heave 2 m in 10 s and surge 3 m in 60 s; 59 segments, a buoyant section of
-    0.9 m diameter): every node's tension amplitude at 10 s within 5 % (measured 3.4 %; 30 % when the
-    two harmonics' drag was linearised as one Gaussian) and at 60 s within 8 % (4.3 %), phases within
-    0.1 rad (0.058, 0.029), against a joint fit of the time domain's last 60 s of 120 s (about 30 s)."""
-    case = frequency(EXAMPLES / "lazy_wave.yaml")
+    """``lazy_wave.yaml`` (heave 2 m in 10 s and surge 3 m in 60 s, ramped up over 10 s; 59 segments, a
+    buoyant section of 0.9 m diameter): every node's tension amplitude at 10 s within 5 % (measured 2.9 %;
+    30 % when the two harmonics' drag was linearised as one Gaussian) and at 60 s within 8 % (5.5 %),
+    phases within 0.1 rad (0.050, 0.039), against a joint fit of the time domain's last 120 s of 240 s
+    (about 35 s); with the ramp taken off 3.0 % and 5.6 %: the start is forgotten by then. Over the last
+    60 s of the example's own 120 s the ramp's slow transient is still there (2.6 % and 6.9 %)."""
+    case = frequency(EXAMPLES / "lazy_wave.yaml", **{"simulation.duration": 240.0})
     ds, td = frequency_and_time(case)
     assert ds.attrs["status"] == "ok" and td.attrs["status"] == "ok"
-    assert_tensions_agree(ds, td, ds.frequency.values, window=60.0, rtol=[0.08, 0.05], atol=0.1)   # 60 s, then 10 s
+    assert_tensions_agree(ds, td, ds.frequency.values, window=120.0, rtol=[0.08, 0.05], atol=0.1)   # 60 s, then 10 s
 
 
 @pytest.mark.slow

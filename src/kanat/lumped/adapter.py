@@ -98,8 +98,10 @@ class LumpedModel:
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
         self._mooring = MooringOutputs(self.net, anchors_on_seabed(self.net, case.environment), case)
         self._held = held_under_water(case, self.net)
-        self._cable_node = np.zeros(self.net.n_nodes, dtype=bool)
-        self._cable_node[self.net.node_index] = True
+        cable_node = np.zeros(self.net.n_nodes, dtype=bool)
+        cable_node[self.net.node_index] = True
+        self._cable_nodes = np.flatnonzero(cable_node)                  # the nodes the seabed check watches
+        self._cable_penetration = self.penetration[self._cable_nodes]
         self._seabed = seabed_of(case.environment)
         self.start_from = start_from
 
@@ -241,8 +243,10 @@ class LumpedModel:
         T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
-        F, M = system.loads(t, x, v, heading)
-        a = system.solve_mass(x, F, M, a)
+        accelerations = len(self._mooring.point_bodies) > 0      # eq. (O1) of mooring_outputs needs them
+        F, M = system.loads(t, x, v, heading, masses=accelerations)
+        if accelerations:
+            a = system.solve_mass(x, F, M, a)
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
                 "body_position": x[net.body_node].reshape(-1, 3), "vessel_position": system.vessel(t)[0],
                 "vessel_heading": heading, "vessel_pitch": pitch,
@@ -255,7 +259,8 @@ class LumpedModel:
     def check(self, state: LumpedState, values: dict) -> str | None:
         net, t = self.net, state.scheme.t
         x = self._positions(state)
-        strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
+        d = x[net.el_j] - x[net.el_i]
+        strain = np.sqrt(np.add.reduce(d * d, axis=1)) / net.el_length - 1.0     # np.linalg.norm's own sum
         k = int(np.argmax(strain - self.max_strain))
         if strain[k] > self.max_strain[k]:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "
@@ -278,13 +283,16 @@ class LumpedModel:
         seabed = self._seabed
         if seabed is None:
             return None
-        net = self.net
-        depth = np.where(self._cable_node, seabed.penetration(x), -np.inf)
-        excess = depth - self.penetration
-        worst = int(np.argmax(excess))
-        if excess[worst] <= 0.0:
+        net, nodes = self.net, self._cable_nodes
+        if not len(nodes):
             return None
-        return (f"a node is {depth[worst]:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}), more "
+        depth = seabed.penetration(x[nodes])
+        excess = depth - self._cable_penetration
+        k = int(np.argmax(excess))
+        if excess[k] <= 0.0:
+            return None
+        depth, worst = depth[k], int(nodes[k])
+        return (f"a node is {depth:.4g} m below the seabed at t = {t:.6g} s ({net.where(worst)}), more "
                 f"than the contact allows ({self.penetration[worst]:.3g} m: {PENETRATION_MARGIN:g} x its weight in "
                 f"water, if any, / (stiffness x contact area) + {PENETRATION_FLOOR * 1e3:g} mm); raise "
                 "environment.seabed.stiffness or damping, or reduce dt")

@@ -108,24 +108,31 @@ def _jacobian(force, free, xf, colour, step, neighbours_of):
 
 def _jacobian_entries(force, free, xf, colour, step, neighbours_of):
     """``dF/dq`` (3 n_free square) of ``force(xf)`` by coloured central differences as
-    ``(rows, cols, values)``, no entry repeated; ``free`` the free nodes' indices."""
+    ``(rows, cols, values)``, no entry repeated; ``free`` the free nodes' indices.
+
+    Each colour's group of nodes is moved in one direction ``r`` at a time; every node ``m`` whose force
+    depends on a moved node ``k`` (its neighbour) gets the three entries ``dF_m / dq_k,r``, in the order
+    of ``k`` and then of ``k``'s neighbours."""
     position = {node: k for k, node in enumerate(free)}
     rows, cols, vals = [], [], []
     zero = np.zeros_like(xf)
+    block = np.arange(3)
     for c in range(colour[free].max() + 1):
         group = np.flatnonzero(colour[free] == c)
+        pairs = np.array([(k, position[node]) for k in group for node in neighbours_of[free[k]] if node in position],
+                         dtype=np.int64).reshape(-1, 2)
+        moved, touched = pairs[:, 0], pairs[:, 1]
+        pair_rows = (3 * touched[:, None] + block).ravel()
         for r in range(3):
             dx = zero.copy()
             dx[group, r] = step
             dF = (force(xf + dx) - force(xf - dx)) / (2 * step)
-            for k in group:
-                for node in neighbours_of[free[k]]:
-                    if node in position:
-                        m = position[node]
-                        rows.extend(3 * m + np.arange(3))
-                        cols.extend([3 * k + r] * 3)
-                        vals.extend(dF[m])
-    return np.array(rows, dtype=np.int64), np.array(cols, dtype=np.int64), np.array(vals, dtype=float)
+            rows.append(pair_rows)
+            cols.append(np.repeat(3 * moved + r, 3))
+            vals.append(dF[touched].ravel())
+    if not rows:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0)
+    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals).astype(float)
 
 
 def band_solver(free, neighbours_of) -> NodeBandSolver:
@@ -146,6 +153,12 @@ class _SteadyForces:
         x, v, _, heading = s.full(t, xf, np.zeros_like(xf))
         F, M = s.loads(t, x, v, heading)
         return F[s.free_index].copy(), M[s.free_index].copy()
+
+    def force(self, t, xf):
+        """The forces alone (the coloured differences' evaluations): the mass blocks not unpacked."""
+        s = self.system
+        x, v, _, heading = s.full(t, xf, np.zeros_like(xf))
+        return s.loads(t, x, v, heading, masses=False)[0][s.free_index]
 
 
 def _newton(J, solver, F, xf, forces, length):
@@ -349,7 +362,7 @@ def _relaxed(net, case, x, velocity, friction, time, target):
     step = FD_STEP * np.min(net.el_length)
 
     def force(q):
-        return forces(0.0, q)[0]
+        return forces.force(0.0, q)
 
     relaxed = relax(force, lambda q: _jacobian_entries(force, free, q, colour, step, neighbours), x[free], target)
     x = x.copy()
@@ -473,7 +486,7 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
         if norm <= tolerance:
             break
         budget.check_time()
-        J = _jacobian_entries(lambda q: forces(0.0, q)[0], free, xf, colour, step, neighbours)
+        J = _jacobian_entries(lambda q: forces.force(0.0, q), free, xf, colour, step, neighbours)
         trials = [t for t in (_pseudo_transient(J, solver, M, F, xf, forces, length, dtau, norm),
                               _newton(J, solver, F, xf, forces, length)) if t is not None]
         trial = min(trials, key=lambda t: np.max(np.abs(t[1]))) if trials else None   # the better of the two
@@ -504,7 +517,7 @@ def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, so
     zero = np.zeros_like(xf)
 
     def taut_forces(q):
-        F = forces(0.0, q)[0]
+        F = forces.force(0.0, q)
         return F + compression_forces(net, system.full(0.0, q, zero)[0], stiffness)[free]
 
     def jacobian(q):
@@ -516,7 +529,7 @@ def _taut_phase(net, case, system, forces, xf, tolerance, colour, neighbours, so
         step = solver.solve(*jacobian(q), F.ravel())
         return None if step is None else step.reshape(-1, 3)
 
-    solved = taut_newton(lambda q: forces(0.0, q)[0], newton_step, xf, tolerance,
+    solved = taut_newton(lambda q: forces.force(0.0, q), newton_step, xf, tolerance,
                          MAX_STEP_FRACTION * np.min(net.el_length), SeabedGuard(net, case, free), taut_forces)
     if solved is None:
         return None

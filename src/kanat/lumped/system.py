@@ -38,6 +38,8 @@ from kanat.physics.waves import sea_from_model
 from kanat.vessel.track import VesselTrack
 
 YAW_RATE_STEP = 1e-4      # s, central difference of the track's heading for its yaw rate
+UNPACKED = np.array(kernels.PACKED)
+"""Columns of a packed mass block (:data:`kanat.lumped.kernels.PACKED`) in the order of the 3 x 3 block's entries."""
 
 
 class LumpedSystem:
@@ -82,12 +84,14 @@ class LumpedSystem:
         self.free_index = np.flatnonzero(net.free)
         self.node_mass = net.node_mass + net.node_added_mass
         n, m = net.n_nodes, net.n_elements
-        self._F, self._M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+        self._F, self._M, self._packed = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 6))
         self.tension, self.strain = np.zeros(m), np.zeros(m)
         self.wet = np.ones(m)
         self._uniform = env.current.profile is None and self.sea is None and env.current.ramp == 0.0
         self._u_uniform = np.broadcast_to(env.current.at(0.0), (m, 3)).copy()
         self._zero_m3 = np.zeros((m, 3))
+        self._u_loads = np.broadcast_to(env.current.at(0.0), (len(net.load_node), 3)).copy()   # read-only for the kernel
+        self._zero_loads = np.zeros((len(net.load_node), 3))
         self.eta_bound = float(np.sum(self.sea.amplitude)) if self.sea is not None else 0.0
         self.evaluations = 0
         self.el_args = net.elements()           # kanat.lumped.entries.Elements
@@ -273,15 +277,22 @@ class LumpedSystem:
         return self.wet
 
     # --- loads, mass and acceleration ------------------------------------------------------
-    def loads(self, t: float, x: np.ndarray, v: np.ndarray, heading: float):
-        """Nodal forces ``F`` (n, 3) and lumped mass blocks ``M`` (n, 3, 3), eqs. (1)-(2)."""
+    def loads(self, t: float, x: np.ndarray, v: np.ndarray, heading: float, masses: bool = True):
+        """Nodal forces ``F`` (n, 3) and lumped mass blocks ``M`` (n, 3, 3), eqs. (1)-(2); with
+        ``masses=False`` the blocks are left as they were (an output that needs only forces).
+
+        :func:`kanat.lumped.kernels.forces`'s kernel called directly: its water kinematics and
+        wetted fractions as C-ordered writable arrays, the packed blocks unpacked only when asked."""
         net = self.net
         if self._uniform:
-            uw, aw = self._u_uniform, self._zero_m3
+            uw, aw = self._u_uniform, self._zero_m3          # set up C-ordered and writable
         else:
-            uw, aw = self.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))
-        kernels.forces(x, v, uw, aw, net.node_force, self.node_mass, self.el_args, self._F, self._M,
-                       self.tension, self.strain, self.wetted(t, x))
+            uw, aw = (np.require(part, np.float64, ("C", "W")) for part in
+                      self.water(t, 0.5 * (x[net.el_i] + x[net.el_j])))
+        entries.element_forces(x, v, uw, aw, self.wetted(t, x), net.node_force, self.node_mass, self.el_args,
+                               self._F, self._packed, self.tension, self.strain)
+        if masses or net.rigid.count:                      # 6-DOF bodies read the blocks (_rigid)
+            self._M[:] = self._packed[:, UNPACKED]
         self.evaluations += 1
         if len(net.bend[1]):
             bending_forces(x, *net.bend[:4], self._F)
@@ -300,9 +311,12 @@ class LumpedSystem:
     def _body_loads(self, t, x, v, heading):
         net, F = self.net, self._F
         nodes = net.load_node
-        u, a = self.water(t, x[nodes])
-        kernels.body_loads(x, v, np.ascontiguousarray(u), np.ascontiguousarray(a), nodes, net.load_drag_area,
-                           net.load_spreading, net.node_fluid_inertia, self.rho, heading, F)
+        if self._uniform:                                   # the uniform current, as C-ordered arrays once
+            u, a = self._u_loads, self._zero_loads
+        else:
+            u, a = (np.ascontiguousarray(part) for part in self.water(t, x[nodes]))
+        kernels.body_loads(x, v, u, a, nodes, net.load_drag_area, net.load_spreading, net.node_fluid_inertia,
+                           self.rho, heading, F)
         if len(net.buoy_body):
             keel = x[net.body_node[net.buoy_body]]
             eta = self.sea.elevation(keel[:, 0], keel[:, 1], t) if self.sea is not None else 0.0

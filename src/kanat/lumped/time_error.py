@@ -39,15 +39,16 @@ compared at the steps' ends ``t_k``::
 the oracle the thresholds are measured with (the tensions at dt and dt/2), over the start only: it is
 what eq. (2) misses there. A start the step resolves reads well below :data:`WARNING` (MoorDyn's WD0050
 chain driven from rest: 0.0062 at 0.1 s, 0.0017 at its default 0.02 s); a start that rings the lines faster
-than the step follows reads above it: ``examples/lazy_wave.yaml``, whose fairlead accelerates at once
-(0.79 m/s^2 in heave from rest, no ramp), its top tension ringing from 42 to 54 kN and back within 0.2 s,
-reads 0.076 at 0.2 s, 0.075 at 0.1 s, 0.036 at its own 0.05 s and 0.014 at 0.025 s. Its cost is
+than the step follows reads above it: ``examples/lazy_wave.yaml`` with its motion's ramp taken off, whose
+fairlead accelerates at once (0.79 m/s^2 in heave from rest), its top tension ringing from 42 to 54 kN and
+back within 0.2 s, reads 0.076 at 0.2 s, 0.075 at 0.1 s, 0.036 at its own 0.05 s and 0.014 at 0.025 s; as
+shipped, its motion ramped up over 10 s, 0.0087 at 0.05 s. Its cost is
 ``3 START_STEPS`` steps once per run.
 
 All three only observe: the steps are those of the scheme, bit for bit. The run keeps their maxima
 over its steps, with where and when (:data:`SIZE` numbers, as the compiled steps keep them:
 :func:`kanat.lumped.fast_implicit.steps`), and reports them as ``time_error_*`` attributes
-(:func:`attributes`). The thresholds on eqs. (2) and (3), :data:`WARNING` and :data:`FAILURE`, are measured
+(:func:`attributes`). The thresholds, :data:`WARNING` on eqs. (2) and (3) and :data:`FAILURE` on eq. (2), are measured
 (docs/lumped.md, "Time-step error estimate"; ``tests/lumped/test_time_error.py``).
 """
 from __future__ import annotations
@@ -58,13 +59,13 @@ from kanat.lumped.fast_implicit import MOTION_FLOOR
 
 WARNING = 0.02
 """Eq. (2) or eq. (3) above which a run carries a note and a :class:`~kanat.errors.CaseWarning`. Measured (largest
-over the run, after a start's steps): resolved runs 1e-3 (``examples/lazy_wave.yaml`` at its 0.05 s) and
+over the run, after a start's steps): resolved runs 1.7e-3 (``examples/lazy_wave.yaml`` at its 0.05 s) and
 0.0094 (MoorDyn's WD0050 chain driven at its fairlead, the default 0.1 s: fairlead tension within 0.5 % of
 MoorDyn's, all tensions within 1.2 % of the largest at 0.05 s); unresolved runs 0.043 (WHOI seatex's chain in
 a 1 m wave at its 0.05 s, snap peaks 45 % of the largest tension apart at dt/2) and 0.09 (WHOI breaking's
 cable falling slack after its release, at 0.25 s; 0.12 at 0.125 s: tensions 87 % apart)."""
 FAILURE = 1.0
-"""Eq. (2) or eq. (3) above which the run fails (at the output after the step): the step's error is as large as its
+"""Eq. (2) above which the run fails (at the output after the step): the step's error is as large as its
 displacement, no motion at all. Below it the measured unresolved runs warn: 0.62 for a released 20 m wire
 falling through its own slack at 10 ms (axial period 3.6 ms; snap peaks 12 times rk4's,
 ``tests/lumped/test_lumped_snap_step.py``), 0.12 at most for WHOI breaking."""
@@ -76,8 +77,8 @@ steps still to pass over in eq. (2); eq. (3), its time [s] (NaN until the start 
 START_STEPS = 10
 """Steps after a start (the run's, or the implicit scheme's restart after explicit steps) eq. (2) passes over.
 A step from rest moves by ``O(h^2)``, not ``h v``: there eq. (2) compares the error with a displacement that
-is not the motion's, and reads the same whatever the step. Measured on ``examples/lazy_wave.yaml`` (a line at
-rest whose fairlead starts from rest at 0.79 m/s^2) at dt 0.2, 0.1 and 0.05 s: 0.25 on the first step for all three
+is not the motion's, and reads the same whatever the step. Measured on ``examples/lazy_wave.yaml`` with its
+motion's ramp taken off (a line at rest whose fairlead starts from rest at 0.79 m/s^2) at dt 0.2, 0.1 and 0.05 s: 0.25 on the first step for all three
 (``(beta - 1/6 + alpha_m/2) / beta`` for a step from rest), 0.013, 0.037 and 0.061 on the second (growing as
 the step shrinks), 0.02 or less from the third; on WD0050 0.25 on the first step at 0.1 and 0.05 s
 (``tests/lumped/test_time_error_start.py``). The run's start is judged by eq. (3)
@@ -216,12 +217,15 @@ def _stepping(estimate, h, where) -> tuple[str, str] | None:
 
 
 def _start(estimate, h) -> tuple[str, str] | None:
+    """Eq. (3)'s verdict: a warning, never a failure. The start's tensions at dt and dt/2 may differ by
+    all of the largest one (a dropped anchor's line snapping taut at 0.2 s: 1.004) while what the run
+    is for, later, is resolved (the anchor resting on the seabed on its weight,
+    tests/whoi/test_whoi_events.py); eq. (2), which judges every step, fails a run whose steps are wrong."""
     relative = float(estimate[6])                           # NaN before the check: no verdict
-    found = _kind(relative)
-    if found is None:
+    if not relative > WARNING:
         return None
-    kind, limit = found
-    return kind, (
+    limit = WARNING
+    return "warning", (
         f"the time step does not resolve the start: over the first {START_STEPS} steps the tensions at dt "
         f"{h:.4g} s and at dt/2 differ by {100 * relative:.3g} % of the largest tension at t = {estimate[7]:.6g} s "
         f"(more than {100 * limit:g} %); a start that rings the lines (a vessel motion, waves or a current "

@@ -22,6 +22,8 @@ def motion_series(motion, times) -> tuple[np.ndarray, np.ndarray]:
     if motion is None:
         return np.zeros((len(t), 6)), np.zeros((len(t), 6))
     q, v = _unramped(motion, t)
+    if motion.ramp <= 0.0:                 # r = 1, r' = 0: r q is q and r q_dot + r' q is q_dot
+        return q, v
     r, rate = ramp_series(t, motion.ramp)
     return r[:, None] * q, r[:, None] * v + rate[:, None] * q
 
