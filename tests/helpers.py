@@ -290,3 +290,34 @@ def grounded_catenary(span, rise, length, weight, stiffness):
     horizontal, suspended = fsolve(equations, [1e5, 300.0], xtol=1e-13)
     assert np.allclose(equations([horizontal, suspended]), 0.0, atol=1e-6)
     return horizontal, suspended
+
+
+def turned_mooring_buoy(degrees: float, changes: dict):
+    """``examples/mooring_3leg.yaml`` (solved by statics) with ``changes`` (seabed, body keys) and the
+    buoy's heading and its anchors turned by ``degrees`` about the vertical; a ``bodies.buoy.force``
+    in ``changes`` is turned with them. Returns the case and the turn (3, 3)."""
+    angle = math.radians(degrees)
+    turn = np.array([[math.cos(angle), -math.sin(angle), 0.0], [math.sin(angle), math.cos(angle), 0.0],
+                     [0.0, 0.0, 1.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = load_case(EXAMPLES / "mooring_3leg.yaml", solver="statics")
+    changes = {**changes, "bodies.buoy.orientation_deg": [0.0, 0.0, degrees]}
+    if "bodies.buoy.force" in changes:
+        changes["bodies.buoy.force"] = (turn @ np.asarray(changes["bodies.buoy.force"], dtype=float)).tolist()
+    for k, cable in enumerate(case.cables):
+        changes[f"cables[{k}].from"] = {"anchor": (turn @ np.asarray(cable.from_.position)).tolist()}
+    return case.replace(changes), turn
+
+
+def assert_network_jacobian_is_its_central_difference(problem, q, rtol=0.0):
+    """Network statics' Jacobian dR/dq at ``q`` (:func:`kanat.statics.network.assemble`) within
+    ``2e-5`` of its largest entry (and ``rtol``) of central differences (steps 1e-6 m, 1e-8 rad)."""
+    from kanat.statics.network import assemble
+    _, J, _, _ = assemble(problem, q)
+    fd = np.zeros_like(J)
+    for k in range(len(q)):
+        step = np.zeros(len(q))
+        step[k] = 1e-6 if k < 3 else 1e-8
+        fd[:, k] = (assemble(problem, q + step)[0] - assemble(problem, q - step)[0]) / (2 * step[k])
+    np.testing.assert_allclose(J, fd, rtol=rtol, atol=2e-5 * np.max(np.abs(fd)))

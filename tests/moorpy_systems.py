@@ -186,3 +186,21 @@ def line_end_tensions(ms, numbers):
 
 def grounded_length(ms, numbers):
     return sum(ms.lineList[n - 1].LBot for n in numbers)
+
+
+def assert_body_is_moorpys(case, result, body: str = "buoy"):
+    """Network statics' ``result`` of ``case`` against MoorPy's equilibrium of the same system (solved
+    to 1e-10): the body's position to 1e-8 m, roll, pitch and heading to 1e-9 rad, every cable's
+    fairlead tension to 1e-9 relative."""
+    import math
+
+    ms, names = moorpy_system(case)
+    solve(ms, tol=1e-10, max_iterations=5000)
+    r6 = ms.bodyList[names["bodies"][body] - 1].r6
+    attitude = result.attitudes[body]
+    np.testing.assert_allclose(result.bodies[body], r6[:3], rtol=0, atol=1e-8)
+    np.testing.assert_allclose(attitude[:2], r6[3:5], rtol=0, atol=1e-9)
+    assert abs((attitude[2] - r6[5] + math.pi) % (2 * math.pi) - math.pi) < 1e-9
+    for cable in case.cables:
+        fairlead = line_end_tensions(ms, names["lines"][cable.name])[1]
+        assert abs(result.cables[cable.name].tension[-1] / fairlead - 1.0) < 1e-9, cable.name

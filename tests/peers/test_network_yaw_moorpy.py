@@ -14,16 +14,14 @@ agree to round-off (measured: 3.5e-10 m, 2.4e-11 rad, tensions 1.3e-11).
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import pytest
 
-import kanat
 from kanat.statics import solve_statics
 
-from helpers import ROOT
-from moorpy_systems import line_end_tensions, moorpy_system, solve
+from helpers import turned_mooring_buoy
+from moorpy_systems import assert_body_is_moorpys
 
 pytest.importorskip("moorpy")
 
@@ -32,31 +30,13 @@ PUSH = np.array([1.5e5, 0.6e5, 0.0])      # N: a constant force on the buoy, off
 
 def turned_buoy(degrees: float):
     """The frictionless, pushed buoy with everything turned by ``degrees`` about the vertical."""
-    angle = math.radians(degrees)
-    turn = np.array([[math.cos(angle), -math.sin(angle), 0.0], [math.sin(angle), math.cos(angle), 0.0],
-                     [0.0, 0.0, 1.0]])
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        case = kanat.load_case(ROOT / "examples" / "mooring_3leg.yaml", solver="statics")
-    changes = {"environment.seabed.friction": 0.0, "bodies.buoy.orientation_deg": [0.0, 0.0, degrees],
-               "bodies.buoy.force": (turn @ PUSH).tolist()}
-    for k, cable in enumerate(case.cables):
-        changes[f"cables[{k}].from"] = {"anchor": (turn @ np.asarray(cable.from_.position)).tolist()}
-    return case.replace(changes)
+    return turned_mooring_buoy(degrees, {"environment.seabed.friction": 0.0, "bodies.buoy.force": PUSH})[0]
 
 
 @pytest.mark.parametrize("degrees", [0.0, 30.0, 45.0, -45.0])
 def test_a_yawed_buoy_is_moorpys(degrees):
     case = turned_buoy(degrees)
     result = solve_statics(case)
-    ms, names = moorpy_system(case)
-    solve(ms, tol=1e-10, max_iterations=5000)
-    r6 = ms.bodyList[names["bodies"]["buoy"] - 1].r6
     attitude = result.attitudes["buoy"]
     assert abs(attitude[1]) > math.radians(3.0)                    # a tilt worth the name
-    np.testing.assert_allclose(result.bodies["buoy"], r6[:3], rtol=0, atol=1e-8)
-    np.testing.assert_allclose(attitude[:2], r6[3:5], rtol=0, atol=1e-9)
-    assert (attitude[2] - r6[5] + math.pi) % (2 * math.pi) - math.pi == pytest.approx(0.0, abs=1e-9)
-    for cable in case.cables:
-        fairlead = line_end_tensions(ms, names["lines"][cable.name])[1]
-        assert result.cables[cable.name].tension[-1] == pytest.approx(fairlead, rel=1e-9)
+    assert_body_is_moorpys(case, result)

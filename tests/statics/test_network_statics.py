@@ -27,12 +27,12 @@ from kanat.model.support import unsupported
 from kanat.statics import solve_statics
 from kanat.statics.catenary import elastic_catenary
 from kanat.statics.line_solve import solve_line
-from kanat.statics.network import _continuation, _caps, _scales, assemble
+from kanat.statics.network import _caps, _continuation, _scales
 from kanat.statics.network_result import first_guess
 from kanat.statics.network_setup import fairlead_rotation, network_problem
 from kanat.statics.piecewise import Ground, LiftedLoop, Pieces, end_position, sample
 
-from helpers import DATA, ROOT
+from helpers import DATA, ROOT, assert_network_jacobian_is_its_central_difference
 
 REFERENCE = json.loads((DATA / "moorpy" / "reference.json").read_text())
 CHAIN_W, CHAIN_EA = 981.0, 5.1e8
@@ -189,14 +189,8 @@ def test_the_network_jacobian_is_its_finite_difference():
     """dR/dq of the 6-DOF platform (fairlead offsets, weight and buoyancy levers, heave spring)
     away from equilibrium, against central differences."""
     problem = network_problem(load(DATA / "moorpy" / "platform_4leg.yaml"))
-    q = np.array([12.0, -7.0, 1.5, 0.02, -0.03, 0.1])
-    R, J, _, states = assemble(problem, q)
-    fd = np.zeros_like(J)
-    for k in range(len(q)):
-        step = np.zeros(len(q))
-        step[k] = 1e-6 if k < 3 else 1e-8
-        fd[:, k] = (assemble(problem, q + step)[0] - assemble(problem, q - step)[0]) / (2 * step[k])
-    np.testing.assert_allclose(J, fd, rtol=2e-5, atol=2e-5 * np.max(np.abs(fd)))
+    assert_network_jacobian_is_its_central_difference(problem, np.array([12.0, -7.0, 1.5, 0.02, -0.03, 0.1]),
+                                                      rtol=2e-5)
 
 
 def test_the_stiffness_is_the_slope_of_the_equilibrium():

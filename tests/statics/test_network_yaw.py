@@ -17,19 +17,16 @@ that error turns with the system.
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import pytest
 
-import kanat
 from kanat.lumped.equilibrium import equilibrium
 from kanat.lumped.network import build_network
 from kanat.statics import solve_statics
-from kanat.statics.network import assemble
 from kanat.statics.network_setup import network_problem
 
-from helpers import ROOT
+from helpers import assert_network_jacobian_is_its_central_difference, turned_mooring_buoy
 
 PUSH = np.array([1.5e5, 0.6e5, 0.0])      # N: a constant force on the buoy, off the legs' axes
 
@@ -37,17 +34,7 @@ PUSH = np.array([1.5e5, 0.6e5, 0.0])      # N: a constant force on the buoy, off
 def turned_buoy(degrees: float, friction: float = 0.2):
     """examples/mooring_3leg.yaml pushed by PUSH, everything turned by ``degrees`` about the vertical,
     with the seabed's ``friction``."""
-    angle = math.radians(degrees)
-    c, s = math.cos(angle), math.sin(angle)
-    turn = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        case = kanat.load_case(ROOT / "examples" / "mooring_3leg.yaml", solver="statics")
-    changes = {"environment.seabed.friction": friction, "bodies.buoy.orientation_deg": [0.0, 0.0, degrees],
-               "bodies.buoy.force": (turn @ PUSH).tolist()}
-    for k, cable in enumerate(case.cables):
-        changes[f"cables[{k}].from"] = {"anchor": (turn @ np.asarray(cable.from_.position)).tolist()}
-    return case.replace(changes), turn
+    return turned_mooring_buoy(degrees, {"environment.seabed.friction": friction, "bodies.buoy.force": PUSH})
 
 
 @pytest.fixture(scope="module")
@@ -68,14 +55,8 @@ def test_the_network_jacobian_of_a_yawed_tilted_buoy_is_its_finite_difference(de
     yawed away from it, against central differences."""
     case, _ = turned_buoy(degrees)
     problem = network_problem(case)
-    q = np.array([6.0, -4.0, -0.3, *np.radians([7.0, -4.0, degrees + 25.0])])
-    _, J, _, _ = assemble(problem, q)
-    fd = np.zeros_like(J)
-    for k in range(len(q)):
-        step = np.zeros(len(q))
-        step[k] = 1e-6 if k < 3 else 1e-8
-        fd[:, k] = (assemble(problem, q + step)[0] - assemble(problem, q - step)[0]) / (2 * step[k])
-    np.testing.assert_allclose(J, fd, rtol=0, atol=2e-5 * np.max(np.abs(fd)))
+    assert_network_jacobian_is_its_central_difference(
+        problem, np.array([6.0, -4.0, -0.3, *np.radians([7.0, -4.0, degrees + 25.0])]))
 
 
 @pytest.mark.parametrize("degrees", [90.0, 180.0, 270.0])
