@@ -31,7 +31,7 @@ def test_a_line_wholly_under_the_water_has_nothing_above_it_and_no_note():
     s = np.linspace(0.0, 10.0, 5)
     position = np.column_stack([s, np.zeros(5), -1.0 - s])
     dry = DryLength()
-    dry.observe(s, position, None, 0.0)
+    dry.observe(s, heights(position, None, 0.0), 0.0)
     assert dry.length == 0.0 and dry.note("tow") is None
 
 

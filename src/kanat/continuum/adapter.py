@@ -33,7 +33,7 @@ from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
-from kanat.continuum.surface import DryLength, dry_buoyant_node
+from kanat.continuum.surface import DryLength, dry_buoyant_node, heights
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
@@ -308,8 +308,9 @@ class ContinuumModel:
     def _dry(self, state, values) -> str | None:
         """A buoyant node out of the water (:mod:`kanat.continuum.surface`), or None."""
         cable = self.cable_model.cable
-        self.dry.observe(self._s(state), values["position"], cable.sea, state.t)
-        dry = dry_buoyant_node(self._facts(state).rows, values["position"], cable.sea, state.t)
+        height = heights(values["position"], cable.sea, state.t)       # one elevation per output, for both
+        self.dry.observe(self._s(state), height, state.t)
+        dry = dry_buoyant_node(self._facts(state).rows, height)
         if dry is None:
             return None
         node, height = dry

@@ -60,26 +60,20 @@ def buoyant_nodes(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return nodes, diameter[nodes]
 
 
-def dry_buoyant_node(rows: np.ndarray, position: np.ndarray, sea, t: float) -> tuple[int, float] | None:
+def dry_buoyant_node(rows: np.ndarray, height: np.ndarray) -> tuple[int, float] | None:
     """The buoyant node highest out of the water, ``(node, height of its centreline above the
     surface)`` [m], or None when every buoyant node is in it (module docstring).
 
     Parameters
     ----------
     rows : ndarray, shape (n - 1, P)
-    position : ndarray, shape (n, 3)
-        Node positions [m].
-    sea : kanat.physics.waves.LinearSea or None
-        The waves (their elevation over each node), or None: the mean surface ``z = 0``.
-    t : float
-        Time [s].
+    height : ndarray, shape (n,)
+        Every node's height above the water surface [m] (:func:`heights`).
     """
     nodes, diameter = buoyant_nodes(rows)
     if not len(nodes):
         return None
-    xyz = position[nodes]
-    surface = np.zeros(len(nodes)) if sea is None else sea.elevation(xyz[:, 0], xyz[:, 1], t)
-    height = xyz[:, 2] - surface
+    height = height[nodes]
     worst = int(np.argmax(height - 0.5 * diameter))
     if height[worst] - 0.5 * diameter[worst] <= DRY_MARGIN:
         return None
@@ -112,8 +106,9 @@ class DryLength:
     def __init__(self):
         self.length, self.time = 0.0, 0.0
 
-    def observe(self, s: np.ndarray, position: np.ndarray, sea, t: float) -> None:
-        length = dry_length(s, heights(position, sea, t))
+    def observe(self, s: np.ndarray, height: np.ndarray, t: float) -> None:
+        """One output: the nodes' arclengths ``s`` and heights above the surface (:func:`heights`) at ``t``."""
+        length = dry_length(s, height)
         if length > self.length:
             self.length, self.time = length, t
 
