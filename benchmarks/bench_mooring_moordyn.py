@@ -25,7 +25,9 @@ fastest stable settings (RK2 at 6 ms; Midpoint2 at 8 ms, stable but its range fa
 ``CONFIGS``; "best MoorDyn" in the table is the fastest setting within :data:`ACCURATE` of the
 reference in both mean and range.
 
-Run: ``python benchmarks/bench_mooring_moordyn.py [--repeats 3] [--duration 600]``; prints the
+Run: ``python benchmarks/bench_mooring_moordyn.py [--repeats 3] [--duration 600] [--only CONFIG ...]``
+(``kanat-default-None`` is kanat with its default scheme, which names neither scheme nor step; CPU is
+user + system time of each process); prints the
 Markdown table kept in benchmarks/RESULTS.md (about 12 minutes); ``--scan`` prints the scan
 (about 15 minutes).
 """
@@ -33,6 +35,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import resource
 import subprocess
 import sys
 import tempfile
@@ -82,28 +85,39 @@ def kanat_case(folder: Path, scheme: str, dt: float | None, duration: float) -> 
     import yaml
 
     case = load_case(FILE)
-    sim = {"simulation.duration": duration, "simulation.output_dt": 0.5, "simulation.scheme": scheme,
-           "simulation.dt": dt}
+    sim = {"simulation.duration": duration, "simulation.output_dt": 0.5}
+    if scheme != "default":                                   # the default scheme names neither
+        sim.update({"simulation.scheme": scheme, "simulation.dt": dt})
     case = case.replace({"vessel.motion": MOTION, **sim})
     path = folder / f"kanat_{scheme}_{dt}.yaml"
     path.write_text(yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_none=True), sort_keys=False))
     return path
 
 
-def run_kanat(case_path: Path, folder: Path):
-    out = folder / (case_path.stem + ".nc")
+def timed(command: list) -> tuple[subprocess.CompletedProcess, float, float]:
+    """Run ``command``: its result, wall time and CPU time (user + system of the child) [s]."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    subprocess.run([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)],
-                   capture_output=True)
-    whole = time.perf_counter() - start
+    done = subprocess.run(command, capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return done, wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+
+
+def run_kanat(case_path: Path, folder: Path):
+    """Whole process (wall, CPU), stepping, fairlead series (or the status) and the step taken."""
+    out = folder / (case_path.stem + ".nc")
+    _, whole, cpu = timed([str(Path(sys.executable).with_name("kanat")), "run", str(case_path), "-o", str(out)])
     import xarray as xr
     with xr.open_dataset(out) as ds:
         if ds.attrs["status"] != "ok":
-            return whole, float("nan"), ds.attrs["status"]
+            return (whole, cpu), float("nan"), ds.attrs["status"], ""
         cables = ds.segment_cable.values                     # the fairlead segment's tension, as MoorDyn's
         ends = [int(np.flatnonzero(cables == name)[-1]) for name in ("line1", "line2", "line3")]
         series = np.column_stack([ds.time.values] + [ds.segment_tension.values[:, k] for k in ends])
-        return whole, float(ds.attrs["solver_time_s"]), series
+        step = (f"{float(ds.attrs['dt']):.4g} ({ds.attrs.get('scheme', '')}; "
+                f"{int(ds.attrs.get('explicit_steps', 0))} rk4 steps, {int(ds.attrs.get('step_cuts', 0))} cuts)")
+        return (whole, cpu), float(ds.attrs["solver_time_s"]), series, step
 
 
 def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
@@ -112,12 +126,11 @@ def run_moordyn(scheme: str, dt: float, duration: float, folder: Path):
     out = folder / f"moordyn_{scheme}_{dt}.npy"
     copy = folder / FILE.name                      # MoorDyn writes its outputs beside its input
     copy.write_text(FILE.read_text())
-    start = time.perf_counter()
-    done = subprocess.run([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)],
-                          check=True, capture_output=True, text=True)
-    whole = time.perf_counter() - start
+    done, whole, cpu = timed([sys.executable, str(script), str(copy), scheme, str(dt), str(duration), str(out)])
+    if done.returncode != 0:
+        raise subprocess.CalledProcessError(done.returncode, done.args, done.stdout, done.stderr)
     stepping = json.loads(done.stdout.strip().splitlines()[-1])["stepping"]
-    return whole, stepping, np.load(out)
+    return (whole, cpu), stepping, np.load(out)
 
 
 SCAN_SCHEMES = ("RK2", "RK4", "Heun", "AB3", "AB4", "Midpoint1", "Midpoint2", "Midpoint3", "BEuler2", "BEuler3",
@@ -162,7 +175,7 @@ def statistics(series: np.ndarray) -> np.ndarray:
 CONFIGS = [("MoorDyn", "RK2", 0.001), ("MoorDyn", "RK2", 0.006), ("MoorDyn", "RK4", 0.008),
            ("MoorDyn", "Midpoint2", 0.008),
            ("kanat", "generalized-alpha-lumped", 0.05), ("kanat", "generalized-alpha-lumped", 0.025),
-           ("kanat", "generalized-alpha-lumped", 0.0125), ("kanat", "rk4", None)]
+           ("kanat", "generalized-alpha-lumped", 0.0125), ("kanat", "rk4", None), ("kanat", "default", None)]
 
 
 def main() -> None:
@@ -170,44 +183,52 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--duration", type=float, default=600.0)
     parser.add_argument("--scan", action="store_true", help="find MoorDyn's largest stable step per scheme")
+    parser.add_argument("--only", nargs="+", help="configurations to run, as CODE-SCHEME-STEP (e.g. kanat-default-None, "
+                                                  "MoorDyn-RK2-0.006); the reference MoorDyn-RK2-0.001 always runs")
     args = parser.parse_args()
     WINDOW[:] = [args.duration / 2, args.duration]
     folder = Path(tempfile.mkdtemp())
     if args.scan:
         scan(folder)
         return
-    times = {c: [] for c in CONFIGS}
-    results = {}
+    configs = [c for c in CONFIGS if c == CONFIGS[0] or not args.only or f"{c[0]}-{c[1]}-{c[2]}" in args.only]
+    times = {c: [] for c in configs}
+    results, steps = {}, {}
     for _ in range(args.repeats):                                   # interleaved
-        for config in CONFIGS:
+        for config in configs:
             code, scheme, dt = config
             if code == "kanat":
-                whole, stepping, series = run_kanat(kanat_case(folder, scheme, dt, args.duration), folder)
+                (whole, cpu), stepping, series, steps[config] = run_kanat(
+                    kanat_case(folder, scheme, dt, args.duration), folder)
             else:
-                whole, stepping, series = run_moordyn(scheme, dt, args.duration, folder)
-            times[config].append((whole, stepping))
+                (whole, cpu), stepping, series = run_moordyn(scheme, dt, args.duration, folder)
+            times[config].append((whole, cpu, stepping))
             results[config] = statistics(series) if not isinstance(series, str) else series
     reference = results[CONFIGS[0]]
 
     def accurate(config) -> bool:
         return np.all(np.abs(results[config] - reference) <= ACCURATE * reference)
 
-    best_moordyn = min(np.median([w for w, _ in times[c]]) for c in CONFIGS
-                       if c[0] == "MoorDyn" and not isinstance(results[c], str) and accurate(c))
-    print("| code | scheme | step [s] | whole process [s] | stepping [s] | vs best MoorDyn (whole) | "
+    def median(config, k: int) -> float:
+        return float(np.median([row[k] for row in times[config]]))
+
+    candidates = [c for c in configs if c[0] == "MoorDyn" and not isinstance(results[c], str) and accurate(c)]
+    best = min(candidates, key=lambda c: median(c, 0))
+    print("| code | scheme | step [s] | whole process [s] | CPU [s] | stepping [s] | vs best MoorDyn (whole; CPU) | "
           "fairlead mean, max rel. diff. | range, max rel. diff. |")
-    print("|---|---|---|---|---|---|---|---|")
-    for config in CONFIGS:
-        whole = float(np.median([w for w, _ in times[config]]))
-        stepping = float(np.median([s for _, s in times[config]]))
+    print("|---|---|---|---|---|---|---|---|---|")
+    for config in configs:
+        whole, cpu, stepping = (median(config, k) for k in range(3))
         code, scheme, dt = config
         if isinstance(results[config], str):
-            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | – | – | {results[config][:90]} | |")
+            print(f"| {code} | {scheme} | {dt} | {whole:.2f} | {cpu:.2f} | – | – | {results[config][:90]} | |")
             continue
         diff = np.abs(results[config] - reference) / reference
         off = "" if code == "kanat" or accurate(config) else " (off by more than 1 %: not a candidate)"
-        print(f"| {code} | {scheme} | {dt if dt else 'safe'} | {whole:.2f} | {stepping:.2f} | "
-              f"{best_moordyn / whole:.2f}x{off} | {100 * diff[:, 0].max():.2f} % | {100 * diff[:, 1].max():.2f} % |")
+        step = steps.get(config) or (dt if dt else "safe")
+        print(f"| {code} | {scheme} | {step} | {whole:.2f} | {cpu:.2f} | {stepping:.2f} | "
+              f"{median(best, 0) / whole:.2f}x; {median(best, 1) / cpu:.2f}x{off} | "
+              f"{100 * diff[:, 0].max():.2f} % | {100 * diff[:, 1].max():.2f} % |")
     print(f"\nreference (MoorDyn RK2 1 ms) fairlead tension mean {reference[:, 0].round(0).tolist()} N, "
           f"range {reference[:, 1].round(0).tolist()} N over {WINDOW[0]:g}-{WINDOW[1]:g} s")
 

@@ -125,9 +125,9 @@ def test_spread_mooring_numbers():
     assert case.cables[1].from_.position == (-300.0, 519.615, -120.0)
     env, sim = case.environment, case.simulation
     assert (env.depth, env.seabed.stiffness, env.seabed.damping, env.gravity) == (120, 3e6, 3e5, 9.81)
-    assert (case.model, sim.duration, sim.dt, sim.output_dt) == ("lumped", 600, 0.002, 0.5)
+    assert (case.model, sim.duration, sim.dt, sim.output_dt) == ("lumped", 600, None, 0.5)   # dtM: reported
     notes = {p.key for p in result.problems}
-    assert notes == {"OPTIONS.dtIC", "OPTIONS.TmaxIC", "OUTPUTS", "BODIES 1.CG"}   # the CG: buoyancy_at stated
+    assert notes == {"OPTIONS.dtIC", "OPTIONS.TmaxIC", "OPTIONS.dtM", "OUTPUTS", "BODIES 1.CG"}   # the CG: buoyancy_at stated
     assert buoy.buoyancy_at == "cg" and buoy.buoyancy_point == buoy.center_of_gravity
 
 
@@ -263,8 +263,9 @@ def test_options_and_simulation():
     assert (env.depth, env.water_density, env.gravity) == (80, 1030, 9.80665)
     assert (seabed.stiffness, seabed.damping, seabed.friction, seabed.lateral_friction) == (2.5e6, 1e5, 0.4, 0.7)
     assert (case.model, case.simulation.duration, case.simulation.dt, case.simulation.output_dt) == (
-        "lumped", 300, 0.001, None)
+        "lumped", 300, None, None)
     messages = {p.key: p.message for p in result.problems}
+    assert "MoorDyn's step for its own scheme (0.001 s) is not imported" in messages["OPTIONS.dtM"]
     assert "solver setting" in messages["OPTIONS.tScheme"]
     assert "unknown MoorDyn option 'mystery'" in messages["OPTIONS.mystery"]
     assert all(p.severity == "warning" for p in result.problems)

@@ -53,8 +53,11 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
 * Options: ``WtrDpth`` -> ``depth`` with a ``seabed`` block (``kBot`` -> ``stiffness``,
   ``cBot`` -> ``damping``, ``FrictionCoefficient`` -> both frictions, MoorDyn-F's
   ``MU_KA``/``MU_KT`` -> ``friction``/``lateral_friction``), ``rho``/``rhoW``/``WtrDnsty``
-  -> ``water_density``, ``g``/``gravity`` -> ``gravity``, ``dtM`` -> ``dt``, ``TMax`` ->
+  -> ``water_density``, ``g``/``gravity`` -> ``gravity``, ``TMax`` ->
   ``duration`` (then ``model: lumped``, else ``model: statics``), ``dtOut`` -> ``output_dt``.
+  ``dtM`` is MoorDyn's step for its own explicit scheme: reported, not imported, so a run of the
+  file takes kanat's default scheme and step (an explicit-scale step given as ``simulation.dt``
+  made the default scheme RK4 at 1 ms: 4 force evaluations a millisecond).
   Solver settings without a kanat counterpart (``dtIC``, ``TmaxIC``, ``tScheme``, ...) are
   reported as warnings, never dropped silently; features kanat cannot express (rods,
   bathymetry files, failures) are errors.
@@ -218,7 +221,10 @@ def _simulation(reader: Reader) -> dict:
         return {}
     sim = {"duration": opts["duration"]}
     if "dt" in opts:
-        sim["dt"] = opts["dt"]
+        reader.warn(lines["dt"], "OPTIONS.dtM", f"MoorDyn's step for its own scheme ({opts['dt']:g} s) is "
+                    "not imported: kanat chooses the scheme and step of a case that names none (docs/lumped.md, "
+                    "'Default step of the implicit scheme'); give simulation.scheme and simulation.dt in a case "
+                    "file to fix them")
     if opts.get("output_dt"):
         sim["output_dt"] = opts["output_dt"]
     for key in sim:
