@@ -89,9 +89,14 @@ def test_a_chain_hung_in_still_water_hangs_to_the_seabed_and_lays_the_rest_along
     assert out["seabed_contact_length"][0] == pytest.approx(LENGTH - DEPTH + element / 2, rel=1e-9)
 
 
+RUNS = {"chain in still water": (CHAIN, 0.0), "chain in 0.3 m/s": (CHAIN, 0.3), "rope in 0.3 m/s": (ROPE, 0.3)}
+
+
 @pytest.mark.slow
-def test_the_still_chain_stays_where_it_started_and_the_run_is_ok():
-    result = api.simulate(hanging_case())
+@pytest.mark.parametrize("line, current", RUNS.values(), ids=RUNS.keys())
+def test_the_tail_stays_where_it_started_and_the_run_is_ok(line, current):
+    """The starting state is an equilibrium of the run's own equations: 2 s later nothing has moved."""
+    result = api.simulate(hanging_case(line, current=current))
     assert result.attrs["status"] == "ok"
     x = result["position"].values
     assert np.max(np.abs(x[-1] - x[0])) < 1e-3
