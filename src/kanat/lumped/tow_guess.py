@@ -78,7 +78,8 @@ def free_tails(case) -> list[tuple[str, bool]]:
 
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     """``x`` (n, 3) with every free tail's nodes placed by eq. (1), floating at eq. (2) where a buoyant
-    tail reaches the surface in a flow there, laid on the seabed where a heavy one reaches it (:func:`_laid`), or None when the case has no free tail to place (none, or only
+    tail reaches the surface in a flow there, laid on the seabed where a heavy one reaches it (:func:`_laid`),
+    or None when the case has no free tail to place (none, or only
     tails clamped at their attached end in still water). Still water is the case's current definition
     without a horizontal velocity in any row of its table (:meth:`kanat.model.environment.Current.table`)
     and no way on, wherever the nodes are. Elements are stretched by the network guess's

@@ -234,8 +234,8 @@ class Body(KanatModel):
         metacentric height, from the centre of gravity to the metacentre, holds the levers of weight
         and buoyancy along the body's vertical, whatever its value) or a ``hydrostatic_stiffness``
         with roll and pitch restoring ``C44``, ``C55`` (the one without the other, or roll-pitch terms
-        without them, are refused: :meth:`_check_tilt_terms`). Both models then turn the body by the centres' offsets across its
-        vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
+        without them, are refused: :meth:`_check_tilt_terms`). Both models then turn the body by the
+        centres' offsets across its vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
         if self.metacentric_heights is not None:
             return True
         if self.hydrostatic_stiffness is None:
