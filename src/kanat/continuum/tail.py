@@ -18,13 +18,21 @@ own section's line type: the exact steady shape of an inextensible tail of one l
 uniform flow, a close one otherwise (sections, a sheared current, stretch), which the discrete
 steady solve corrects. A still tail of one line type is exact as well: vertical, its tension the
 weight in water (or the buoyancy) of the part beyond, ``T(s) = |w| (L - s)``.
+
+A heavy tail whose guess reaches the seabed is refused (:func:`refuse_grounded_tail`): its part on the
+seabed carries no tension in still water (next to none in a current), which the continuum model's
+tension-based unknowns cannot start from (150 m of chain hung from the surface in 100 m of water
+started 28 m below the seabed, tensions of -1.3e8 N, and stopped at t = 0 saying it fell through).
+The lumped model lays such a tail on the seabed (:mod:`kanat.lumped.tow_guess`).
 """
 from __future__ import annotations
 
 import numpy as np
 
 from kanat.continuum.vessel_motion import vessel_track
+from kanat.errors import CaseError, Problem
 from kanat.physics.drag import trailing_direction
+from kanat.physics.seabed import seabed_of
 from kanat.statics import CableSolution
 
 TAIL_TENSION = 1e-6
@@ -63,6 +71,7 @@ def free_tail_guess(case, s) -> CableSolution:
         flow = np.asarray(env.current.at(float(position[i, 2])), dtype=float)[:2] - np.asarray(frame)[:2]
         direction[i], pull[i] = _trailing(weight[i], normal[i], tangential[i], flow)
         position[i + 1] = position[i] + length * direction[i]
+    refuse_grounded_tail(case, s, position)
     carried = np.concatenate([np.cumsum((pull * ds)[::-1])[::-1], [0.0]])     # eq. (2) from the tail
     tension = np.maximum(carried, TAIL_TENSION * max(carried[0], 1.0))
     tangent = np.vstack([direction, direction[-1:]])                        # a node takes the interval after it
@@ -70,6 +79,29 @@ def free_tail_guess(case, s) -> CableSolution:
     planar = not np.any(position[:, 1] != origin[1])
     return CableSolution(s, position[:, 0], position[:, 2], force[:, [0, 2]], "free-tail guess",
                          y=None if planar else position[:, 1], force_y=None if planar else force[:, 1])
+
+
+def refuse_grounded_tail(case, s, position) -> None:
+    """Refuse a free tail whose guess ``position`` (n, 3) [m] at stations ``s`` reaches the seabed (module
+    docstring).
+
+    Raises
+    ------
+    CaseError
+        On ``cables[0].to``, with the arclength at which the tail reaches the seabed and the model to use.
+    """
+    seabed = seabed_of(case.environment)
+    if seabed is None:
+        return
+    below = np.flatnonzero(seabed.penetration(position) > 0.0)
+    if not len(below):
+        return
+    reach = float(s[below[0]])
+    raise CaseError([Problem("cables[0].to", (
+        f"the free tail of cable '{case.cables[0].name}' reaches the seabed (it is below it from s = {reach:.4g} m of "
+        f"{float(s[-1]):.4g} m, hanging in the flow at t = 0): its part on the seabed carries no tension, which "
+        "the continuum model cannot start from; use model: lumped, which lays the tail on the seabed, or a "
+        "shorter tail"))])
 
 
 def _interval_loads(case, middle: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -385,8 +385,8 @@ def first_guess(net, case):
     (:func:`kanat.lumped.catenary_guess.catenary_guess`, ``"catenary"``), the network's own guess
     with its free tails trailing at the critical angle of the relative flow
     (:func:`kanat.lumped.tow_guess.free_tail_guess`, ``"free tail"``: a towed array, whose tail the
-    network's guess hangs at 45 degrees; plumb in still water; afloat where a buoyant tail reaches the
-    surface, a SolverError where it would float on still water), or None for the network's own guess ``net.x_guess``
+    network's guess hangs at 45 degrees; plumb in still water; on the seabed from where a heavy tail reaches
+    it; afloat where a buoyant tail reaches the surface, a SolverError where it would float on still water), or None for the network's own guess ``net.x_guess``
     (``"network"``).
 
     A case that the statics front door would solve as a network

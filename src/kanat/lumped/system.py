@@ -38,6 +38,7 @@ from kanat.physics.waves import sea_from_model
 from kanat.vessel.track import VesselTrack
 
 YAW_RATE_STEP = 1e-4      # s, central difference of the track's heading for its yaw rate
+ANCHOR_ON_SEABED = 1e-6   # of the depth: an anchor at most this far above the seabed lies on it (laid_lines)
 UNPACKED = np.array(kernels.PACKED)
 """Columns of a packed mass block (:data:`kanat.lumped.kernels.PACKED`) in the order of the 3 x 3 block's entries."""
 
@@ -406,11 +407,18 @@ def nowhere(n: int) -> entries.Laid:
 
 def laid_lines(net, bed) -> entries.Laid:
     """Where each cable node lay for the equilibrium's seabed friction (:mod:`kanat.physics.contact`):
-    from the cable's anchor (its first anchor end), straight along the seabed towards the other
-    end's first guess; nodes of cables without an anchor, and cable ends, get no direction."""
+    from the cable's anchor on the seabed (its first such end), straight along the seabed towards the
+    other end's first guess; nodes of cables without an anchor on the seabed, and cable ends, get no
+    direction. An anchor above the seabed (a fixed point in the water a line hangs from) lays nothing:
+    taken as the start of a line laid on the seabed, it made the equilibrium of 150 m of chain hung from
+    ``anchor:[0, 0, 0]`` in 100 m of water with friction 0.6 hold its laid part 30 m off where it fell,
+    pulled out by 25 kN of friction at the top (none belongs there: in still water the laid part carries
+    nothing)."""
     n = net.n_nodes
     ref, direction, s = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros(n)
-    anchors = set(int(a) for a in net.anchor_nodes)
+    _, depth, gradient, cosine, _ = bed
+    anchors = set(int(a) for a in net.anchor_nodes
+                  if (-depth + gradient * net.x_guess[a, 0] - net.x_guess[a, 2]) * cosine > -ANCHOR_ON_SEABED * depth)
     normal = np.array([-bed[4], 0.0, bed[3]])
     for c, name in enumerate(net.cable_names):
         rows = np.flatnonzero(net.node_cable == name)

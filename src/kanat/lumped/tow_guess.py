@@ -33,6 +33,17 @@ every element wet over the same fraction, balances as well as the flat line: the
 one, residual 3e-9 N, for examples/towed_array.yaml with the array buoyant, 2 N/m, from 30 m down).
 The guess refuses that case with the plumb top's height above the surface.
 
+A heavy tail that reaches the seabed lies on it from there (:func:`_laid`): an element that would cross
+the seabed ends on it, and the elements beyond run along it, along the horizontal relative flow at the
+seabed downstream, or, in still water, along -x: astern of the vessel's heading at the start (every
+track starts at heading 0), the way a cable paid out under way lies. In still water the laid part
+carries no tension and its direction is not determined by the physics (any horizontal direction
+balances as well); -x is kanat's documented choice, made deterministic here. Left plumb, such a tail
+starts with nodes far below the seabed: 150 m of chain hung from the surface in 100 m of water had
+its last 50 m heaped at the touchdown point after Newton's method (every slack element there is an
+equilibrium of the lumped model), and the run that followed broke off on the heap's zero-length
+elements.
+
 Without it the network's own guess leaves such a tail at 45 degrees below the tow point
 (:func:`kanat.lumped.network._guess_positions`): for ``examples/towed_array.yaml`` (300 m at 8 kn,
 a critical angle of 2.8 degrees) the tail's 190 m to go at 0.25 element per iteration takes the
@@ -47,6 +58,11 @@ import numpy as np
 from kanat.errors import SolverError
 from kanat.lumped.network import GUESS_STRETCH
 from kanat.physics.drag import trailing_direction
+from kanat.physics.seabed import seabed_of
+
+STILL_LAY = np.array([-1.0, 0.0])
+"""Horizontal direction along which a heavy tail's part on the seabed lies in still water: -x, astern of
+the vessel's starting heading (module docstring)."""
 
 
 def free_tails(case) -> list[tuple[str, bool]]:
@@ -62,7 +78,8 @@ def free_tails(case) -> list[tuple[str, bool]]:
 
 def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     """``x`` (n, 3) with every free tail's nodes placed by eq. (1), floating at eq. (2) where a buoyant
-    tail reaches the surface in a flow there, or None when the case has no free tail to place (none, or only
+    tail reaches the surface in a flow there, laid on the seabed where a heavy one reaches it (:func:`_laid`),
+    or None when the case has no free tail to place (none, or only
     tails clamped at their attached end in still water). Still water is the case's current definition
     without a horizontal velocity in any row of its table (:meth:`kanat.model.environment.Current.table`)
     and no way on, wherever the nodes are. Elements are stretched by the network guess's
@@ -91,12 +108,15 @@ def free_tail_guess(net, case, x, velocity) -> np.ndarray | None:
     if not tails:
         return None
     x = np.array(x, dtype=float)
+    seabed = seabed_of(case.environment)
     for name, reversed_ in tails:
         nodes, elements = _tail(net, name, reversed_)
         for node, after, element in zip(nodes[:-1], nodes[1:], elements):
             x[after], stranded = _next_node(net, case, element, x[node], velocity)
             if stranded:
                 raise SolverError(_still_float_message(net, name, x[nodes[0]], elements, still))
+            if seabed is not None and seabed.penetration(x[after]) > 0.0:
+                x[after] = _laid(case, seabed, x[node], x[after], velocity)
     return x
 
 
@@ -135,6 +155,22 @@ def _next_node(net, case, element, position, velocity) -> tuple[np.ndarray, bool
         return after, True
     reach = np.sqrt(max(length**2 - rise**2, 0.0))
     return position + np.array([reach * surface[0] / speed, reach * surface[1] / speed, rise]), False
+
+
+def _laid(case, seabed, position, below, velocity) -> np.ndarray:
+    """The lower node (3,) of an element from ``position`` whose end ``below`` lies under the seabed: the
+    element runs straight to the seabed (or starts on it) and the rest of its length along it, in the
+    horizontal relative flow's direction at the seabed or :data:`STILL_LAY` in still water."""
+    length = float(np.linalg.norm(below - position))
+    over = max(-float(seabed.penetration(position)), 0.0)            # the upper node's height above the bed
+    depth = float(seabed.penetration(below))
+    reached = position + (below - position) * over / (over + depth)
+    flow = _flow(case, reached, velocity)
+    speed = float(np.hypot(flow[0], flow[1]))
+    lay = flow / speed if speed > 0.0 else STILL_LAY
+    along = np.array([lay[0], lay[1], lay[0] * seabed.gradient])      # the seabed plane's tangent over ``lay``
+    rest = length - float(np.linalg.norm(reached - position))
+    return reached + rest * along / np.linalg.norm(along)
 
 
 def _still_float_message(net, name, origin, elements, still) -> str:

@@ -174,9 +174,10 @@ class Body(KanatModel):
         None, unit="N/m, N/rad, N m/rad",
         description="dof 6: hydrostatic restoring stiffness about the reference point, 6 "
                     "numbers (diagonal) or 6x6; instead of waterplane_area and "
-                    "metacentric_heights. With roll or pitch terms it holds the levers of weight and "
-                    "buoyancy along the body's axis, as metacentric heights do; without (a heave spring "
-                    "only), weight and buoyancy turn the body at their centres")
+                    "metacentric_heights. With roll and pitch restoring (C44 and C55: both or neither; "
+                    "roll-pitch terms only with them) it holds the levers of weight and buoyancy along the "
+                    "body's axis, as metacentric heights do; without (a heave spring, couplings), weight "
+                    "and buoyancy turn the body at their centres. Every other term acts as given")
     linear_damping: Matrix6 | None = quantity(
         None, unit="N s/m, N m s/rad",
         description="dof 6: linear damping on the body velocity, force -B v, 6 numbers "
@@ -232,13 +233,15 @@ class Body(KanatModel):
         """True when the body's hydrostatics restore roll or pitch: ``metacentric_heights`` (a
         metacentric height, from the centre of gravity to the metacentre, holds the levers of weight
         and buoyancy along the body's vertical, whatever its value) or a ``hydrostatic_stiffness``
-        with roll or pitch terms. Both models then turn the body by the centres' offsets across its
-        vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
+        with roll and pitch restoring ``C44``, ``C55`` (the one without the other, or roll-pitch terms
+        without them, are refused: :meth:`_check_tilt_terms`). Both models then turn the body by the
+        centres' offsets across its vertical only (:mod:`kanat.physics.hydrostatics` eq. 3); otherwise by the whole levers."""
         if self.metacentric_heights is not None:
             return True
         if self.hydrostatic_stiffness is None:
             return False
-        return any(self.hydrostatic_stiffness[i][j] != 0.0 for i in (3, 4) for j in (3, 4))
+        C = self.hydrostatic_stiffness
+        return C[3][3] != 0.0 or C[4][4] != 0.0       # both or neither (:meth:`_check_tilt_terms`)
 
     def _check_rigid(self) -> None:
         import numpy as np
@@ -264,6 +267,8 @@ class Body(KanatModel):
         if not pair[0] and self.hydrostatic_stiffness is not None:
             raise ValueError("give either waterplane_area with metacentric_heights or "
                              "hydrostatic_stiffness, not both")
+        if self.hydrostatic_stiffness is not None:
+            self._check_tilt_terms()
         if self.added_mass_matrix is not None:
             _symmetric(self.added_mass_matrix, "added_mass_matrix")
         for key in ("linear_damping", "quadratic_damping"):
@@ -271,6 +276,36 @@ class Body(KanatModel):
             if matrix is not None and min(np.diag(np.asarray(matrix))) < 0:
                 raise ValueError(f"{key} must not be negative on its diagonal (it would feed "
                                  "energy into the body)")
+
+    def _check_tilt_terms(self) -> None:
+        """Refuse a ``hydrostatic_stiffness`` whose roll-pitch block kanat cannot read without guessing.
+
+        Every term of ``C`` acts on the body (:mod:`kanat.physics.hydrostatics` eq. 1: heave-roll,
+        sway-yaw, yaw couplings alike), but one switch reads the block ``C44, C45, C54, C55``: with tilt
+        restoring there, ``C`` holds the levers of weight and buoyancy along the body's axis for roll and
+        pitch together (eq. 3, as metacentric heights do); without, weight and buoyancy turn the body at
+        their centres. A block restoring one axis only (``C44`` without ``C55`` or the reverse) would
+        leave the other with neither the matrix's restoring nor the levers'; roll-pitch terms without
+        ``C44`` and ``C55`` are no restoring of a tilt (a symmetric block with a zero diagonal has
+        ``C45 = 0`` or is indefinite) and would drop the levers all the same.
+        """
+        C = self.hydrostatic_stiffness
+        roll, pitch, cross = C[3][3], C[4][4], (C[3][4], C[4][3])
+        if (roll != 0.0) != (pitch != 0.0):
+            given, missing = ("C44 (roll)", "C55 (pitch)") if roll != 0.0 else ("C55 (pitch)", "C44 (roll)")
+            value = fmt(roll if roll != 0.0 else pitch)
+            raise ValueError(
+                f"hydrostatic_stiffness gives {given} = {value} N m/rad but {missing} = 0: with roll or pitch "
+                "restoring in the matrix kanat takes the levers of weight and buoyancy along the body's axis from "
+                f"it for both axes, so {missing.split()[0]} would have no restoring at all; give {missing.split()[0]} "
+                "too (B GM, the buoyancy times the metacentric height), or neither, and weight and buoyancy turn "
+                "the body at their centres")
+        if roll == 0.0 and any(cross):
+            raise ValueError(
+                f"hydrostatic_stiffness has roll-pitch terms (C45 = {fmt(cross[0])}, C54 = {fmt(cross[1])}) "
+                "without roll and pitch restoring (C44 = C55 = 0): kanat cannot use them (they restore no tilt, "
+                "and would take the levers of weight and buoyancy off the body); give C44 and C55 with them, "
+                "or set them to 0")
 
     @property
     def has_inertia(self) -> bool:
