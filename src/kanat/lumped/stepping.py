@@ -48,9 +48,12 @@ from kanat.physics.contact import SLIP_VELOCITY
 SAFETY = EXPLICIT_SAFETY     # margin below the stability limit (0.8)
 CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs lumped 1/2: 3x in omega^2
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
-IMPLICIT_COST = 9.0          # force evaluations of the fused RK4 path one fused Newton iteration (tangent,
-                             # band LU) is worth: 8-10 on 20-100 element lines and Bezverkhyi's network,
-                             # 3-4 on 400 (benchmarks/RESULTS.md, "lumped implicit cost")
+IMPLICIT_COST = 4.0          # force evaluations the tangent work of one implicit step is worth: its band factors
+                             # are kept over steps and rebuilt every few (fast_implicit.newton_step), each
+                             # iteration substitutes; measured (CPU per step less its force evaluations, in
+                             # evaluations of rk4 on the same case): 3.3 on the three-leg chain, 3.4 on
+                             # Bezverkhyi's trawl in waves, 7.7 on MoorDyn's WD0050 chain with seabed friction,
+                             # whose factors are rebuilt most steps (benchmarks/RESULTS.md, "default scheme's cost model")
 STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's WD0050
                              # chain driven at 9 and 12 s (friction 0.5, a chain slapping the seabed) is as accurate
                              # at 0.1 s as at 0.025 s (fairlead tension within 0.5 % of MoorDyn) but costs 5.2 s of
@@ -61,8 +64,8 @@ ACCURATE_STEPS_PER_PERIOD = 80.0   # implicit steps per period where accuracy al
                              # period there (eq. 8, period_error); in the three-leg storm (3.93 s, fitted to
                              # 0.045 s) fairlead tensions within 0.08 % in mean, 1.4 % in std, 0.3 % in maximum of
                              # rk4 at its safe step (benchmarks/RESULTS.md, "default scheme in a storm")
-IMPLICIT_ITERATIONS = 3.0    # Newton iterations per implicit step: 2.2-2.6 measured on single lines at
-                             # 0.05-0.1 s, 5.5 on Bezverkhyi's network in waves
+IMPLICIT_ITERATIONS = 3.0    # force evaluations per implicit step (Newton iterations, line search included): 2.1
+                             # on the three-leg chain at 0.022 s, 2.7 on Bezverkhyi's trawl at 0.05 s, 4.3 on WD0050
 WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
                              # it: 0.73 ms for 200 components at 156 points against 0.07 ms (the three-leg
                              # storm, benchmarks/RESULTS.md, "wave kernel"); the cost of both grows with the points
@@ -149,18 +152,19 @@ def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool 
 
         (6)  E = 1 + wave_load                                       a force evaluation
              C_rk4      = 4 E / h_rk4
-             C_implicit = IMPLICIT_ITERATIONS (E + IMPLICIT_COST) / dt
+             C_implicit = (IMPLICIT_ITERATIONS E + IMPLICIT_COST) / dt
 
-    An implicit iteration is one force evaluation (waves included) and a tangent with its band LU
-    (:data:`IMPLICIT_COST`, which reuses the evaluation's wave kinematics), so waves weigh on RK4's
-    many steps more than on the implicit scheme's few. ``wave_load`` is :func:`wave_load`.
+    An implicit step is a few force evaluations (waves included) and the tangent's work
+    (:data:`IMPLICIT_COST`: its band factors, kept over steps and rebuilt every few, and a
+    substitution per iteration; no wave kinematics), so waves weigh on RK4's many steps more than
+    on the implicit scheme's few. ``wave_load`` is :func:`wave_load`.
     """
     rk4, implicit = schemes["rk4"](), schemes["generalized-alpha-lumped"]()
     if explicit_only:
         return rk4
     evaluation = 1.0 + wave_load
     explicit_cost = rk4.evaluations_per_step * evaluation / min(info.safe_step(rk4), dt)
-    implicit_cost = IMPLICIT_ITERATIONS * (evaluation + IMPLICIT_COST) / dt
+    implicit_cost = (IMPLICIT_ITERATIONS * evaluation + IMPLICIT_COST) / dt
     return rk4 if explicit_cost <= implicit_cost else implicit
 
 
