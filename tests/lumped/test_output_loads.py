@@ -77,8 +77,9 @@ def test_the_kernel_agrees_with_its_numpy_twin(name):
     system.output_loads(0.2, x, v, heading)                  # the record made, the water and waves' wet filled
     out = system._outputs
     entries.output_loads(x, v, system.el_args, system.contact, out)      # the kernel alone: no body loads
-    keys = ("force", "mass", "tension", "strain", "line_tension", "wet") + (("normal_force",) if len(system.contact.area)
-                                                                             else ())     # no seabed: not written
+    keys = ("force", "mass", "tension", "strain", "line_tension", "wet")
+    if len(system.contact.area):                             # no seabed: not written
+        keys += ("normal_force",)
     compiled = {key: np.array(getattr(out, key)) for key in keys}
     twin = out._replace(**{key: np.full_like(value, np.nan) for key, value in compiled.items()})
     if not twin.calm:
