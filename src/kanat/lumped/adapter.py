@@ -18,6 +18,7 @@ zeros for point bodies).
 """
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -130,6 +131,10 @@ class LumpedModel:
                               f"or {stepping.steps_per_period(self.system):g} steps per period of the shortest excitation)")
             return h
         safe = info.safe_step(scheme)
+        if sim.dt is None and math.isinf(safe):
+            self.notes.append(f"{scheme.name}: no dt given and nothing moves of itself (every node prescribed); "
+                              f"stepping at the output interval {out:g} s")
+            return out
         if sim.dt is None:
             self.notes.append(f"{scheme.name}: no dt given; stepping at the safe step {safe:.3g} s")
             return stepping.fit_step(safe, out)

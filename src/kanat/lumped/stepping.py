@@ -42,6 +42,7 @@ import numpy as np
 
 from kanat.lumped import entries
 from kanat.lumped.bending import bending_frequency
+from kanat.lumped.rigid import body_rates, fairlead_mobility
 from kanat.model.limits import EXPLICIT_SAFETY
 from kanat.physics.contact import SLIP_VELOCITY
 
@@ -89,7 +90,10 @@ class StepInfo:
     element: int
 
     def safe_step(self, scheme) -> float:
-        """Eq. (5) for an explicit ``scheme`` [s]."""
+        """Eq. (5) for an explicit ``scheme`` [s]; infinite when nothing in the network oscillates (no
+        element with a moving end, no body on its own springs: every node prescribed)."""
+        if self.omega_max <= 0.0:
+            return math.inf
         return SAFETY * scheme.stability_limit / self.omega_max
 
 
@@ -109,6 +113,9 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     np.add.at(mass, net.el_j, 0.5 * net.el_mass * net.el_length)
     heavy = net.free & (mass > 0)
     inv[heavy] = 1.0 / mass[heavy]
+    rigid = net.rigid
+    if rigid.count:
+        inv[rigid.fairlead_node] = fairlead_mobility(rigid, mass)       # eq. (1b): a fairlead rides on its body
     strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
     slope = np.zeros(net.n_elements)
     for row in range(len(net.law_kind)):
@@ -127,6 +134,8 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     top = float(rate[k]) if len(rate) else 0.0
     before, node, after, k, span = net.bend
     top = max(top, bending_frequency(node, k, span, np.where(inv > 0, 1.0 / np.maximum(inv, 1e-300), 0.0)))
+    if rigid.count:
+        top = max(top, float(np.max(spectral_radius(*body_rates(rigid, mass)))))   # eq. (4b)
     if seabed is not None:
         area = net.node_contact_area * (inv > 0)
         contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)
@@ -136,8 +145,9 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
 
 
 def fit_step(h_max: float, output_dt: float) -> float:
-    """The largest step ``<= h_max`` that divides ``output_dt`` exactly."""
-    return output_dt / math.ceil(output_dt / h_max - 1e-9)
+    """The largest step ``<= h_max`` that divides ``output_dt`` exactly (``output_dt`` itself for an
+    infinite ``h_max``)."""
+    return output_dt / max(math.ceil(output_dt / h_max - 1e-9), 1)
 
 
 def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool = False,
