@@ -82,7 +82,8 @@ than this is the line at rest. Below it eq. (2) reads at most :data:`WARNING` fo
 per node, an axial strain error of 2e-7 (160 N on a chain of EA 8e8 N, 0.1 % of the pull of 100 m of it
 hanging), which no tension, position or snap of a run reads. A 150 m chain (5 m elements) at rest on the
 seabed of 100 m of water at dt 0.1 s: 0.199 with the floor at 1e-6 m alone, 0.0064 with this one. The
-unresolved runs' steps move their nodes by centimetres (:data:`WARNING`), far above it."""
+runs :data:`WARNING` and :data:`FAILURE` were measured on warn, fail or stay quiet as before
+(``tests/lumped/test_time_error.py``, ``tests/whoi/test_whoi_time_error.py``)."""
 SIZE = 9
 """The record's length: the largest eq. (1) [m], its time [s], free node; eq. (2), its time [s]; the start's
 steps still to pass over in eq. (2); eq. (3), its time [s] (NaN until the start is checked); ``d_0`` of eq. (2)
