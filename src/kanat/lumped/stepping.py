@@ -14,6 +14,13 @@ axial stiffness ``k = f'(e)/L0`` and Kelvin–Voigt rate ``c/L0``::
                                                   lie on the circle |lambda| = omega), else overdamped
     (5)  h_safe  = SAFETY * limit / max |lambda_k|
 
+A fairlead of a 6-DOF body is no prescribed node here: it moves with its body, a node of inverse mass
+``1/m_f = lambda_max(J_f M^-1 J_f^T)`` in eq. (1) (eq. 1b, :func:`kanat.lumped.rigid.fairlead_mobility`),
+and each body's own modes on its hydrostatic stiffness and linear damping compete in eq. (4) (eq. 4b,
+:func:`kanat.lumped.rigid.body_rates`): a body on a single element to an anchor, with no free line node,
+gets its step from the body (``tests/lumped/test_body_single_element.py``). A network with nothing that
+oscillates (every node prescribed) has no step limit: eq. (5) is infinite.
+
 With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` is an oscillator of
 ``omega = sqrt(k_b A_n / m_n)`` and ``sigma = c_b A_n / m_n`` (contact stiffness and damping, eq.
 4), and the regularized friction at rest adds the real rate ``mu W_n / (v_s m_n)`` for the node's
