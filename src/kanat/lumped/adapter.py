@@ -18,6 +18,7 @@ zeros for point bodies).
 """
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -32,7 +33,7 @@ from kanat.lumped.advance import HALVING, advance, time_error_estimate
 from kanat.lumped.equilibrium import relaxation_note, starting_state, starting_state_info
 from kanat.lumped.network import build_network
 from kanat.lumped.output import NodeTension
-from kanat.lumped.snap import SnapTracker
+from kanat.lumped.snap import SnapTracker, significant
 from kanat.model.run_cost import check_node_steps
 from kanat.lumped.system import LumpedSystem
 from kanat.lumped.integrators import SCHEMES, SchemeState, state_positions
@@ -130,6 +131,10 @@ class LumpedModel:
                               f"or {stepping.steps_per_period(self.system):g} steps per period of the shortest excitation)")
             return h
         safe = info.safe_step(scheme)
+        if sim.dt is None and math.isinf(safe):
+            self.notes.append(f"{scheme.name}: no dt given and nothing moves of itself (every node prescribed); "
+                              f"stepping at the output interval {out:g} s")
+            return out
         if sim.dt is None:
             self.notes.append(f"{scheme.name}: no dt given; stepping at the safe step {safe:.3g} s")
             return stepping.fit_step(safe, out)
@@ -298,8 +303,9 @@ class LumpedModel:
                 "environment.seabed.stiffness or damping, or reduce dt")
 
     def _slack_with_bending(self, elements) -> str | None:
-        """A note when elements of a line type with bending stiffness went slack (but for those at a free
-        end, which carry next to nothing anyway): they carry no compression, which the beam they model
+        """A note when elements of a line type with bending stiffness went slack and snapped taut past the
+        floor of :func:`kanat.lumped.snap.significant` (but for those at a free end, which carry next to
+        nothing anyway): they carry no compression, which the beam they model
         would (a steep jumper with EI 2e7 N m^2, driven, parts from MoorDyn's run after its sag goes
         slack: docs/lumped.md)."""
         net = self.net
@@ -314,7 +320,8 @@ class LumpedModel:
                 "freely; the line type's compression_stiffness makes its elements bars); the snap events list them")
 
     def _unresolved_snaps(self, events) -> str | None:
-        """A note when the implicit scheme stepped through snap loads at a step longer than the shortest
+        """A note when the implicit scheme stepped through snap loads (``events``, those past the floor of
+        :func:`kanat.lumped.snap.significant`) at a step longer than the shortest
         axial nodal period: an element that pulls taut rises to its peak within about a quarter of its
         axial period, so a longer step does not follow the rise and the peak is not converged in the
         step. Measured: a released 20 m wire (axial period 3.6 ms) falling through its own slack peaks
@@ -340,10 +347,11 @@ class LumpedModel:
                      "event_segment": (("event",), events["element"]),
                      "event_peak_tension": (("event",), events["peak_tension"]),
                      "event_rise_rate": (("event",), events["rise_rate"])}
-        slack_bent = self._slack_with_bending(events["element"])
+        found = significant(events, self.net.el_weight * self.net.el_length)       # snap.py eq. (1)
+        slack_bent = self._slack_with_bending(found["element"])
         if slack_bent:
             self.notes.append(slack_bent)
-        unresolved = self._unresolved_snaps(events)
+        unresolved = self._unresolved_snaps(found)
         if unresolved:
             self.notes.append(unresolved)
         explicit = _count(state.scheme, "explicit")

@@ -149,7 +149,7 @@ def time_error_estimate(system) -> np.ndarray:
     (:data:`kanat.lumped.time_error.SIZE`,; :func:`kanat.lumped.time_error.empty` before the first step),
     updated in place by the steps."""
     if getattr(system, "_time_error", None) is None:
-        system._time_error = time_error.empty()
+        system._time_error = time_error.empty(time_error.motion_floor(system.net.el_length))
     return system._time_error
 
 

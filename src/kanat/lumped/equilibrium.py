@@ -472,6 +472,8 @@ def _solve(net, case, x0, velocity, max_iterations, taut=True, friction=True, ti
     colour = distance2_colouring(net)
     neighbours = node_graph(net)
     xf = np.array((net.x_guess if x0 is None else x0)[free], dtype=float)
+    if not len(free):                                   # every node prescribed: nothing to balance
+        return _finish(net, system, xf, 0, {"taut_iterations": 0})
     tolerance = _tolerance(net, xf)
     length = np.min(net.el_length)
     step = FD_STEP * length
@@ -543,7 +545,7 @@ def _finish(net, system, xf, iterations, extra):
     system.prescribed(0.0, x, np.zeros_like(x))
     full, v, _, heading = system.full(0.0, xf, np.zeros_like(xf))
     loads, _ = system.loads(0.0, full, v, heading)
-    residual = float(np.max(np.abs(loads[system.free_index])))
+    residual = float(np.max(np.abs(loads[system.free_index]), initial=0.0))
     return x, {"iterations": iterations, "residual": residual, "loads": loads,
                "normal_force": system.normal_force.copy(), **extra}
 

@@ -37,6 +37,7 @@ FACTOR_AGE = 16             # steps after which the factors are rebuilt anyway (
 LINE_SEARCH_HALVINGS = 4    # a Newton increment that raises the residual is halved at most this often
 CARRIED_RATE_FLOOR = 0.05   # the least eta a step's first iteration takes from earlier steps (see newton_step)
 MOTION_FLOOR = 1e-6         # m per node: the least displacement of a step the time-error estimate divides by
+                            # (and the least d_0 of kanat.lumped.time_error eq. 2)
 
 
 def band_order(net, free_index) -> tuple[np.ndarray, int]:
@@ -359,7 +360,8 @@ def newton_step(t, h, scheme, x0, v0, a0, vm_pos, vm_vel, vm_head, nodes, el, bo
 def observe_error(t, factor, h, x, a, na, nx, estimate):
     """The local displacement error ``e = factor h^2 (a_n+1 - a_n)`` of each free node at ``t = t_n+1``
     (:mod:`kanat.lumped.time_error`, eq. 1): its largest norm into ``estimate[0:3]`` (value, time, free node),
-    its 2-norm over the step's displacement's, eq. (2), into ``estimate[3:5]`` (value, time)."""
+    its 2-norm over the step's displacement's or ``d_0 sqrt(n_free)`` (``d_0`` in ``estimate[8]``), eq. (2),
+    into ``estimate[3:5]`` (value, time)."""
     nf = a.shape[0]
     c = factor * h * h
     error, moved = 0.0, 0.0
@@ -372,7 +374,7 @@ def observe_error(t, factor, h, x, a, na, nx, estimate):
         error += size
         if np.sqrt(size) > estimate[0]:
             estimate[0], estimate[1], estimate[2] = np.sqrt(size), t, f
-    ratio = np.sqrt(error) / max(np.sqrt(moved), MOTION_FLOOR * np.sqrt(nf))
+    ratio = np.sqrt(error) / max(np.sqrt(moved), max(MOTION_FLOOR, estimate[8]) * np.sqrt(nf))
     if ratio > estimate[3]:
         estimate[3], estimate[4] = ratio, t
 

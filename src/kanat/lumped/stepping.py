@@ -14,6 +14,13 @@ axial stiffness ``k = f'(e)/L0`` and Kelvin–Voigt rate ``c/L0``::
                                                   lie on the circle |lambda| = omega), else overdamped
     (5)  h_safe  = SAFETY * limit / max |lambda_k|
 
+A fairlead of a 6-DOF body is no prescribed node here: it moves with its body, a node of inverse mass
+``1/m_f = lambda_max(J_f M^-1 J_f^T)`` in eq. (1) (eq. 1b, :func:`kanat.lumped.rigid.fairlead_mobility`),
+and each body's own modes on its hydrostatic stiffness and linear damping compete in eq. (4) (eq. 4b,
+:func:`kanat.lumped.rigid.body_rates`): a body on a single element to an anchor, with no free line node,
+gets its step from the body (``tests/lumped/test_body_single_element.py``). A network with nothing that
+oscillates (every node prescribed) has no step limit: eq. (5) is infinite.
+
 With seabed contact each node ``n`` of mass ``m_n`` and contact area ``A_n`` is an oscillator of
 ``omega = sqrt(k_b A_n / m_n)`` and ``sigma = c_b A_n / m_n`` (contact stiffness and damping, eq.
 4), and the regularized friction at rest adds the real rate ``mu W_n / (v_s m_n)`` for the node's
@@ -42,6 +49,7 @@ import numpy as np
 
 from kanat.lumped import entries
 from kanat.lumped.bending import bending_frequency
+from kanat.lumped.rigid import body_rates, fairlead_mobility
 from kanat.model.limits import EXPLICIT_SAFETY
 from kanat.physics.contact import SLIP_VELOCITY
 
@@ -92,7 +100,10 @@ class StepInfo:
     element: int
 
     def safe_step(self, scheme) -> float:
-        """Eq. (5) for an explicit ``scheme`` [s]."""
+        """Eq. (5) for an explicit ``scheme`` [s]; infinite when nothing in the network oscillates (no
+        element with a moving end, no body on its own springs: every node prescribed)."""
+        if self.omega_max <= 0.0:
+            return math.inf
         return SAFETY * scheme.stability_limit / self.omega_max
 
 
@@ -112,6 +123,9 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     np.add.at(mass, net.el_j, 0.5 * net.el_mass * net.el_length)
     heavy = net.free & (mass > 0)
     inv[heavy] = 1.0 / mass[heavy]
+    rigid = net.rigid
+    if rigid.count:
+        inv[rigid.fairlead_node] = fairlead_mobility(rigid, mass)       # eq. (1b): a fairlead rides on its body
     strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
     slope = np.zeros(net.n_elements)
     for row in range(len(net.law_kind)):
@@ -130,6 +144,8 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     top = float(rate[k]) if len(rate) else 0.0
     before, node, after, k, span = net.bend
     top = max(top, bending_frequency(node, k, span, np.where(inv > 0, 1.0 / np.maximum(inv, 1e-300), 0.0)))
+    if rigid.count:
+        top = max(top, float(np.max(spectral_radius(*body_rates(rigid, mass)))))   # eq. (4b)
     if seabed is not None:
         area = net.node_contact_area * (inv > 0)
         contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)
@@ -139,8 +155,9 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
 
 
 def fit_step(h_max: float, output_dt: float) -> float:
-    """The largest step ``<= h_max`` that divides ``output_dt`` exactly."""
-    return output_dt / math.ceil(output_dt / h_max - 1e-9)
+    """The largest step ``<= h_max`` that divides ``output_dt`` exactly (``output_dt`` itself for an
+    infinite ``h_max``)."""
+    return output_dt / max(math.ceil(output_dt / h_max - 1e-9), 1)
 
 
 def choose_scheme(info: StepInfo, dt: float, schemes: dict, explicit_only: bool = False,
