@@ -22,13 +22,12 @@ import kanat
 from kanat import aot
 
 CALLEE = "physics/contact.py"
-FORMULA = "    height = -bed[1] + bed[2] * x\n"
-EDITED = "    height = -bed[1] + bed[2] * x + 0.25\n"          # the seabed raised 0.25 m
+FORMULA = "    height = -bed.depth + bed.tan_slope * x\n"
+EDITED = "    height = -bed.depth + bed.tan_slope * x + 0.25\n"   # the seabed raised 0.25 m
 
 CALLER = '''
-import numpy as np
 from kanat.jit import kernel
-from kanat.physics.contact import penetration_at
+from kanat.physics.contact import Bed, penetration_at
 
 
 @kernel
@@ -36,7 +35,7 @@ def depth(x, z, bed):
     return penetration_at(x, 0.0, z, bed)[0]
 
 
-print(repr(depth(2.0, -30.0, np.array([0.0, 40.0, 0.1, 0.8, 0.6]))))
+print(repr(depth(2.0, -30.0, Bed(depth=40.0, tan_slope=0.1, cos_slope=0.8, sin_slope=0.6))))
 '''
 """A kernel in a file that never changes, calling a kanat kernel of another file (the seabed's
 penetration, kanat.physics.contact): (height - z) cos(slope), height = -depth + slope x."""
@@ -103,9 +102,9 @@ def test_the_build_and_a_run_cache_only_in_their_sources_folder(build, tmp_path)
 
 BUILD = '''
 import sys
-import numpy as np
 import kanat.aot_build
-from kanat import jit
+from kanat import aot, jit
+from kanat.physics.contact import Bed
 
 kanat.aot_build.compiler("_lumped_explicit")          # the build's process, as setup.py makes it
 from numba.pycc import CC
@@ -114,11 +113,12 @@ import caller
 cc = CC("built")
 cc.output_dir = sys.argv[1]
 cc.verbose = False
-cc.export("depth", "f8(f8, f8, f8[::1])")(kanat.aot_build._calling(jit.dispatcher_of(caller.depth), 3))
+signature = kanat.aot_build.numba_type(aot.FLOAT)(*map(kanat.aot_build.numba_type, (aot.FLOAT, aot.FLOAT, Bed)))
+cc.export("depth", signature)(kanat.aot_build._calling(jit.dispatcher_of(caller.depth), 3))
 cc.compile()
 sys.path.insert(0, sys.argv[1])
 import built
-print(repr(built.depth(2.0, -30.0, np.array([0.0, 40.0, 0.1, 0.8, 0.6]))))
+print(repr(built.depth(2.0, -30.0, Bed(depth=40.0, tan_slope=0.1, cos_slope=0.8, sin_slope=0.6))))
 '''
 """An install-time module built the way :mod:`kanat.aot_build` builds one (numba's ``pycc``, the
 entry calling numba's kernel), of the kernel of ``CALLER``."""

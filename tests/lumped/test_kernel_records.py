@@ -29,6 +29,7 @@ from kanat.lumped.integrators import GeneralizedAlphaLumped
 from kanat.lumped.network import build_network
 from kanat.lumped.snap import SnapTracker
 from kanat.lumped.system import LumpedSystem
+from kanat.physics.contact import Bed, ContactLaw
 from kanat.physics.motion import angular_velocity, rotation_matrix
 
 from helpers import EXAMPLES
@@ -36,7 +37,7 @@ from test_lumped_fast import network_case
 
 RECORDS = (entries.Nodes, entries.Elements, entries.Bodies, entries.Environment, entries.Work, entries.Snap,
            entries.Track, entries.ImplicitScheme, entries.Band, entries.Rig, entries.Contact, entries.Laid,
-           entries.Sea)
+           entries.Sea, Bed, ContactLaw)
 
 
 @pytest.fixture(scope="module")
@@ -87,10 +88,14 @@ def test_the_bodies_seabed_and_sea_are_records_of_the_version_with_both(moored):
     system, arrays, snap = moored
     rig, contact, sea = arrays.bodies.rig, arrays.bodies.contact, arrays.env.sea
     for record, kind in ((rig, entries.Rig), (contact, entries.Contact), (contact.laid, entries.Laid),
-                         (sea, entries.Sea)):
+                         (contact.seabed, Bed), (contact.law, ContactLaw), (sea, entries.Sea)):
         assert type(record) is kind and aot.matches(record, kind)
     assert rig.rigid_mass is system.net.rigid.mass6 and rig.fairlead_offset is system.net.rigid.fairlead_offset
     assert contact.area is system.net.node_contact_area and np.count_nonzero(contact.area) > 10
+    block = system.case.environment.seabed
+    assert contact.seabed.depth == 100.0 and contact.seabed.cos_slope == 1.0 and contact.seabed.sin_slope == 0.0
+    assert (contact.law.stiffness, contact.law.damping) == (block.stiffness, block.damping)
+    assert contact.law.equilibrium is False                 # a run's friction, in velocity
     np.testing.assert_array_equal(sea.amplitude, system.sea.amplitude)
     assert len(sea.amplitude) > 10 and sea.depth == 100.0
     versions = aot.ENTRIES["rk4_steps"].versions

@@ -87,20 +87,22 @@ def test_the_friction_tangent_is_the_derivative_at_the_slip():
     x = np.array([[0.0, 0.0, -100.0], [5.0, 0.0, -100.01], [10.0, 0.3, -100.0]])
     el_i, el_j = np.array([0, 1]), np.array([1, 2])
     area = np.array([0.0, 1.0, 0.0])
-    bed = contact.seabed_arrays(contact.PlaneSeabed(depth=100.0))
-    params = np.array([1e5, 0.0, 0.5, 0.3, contact.SLIP_VELOCITY, 0.0, contact.SLIP_DISPLACEMENT])
+    bed = contact.bed_of(contact.PlaneSeabed(depth=100.0))
+    law = contact.ContactLaw(stiffness=1e5, damping=0.0, friction_axial=0.5, friction_lateral=0.3,
+                             slip_velocity=contact.SLIP_VELOCITY, equilibrium=False,
+                             slip_displacement=contact.SLIP_DISPLACEMENT)
     empty = nowhere(3)                                      # no equilibrium friction (kanat.lumped.entries.Laid)
     v = np.zeros((3, 3))
     v[1] = [2.5e-3, -1.5e-3, 0.0]
 
     def force(v):
         F, N, tangent = np.zeros((3, 3)), np.zeros(3), np.zeros((3, 3))
-        contact.contact_forces(x, v, el_i, el_j, area, bed, params, empty, tangent, F, N)
+        contact.contact_forces(x, v, el_i, el_j, area, bed, law, empty, tangent, F, N)
         return F, N, tangent
 
     _, N, tangent = force(v)
     K, C = np.zeros((3, 3, 3)), np.zeros((3, 3, 3))
-    contact.contact_tangent(x, v, area, bed, params, N, tangent, K, C)
+    contact.contact_tangent(x, v, area, bed, law, N, tangent, K, C)
     step = 1e-7
     numeric = np.zeros((3, 3))
     for q in range(2):                                   # in the seabed plane (the normal's is damping)

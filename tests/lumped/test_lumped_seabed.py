@@ -23,6 +23,7 @@ from kanat.lumped.network import build_network
 from kanat.lumped.system import LumpedSystem, nowhere
 from kanat.model import Case
 from kanat.physics import contact
+from kanat.physics.seabed import seabed_of
 from kanat.statics.catenary import elastic_catenary
 
 G, RHO = 9.81, 1025.0
@@ -185,12 +186,11 @@ def test_without_a_seabed_block_the_run_rests_on_the_default_seabed():
     assert runs[0].seabed_contact_length.values[-1, 0] > 0.0
 
 
-def contact_twin(x, v, el_i, el_j, area, bed, params):
+def contact_twin(x, v, el_i, el_j, area, depth, slope_deg, kb, cb, mu_a, mu_l, vs):
     """NumPy twin of contact.contact_forces in dynamics mode (eqs. 1-4 written out afresh)."""
-    kb, cb, mu_a, mu_l, vs = params[:5]
-    angle = math.atan(bed[2])
+    angle = math.radians(slope_deg)
     nrm = np.array([-math.sin(angle), 0.0, math.cos(angle)])
-    delta = (-bed[1] + bed[2] * x[:, 0] - x[:, 2]) * math.cos(angle)
+    delta = (-depth + math.tan(angle) * x[:, 0] - x[:, 2]) * math.cos(angle)
     d = x[el_j] - x[el_i]
     unit = d / np.linalg.norm(d, axis=1)[:, None]
     tangent = np.zeros_like(x)
@@ -218,13 +218,14 @@ def test_contact_kernel_matches_its_numpy_twin():
     full = np.zeros((net.n_nodes, 3))
     full[net.node_index] = x + rng.normal(0.0, 0.01, x.shape)
     v = rng.normal(0.0, 0.01, full.shape)
-    bed = contact.seabed_arrays(__import__("kanat.physics.seabed", fromlist=["x"]).seabed_of(case.environment))
-    params = contact.contact_parameters(case.environment.seabed)
-    params[3] = 0.2                                         # lateral unlike axial
+    block = case.environment.seabed.model_copy(update={"lateral_friction": 0.2})   # lateral unlike axial
+    bed = contact.bed_of(seabed_of(case.environment))
+    law = contact.contact_law(block)
     F, N = np.zeros_like(full), np.zeros(net.n_nodes)
     empty = nowhere(net.n_nodes)                            # no equilibrium friction (kanat.lumped.entries.Laid)
-    contact.contact_forces(full, v, net.el_i, net.el_j, net.node_contact_area, bed, params, empty,
+    contact.contact_forces(full, v, net.el_i, net.el_j, net.node_contact_area, bed, law, empty,
                            np.zeros_like(full), F, N)
-    want = contact_twin(full, v, net.el_i, net.el_j, net.node_contact_area, bed, params)
+    want = contact_twin(full, v, net.el_i, net.el_j, net.node_contact_area, case.environment.depth, 12.0,
+                        block.stiffness, block.damping, 0.4, 0.2, contact.SLIP_VELOCITY)
     assert np.count_nonzero(N) > 5
     np.testing.assert_allclose(F, want, rtol=1e-12, atol=1e-9 * np.abs(want).max())

@@ -82,7 +82,7 @@ class FusedArrays:
             float_node=net.body_node[net.float_body].astype(np.int64), float_diameter=net.float_diameter.astype(float),
             float_buoyancy=net.float_buoyancy.astype(float),
             rig=system.rig if net.rigid.count else None,                          # None: pruned from the kernels
-            contact=system.contact if len(system.contact.area) else None)
+            contact=system.contact)                                               # None without a seabed
         cz, cu = system.current.table()
         ramp = float(system.current.ramp)
         still = system.sea is None and len(cz) == 1 and ramp == 0.0   # water kinematics constant in space and time

@@ -20,6 +20,7 @@ from functools import partial
 
 from kanat import aot
 from kanat.aot import B1, BOOL, F1, F2, F3, F4, FLOAT, I1, I2, INT
+from kanat.physics.contact import Bed, ContactLaw
 
 Track = aot.record(
     "Track", "kanat.lumped.entries",
@@ -89,12 +90,12 @@ Laid = aot.record(
 Contact = aot.record(
     "Contact", "kanat.lumped.entries",
     area=F1,                                # contact area A_n per node [m^2] (n,)
-    seabed=F1,                              # physics.contact.seabed_arrays: kind, depth [m], slope's tan, cos, sin
-    parameters=F1,                          # physics.contact.contact_parameters: k_b, c_b, mu_a, mu_l, v_s, mode, u_s
+    seabed=Bed,                             # the seabed's geometry (physics.contact.bed_of)
+    law=ContactLaw,                         # the contact law's parameters (physics.contact.contact_law)
     laid=Laid,                              # where each node lay (equilibrium friction)
 )
 """The seabed contact as the kernels read it (:mod:`kanat.physics.contact`, eqs. 1-4), built by
-:class:`kanat.lumped.system.LumpedSystem`."""
+:class:`kanat.lumped.system.LumpedSystem`; None in a network without a seabed."""
 Sea = aot.record(
     "Sea", "kanat.lumped.entries",
     amplitude=F1,                           # a_j [m] (n,): the components of the linear sea (waves eq. 2)
@@ -208,7 +209,7 @@ register("tensions", "kanat.lumped.kernels", (F2, F2, Elements, F1))
 register("add_body_loads", "kanat.lumped.kernels", (F2, F2, F2, F2, I1, F1, F1, F1, FLOAT, FLOAT, F2))
 register("place_fairleads", "kanat.lumped.rigid", (F2, F2, Rig))
 register("rigid_accelerations", "kanat.lumped.rigid", (F2, F2, F2, F2, F2, F2, F1, FLOAT, Rig, F3))
-register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, F1, F1, Laid, F2, F2, F1))
+register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, Bed, ContactLaw, Laid, F2, F2, F1))
 
 
 # the entry points Python code calls (``entries.element_forces(...)``; kanat.aot.EntryPoint)

@@ -278,7 +278,7 @@ def place_rigid(x, v, rig):
 def seabed_loads(x, v, el_i, el_j, contact, work):
     """Seabed contact forces into ``work.force``; nothing (and nothing compiled) when ``contact`` is None."""
     if contact is not None:
-        contact_forces(x, v, el_i, el_j, contact.area, contact.seabed, contact.parameters, contact.laid,
+        contact_forces(x, v, el_i, el_j, contact.area, contact.seabed, contact.law, contact.laid,
                        work.line_tangent, work.force, work.normal_force)
 
 

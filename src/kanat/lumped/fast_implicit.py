@@ -152,8 +152,7 @@ def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c
     """The seabed contact's blocks in the band tangent; nothing (nor compiled) when ``contact`` is None."""
     if contact is not None:
         x, v, normal_force = work.x, work.v, work.normal_force
-        contact_tangent(x, v, contact.area, contact.seabed, contact.parameters, normal_force, work.line_tangent, Kc,
-                        Cc)
+        contact_tangent(x, v, contact.area, contact.seabed, contact.law, normal_force, work.line_tangent, Kc, Cc)
         for f in range(free_index.shape[0]):
             node = free_index[f]
             if normal_force[node] > 0.0:

@@ -110,10 +110,9 @@ def jacobian_entries(system, t, x, v, c_mass, c_damp, c_stiff, M_blocks):
         node = c_mass * M_blocks[pattern.free_nodes]
     node = node + c_damp * _body_damping(system, t, x, v)[pattern.free_nodes]
     seabed = system.contact
-    if len(seabed.area):                           # seabed contact (kanat.physics.contact)
+    if seabed is not None:                         # seabed contact (kanat.physics.contact)
         Kc, Cc = np.zeros((net.n_nodes, 3, 3)), np.zeros((net.n_nodes, 3, 3))
-        contact_tangent(x, v, seabed.area, seabed.seabed, seabed.parameters, system.normal_force, system._tangent, Kc,
-                        Cc)
+        contact_tangent(x, v, seabed.area, seabed.seabed, seabed.law, system.normal_force, system._tangent, Kc, Cc)
         node = node + (c_stiff * Kc + c_damp * Cc)[pattern.free_nodes]
     rows, cols, values = pattern.entries(np.stack([diag, off, off, diag]), node)
     bend_rows, bend_cols, bend_values = _bending(system, x)

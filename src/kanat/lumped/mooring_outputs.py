@@ -92,9 +92,9 @@ def own_loads(system, t, x, v, heading, bodies) -> np.ndarray:
         immersion = np.clip(_eta(system, x[node], t) - x[node, 2], 0.0, net.buoy_height[k])
         out[node, 2] += system.rho * system.g * net.buoy_area[k] * immersion
     bearing = np.array([system.case.bodies[net.body_names[b]].seabed_area for b in bodies])
-    if np.any(bearing > 0.0):
+    if system.contact is not None and np.any(bearing > 0.0):
         seabed, contact = system.contact, np.zeros_like(out)
-        contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.parameters, seabed.laid,
+        contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.law, seabed.laid,
                        np.zeros_like(out), contact, np.zeros(net.n_nodes))
         out[nodes] += (bearing / seabed.area[nodes])[:, None] * contact[nodes]
     return out[nodes]

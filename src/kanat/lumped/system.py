@@ -104,20 +104,17 @@ class LumpedSystem:
         self._steady_vessel = None
         self._last_motion: tuple | None = None      # (t, q, q_dot) of the last single-time sample
 
-    def _contact(self, case, net) -> entries.Contact:
+    def _contact(self, case, net) -> entries.Contact | None:
         """The seabed contact :func:`kanat.physics.contact.contact_forces` takes
-        (:class:`kanat.lumped.entries.Contact`), its arrays empty without a seabed."""
+        (:class:`kanat.lumped.entries.Contact`), None without a seabed."""
         block = case.environment.seabed
         if block is None:
-            empty = np.zeros(0)
-            return entries.Contact(area=empty, seabed=empty, parameters=empty, laid=nowhere(0))
+            return None
         static = self.steady_velocity is not None
-        bed = contact.seabed_arrays(seabed_of(case.environment))
+        bed = contact.bed_of(seabed_of(case.environment))
         laid = laid_lines(net, bed) if static else nowhere(net.n_nodes)
-        params = contact.contact_parameters(block, int(static))
-        if not self.friction:
-            params[2:4] = 0.0
-        return entries.Contact(area=net.node_contact_area, seabed=bed, parameters=params, laid=laid)
+        law = contact.contact_law(block, equilibrium=static, friction=self.friction)
+        return entries.Contact(area=net.node_contact_area, seabed=bed, law=law, laid=laid)
 
     # --- prescribed motion and environment -------------------------------------------------
     def vessel_points(self, times, arms=None):
@@ -298,8 +295,8 @@ class LumpedSystem:
         if len(net.bend[1]):
             bending_forces(x, *net.bend[:4], self._F)
         seabed = self.contact
-        if len(seabed.area):
-            entries.contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.parameters, seabed.laid,
+        if seabed is not None:
+            entries.contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.law, seabed.laid,
                                    self._tangent, self._F, self.normal_force)
         if len(net.load_node):
             self._body_loads(t, x, v, heading)
@@ -416,10 +413,10 @@ def laid_lines(net, bed) -> entries.Laid:
     nothing)."""
     n = net.n_nodes
     ref, direction, s = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros(n)
-    _, depth, gradient, cosine, _ = bed
     anchors = set(int(a) for a in net.anchor_nodes
-                  if (-depth + gradient * net.x_guess[a, 0] - net.x_guess[a, 2]) * cosine > -ANCHOR_ON_SEABED * depth)
-    normal = np.array([-bed[4], 0.0, bed[3]])
+                  if (-bed.depth + bed.tan_slope * net.x_guess[a, 0] - net.x_guess[a, 2]) * bed.cos_slope
+                  > -ANCHOR_ON_SEABED * bed.depth)
+    normal = np.array([-bed.sin_slope, 0.0, bed.cos_slope])
     for c, name in enumerate(net.cable_names):
         rows = np.flatnonzero(net.node_cable == name)
         nodes = net.node_index[rows]

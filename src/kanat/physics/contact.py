@@ -32,16 +32,17 @@ line has stretched): friction along the line is ``-mu_a N tanh(u / u_s) a`` with
 node's displacement along ``a`` from where it lay, ``x_ref + s a`` (:data:`SLIP_DISPLACEMENT`
 ``= u_s``); nodes of a cable with no anchor on the seabed feel none, and none across.
 
-The seabed is passed to the kernels as an array (:func:`seabed_arrays`): kind 0 is the
-plane ``z = -depth + x tan(slope)``; a bathymetry grid is another kind with the same
-``height`` and ``normal`` role (:mod:`kanat.physics.seabed`).
+The kernels take two named records, each built in one place: the seabed's geometry, a
+:data:`Bed` (the plane ``z = -depth + x tan(slope)``, :func:`bed_of`), and the law of eqs. (1)-(4)
+with its parameters, a :data:`ContactLaw` (:func:`contact_law`); a bathymetry grid would be
+another record with the same ``height`` and ``normal`` role (:mod:`kanat.physics.seabed`).
 """
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
+from kanat import aot
+from kanat.aot import BOOL, FLOAT
 from kanat.jit import inner, kernel
 from kanat.physics.seabed import (  # noqa: F401  re-exported: v_s of eqs. (3)-(4), the penetration allowed
     PENETRATION_FLOOR, PENETRATION_MARGIN, SLIP_VELOCITY, PlaneSeabed)
@@ -49,9 +50,29 @@ from kanat.physics.seabed import (  # noqa: F401  re-exported: v_s of eqs. (3)-(
 SLIP_DISPLACEMENT = 1.0e-4  # m, u_s of the equilibrium's friction
 DAMPING_RAMP = 2.0e-4      # m, delta_r of eq. (1) (the continuum model ramps over 1 mm: kernels2d.CONTACT_RAMP)
 
+Bed = aot.record(
+    "Bed", "kanat.physics.contact",
+    depth=FLOAT,                            # the seabed's depth below the surface at x = 0 [m]
+    tan_slope=FLOAT, cos_slope=FLOAT,       # tan, cos and sin of its slope, rising towards +x
+    sin_slope=FLOAT,
+)
+"""The plane seabed ``z = -depth + x tan(slope)`` as the kernels read it (:func:`penetration_at`),
+built by :func:`bed_of`."""
+ContactLaw = aot.record(
+    "ContactLaw", "kanat.physics.contact",
+    stiffness=FLOAT, damping=FLOAT,         # k_b [Pa/m], c_b [Pa s/m] of eq. (1)
+    friction_axial=FLOAT,                   # mu_a of eq. (3), 0: none
+    friction_lateral=FLOAT,                 # mu_l of eq. (4), 0: none
+    slip_velocity=FLOAT,                    # v_s of eqs. (3)-(4) [m/s]
+    equilibrium=BOOL,                       # True: the equilibrium's friction in displacement, u_s
+    slip_displacement=FLOAT,                # u_s of the equilibrium's friction [m]
+)
+"""The contact law of eqs. (1)-(4) and its parameters as the kernels read them
+(:func:`contact_forces`, :func:`contact_tangent`), built by :func:`contact_law`."""
 
-def seabed_arrays(seabed) -> np.ndarray:
-    """The kernel form of a seabed geometry: ``[kind, depth, tan(slope), cos(slope), sin(slope)]``.
+
+def bed_of(seabed) -> Bed:
+    """The kernel form of a seabed geometry, a :data:`Bed`.
 
     Raises
     ------
@@ -60,26 +81,32 @@ def seabed_arrays(seabed) -> np.ndarray:
     """
     if isinstance(seabed, PlaneSeabed):
         angle = math.radians(seabed.slope_deg)
-        return np.array([0.0, seabed.depth, math.tan(angle), math.cos(angle), math.sin(angle)])
+        return Bed(depth=float(seabed.depth), tan_slope=math.tan(angle), cos_slope=math.cos(angle),
+                   sin_slope=math.sin(angle))
     raise TypeError(f"no contact kernel for the seabed {type(seabed).__name__}")
 
 
-def contact_parameters(seabed_block, friction_mode: int = 0) -> np.ndarray:
-    """``[k_b, c_b, mu_a, mu_l, v_s, mode, u_s]`` from ``environment.seabed`` (mode 0: dynamics,
-    1: equilibrium)."""
-    return np.array([seabed_block.stiffness, seabed_block.damping, seabed_block.friction,
-                     seabed_block.lateral_friction, SLIP_VELOCITY, float(friction_mode), SLIP_DISPLACEMENT])
+def contact_law(seabed_block, equilibrium: bool = False, friction: bool = True) -> ContactLaw:
+    """The :data:`ContactLaw` of ``environment.seabed`` (``stiffness``, ``damping``, ``friction``,
+    ``lateral_friction``): its friction in velocity (eqs. 3-4, a run) or, with ``equilibrium``, in
+    displacement (a static equilibrium); without ``friction``, none (``mu_a = mu_l = 0``)."""
+    return ContactLaw(
+        stiffness=float(seabed_block.stiffness), damping=float(seabed_block.damping),
+        friction_axial=float(seabed_block.friction) if friction else 0.0,
+        friction_lateral=float(seabed_block.lateral_friction) if friction else 0.0,
+        slip_velocity=SLIP_VELOCITY, equilibrium=bool(equilibrium), slip_displacement=SLIP_DISPLACEMENT)
 
 
 @inner
 def penetration_at(x, y, z, bed):
-    """Normal depth below the seabed (eq. 1's ``delta``; < 0 above) and the normal ``(nx, nz)``."""
-    height = -bed[1] + bed[2] * x
-    return (height - z) * bed[3], -bed[4], bed[3]
+    """Normal depth below the seabed :data:`Bed` ``bed`` (eq. 1's ``delta``; < 0 above) and the
+    normal ``(nx, nz)``."""
+    height = -bed.depth + bed.tan_slope * x
+    return (height - z) * bed.cos_slope, -bed.sin_slope, bed.cos_slope
 
 
 @kernel
-def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal_force):
+def contact_forces(x, v, el_i, el_j, area, bed, law, laid, tangent, F, normal_force):
     """Add the seabed contact forces, eqs. (1)-(4), to ``F`` (n, 3) for every node with a contact
     area; ``normal_force`` (n,) gets ``N``.
 
@@ -89,18 +116,18 @@ def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal
     el_i, el_j : ndarray of int, shape (m,)
     area : ndarray, shape (n,)
         Contact area ``A_n`` [m^2].
-    bed : ndarray
-        :func:`seabed_arrays`.
-    params : ndarray
-        :func:`contact_parameters`.
+    bed : Bed
+        The seabed (:func:`bed_of`).
+    law : ContactLaw
+        The law's parameters (:func:`contact_law`).
     laid : record of ``origin`` (n, 3), ``direction`` (n, 3), ``distance`` (n,)
         Where each node lay (equilibrium friction): ``x_ref + s a`` (origin, direction, distance);
         a zero direction: none (the lumped model's :class:`kanat.lumped.entries.Laid`).
     tangent : ndarray, shape (n, 3)
         Work array.
     """
-    kb, cb, mu_a, mu_l, vs, mode, us = params[0], params[1], params[2], params[3], params[4], params[5], \
-        params[6]
+    kb, cb, vs = law.stiffness, law.damping, law.slip_velocity
+    mu_a, mu_l = law.friction_axial, law.friction_lateral
     n = x.shape[0]
     any_contact = False
     for a in range(n):
@@ -132,7 +159,7 @@ def contact_forces(x, v, el_i, el_j, area, bed, params, laid, tangent, F, normal
         F[a, 0] += N * nx
         F[a, 2] += N * nz
         if friction and N > 0.0:
-            add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
+            add_friction(a, x, v, N, nx, nz, law, laid, tangent, F)
 
 
 @inner
@@ -149,16 +176,18 @@ def plane_tangent(a, nx, nz, tangent):
 
 
 @inner
-def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F):
-    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form)."""
+def add_friction(a, x, v, N, nx, nz, law, laid, tangent, F):
+    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form) under the
+    :data:`ContactLaw` ``law``."""
     t0, t1, t2 = plane_tangent(a, nx, nz, tangent)
-    if mode > 0.0:
+    mu_a, mu_l, vs = law.friction_axial, law.friction_lateral, law.slip_velocity
+    if law.equilibrium:
         ref, direction, s = laid.origin, laid.direction, laid.distance
         d0, d1, d2 = direction[a, 0], direction[a, 1], direction[a, 2]
         if d0 == 0.0 and d1 == 0.0 and d2 == 0.0:
             return
         u = (x[a, 0] - ref[a, 0]) * d0 + (x[a, 1] - ref[a, 1]) * d1 + (x[a, 2] - ref[a, 2]) * d2 - s[a]
-        f = mu_a * N * math.tanh(u / us)
+        f = mu_a * N * math.tanh(u / law.slip_displacement)
         F[a, 0] -= f * d0
         F[a, 1] -= f * d1
         F[a, 2] -= f * d2
@@ -176,7 +205,7 @@ def add_friction(a, x, v, N, nx, nz, mu_a, mu_l, vs, mode, us, laid, tangent, F)
 
 
 @kernel
-def contact_tangent(x, v, area, bed, params, normal_force, line_tangent, K, C):
+def contact_tangent(x, v, area, bed, law, normal_force, line_tangent, K, C):
     """Node blocks of ``-dF/dx`` (``K``) and ``-dF/dv`` (``C``) of eqs. (1)-(4), shape (n, 3, 3), at
     nodes the seabed pushes: ``max(k_b, dN/d delta) A nu nu^T`` and ``c_b r A nu nu^T``, and the
     friction's derivative in velocity at the node's own slip (``dN/dv`` and the turn of the line's
@@ -190,8 +219,10 @@ def contact_tangent(x, v, area, bed, params, normal_force, line_tangent, K, C):
     force almost independent of its speed, and the slope at rest (``mu N / v_s``, 10^2-10^4 times
     larger there) made Newton's iteration contract by only 0.6 per iteration on a chain sliding at
     3-9 mm/s (MoorDyn's WD0050 chain, friction 0.5, at the start of a driven run).
-    ``line_tangent`` holds the line's direction at each node, as :func:`contact_forces` left it."""
-    kb, cb, mu_a, mu_l, vs = params[0], params[1], params[2], params[3], params[4]
+    ``bed`` is a :data:`Bed`, ``law`` a :data:`ContactLaw`; ``line_tangent`` holds the line's
+    direction at each node, as :func:`contact_forces` left it."""
+    kb, cb, vs = law.stiffness, law.damping, law.slip_velocity
+    mu_a, mu_l = law.friction_axial, law.friction_lateral
     friction = mu_a > 0.0 or mu_l > 0.0
     for a in range(x.shape[0]):
         K[a, :, :] = 0.0
