@@ -5,7 +5,7 @@ point and is released at t = 5 s; with no tangential drag the wire falls faster 
 folds and pulls taut again and again (160 snap events in 4 s). Oracle: rk4 at 10 ms (its safe
 step is shorter: it steps at that) — the implicit scheme at 2 ms, shorter than the axial period,
 agrees with it; at 10 ms it cannot follow the snaps, and the run must say so (before the note it
-said ``ok`` with a peak 12 times rk4's). Before the Newton iteration's carried contraction rate
+said ``ok`` with a peak 12 times rk4's), warning or failing by its time-error estimate. Before the Newton iteration's carried contraction rate
 had a floor (``kanat.lumped.fast_implicit.CARRIED_RATE_FLOOR``), the 10 ms run accepted a first
 increment 1e8 times the tolerance and failed at t = 1 s after the release with an element
 stretched 1,930 %.
@@ -28,7 +28,8 @@ def runs(tmp_path_factory):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         out = {}
-        for name, keys in {"rk4": {"simulation.scheme": "rk4"}, "implicit 10 ms": {},
+        for name, keys in {"rk4": {"simulation.scheme": "rk4"},
+                           "implicit 10 ms": {"simulation.scheme": "generalized-alpha-lumped"},
                            "implicit 2 ms": {"simulation.dt": 0.002}}.items():
             result = kanat.run(case.replace(keys))
             out[name] = result.dataset if hasattr(result, "dataset") else result
@@ -45,10 +46,14 @@ def test_a_step_shorter_than_the_axial_period_follows_the_snaps(runs):
 
 
 def test_a_longer_step_through_snaps_says_its_peaks_are_not_converged(runs):
-    coarse = runs["implicit 10 ms"]
-    assert coarse.attrs["status"] == "ok"                     # every check of the model passes
-    drift = np.abs(coarse.position.values - runs["rk4"].position.values).max()
-    assert drift > 1.0                                        # and yet it is not rk4's motion
-    notes = coarse.attrs["notes"]
-    assert "snap peaks are not converged in the step" in notes
-    assert f"dt <= {coarse.attrs['axial_period']:.3g} s" in notes
+    """At 10 ms the folding wire's motion is not the same from one state at the release to another
+    a round-off away (its time-error estimate read 62 % in one and 219 % in the other): the run
+    must say, either way, that the step does not resolve the motion, and name the step that would."""
+    coarse, reference = runs["implicit 10 ms"], runs["rk4"]
+    n = min(coarse.time.size, reference.time.size)
+    drift = np.abs(coarse.position.values[:n] - reference.position.values[:n]).max()
+    assert drift > 1.0                                        # it is not rk4's motion
+    said = coarse.attrs["status"] + "; " + coarse.attrs["notes"]
+    assert "snap peaks are not converged in the step" in said
+    assert f"dt <= {coarse.attrs['axial_period']:.3g} s" in said
+    assert "the time step does not resolve the motion" in said

@@ -77,6 +77,10 @@ IMPLICIT_ITERATIONS = 3.0    # force evaluations per implicit step (Newton itera
 WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
                              # it: 0.73 ms for 200 components at 156 points against 0.07 ms (the three-leg
                              # storm, benchmarks/RESULTS.md, "wave kernel"); the cost of both grows with the points
+HEAVY_WAVES = 9.0            # the waves' share of a force evaluation (wave_load) above which the implicit step is
+                             # set by accuracy alone (ACCURATE_STEPS_PER_PERIOD): a force evaluation then costs
+                             # ten still-water ones or more, and its steps are what a run pays for (the
+                             # three-leg storm: 200 components, 10.4)
 NEGLIGIBLE_VARIANCE = 0.01   # a driving spectrum's high-frequency tail holding less than this share of its
                              # variance (rms under 10 % of the whole) does not set the implicit step (eq. 7)
 
@@ -232,10 +236,10 @@ def excitation_period(system) -> float | None:
 
 def steps_per_period(system) -> float:
     """Implicit steps per :func:`excitation_period`: :data:`STEPS_PER_PERIOD`, or
-    :data:`ACCURATE_STEPS_PER_PERIOD` where the wave kinematics outweigh the tangent
-    (:func:`wave_load` above :data:`IMPLICIT_COST`), so that an implicit iteration's cost is mostly its
-    force evaluation and fewer steps pay (benchmarks/RESULTS.md, "default scheme in a storm")."""
-    return ACCURATE_STEPS_PER_PERIOD if wave_load(system) > IMPLICIT_COST else STEPS_PER_PERIOD
+    :data:`ACCURATE_STEPS_PER_PERIOD` where the wave kinematics make each force evaluation costly
+    (:func:`wave_load` above :data:`HEAVY_WAVES`), so that fewer steps pay (benchmarks/RESULTS.md,
+    "default scheme in a storm")."""
+    return ACCURATE_STEPS_PER_PERIOD if wave_load(system) > HEAVY_WAVES else STEPS_PER_PERIOD
 
 
 def implicit_default(system, default: float) -> float:
