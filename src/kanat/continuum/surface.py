@@ -89,15 +89,19 @@ def heights(position: np.ndarray, sea, t: float) -> np.ndarray:
     return position[:, 2] - sea.elevation(position[:, 0], position[:, 1], t)
 
 
+def dry_shares(height: np.ndarray) -> np.ndarray:
+    """Eq. (1)'s ``f``: the share of each interval's chord above the surface (N,), from its nodes'
+    heights ``height`` (N + 1,) (:func:`heights`); exactly 0 for an interval with no node above it."""
+    h0, h1 = height[:-1], height[1:]
+    crossing = (h0 > 0.0) != (h1 > 0.0)
+    return np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
+                    (h0 > 0.0).astype(float))
+
+
 def dry_length(s: np.ndarray, height: np.ndarray) -> float:
     """Eq. (1): the length [m] of cable above the surface, from the nodes' arclengths ``s`` and
     heights ``height`` (:func:`heights`)."""
-    h0, h1 = height[:-1], height[1:]
-    ds = np.diff(s)
-    crossing = (h0 > 0.0) != (h1 > 0.0)
-    share = np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
-                     (h0 > 0.0).astype(float))
-    return float(np.sum(ds * share))
+    return float(np.sum(np.diff(s) * dry_shares(height)))
 
 
 class DryLength:

@@ -1,35 +1,48 @@
 """The wet share of continuum intervals crossing the water surface (SPEC §4).
 
-An interval between nodes whose centrelines stand ``h_i, h_i+1`` above the surface (the mean
-surface, or the wave elevation over each node: :func:`kanat.continuum.surface.heights`) is wet
-over the fraction ``phi`` of eq. (3) of :mod:`kanat.physics.immersion`, the lumped model's. Only
-its wet part carries buoyancy, the water's drag and added mass, and the waves' Froude–Krylov
+An interval whose nodes' centrelines stand ``h_i, h_i+1`` above the surface (the mean surface, or
+the wave elevation over each node: :func:`kanat.continuum.surface.heights`) is wet over the share of
+its chord under the surface, exact for a straight interval::
+
+    (1)  phi = 1 - f(h_i, h_i+1)        (f of eq. (1) of kanat.continuum.surface: 1, 0, or
+                                         max(h_i, h_i+1) / |h_i+1 - h_i| for a crossing interval)
+
+Only its wet part carries buoyancy, the water's drag and added mass, and the waves' Froude–Krylov
 force, so its parameter row for the step becomes::
 
-    (1)  w   = w0 + (1 - phi) rho g A,      rho g A = m g - w0      weight: in air where dry
-    (2)  m_a = phi m_a0,   C_n = phi C_n0,   C_t = phi C_t0          added mass and drag
+    (2)  w   = w0 + (1 - phi) rho g A,      rho g A = m g - w0      weight: in air where dry
+    (3)  m_a = phi m_a0,   C_n = phi C_n0,   C_t = phi C_t0          added mass and drag
 
 and the kernels' displaced mass ``m - w / g`` (the Froude–Krylov term,
-:mod:`kanat.continuum.kernels2d`) is ``phi rho A`` with it. An interval wholly under the surface
-(``phi = 1``) keeps its row untouched, bit for bit. A partly dry interval is given a section
-number of its own (negative, unlike a cable's sections): the kernels evaluate a node's load once
-for the two intervals beside it when they share a section, and the partly dry interval's nodes
-must take theirs with its own row.
+:mod:`kanat.continuum.kernels2d`) is ``phi rho A`` with it. This is the lumped model's treatment
+(:func:`kanat.lumped.kernels.wetted_fraction`), whose fraction also counts the cable's diameter; the
+chord's share leaves an interval with no node above the surface wholly wet (a tow point at ``z = 0``
+adds no dry part), and such an interval keeps its row untouched, bit for bit. A partly dry interval
+is given a section number of its own (negative, unlike a cable's sections): the kernels evaluate a
+node's load once for the two intervals beside it when they share a section, and the partly dry
+interval's nodes must take theirs with its own row (else the weight of half an interval would be
+misplaced at each crossing, a first-order error).
 
 ``phi`` is taken at the node positions at the start of the step and the wave elevation at the
 step's ``[ak]`` time, explicit in space as the water's kinematics are
 (:mod:`kanat.continuum.water`): it is a constant of the step's Newton iteration, whose Jacobian
 needs no new term, and the error it makes is of the order of the surface crossing's motion in one
 step. The steady state takes it at the previous steady pass's nodes
-(:data:`kanat.continuum.start.STEADY_PASSES`), a fixed point that the passes converge to.
+(:data:`kanat.continuum.start.STEADY_PASSES`), a fixed point that the passes converge to. A
+horizontal interval floating at the surface is wet or dry as a whole (``phi`` jumps there), so a
+buoyant line lying on the surface is left to :func:`kanat.continuum.surface.dry_buoyant_node`.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum.surface import heights
-from kanat.physics.immersion import element_fractions
+from kanat.continuum.surface import dry_shares, heights
+
+
+ROUND_OFF = 1e-8
+"""A node this little [m] above the surface is on it (a tow point at ``z = 0`` whose statics guess
+puts it 1e-14 m up keeps its cable wholly wet)."""
 
 
 def elevation_bound(sea) -> float:
@@ -39,8 +52,8 @@ def elevation_bound(sea) -> float:
 
 
 def wet_fractions(rows: np.ndarray, position: np.ndarray, sea, t: float) -> np.ndarray:
-    """The wetted fraction of every interval (eq. (3) of :mod:`kanat.physics.immersion`); 1 for a
-    junction and for an interval that cannot reach the surface.
+    """Eq. (1): the wetted fraction of every interval; 1 for a junction and for an interval that
+    cannot reach the surface.
 
     Parameters
     ----------
@@ -59,21 +72,22 @@ def wet_fractions(rows: np.ndarray, position: np.ndarray, sea, t: float) -> np.n
     position = np.asarray(position, dtype=float)
     z = position[:, -1]
     phi = np.ones(len(rows))
-    top = np.maximum(z[:-1], z[1:]) + 0.5 * rows[:, k.DIAM]
-    near = np.flatnonzero((rows[:, k.KIND] == k.CABLE) & (top > -elevation_bound(sea)))
+    top = np.maximum(z[:-1], z[1:])
+    near = np.flatnonzero((rows[:, k.KIND] == k.CABLE) & (top > ROUND_OFF - elevation_bound(sea)))
     if not len(near):
         return phi
     nodes = np.union1d(near, near + 1)
     xyz = position if position.shape[1] == 3 else np.column_stack([position[:, 0], np.zeros(len(z)), z])
-    height = np.zeros(len(z))
+    height = np.full(len(z), -1.0)
     height[nodes] = heights(xyz[nodes], sea, t)
-    phi[near] = element_fractions(height[near], height[near + 1], rows[near, k.DIAM])
+    height[(height > 0.0) & (height <= ROUND_OFF)] = 0.0
+    phi[near] = 1.0 - dry_shares(height)[near]
     return phi
 
 
 def wet_rows(P: np.ndarray, phi: np.ndarray) -> None:
-    """Eqs. (1)-(2) into the step's interval rows ``P`` (N, n_par), in place, for the intervals
-    with ``phi < 1``."""
+    """Eqs. (2)-(3) into the step's interval rows ``P`` (N, n_par), in place, for the intervals
+    with ``phi < 1`` (each then a section of its own: module docstring)."""
     dry = np.flatnonzero(phi < 1.0)
     if not len(dry):
         return
@@ -82,8 +96,6 @@ def wet_rows(P: np.ndarray, phi: np.ndarray) -> None:
     P[dry, k.W0] = P[dry, k.W0] + (1.0 - share) * displaced
     for column in (k.MA, k.CN, k.CT):
         P[dry, column] = share * P[dry, column]
-    # a node's load is shared by its two intervals within one section (rows2d._node_loads): a partly
-    # dry interval is a section of its own, so both its nodes take their loads with its own row
     P[dry, k.SECTION] = -1.0 - dry
 
 

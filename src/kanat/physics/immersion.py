@@ -12,17 +12,6 @@ of its volume (the cap volume ``pi h^2 (3a - h) / 3`` over ``4 pi a^3 / 3``, ``a
 inside and zero outside: ``f`` and ``df/dz`` are continuous, so a Newton iteration on a float
 that crosses the surface sees no jump in its Jacobian. A float's buoyancy is ``f`` times the
 weight of the water it displaces fully submerged (``net_buoyancy + mass g`` of the body).
-
-A straight cable element of diameter ``d`` between centreline heights ``h_i, h_j`` above the
-surface spans ``[low, high] = [min(h) - d/2, max(h) + d/2]``; it is wet over the share of that
-extent below the surface (the lumped model's :func:`kanat.lumped.kernels.wetted_fraction`, MoorDyn's
-VOF)::
-
-    phi = clip(-low / (high - low), 0, 1)                                          (3)
-
-continuous in the heights (a horizontal element at the surface is half wet), 1 once its top is
-under the surface, and the share of its chord under it for a slender element (``d`` small against
-``|h_j - h_i|``).
 """
 from __future__ import annotations
 
@@ -79,25 +68,3 @@ def sphere_fractions(z: np.ndarray, eta, diameter: np.ndarray) -> np.ndarray:
     """
     u = np.clip((eta - np.asarray(z, dtype=float)) / diameter + 0.5, 0.0, 1.0)
     return u * u * (3.0 - 2.0 * u)
-
-
-def element_fractions(h_i, h_j, diameter) -> np.ndarray:
-    """Eq. (3) for many cable elements at once: their wetted fractions.
-
-    Parameters
-    ----------
-    h_i, h_j : ndarray, shape (m,)
-        Heights of the elements' end centrelines above the water surface [m] (negative under it).
-    diameter : ndarray, shape (m,)
-        [m], >= 0.
-
-    Returns
-    -------
-    ndarray, shape (m,)
-        In ``[0, 1]``; exactly 1 for an element wholly under the surface.
-    """
-    h_i, h_j = np.asarray(h_i, dtype=float), np.asarray(h_j, dtype=float)
-    low = np.minimum(h_i, h_j) - 0.5 * np.asarray(diameter)
-    high = np.maximum(h_i, h_j) + 0.5 * np.asarray(diameter)
-    span = np.maximum(high - low, 1e-300)
-    return np.where(high <= 0.0, 1.0, np.clip(-low / span, 0.0, 1.0))
