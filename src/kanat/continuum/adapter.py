@@ -315,8 +315,8 @@ class ContinuumModel:
             return None
         node, height = dry
         return (f"node {node} of cable '{cable.name}' (s = {self._s(state)[node]:.4g} m), on its buoyant part, is "
-                f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model keeps the whole "
-                "line submerged, so buoyancy it no longer has pushes it up without limit; put the tow point deeper "
+                f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model cannot float "
+                "a line on the surface (an interval along it is wet or dry as a whole); put the tow point deeper "
                 "or shorten the buoyant part so that it stays under water")
 
     def _finite(self, state, values) -> str | None:
