@@ -157,4 +157,4 @@ def test_a_speed_step_from_above_the_water_runs_alike_in_the_planar_and_spatial_
         assert int(ds["newton_iterations"].max()) <= 4
         runs.append(ds["tension"].values[:, 0])
     np.testing.assert_allclose(runs[1], runs[0], rtol=1e-9)
-    assert runs[0][-1] > 1.5 * runs[0][0]                  # the step did happen (drag at 10 kn)
+    assert np.max(runs[0]) > 1.5 * runs[0][0]              # the step did happen (drag at 10 kn)
