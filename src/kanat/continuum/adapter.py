@@ -19,7 +19,7 @@ control both models share) before the run stops with a message saying where and 
 * seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
   penetration ``w / (k_b d)`` below the seabed (a node falling through it);
 * surface: no node of a buoyant interval wholly out of the water (:mod:`kanat.continuum.surface`:
-  the model keeps its line submerged, so such a node has lost a buoyancy the model still applies).
+  the model cannot float a line on the surface, so such a node stands in a column out of the sea).
 """
 from __future__ import annotations
 
