@@ -100,12 +100,10 @@ def top_tension(case) -> float:
     return float(ds["tension"].values[0, 0])                   # t = 0: the continuum steady state
 
 
-@pytest.mark.slow
 def test_a_line_hanging_from_above_the_water_converges_to_its_two_part_catenary_at_second_order():
     """Measured: relative errors 2.76e-4, 6.96e-5, 1.69e-5 (30, 60, 120 segments; orders 1.99, 2.04;
     4.38e-6 at 240). With the dry part wet (its 22.5 m weighing 8.89 N/m, not 10.99) the top tension
-    was 1.15 % light at 30 segments and 1.18 % at 120, converging to that offset. About 8 s: the
-    anchored steady state runs Newton on the dense system."""
+    was 1.15 % light at 30 segments and 1.18 % at 120, converging to that offset."""
     exact = exact_top_tension()
     errors = [abs(top_tension(hanging_case(n)) / exact - 1.0) for n in (30, 60, 120)]
     orders = np.log2(np.array(errors[:-1]) / errors[1:])
@@ -129,7 +127,6 @@ def tow_tension(model: str, segments: int) -> float:
     return top_tension(kanat.load_case(EXAMPLES / "speed_step_2d.yaml").replace(changes))
 
 
-@pytest.mark.slow
 def test_a_tow_from_above_the_water_converges_to_the_lumped_model_at_second_order():
     """Measured against the lumped model at 960 elements (12081.614 N): relative differences 8.6e-4,
     2.3e-4, 6.0e-5, 1.4e-5 at 30, 60, 120, 240 segments (orders 1.89, 1.95, 2.08); with the dry part
