@@ -23,6 +23,9 @@ node's load once for the two intervals beside it when they share a section, and 
 interval's nodes must take theirs with its own row (else the weight of half an interval would be
 misplaced at each crossing, a first-order error).
 
+It applies to a cable whose water ends at its surface (``cable.water_surface``: every cable of a
+case), not to the idealized cables of :mod:`kanat.validation` in unbounded water.
+
 ``phi`` is taken at the node positions at the start of the step and the wave elevation at the
 step's ``[ak]`` time, explicit in space as the water's kinematics are
 (:mod:`kanat.continuum.water`): it is a constant of the step's Newton iteration, whose Jacobian
