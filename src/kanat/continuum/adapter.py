@@ -19,7 +19,7 @@ control both models share) before the run stops with a message saying where and 
 * seabed: no node more than :data:`PENETRATION_FACTOR` times the contact model's static
   penetration ``w / (k_b d)`` below the seabed (a node falling through it);
 * surface: no node of a buoyant interval wholly out of the water (:mod:`kanat.continuum.surface`:
-  the model keeps its line submerged, so such a node has lost a buoyancy the model still applies).
+  the model cannot float a line on the surface, so such a node stands in a column out of the sea).
 """
 from __future__ import annotations
 
@@ -315,8 +315,8 @@ class ContinuumModel:
             return None
         node, height = dry
         return (f"node {node} of cable '{cable.name}' (s = {self._s(state)[node]:.4g} m), on its buoyant part, is "
-                f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model keeps the whole "
-                "line submerged, so buoyancy it no longer has pushes it up without limit; put the tow point deeper "
+                f"{height:.6g} m above the water surface at t = {state.t:.6g} s: the continuum model cannot float "
+                "a line on the surface (an interval along it is wet or dry as a whole); put the tow point deeper "
                 "or shorten the buoyant part so that it stays under water")
 
     def _finite(self, state, values) -> str | None:

@@ -148,6 +148,10 @@ class PlanarCable(CableGrid):
         Pay-out and haul-in at the first end (:mod:`kanat.continuum.winch`).
     current_ramp : float
         The current's start-up ramp [s] (``environment.current.ramp``; 0: none).
+    water_surface : bool
+        True: the water ends at its surface (``z = 0``, or the waves' elevation), and the part of
+        the cable above it is dry (:mod:`kanat.continuum.wetted`), as for every cable of a case;
+        False: the water is unbounded (the idealized cables of :mod:`kanat.validation`).
     """
 
     name: str
@@ -163,6 +167,7 @@ class PlanarCable(CableGrid):
     seabed: SeabedContact | None = None
     winch: object = None
     current_ramp: float = 0.0
+    water_surface: bool = False
 
 
 def strain_of(tension, params) -> np.ndarray:
@@ -212,7 +217,8 @@ def planar_cable(case, check_plane: bool = True) -> PlanarCable:
                                  "vessel or an anchor")])
     plain = grid.uniform and not grid.bending and seabed is None and winch is None
     return PlanarCable(cable.name, cable.length, cable.segments, first, start, end, z, rows[:, [0, 2]],
-                       None if plain else grid, sea_from_model(env), seabed, winch, env.current.ramp)
+                       None if plain else grid, sea_from_model(env), seabed, winch, env.current.ramp,
+                       water_surface=True)
 
 
 SLACK_FLOOR = 0.01

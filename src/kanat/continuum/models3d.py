@@ -154,6 +154,7 @@ def spatial_cable(case) -> SpatialCable:
     plain = grid.uniform and not grid.bending and planar.seabed is None and planar.winch is None
     return SpatialCable(cable.name, cable.length, cable.segments, planar.params,
                         end(cable.from_, "cables[0].from", True), end(cable.to, "cables[0].to", False), z, rows,
-                        None if plain else grid, planar.sea, planar.seabed, planar.winch, planar.current_ramp)
+                        None if plain else grid, planar.sea, planar.seabed, planar.winch, planar.current_ramp,
+                        water_surface=planar.water_surface)
 
 

@@ -18,6 +18,7 @@ from kanat.continuum.grid import Grid, SeabedContact
 from kanat.continuum.model2d import CableGrid, interval_stretch, strain_of
 from kanat.continuum.stepper import MAX_ITERATIONS, NewtonFailure, converged, near_seabed, solve_band, step_rows
 from kanat.continuum.water import elevation, float_elevations, has_floats, kinematics_time, predictor_weight
+from kanat.continuum.wetted import wet_step_rows
 
 UP = np.array([0.0, 0.0, 1.0])
 
@@ -71,6 +72,7 @@ class SpatialCable(CableGrid):
     seabed: SeabedContact | None = None
     winch: object = None
     current_ramp: float = 0.0
+    water_surface: bool = False
 
     @property
     def nv(self) -> int:
@@ -241,6 +243,8 @@ def step3(cable: SpatialCable, state: SpatialState, dt: float, coefficients, dri
     payout = winch.rate(state.t + dt) if winch else 0.0
     eta = elevation(cable.sea, state.xyz[-1, :2], kinematics_time(state.t, dt, coefficients))
     float_elevations(cable.sea, P, state.xyz[:, :2], kinematics_time(state.t, dt, coefficients))
+    if cable.water_surface:
+        wet_step_rows(P, state.xyz, cable.sea, kinematics_time(state.t, dt, coefficients))
     b0 = cable.start.array(v0, chart, rho, payout=payout)
     b1 = cable.end.array(v1, chart, rho, eta=eta)
     x, iterations = _solve(cable, y + dt * rate, step_data(cable, y, rate, env, chart.T @ UP, P, b0, b1))
@@ -260,6 +264,8 @@ def steady3(cable: SpatialCable, guess: np.ndarray, chart: np.ndarray, velocitie
     rows = cable.rows()
     P = chart_rows(step_rows(rows, (0.0, 0.0, 1.0), 1.0, inertia=0.0), cable, chart)
     P[:, k.PRED] = 0.0
+    if cable.water_surface:
+        wet_step_rows(P, xyz, None, 0.0)                 # the mean surface, at the previous pass's nodes
     rho = P[0, k.RHO]
     v0, v1 = velocities
     b0, b1 = cable.start.array(v0, chart, rho), cable.end.array(v1, chart, rho)

@@ -17,6 +17,7 @@ from kanat.continuum.model2d import PlanarCable, positions
 from kanat.continuum.newton import MAX_ITERATIONS, TOLERANCE, NewtonFailure
 from kanat.continuum.steady import steady_with_positions
 from kanat.continuum.water import elevation, float_elevations, has_floats, kinematics_time, planar_water
+from kanat.continuum.wetted import wet_step_rows
 
 MAX_CUTS = 4             # a failed step is retried as 2, 4, 8, 16 substeps
 
@@ -185,6 +186,8 @@ def step(cable: PlanarCable, state: State, dt: float, coefficients, drive, own_r
     if cable.sea is not None:
         float_elevations(cable.sea, P, np.column_stack([state.xz[:, 0], np.zeros(len(state.xz))]),
                          kinematics_time(state.t, dt, coefficients))
+    if cable.water_surface:
+        wet_step_rows(P, state.xz, cable.sea, kinematics_time(state.t, dt, coefficients))
     b0, b1 = cable.start.array(v0, rho, payout=payout), cable.end.array(v1, rho, eta=eta)
     x, iterations = solve(cable, state.y + dt * state.rate, step_data(cable, state.y, state.rate, env, P, b0, b1))
     gamma = coefficients[2]
@@ -205,6 +208,8 @@ def steady(cable: PlanarCable, guess: np.ndarray, velocities, xz) -> np.ndarray:
     rows = cable.rows()
     P = step_rows(rows, (0.0, 0.0, 1.0), 1.0, inertia=0.0)
     P[:, k.PRED] = 0.0
+    if cable.water_surface:
+        wet_step_rows(P, xz, None, 0.0)                  # the mean surface, at the previous pass's nodes
     v0, v1 = velocities
     rho = P[0, k.RHO]
     b0, b1 = cable.start.array(v0, rho), cable.end.array(v1, rho)

@@ -1,22 +1,23 @@
-"""The check that a buoyant part of a continuum cable stays in the water, and the note on a heavy
-part above it.
+"""The check that a buoyant part of a continuum cable stays in the water, and the note on a part
+above it.
 
-The continuum model keeps its whole cable submerged: every interval carries its weight in water
-``w`` wherever it is (theory/continuum.md §1). Out of the water a heavy line is then a little too
-light, but a buoyant one (``w < 0``) is pushed up by a buoyancy it no longer has, with nothing to
-stop it: a buoyant free tail towed from too shallow a tow point stands straight up out of the sea
-in its steady state (270 m above it for ``examples/towed_array.yaml`` with the array's weight in
-water reversed, the tow point 30 m deep and the vessel still). A node of a buoyant interval whose
+An interval crossing the water surface carries its buoyancy, drag and added mass on the share of
+its chord under it only (:mod:`kanat.continuum.wetted`, eq. (1) below for the share above), as the
+lumped model's elements do (:mod:`kanat.lumped.kernels`). A buoyant line out of the water then has
+no buoyancy left to lift it, but the model cannot float it either: a line lying along the surface
+has intervals that are wholly wet or wholly dry as a whole, with no equilibrium in between, and a
+still buoyant free tail too long for its tow depth stands straight up out of the sea as a column in
+compression (268.9 m above it for ``examples/towed_array.yaml`` with the array's weight in water
+reversed, the tow point 30 m deep and the vessel still). A node of a buoyant interval whose
 centreline is more than half a diameter above the water surface (the mean surface, or the wave
-elevation over the node) is wholly dry, and fails the run; a deeper tow point or a shorter
-buoyant part keeps it in the water. (The lumped model's elements crossing the surface are partly
-dry, :mod:`kanat.lumped.kernels`.)
+elevation over the node) is wholly dry, and fails the run; a deeper tow point or a shorter buoyant
+part keeps it in the water.
 
 A heavy part above the water (a tow point on deck, a stern heaving out of the sea) is not
-refused: it hangs as it would, only with its weight in water for its weight in air and the
-water's drag and added mass on it. :class:`DryLength` keeps the largest length of cable whose
-centreline is above the surface over a run, for the run's note (interval by interval, the part
-of each interval above the surface by linear interpolation of its ends' heights)::
+refused: it hangs with its weight in air and without the water's drag and added mass.
+:class:`DryLength` keeps the largest length of cable whose centreline is above the surface over a
+run, for the run's note (interval by interval, the part of each interval above the surface by
+linear interpolation of its ends' heights)::
 
     (1)  L_dry = sum_i  ds_i * f(h_i, h_i+1),   f = 1 both ends above, 0 both below,
                                                  max(h_i, h_i+1) / |h_i+1 - h_i| crossing
@@ -89,15 +90,19 @@ def heights(position: np.ndarray, sea, t: float) -> np.ndarray:
     return position[:, 2] - sea.elevation(position[:, 0], position[:, 1], t)
 
 
+def dry_shares(height: np.ndarray) -> np.ndarray:
+    """Eq. (1)'s ``f``: the share of each interval's chord above the surface (N,), from its nodes'
+    heights ``height`` (N + 1,) (:func:`heights`); exactly 0 for an interval with no node above it."""
+    h0, h1 = height[:-1], height[1:]
+    crossing = (h0 > 0.0) != (h1 > 0.0)
+    return np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
+                    (h0 > 0.0).astype(float))
+
+
 def dry_length(s: np.ndarray, height: np.ndarray) -> float:
     """Eq. (1): the length [m] of cable above the surface, from the nodes' arclengths ``s`` and
     heights ``height`` (:func:`heights`)."""
-    h0, h1 = height[:-1], height[1:]
-    ds = np.diff(s)
-    crossing = (h0 > 0.0) != (h1 > 0.0)
-    share = np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
-                     (h0 > 0.0).astype(float))
-    return float(np.sum(ds * share))
+    return float(np.sum(np.diff(s) * dry_shares(height)))
 
 
 class DryLength:
@@ -117,5 +122,4 @@ class DryLength:
         if self.length <= 0.0:
             return None
         return (f"up to {self.length:.4g} m of cable '{cable}' was above the water surface (at t = "
-                f"{self.time:.6g} s); the continuum model keeps its weight in water and the water's drag and "
-                "added mass on it (the lumped model treats the part above the surface as dry)")
+                f"{self.time:.6g} s); it weighed its weight in air there, without the water's drag and added mass")
