@@ -58,7 +58,9 @@ label ``code-scheme-step`` starts with one of those, so that several processes c
 ``--window END`` takes the statistics from ``--transient`` to ``END`` s only and, for a configuration
 with no kept run of ``--duration``, uses its shortest kept run that covers the window (the first
 600 s of a kept 3-hour kanat run beside a 600 s MoorDyn run); each configuration's CPU per simulated
-hour is that of its own run. ``--reference LABEL`` takes the differences against another
+hour is that of its own run. MoorDyn's record so far is saved every 60 s of simulated time beside its final one
+(``moordyn_SCHEME_DT_part.npy`` in the run's folder), as kanat's result is written as it goes
+(``OUT.nc.part``), so that a run stopped early leaves its record. ``--reference LABEL`` takes the differences against another
 configuration than MoorDyn RK2 1 ms (e.g. ``MoorDyn-RK2-0.004`` when the 1 ms run is out of reach).
 """
 from __future__ import annotations
@@ -85,6 +87,7 @@ RADIUS, DRAFT = 20.0, 12.0              # m: the floating cylinder of the RAOs
 RHO, G = 1025.0, 9.81                   # kg/m^3, m/s^2: the MoorDyn file's
 COUPLING = 0.05                         # s: MoorDyn's coupling step
 OUTPUT_DT = 0.5                         # s: both codes' tension record
+KEPT_EVERY = 60.0                       # s: MoorDyn's record so far saved this often (a stopped run keeps it)
 STORM = 10800.0                         # s: the MPM's exposure
 TOLERANCE = np.array([0.01, 0.03, 0.03, 0.03])    # mean, std, maximum, MPM
 STATS = ("mean", "std", "max", "MPM")
@@ -111,6 +114,8 @@ for k in range(len(velocities)):
     moordyn.Step(system, list(positions[k]), list(velocities[k]), k * dc, dc)
     if (k + 1) % every == 0:
         record.append([(k + 1) * dc] + [moordyn.GetLineFairTen(line) for line in lines])
+        if len(record) % {kept} == 0:
+            np.save(out[:-4] + "_part.npy", np.array(record))
 stepping = time.perf_counter() - start
 np.save(out, np.array(record))
 print(json.dumps({{"stepping": stepping}}))
@@ -271,7 +276,8 @@ def run_kanat(case_path: Path, folder: Path):
 
 def run_moordyn(scheme: str, dt: float, input_path: Path, motion_path: Path, folder: Path):
     script = folder / "moordyn_run.py"
-    script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING, every=int(round(OUTPUT_DT / COUPLING))))
+    script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING, every=int(round(OUTPUT_DT / COUPLING)),
+                                            kept=int(round(KEPT_EVERY / OUTPUT_DT))))
     out = folder / f"moordyn_{scheme}_{dt}.npy"
     cpu, start = _child_cpu(), time.perf_counter()
     done = subprocess.run([sys.executable, str(script), str(input_path), scheme, str(dt), str(motion_path),
