@@ -55,6 +55,13 @@ Run: ``python benchmarks/bench_storm_moordyn.py [--duration 10800] [--repeats 1]
 configuration's runs in DIR and reuses them in later tables (the 1 ms reference costs about five
 CPU-hours per simulated hour); ``--only MoorDyn-RK2-0.001,kanat`` runs the configurations whose
 label ``code-scheme-step`` starts with one of those, so that several processes can share them out.
+``--window END`` takes the statistics from ``--transient`` to ``END`` s only and, for a configuration
+with no kept run of ``--duration``, uses its shortest kept run that covers the window (the first
+600 s of a kept 3-hour kanat run beside a 600 s MoorDyn run); each configuration's CPU per simulated
+hour is that of its own run. MoorDyn's record so far is saved every 60 s of simulated time beside its final one
+(``moordyn_SCHEME_DT_part.npy`` in the run's folder), as kanat's result is written as it goes
+(``OUT.nc.part``), so that a run stopped early leaves its record. ``--reference LABEL`` takes the differences against another
+configuration than MoorDyn RK2 1 ms (e.g. ``MoorDyn-RK2-0.004`` when the 1 ms run is out of reach).
 """
 from __future__ import annotations
 
@@ -80,6 +87,7 @@ RADIUS, DRAFT = 20.0, 12.0              # m: the floating cylinder of the RAOs
 RHO, G = 1025.0, 9.81                   # kg/m^3, m/s^2: the MoorDyn file's
 COUPLING = 0.05                         # s: MoorDyn's coupling step
 OUTPUT_DT = 0.5                         # s: both codes' tension record
+KEPT_EVERY = 60.0                       # s: MoorDyn's record so far saved this often (a stopped run keeps it)
 STORM = 10800.0                         # s: the MPM's exposure
 TOLERANCE = np.array([0.01, 0.03, 0.03, 0.03])    # mean, std, maximum, MPM
 STATS = ("mean", "std", "max", "MPM")
@@ -106,6 +114,8 @@ for k in range(len(velocities)):
     moordyn.Step(system, list(positions[k]), list(velocities[k]), k * dc, dc)
     if (k + 1) % every == 0:
         record.append([(k + 1) * dc] + [moordyn.GetLineFairTen(line) for line in lines])
+        if len(record) % {kept} == 0:
+            np.save(out[:-4] + "_part.npy", np.array(record))
 stepping = time.perf_counter() - start
 np.save(out, np.array(record))
 print(json.dumps({{"stepping": stepping}}))
@@ -266,7 +276,8 @@ def run_kanat(case_path: Path, folder: Path):
 
 def run_moordyn(scheme: str, dt: float, input_path: Path, motion_path: Path, folder: Path):
     script = folder / "moordyn_run.py"
-    script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING, every=int(round(OUTPUT_DT / COUPLING))))
+    script.write_text(MOORDYN_SCRIPT.format(coupling=COUPLING, every=int(round(OUTPUT_DT / COUPLING)),
+                                            kept=int(round(KEPT_EVERY / OUTPUT_DT))))
     out = folder / f"moordyn_{scheme}_{dt}.npy"
     cpu, start = _child_cpu(), time.perf_counter()
     done = subprocess.run([sys.executable, str(script), str(input_path), scheme, str(dt), str(motion_path),
@@ -299,12 +310,25 @@ def load_runs(folder: Path, config, duration: float) -> list:
     return [(w, c, s, x if isinstance(x, str) else np.array(x), e) for w, c, s, x, e in json.loads(path.read_text())]
 
 
-def statistics(series: np.ndarray, transient: float) -> np.ndarray:
-    """Mean, standard deviation, maximum and 3-hour Rayleigh MPM of each fairlead tension after
-    ``transient``: shape (3, 4) [N]."""
+def stored_runs(folder: Path, config, duration: float, window: float | None = None) -> tuple[list, float]:
+    """The kept runs of ``config`` and the simulated time they cover [s]: those of ``duration``;
+    failing those, with a ``window`` [s], those of the shortest kept duration that covers it;
+    else an empty list."""
+    runs = load_runs(folder, config, duration)
+    if runs or window is None:
+        return runs, duration
+    code, scheme, dt = config
+    kept = sorted(float(path.stem.rsplit("_", 1)[1]) for path in folder.glob(f"{code}_{scheme}_{dt}_*.json"))
+    covering = [d for d in kept if d >= window - 1e-9]
+    return (load_runs(folder, config, covering[0]), covering[0]) if covering else ([], duration)
+
+
+def statistics(series: np.ndarray, transient: float, until: float = math.inf) -> np.ndarray:
+    """Mean, standard deviation, maximum and 3-hour Rayleigh MPM of each fairlead tension from
+    ``transient`` to ``until`` [s]: shape (3, 4) [N]."""
     from kanat.analysis.extremes import mpm
 
-    kept = series[series[:, 0] >= transient - 1e-9]
+    kept = series[(series[:, 0] >= transient - 1e-9) & (series[:, 0] <= until + 1e-9)]
     t, values = kept[:, 0], kept[:, 1:]
     return np.array([[v.mean(), v.std(), v.max(), float(mpm(v, t, STORM, "rayleigh"))] for v in values.T])
 
@@ -318,11 +342,22 @@ def main() -> None:
                         "those already there (same duration): the reference takes hours")
     parser.add_argument("--only", default="", help="run only the configurations whose label code-scheme-step starts "
                         "with one of these, comma-separated (MoorDyn, kanat, MoorDyn-RK2-0.001, ...)")
+    parser.add_argument("--window", type=float, help="statistics from --transient to this time [s] only; kept "
+                        "runs longer than --duration that cover it are used (with --store)")
+    parser.add_argument("--reference", default="MoorDyn-RK2-0.001", help="the configuration the differences "
+                        "are taken against, by label code-scheme-step")
     parser.add_argument("--write-raos", action="store_true", help=f"write {RAOS.relative_to(ROOT)} and stop")
     args = parser.parse_args()
     if args.write_raos:
         write_raos()
         return
+    labels = {f"{code}-{scheme}-{dt}": (code, scheme, dt) for code, scheme, dt in CONFIGS}
+    if args.reference not in labels:
+        parser.error(f"--reference {args.reference}: not a configuration; the labels are {', '.join(labels)}")
+    if args.window is not None and not args.transient < args.window <= args.duration:
+        parser.error(f"--window {args.window:g} must lie after --transient {args.transient:g} and within "
+                     f"--duration {args.duration:g}")
+    until = math.inf if args.window is None else args.window
     from kanat.io import load_case
 
     folder = Path(tempfile.mkdtemp())
@@ -336,7 +371,9 @@ def main() -> None:
     input_path = moordyn_file(folder, case)
     runs = {c: [] for c in CONFIGS}
     results, extras = {}, {}
-    stored = {c: load_runs(args.store, c, args.duration) for c in CONFIGS} if args.store else {}
+    stored = {c: stored_runs(args.store, c, args.duration, args.window) for c in CONFIGS} if args.store else {}
+    durations = {c: stored[c][1] if stored.get(c, ([],))[0] else args.duration for c in CONFIGS}
+    stored = {c: runs for c, (runs, _) in stored.items()}
     for _ in range(args.repeats):                                   # interleaved
         for config in CONFIGS:
             code, scheme, dt = config
@@ -355,15 +392,21 @@ def main() -> None:
     runs = {c: r for c, r in runs.items() if r}
     for config, done in runs.items():
         series, extras[config] = done[-1][3], done[-1][4]
-        results[config] = statistics(series, args.transient) if not isinstance(series, str) else series
+        results[config] = statistics(series, args.transient, until) if not isinstance(series, str) else series
         runs[config] = [r[:3] for r in done]
-    print_table(runs, results, extras, args.duration)
+    if args.window is not None:
+        print(f"statistics from {args.transient:g} s to {args.window:g} s of each run; runs: "
+              + ", ".join(f"{code}-{scheme}-{dt} {durations[(code, scheme, dt)]:g} s" for code, scheme, dt in runs)
+              + "\n")
+    print_table(runs, results, extras, durations, labels[args.reference], args.reference)
     print(f"\nfairlead motion for MoorDyn computed with kanat's API in {drive_time:.1f} s (not in MoorDyn's times); "
           f"fairlead surge/heave std {positions[:, 0].std():.2f} m / {positions[:, 2].std():.2f} m")
 
 
-def print_table(runs, results, extras, duration: float) -> None:
-    reference = results.get(CONFIGS[0], "not run (no stored run either)")
+def print_table(runs, results, extras, durations: dict, reference_config, reference_label: str) -> None:
+    """The Markdown table: times per configuration, each over its own simulated ``durations`` [s],
+    and the statistics' largest relative differences over the legs against ``reference_config``."""
+    reference = results.get(reference_config, "not run (no stored run either)")
     if isinstance(reference, str):
         print(f"the reference failed: {reference}")
         return
@@ -373,8 +416,7 @@ def print_table(runs, results, extras, duration: float) -> None:
             np.abs(results[config] / reference - 1.0) <= TOLERANCE))
 
     medians = {c: np.median(np.array(runs[c]), axis=0) for c in runs}
-    best = min(medians[c][1] for c in runs if c[0] == "MoorDyn" and accurate(c))
-    hours = duration / 3600.0
+    best = min((medians[c][1] / durations[c] for c in runs if c[0] == "MoorDyn" and accurate(c)), default=None)
     print("| code | scheme | step [s] | whole process [s] | CPU [s] | CPU per simulated hour [s] | stepping [s] | "
           "vs best MoorDyn (CPU) | " + " | ".join(f"{s}, max rel. diff." for s in STATS) + " |")
     print("|---|---|---|---|---|---|---|---|" + "---|" * len(STATS))
@@ -390,10 +432,15 @@ def print_table(runs, results, extras, duration: float) -> None:
         if code == "kanat" and scheme == "default":
             scheme = f"default ({extras[config]['scheme']})"
         off = "" if code == "kanat" or accurate(config) else " (outside the tolerances: not a candidate)"
-        print(f"| {code} | {scheme} | {step} | {whole:.1f} | {cpu:.1f} | {cpu / hours:.1f} | {stepping:.1f} | "
-              f"{best / cpu:.2f}x{off} | " + " | ".join(f"{100 * d:.2f} %" for d in diff) + " |")
-    print("\nreference (MoorDyn RK2 1 ms) fairlead tensions [kN], legs 1-3: " + "; ".join(
-        f"{name} {', '.join(f'{v / 1e3:.0f}' for v in reference[:, j])}" for j, name in enumerate(STATS)))
+        per_hour = cpu / (durations[config] / 3600.0)
+        versus = "–" if best is None else f"{best * 3600.0 / per_hour:.2f}x"
+        print(f"| {code} | {scheme} | {step} | {whole:.1f} | {cpu:.1f} | {per_hour:.1f} | {stepping:.1f} | "
+              f"{versus}{off} | " + " | ".join(f"{100 * d:.2f} %" for d in diff) + " |")
+    print(f"\nreference: {reference_label}; fairlead tensions [kN], legs 1-3:")
+    for config, found in results.items():
+        if not isinstance(found, str):
+            print(f"- {'-'.join(str(x) for x in config)}: " + "; ".join(
+                f"{name} {', '.join(f'{v / 1e3:.0f}' for v in found[:, j])}" for j, name in enumerate(STATS)))
 
 
 if __name__ == "__main__":
