@@ -127,9 +127,8 @@ SEAS = {"regular": ({"type": "regular", "height": 2.0, "period": 8.0}, "generali
 def test_a_coupling_in_waves_takes_the_scheme_and_step_of_a_run(waves, expected):
     """The two chains in waves, neither scheme nor dt named, outputs every 0.5 s: the coupling takes the
     run's scheme and step, eq. (6) of :mod:`kanat.lumped.stepping` by hand with the waves' cost per force
-    evaluation ``E = 1 + 0.052 n`` (``n`` sea components) and the implicit step of 400 steps per wave
-    period (a regular 8 s wave: 0.02 s), 80 where the waves make each evaluation costly (200 components:
-    ``E = 11.4``) per the shortest period of the sea; an implicit step costs 3 evaluations and a
+    evaluation ``E = 1 + 0.052 n`` (``n`` sea components) and the implicit step of 400 steps per shortest
+    period of the sea (a regular 8 s wave: 0.02 s); an implicit step costs 3 evaluations and a
     tangent worth 4: the implicit scheme in both (RK4's safe step is 7.7 ms; before the cost model
     counted the kept factors, RK4 in the regular wave). (Before, the coupling weighed no waves and stepped
     the implicit scheme at 0.1 s.)"""
@@ -142,7 +141,7 @@ def test_a_coupling_in_waves_takes_the_scheme_and_step_of_a_run(waves, expected)
     sea = run.system.sea
     evaluation = 1.0 + 0.052 * len(sea.omega)
     period = 8.0 if waves["type"] == "regular" else stepping.excitation_period(run.system)
-    implicit = period / (400.0 if evaluation - 1.0 <= 9.0 else 80.0)
+    implicit = period / 400.0
     safe = 0.8 * 2.8 / coupling.info.omega_max                  # RK4 at 0.8 of its limit, eq. (5)
     costs = {"rk4": 4 * evaluation / min(safe, implicit), "generalized-alpha-lumped": (3 * evaluation + 4) / implicit}
     assert min(costs, key=costs.get) == expected

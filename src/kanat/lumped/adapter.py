@@ -128,7 +128,7 @@ class LumpedModel:
                 return stepping.fit_step(sim.dt, out)
             h = stepping.fit_step(stepping.implicit_default(self.system, sim.step_or_default), out)
             self.notes.append(f"{scheme.name}: no dt given; stepping at {h:.4g} s (the default {sim.step_or_default:g} s, "
-                              f"or {stepping.steps_per_period(self.system):g} steps per period of the shortest excitation)")
+                              f"or {stepping.STEPS_PER_PERIOD:g} steps per period of the shortest excitation)")
             return h
         safe = info.safe_step(scheme)
         if sim.dt is None and math.isinf(safe):

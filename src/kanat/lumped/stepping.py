@@ -35,7 +35,7 @@ imaginary axis; RK4's region reaches as far along the negative real axis, 2.79).
 A case that names no scheme gets the cheaper of RK4 at its safe step and the implicit scheme at its
 step, by force evaluations per simulated second with the wave kinematics counted (eq. 6,
 :func:`choose_scheme`; :func:`default_scheme` for a run and a coupling alike). The implicit step
-without ``dt`` is a number of steps (:func:`steps_per_period`) per shortest period of what drives
+without ``dt`` is :data:`STEPS_PER_PERIOD` steps per shortest period of what drives
 the run, once the spectral tails under 1 % of the variance are left out (eq. 7, :func:`excitation_period`); the accuracy of a number
 of steps per period is the period error and algorithmic damping of eq. (8), :func:`period_error`
 (docs/lumped.md, "Default step of the implicit scheme").
@@ -66,21 +66,15 @@ STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitat
                              # chain driven at 9 and 12 s (friction 0.5, a chain slapping the seabed) is as accurate
                              # at 0.1 s as at 0.025 s (fairlead tension within 0.5 % of MoorDyn) but costs 5.2 s of
                              # CPU there (9 Newton iterations a step, 9741 steps retaken by rk4), 4.4 at 0.05 s,
-                             # 4.2 at 0.025 s
-ACCURATE_STEPS_PER_PERIOD = 80.0   # implicit steps per period where accuracy alone sets them: generalized-alpha
-                             # at rho_inf 0.5 lengthens the period by 0.11 % and damps 0.02 % of an amplitude a
-                             # period there (eq. 8, period_error); in the three-leg storm (3.93 s, fitted to
-                             # 0.045 s) fairlead tensions within 0.08 % in mean, 1.4 % in std, 0.3 % in maximum of
-                             # rk4 at its safe step (benchmarks/RESULTS.md, "default scheme in a storm")
+                             # 4.2 at 0.025 s. In waves too: 80 a period (0.045 s) on the three-leg chain in a
+                             # JONSWAP storm agreed with MoorDyn over 60 s but stopped at 1172 s of the 3 hours,
+                             # a node through the seabed after 6017 snap loads, a step 2.3 times the axial nodal
+                             # period (benchmarks/RESULTS.md, "3 hours asked")
 IMPLICIT_ITERATIONS = 3.0    # force evaluations per implicit step (Newton iterations, line search included): 2.1
                              # on the three-leg chain at 0.022 s, 2.7 on Bezverkhyi's trawl at 0.05 s, 4.3 on WD0050
 WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
                              # it: 0.73 ms for 200 components at 156 points against 0.07 ms (the three-leg
                              # storm, benchmarks/RESULTS.md, "wave kernel"); the cost of both grows with the points
-HEAVY_WAVES = 9.0            # the waves' share of a force evaluation (wave_load) above which the implicit step is
-                             # set by accuracy alone (ACCURATE_STEPS_PER_PERIOD): a force evaluation then costs
-                             # ten still-water ones or more, and its steps are what a run pays for (the
-                             # three-leg storm: 200 components, 10.4)
 NEGLIGIBLE_VARIANCE = 0.01   # a driving spectrum's high-frequency tail holding less than this share of its
                              # variance (rms under 10 % of the whole) does not set the implicit step (eq. 7)
 
@@ -234,19 +228,11 @@ def excitation_period(system) -> float | None:
     return min(periods) if periods else None
 
 
-def steps_per_period(system) -> float:
-    """Implicit steps per :func:`excitation_period`: :data:`STEPS_PER_PERIOD`, or
-    :data:`ACCURATE_STEPS_PER_PERIOD` where the wave kinematics make each force evaluation costly
-    (:func:`wave_load` above :data:`HEAVY_WAVES`), so that fewer steps pay (benchmarks/RESULTS.md,
-    "default scheme in a storm")."""
-    return ACCURATE_STEPS_PER_PERIOD if wave_load(system) > HEAVY_WAVES else STEPS_PER_PERIOD
-
-
 def implicit_default(system, default: float) -> float:
     """The implicit scheme's step without ``dt``: ``default`` (``simulation.step_or_default``), or
-    less where the run is driven: :func:`steps_per_period` steps per :func:`excitation_period`."""
+    less where the run is driven: :data:`STEPS_PER_PERIOD` steps per :func:`excitation_period`."""
     period = excitation_period(system)
-    return default if period is None else min(default, period / steps_per_period(system))
+    return default if period is None else min(default, period / STEPS_PER_PERIOD)
 
 
 def implicit_step(system, simulation) -> float:
