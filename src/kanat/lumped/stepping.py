@@ -58,10 +58,10 @@ CONSISTENT_FACTOR = math.sqrt(3.0)   # highest eigenvalue of [[2,1],[1,2]]/6 vs 
 STRAIN_REFERENCE = 0.02      # strain at which nonlinear laws' stiffness sets the step (or more if stretched)
 IMPLICIT_COST = 4.0          # force evaluations the tangent work of one implicit step is worth: its band factors
                              # are kept over steps and rebuilt every few (fast_implicit.newton_step), each
-                             # iteration substitutes; measured (CPU per step less its force evaluations, in
-                             # evaluations of rk4 on the same case): 3.3 on the three-leg chain, 3.4 on
-                             # Bezverkhyi's trawl in waves, 7.7 on MoorDyn's WD0050 chain with seabed friction,
-                             # whose factors are rebuilt most steps (benchmarks/RESULTS.md, "default scheme's cost model")
+                             # iteration substitutes; measured (benchmarks/bench_scheme_cost.py): 1.4 on the
+                             # three-leg chain, 1.5 on the lazy wave, 0.0 on Bezverkhyi's trawl in waves, 4.0 on
+                             # MoorDyn's WD0050 chain with seabed friction, whose factors are rebuilt most steps:
+                             # the largest, so that a close call goes to rk4
 STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitation (default dt): MoorDyn's WD0050
                              # chain driven at 9 and 12 s (friction 0.5, a chain slapping the seabed) is as accurate
                              # at 0.1 s as at 0.025 s (fairlead tension within 0.5 % of MoorDyn) but costs 5.2 s of
@@ -70,8 +70,8 @@ STEPS_PER_PERIOD = 400.0     # implicit steps per period of the shortest excitat
                              # JONSWAP storm agreed with MoorDyn over 60 s but stopped at 1172 s of the 3 hours,
                              # a node through the seabed after 6017 snap loads, a step 2.3 times the axial nodal
                              # period (benchmarks/RESULTS.md, "3 hours asked")
-IMPLICIT_ITERATIONS = 3.0    # force evaluations per implicit step (Newton iterations, line search included): 2.1
-                             # on the three-leg chain at 0.022 s, 2.7 on Bezverkhyi's trawl at 0.05 s, 4.3 on WD0050
+IMPLICIT_ITERATIONS = 3.0    # force evaluations per implicit step (Newton iterations, line search included): 2.0-2.1
+                             # on the three-leg chain, the lazy wave and the trawl, 4.3 on WD0050 (friction)
 WAVE_COMPONENT_COST = 0.052  # a force evaluation's wave kinematics per sea component, relative to the rest of
                              # it: 0.73 ms for 200 components at 156 points against 0.07 ms (the three-leg
                              # storm, benchmarks/RESULTS.md, "wave kernel"); the cost of both grows with the points
