@@ -35,7 +35,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import resource
 import subprocess
 import sys
 import tempfile
@@ -43,6 +42,8 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from bench_wd0050_moordyn import timed
 
 ROOT = Path(__file__).resolve().parents[1]
 FILE = ROOT / "examples" / "moordyn" / "three_leg_chain_50.dat"
@@ -92,16 +93,6 @@ def kanat_case(folder: Path, scheme: str, dt: float | None, duration: float) -> 
     path = folder / f"kanat_{scheme}_{dt}.yaml"
     path.write_text(yaml.safe_dump(case.model_dump(mode="json", by_alias=True, exclude_none=True), sort_keys=False))
     return path
-
-
-def timed(command: list) -> tuple[subprocess.CompletedProcess, float, float]:
-    """Run ``command``: its result, wall time and CPU time (user + system of the child) [s]."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    done = subprocess.run(command, capture_output=True, text=True)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return done, wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
 
 
 def run_kanat(case_path: Path, folder: Path):
