@@ -123,12 +123,14 @@ def fall(tmp_path_factory):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("dt, verdict", [(0.025, "failed"), (0.01, "warned")])
+@pytest.mark.parametrize("dt, verdict", [(0.025, "failed"), (0.005, "warned")])
 def test_a_step_through_snaps_warns_or_fails(fall, dt, verdict):
     """A 20 m wire released at t = 5 s falls through its own slack, snapping taut again and again (axial
     period 3.6 ms; rk4 and the implicit scheme at 2 ms agree, tests/lumped/test_lumped_snap_step.py). At
-    10 ms its snap peaks are 12 times rk4's: eq. (2) is 0.62 (a warning); at 25 ms 7.2 (the run fails,
-    its outputs up to then kept)."""
+    5 ms eq. (2) reads 0.22 (a warning); at 25 ms 7.2 (the run fails, its outputs up to then kept). At
+    10 ms it read 0.62 or 2.2 (a warning or a failure) as the state at the release moved by round-off
+    (the hanging wire stepped by rk4 or by the implicit scheme before it): the folding wire's motion
+    at that step is not the same from one start to the next."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         ds = kanat.run(fall.replace({"simulation.dt": dt})).dataset
