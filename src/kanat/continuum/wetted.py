@@ -1,4 +1,4 @@
-"""The wet share of continuum intervals crossing the water surface (SPEC §4).
+"""The wet share of continuum intervals crossing the water surface (docs/theory/continuum.md).
 
 An interval whose nodes' centrelines stand ``h_i, h_i+1`` above the surface (the mean surface, or
 the wave elevation over each node: :func:`kanat.continuum.surface.heights`) is wet over the share of
