@@ -22,7 +22,8 @@ import numpy as np
 import scipy.sparse as sp
 
 from kanat.frequency import bodies, drag
-from kanat.frequency.rigid import euler_rates_matrix, skew
+from kanat.frequency.rigid import euler_rates_matrix
+from kanat.physics.motion import skew
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from kanat.physics.motion import rotation_matrix
+from kanat.physics.motion import point_jacobian, rotation_matrix
 
 
 def euler_rates_matrix(angles) -> np.ndarray:
@@ -29,11 +29,6 @@ def euler_rates_matrix(angles) -> np.ndarray:
     _, pitch, yaw = angles
     cp, sp_, cy, sy = np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
     return np.array([[cp * cy, -sy, 0.0], [cp * sy, cy, 0.0], [-sp_, 0.0, 1.0]])
-
-
-def skew(p) -> np.ndarray:
-    """``S(p)`` with ``S(p) a = p x a``."""
-    return np.array([[0.0, -p[2], p[1]], [p[2], 0.0, -p[0]], [-p[1], p[0], 0.0]])
 
 
 def body_mass(rigid, b: int, x: np.ndarray, blocks: np.ndarray) -> np.ndarray:
@@ -44,7 +39,7 @@ def body_mass(rigid, b: int, x: np.ndarray, blocks: np.ndarray) -> np.ndarray:
     M6 = T @ (rigid.mass6[b] + rigid.added6[b]) @ T.T
     for f in np.flatnonzero(rigid.fairlead_body == b):
         node = rigid.fairlead_node[f]
-        J = np.hstack([np.eye(3), -skew(x[node] - x[rigid.ref_node[b]])])
+        J = point_jacobian(x[node] - x[rigid.ref_node[b]])
         M6 += J.T @ blocks[node] @ J
     return M6
 

@@ -50,6 +50,7 @@ import numpy as np
 from kanat.jit import inner, kernel
 from kanat.lumped.entries import Rig
 from kanat.physics.hydrostatics import restoring_displacement, weight_buoyancy_moment
+from kanat.physics.motion import point_jacobian
 
 
 @dataclass(frozen=True, eq=False)
@@ -159,46 +160,38 @@ def rigid_bodies(case, builder) -> RigidBodies:
         fairlead_offset=np.array([f[2] for f in fair], dtype=float).reshape(-1, 3))
 
 
-def _skew(p) -> np.ndarray:
-    """``S(p)`` with ``S(p) q = p x q``."""
-    return np.array([[0.0, -p[2], p[1]], [p[2], 0.0, -p[0]], [-p[1], p[0], 0.0]])
-
-
 def body_inertia(rigid: RigidBodies, node_mass) -> np.ndarray:
     """Each body's generalized mass in body axes, the left side of eq. (2) (nb, 6, 6) [kg, kg m, kg m^2]:
     ``M_rb + A + sum_f J_f^T m_f J_f`` with ``J_f = [I, -S(p_f)]``, ``p_f`` a fairlead's offset and
     ``m_f`` its line nodes' lumped mass (``node_mass``, (n,) [kg])."""
     inertia = rigid.mass6 + rigid.added6
     for node, body, offset in zip(rigid.fairlead_node, rigid.fairlead_body, rigid.fairlead_offset):
-        jacobian = np.hstack([np.eye(3), -_skew(offset)])
+        jacobian = point_jacobian(offset)
         inertia[body] += node_mass[node] * jacobian.T @ jacobian
     return inertia
 
 
-def fairlead_mobility(rigid: RigidBodies, node_mass) -> np.ndarray:
+def fairlead_mobility(rigid: RigidBodies, inverse) -> np.ndarray:
     """The largest inverse mass [1/kg] each fairlead node moves with, riding on its body (k,)::
 
         (5)  1 / m_f = lambda_max(J_f M^-1 J_f^T),   J_f = [I, -S(p_f)]
 
-    ``M`` the body's generalized mass (:func:`body_inertia`): the point mobility of the body at the
-    fairlead, largest over the directions (rotation invariant, so taken in body axes). An element
-    pulling on the fairlead accelerates it as it would a node of mass ``m_f``: that is the mass its axial
-    frequency sees (:mod:`kanat.lumped.stepping` eq. 1). ``node_mass`` (n,) [kg] as in
-    :func:`body_inertia`."""
-    inverse = np.linalg.inv(body_inertia(rigid, node_mass))
+    ``M`` the body's generalized mass (:func:`body_inertia`), ``inverse`` (nb, 6, 6) its inverse: the
+    point mobility of the body at the fairlead, largest over the directions (rotation invariant, so
+    taken in body axes). An element pulling on the fairlead accelerates it as it would a node of mass
+    ``m_f``: that is the mass its axial frequency sees (:mod:`kanat.lumped.stepping` eq. 1)."""
     out = np.zeros(len(rigid.fairlead_node))
     for f, (body, offset) in enumerate(zip(rigid.fairlead_body, rigid.fairlead_offset)):
-        jacobian = np.hstack([np.eye(3), -_skew(offset)])
+        jacobian = point_jacobian(offset)
         out[f] = float(np.max(np.linalg.eigvalsh(jacobian @ inverse[body] @ jacobian.T)))
     return out
 
 
-def body_rates(rigid: RigidBodies, node_mass) -> tuple[np.ndarray, np.ndarray]:
+def body_rates(rigid: RigidBodies, inverse) -> tuple[np.ndarray, np.ndarray]:
     """Each body's own highest angular frequency and damping rate [1/s] (nb,): the largest
     ``sqrt|lambda|`` of ``M^-1 C`` and ``|lambda|`` of ``M^-1 B_1`` (``C`` the hydrostatic stiffness,
-    ``B_1`` the linear damping, ``M`` :func:`body_inertia`): its modes on its own springs, for the
-    explicit schemes' safe step (:mod:`kanat.lumped.stepping` eq. 4)."""
-    inverse = np.linalg.inv(body_inertia(rigid, node_mass))
+    ``B_1`` the linear damping, ``M`` :func:`body_inertia`, ``inverse`` (nb, 6, 6) its inverse): its
+    modes on its own springs, for the explicit schemes' safe step (:mod:`kanat.lumped.stepping` eq. 4)."""
     omega = np.array([np.max(np.abs(np.linalg.eigvals(m @ c)), initial=0.0) ** 0.5
                       for m, c in zip(inverse, rigid.hydro)])
     sigma = np.array([np.max(np.abs(np.linalg.eigvals(m @ b)), initial=0.0) for m, b in zip(inverse, rigid.linear)])

@@ -49,7 +49,7 @@ import numpy as np
 
 from kanat.lumped import entries
 from kanat.lumped.bending import bending_frequency
-from kanat.lumped.rigid import body_rates, fairlead_mobility
+from kanat.lumped.rigid import body_inertia, body_rates, fairlead_mobility
 from kanat.model.limits import EXPLICIT_SAFETY
 from kanat.physics.contact import SLIP_VELOCITY
 
@@ -123,7 +123,8 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     inv[heavy] = 1.0 / mass[heavy]
     rigid = net.rigid
     if rigid.count:
-        inv[rigid.fairlead_node] = fairlead_mobility(rigid, mass)       # eq. (1b): a fairlead rides on its body
+        inverse = np.linalg.inv(body_inertia(rigid, mass))
+        inv[rigid.fairlead_node] = fairlead_mobility(rigid, inverse)    # eq. (1b): a fairlead rides on its body
     strain = np.linalg.norm(x[net.el_j] - x[net.el_i], axis=1) / net.el_length - 1.0
     slope = np.zeros(net.n_elements)
     for row in range(len(net.law_kind)):
@@ -143,7 +144,7 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
     before, node, after, k, span = net.bend
     top = max(top, bending_frequency(node, k, span, np.where(inv > 0, 1.0 / np.maximum(inv, 1e-300), 0.0)))
     if rigid.count:
-        top = max(top, float(np.max(spectral_radius(*body_rates(rigid, mass)))))   # eq. (4b)
+        top = max(top, float(np.max(spectral_radius(*body_rates(rigid, inverse)))))   # eq. (4b)
     if seabed is not None:
         area = net.node_contact_area * (inv > 0)
         contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)

@@ -55,14 +55,6 @@ class SurfaceBuoy(KanatModel):
     height: float = quantity(2.0, unit="m", gt=0)
 
 
-def _skew(c) -> np.ndarray:
-    """Cross-product matrix ``S(c)``: ``S(c) x = c x x``."""
-    import numpy as np
-
-    x, y, z = c
-    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
-
-
 def _symmetric(matrix, name: str) -> None:
     import numpy as np
 
@@ -337,12 +329,14 @@ class Body(KanatModel):
         """
         import numpy as np
 
+        from kanat.physics.motion import skew
+
         m = self.mass
         out = np.zeros((6, 6))
         out[:3, :3] = m * np.eye(3)
         if self.dof == 3:
             return out
-        s = _skew(self.center_of_gravity)
+        s = skew(self.center_of_gravity)
         out[:3, 3:] = -m * s
         out[3:, :3] = m * s
         out[3:, 3:] = np.asarray(self.inertia, dtype=float) - m * s @ s

@@ -175,6 +175,17 @@ def rotation_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
                      [-sp, cp * sr, cp * cr]])
 
 
+def skew(p) -> np.ndarray:
+    """``S(p)`` (3, 3) with ``S(p) q = p x q``."""
+    return np.array([[0.0, -p[2], p[1]], [p[2], 0.0, -p[0]], [-p[1], p[0], 0.0]])
+
+
+def point_jacobian(offset) -> np.ndarray:
+    """``J = [I, -S(p)]`` (3, 6): a point at ``offset`` ``p`` from a rigid body's reference moves
+    ``J (u, theta)`` for a small translation ``u`` and rotation ``theta`` of the body."""
+    return np.hstack([np.eye(3), -skew(offset)])
+
+
 def angular_velocity(angles, rates) -> np.ndarray:
     """Angular velocity (3,) [rad/s], in the outer frame, of ``R = Rz Ry Rx`` whose angles
     ``(roll, pitch, yaw)`` change at ``rates``: ``dR/dt = S(w) R``.

@@ -48,6 +48,7 @@ import numpy as np
 
 from kanat.errors import SolverError
 from kanat.physics.hydrostatics import restoring_load, weight_buoyancy_load
+from kanat.physics.motion import skew
 from kanat.statics import budget
 from kanat.statics.line_solve import LineSolution, solve_line
 from kanat.statics.network_setup import NetworkProblem, fairlead_rotation
@@ -73,11 +74,6 @@ REGULARIZATION = 1e-8         # Levenberg-Marquardt diagonal, relative to the Ja
 def cross(a, b) -> np.ndarray:
     """``a x b`` of two 3-vectors (numpy's cross is slow on small arrays)."""
     return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
-
-
-def skew(v) -> np.ndarray:
-    """``S(v)`` with ``S(v) x = v x x``."""
-    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
 
 @dataclass(frozen=True, eq=False)
