@@ -92,7 +92,7 @@ def restore(entry: Path, targets: Iterable[Path]) -> list[Path]:
         try:
             if cached.is_file():
                 Path(target).parent.mkdir(parents=True, exist_ok=True)
-                shutil.copy2(cached, target)
+                _copy_whole(cached, Path(target))
                 copied.append(Path(target))
         except OSError as error:
             _warn(f"the compiled kernel {cached} was not copied ({error}); compiling it")
@@ -101,20 +101,31 @@ def restore(entry: Path, targets: Iterable[Path]) -> list[Path]:
     return copied
 
 
+def _copy_whole(source: Path, target: Path) -> None:
+    """Copy ``source`` to ``target`` through a partial file in the same folder, then rename it: a
+    reader never sees half a file, and a process that has the old ``target`` loaded (a run going on
+    while an install restores its kernels) keeps its own copy instead of having it rewritten under it."""
+    handle, partial = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.")
+    os.close(handle)
+    try:
+        shutil.copy2(source, partial)
+        os.replace(partial, target)
+    finally:
+        if os.path.exists(partial):
+            os.unlink(partial)
+
+
 def store(entry: Path, built: Iterable[Path], described: dict) -> bool:
     """Copy the ``built`` files into the cache ``entry`` (each written whole, then renamed, so a
     concurrent install never reads half a file), then its :data:`BUILT` file; whether it could."""
     try:
         entry.mkdir(parents=True, exist_ok=True)
-        for path in list(built) + [None]:
-            name = BUILT if path is None else Path(path).name
-            handle, partial = tempfile.mkstemp(dir=entry, prefix=f".{name}.")
-            os.close(handle)
-            if path is None:
-                Path(partial).write_text(json.dumps(described, indent=1, sort_keys=True))
-            else:
-                shutil.copy2(path, partial)
-            os.replace(partial, entry / name)
+        for path in built:
+            _copy_whole(Path(path), entry / Path(path).name)
+        handle, partial = tempfile.mkstemp(dir=entry, prefix=f".{BUILT}.")
+        os.close(handle)
+        Path(partial).write_text(json.dumps(described, indent=1, sort_keys=True))
+        os.replace(partial, entry / BUILT)
     except OSError as error:
         _warn(f"the compiled kernels were not cached in {entry} ({error}); the next install compiles them again")
         return False

@@ -120,3 +120,19 @@ def test_setup_copies_the_cached_modules_and_compiles_nothing(cache, tmp_path):
     for path in built:
         assert (lib / "kanat" / path.name).read_bytes() == path.read_bytes()
     assert not (tmp_path / "temp").exists() or not list((tmp_path / "temp").rglob("*.o"))
+
+
+def test_a_restore_replaces_a_loaded_module_instead_of_rewriting_it(cache, tmp_path):
+    """A run that has the old modules open (mapped) while an install restores new ones keeps reading
+    its own bytes: the restore renames a whole new file over the name, it does not write into it."""
+    aot_cache.build_once(targets(tmp_path / "first"), Counting())
+    out = targets(tmp_path / "out")
+    for target in out:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(b"the module a run has loaded")
+    with open(out[0], "rb") as loaded:
+        result = aot_cache.build_once(out, Counting())
+        assert result["copied"] == out
+        assert loaded.read() == b"the module a run has loaded"
+    assert out[0].read_bytes() == f"build 1 of {out[0].name}".encode()
+    assert not [p for p in out[0].parent.iterdir() if p.name.startswith(".")]
