@@ -12,6 +12,19 @@ from kanat.cli_common import console, fail, load, log, show
 from kanat.errors import KanatError
 
 
+DESIGN_FAILS = 3     # exit status: a line or a fatigue life fails its check
+NOT_CHECKED = 4      # exit status: a condition could not be checked (its runs failed)
+
+
+def design_status(result) -> int:
+    """The exit status of ``kanat design``: 0 when every check passes, :data:`NOT_CHECKED` when a
+    condition could not be checked (whatever the others say: the answer is incomplete), else
+    :data:`DESIGN_FAILS` when a check fails. A case that cannot be run at all exits 1, as every command."""
+    if result.failures:
+        return NOT_CHECKED
+    return 0 if result.ok else DESIGN_FAILS
+
+
 def register(app: typer.Typer) -> None:
     """Add the ``design`` verb to ``app``."""
 
@@ -26,7 +39,9 @@ def register(app: typer.Typer) -> None:
                workers: Optional[int] = typer.Option(None, "--workers",
                                                      help="Run on a local pool of this many worker processes."),
                debug: bool = typer.Option(False, "--debug", help="Show tracebacks.")):
-        """Design checks: utilisation of every line intact and damaged, fatigue life (docs/design.md)."""
+        """Design checks: utilisation of every line intact and damaged, fatigue life (docs/design.md).
+        Exit status: 0 every check passes, 1 the case could not be run (as every command), 3 a line
+        or a fatigue life fails its check, 4 a condition could not be checked (its runs failed)."""
         from kanat.design_checks import design as check, write_tables
         from rich.text import Text
 
@@ -45,4 +60,4 @@ def register(app: typer.Typer) -> None:
         log.info(f"runs on {result.engine}")
         show(f"{len(result.utilisation)} line checks, {len(failing)} failing; wrote "
              + ", ".join(str(p) for p in paths))
-        raise typer.Exit(0 if result.ok else 1)
+        raise typer.Exit(design_status(result))

@@ -234,3 +234,15 @@ def test_mirror_damaged_conditions_give_mirror_tensions(tmp_path):
     assert table[("damaged:leg2", "leg1")] == pytest.approx(table[("damaged:leg3", "leg1")], rel=1e-9)
     assert table[("damaged:leg2", "leg3")] == pytest.approx(table[("damaged:leg3", "leg2")], rel=1e-9)
     assert table[("damaged:leg2", "leg1")] != pytest.approx(table[("damaged:leg2", "leg3")], rel=1e-4)
+
+
+def test_the_exit_status_tells_a_failing_check_from_one_that_could_not_be_made():
+    """0 all pass; 3 a check fails; 4 a condition's runs failed, even beside passing and failing checks."""
+    from types import SimpleNamespace
+
+    from kanat.cli_design import DESIGN_FAILS, NOT_CHECKED, design_status
+
+    assert design_status(SimpleNamespace(failures={}, ok=True)) == 0
+    assert design_status(SimpleNamespace(failures={}, ok=False)) == DESIGN_FAILS == 3
+    assert design_status(SimpleNamespace(failures={"damaged:leg2/storm": "failed"}, ok=False)) == NOT_CHECKED == 4
+    assert 1 not in (DESIGN_FAILS, NOT_CHECKED)                    # 1: the case could not be run (cli_common.fail)
