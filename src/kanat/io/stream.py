@@ -68,6 +68,8 @@ class ResultStream:
         self._oldest = 0.0
         self._names: tuple = ()
         self._bytes_per_output = 0.0
+        self._written = 0              # outputs in the file (h5netcdf's size of an unlimited dimension scans
+                                       # every variable: 20 ms a flush on a three-line mooring)
 
     # --- observer protocol ---------------------------------------------------------
 
@@ -89,6 +91,7 @@ class ResultStream:
             self._file = h5netcdf.File(self.part, "a")
             if resume_at is not None:
                 self._file.resize_dimension("time", resume_at)
+            self._written = resume_at or 0
             self._file.attrs["status"] = "running"
             self._sync()
 
@@ -113,7 +116,7 @@ class ResultStream:
         if not self._buffer:
             return
         f = self._file
-        n, m = f.dimensions["time"].size, len(self._buffer)
+        n, m = self._written, len(self._buffer)
         require_space(self.part, (m + 2 * CHUNK_OUTPUTS) * self._bytes_per_output, f"{m} more outputs")
         with self._writing(f"{m} more outputs"):
             f.resize_dimension("time", n + m)
@@ -121,6 +124,7 @@ class ResultStream:
             for name in self._names:
                 f.variables[name][n:n + m, ...] = np.stack([values[name] for _, values in self._buffer])
             self._sync()
+        self._written = n + m
         self._buffer.clear()
 
     def kept(self) -> str:

@@ -219,7 +219,7 @@ def excitation_period(system) -> float | None:
     periods = []
     motion = system.motion
     if isinstance(motion, Harmonics):
-        for dof in np.unique(motion.dof):
+        for dof in set(motion.dof.tolist()):                 # np.unique would import numpy.ma (40-70 ms)
             on = motion.dof == dof
             periods.append(shortest_period(motion.omega[on], motion.amplitude[on]))
     sea = system.sea
