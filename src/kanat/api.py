@@ -110,6 +110,7 @@ def _lumped_statics(case: Case, reason: str):
                                               out_of_water)
     from kanat.lumped.network import build_network
     from kanat.statics.network_result import result_from_positions
+    from kanat.statics.steady_checks import LUMPED_EQUILIBRIUM
 
     net = build_network(case)
     x, info = equilibrium(net, case)
@@ -124,7 +125,7 @@ def _lumped_statics(case: Case, reason: str):
     grounded = contact_length(net, info["normal_force"], on_seabed)
     anchors = anchor_forces(net, info["loads"], info["normal_force"], on_seabed,
                             0.0 if seabed is None else seabed.friction)
-    return result_from_positions(case, cables, bodies, points, "lumped equilibrium", info["iterations"],
+    return result_from_positions(case, cables, bodies, points, LUMPED_EQUILIBRIUM, info["iterations"],
                                  [f"solved by the lumped model's equilibrium: {reason}",
                                   *([relaxation_note(info)] if "fallback" in info else [])],
                                  grounded=dict(zip(net.cable_names, grounded)),

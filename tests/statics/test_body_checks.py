@@ -51,8 +51,10 @@ def test_a_sinking_body_hanging_in_the_air_is_a_warning():
                                                   "cables[0].segments": 10})
     verdict = solve_statics(case).verdict
     assert verdict.status == "ok"
-    [warning] = [w for w in verdict.warnings if "above the water" in w]
+    [warning] = [w for w in verdict.warnings if "above the water" in w and "weighs m g" in w]
     assert "body 'sled'" in warning
+    [cable] = [w for w in verdict.warnings if w.startswith("cable 'tow'")]       # kanat.statics.steady_checks.dry_parts
+    assert number(cable, "cable 'tow':") == pytest.approx(20.0, rel=1e-3)        # the whole cable, unstretched
     assert number(warning, "weighs m g =") == pytest.approx(1135 * 9.81, rel=1e-3)
 
 

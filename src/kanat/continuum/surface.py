@@ -29,6 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum import kernels2d as k
+from kanat.physics.immersion import dry_length, heights  # noqa: F401  (eq. 1, kanat.physics.immersion eq. 3)
 
 DRY_MARGIN = 1e-3
 """How far [m] beyond half a diameter above the surface a node counts as out of the water (round-off
@@ -79,30 +80,6 @@ def dry_buoyant_node(rows: np.ndarray, height: np.ndarray) -> tuple[int, float] 
     if height[worst] - 0.5 * diameter[worst] <= DRY_MARGIN:
         return None
     return int(nodes[worst]), float(height[worst])
-
-
-def heights(position: np.ndarray, sea, t: float) -> np.ndarray:
-    """Height [m] of each node's centreline above the water surface (negative under it): the mean
-    surface ``z = 0``, or the wave elevation over the node when ``sea`` is given."""
-    position = np.asarray(position, dtype=float)
-    if sea is None:
-        return position[:, 2].copy()
-    return position[:, 2] - sea.elevation(position[:, 0], position[:, 1], t)
-
-
-def dry_shares(height: np.ndarray) -> np.ndarray:
-    """Eq. (1)'s ``f``: the share of each interval's chord above the surface (N,), from its nodes'
-    heights ``height`` (N + 1,) (:func:`heights`); exactly 0 for an interval with no node above it."""
-    h0, h1 = height[:-1], height[1:]
-    crossing = (h0 > 0.0) != (h1 > 0.0)
-    return np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
-                    (h0 > 0.0).astype(float))
-
-
-def dry_length(s: np.ndarray, height: np.ndarray) -> float:
-    """Eq. (1): the length [m] of cable above the surface, from the nodes' arclengths ``s`` and
-    heights ``height`` (:func:`heights`)."""
-    return float(np.sum(np.diff(s) * dry_shares(height)))
 
 
 class DryLength:

@@ -40,7 +40,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.continuum.surface import dry_shares, heights
+from kanat.physics.immersion import dry_shares, heights
 
 
 ROUND_OFF = 1e-8

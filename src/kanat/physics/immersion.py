@@ -12,6 +12,15 @@ of its volume (the cap volume ``pi h^2 (3a - h) / 3`` over ``4 pi a^3 / 3``, ``a
 inside and zero outside: ``f`` and ``df/dz`` are continuous, so a Newton iteration on a float
 that crosses the surface sees no jump in its Jacobian. A float's buoyancy is ``f`` times the
 weight of the water it displaces fully submerged (``net_buoyancy + mass g`` of the body).
+
+A line's length above the surface, interval by interval (the part of each interval above it by
+linear interpolation of its ends' heights ``h`` above the surface)::
+
+    L_dry = sum_i  ds_i * f_i,   f_i = 1 both ends above, 0 both below,
+                                 max(h_i, h_i+1) / |h_i+1 - h_i| crossing                (3)
+
+(:func:`dry_shares`, :func:`dry_length`): the continuum model wets each interval over ``1 - f_i``,
+and the statics solvers that take a whole line as submerged say how much of it was not.
 """
 from __future__ import annotations
 
@@ -68,3 +77,27 @@ def sphere_fractions(z: np.ndarray, eta, diameter: np.ndarray) -> np.ndarray:
     """
     u = np.clip((eta - np.asarray(z, dtype=float)) / diameter + 0.5, 0.0, 1.0)
     return u * u * (3.0 - 2.0 * u)
+
+
+def heights(position: np.ndarray, sea, t: float) -> np.ndarray:
+    """Height [m] of each node's centreline above the water surface (negative under it): the mean
+    surface ``z = 0``, or the wave elevation over the node when ``sea`` is given."""
+    position = np.asarray(position, dtype=float)
+    if sea is None:
+        return position[:, 2].copy()
+    return position[:, 2] - sea.elevation(position[:, 0], position[:, 1], t)
+
+
+def dry_shares(height: np.ndarray) -> np.ndarray:
+    """Eq. (3)'s ``f``: the share of each interval's chord above the surface (N,), from its nodes'
+    heights ``height`` (N + 1,) (:func:`heights`); exactly 0 for an interval with no node above it."""
+    h0, h1 = height[:-1], height[1:]
+    crossing = (h0 > 0.0) != (h1 > 0.0)
+    return np.where(crossing, np.maximum(h0, h1) / np.where(crossing, np.abs(h1 - h0), 1.0),
+                    (h0 > 0.0).astype(float))
+
+
+def dry_length(s: np.ndarray, height: np.ndarray) -> float:
+    """Eq. (3): the length [m] of cable above the surface, from the nodes' arclengths ``s`` and
+    heights ``height`` (:func:`heights`)."""
+    return float(np.sum(np.diff(s) * dry_shares(height)))

@@ -27,6 +27,10 @@ reported, as ``<check>: ...``):
    (:mod:`kanat.statics.body_checks`); not made on a dynamic run's start ``as_given``, which is
    no steady state (:func:`checks_of_state`).
 
+A statics result from a solver that takes every cable as submerged (the single-cable and network
+statics, not the lumped model's equilibrium) also gets a warning for each cable with a part above the
+water surface (:func:`dry_parts`; :func:`check_result`).
+
 A node that holds a body (a cable end at a body, an attachment) is named with it in the messages
 (``body 'sled' at cable 'tow' node 100 (s = 1000 m)``).
 
@@ -38,11 +42,12 @@ contact models).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Mapping, Protocol
 
 import numpy as np
 
+from kanat.physics.immersion import dry_shares
 from kanat.physics.seabed import PENETRATION_FLOOR, PENETRATION_MARGIN, seabed_of
 from kanat.statics.body_checks import check_bodies
 
@@ -379,8 +384,50 @@ CHECKS = (_finite, _strain, _tension, _reach, _seabed, _grounded)
 
 def check_result(result) -> Verdict:
     """:func:`check_steady` on a statics result (:class:`kanat.statics.StaticsResult` or
-    :class:`kanat.statics.network_result.NetworkResult`); Naumov & Agievich's sphere problem, in
-    dimensionless groups with its own checks (``physical_warnings``), passes as it is."""
+    :class:`kanat.statics.network_result.NetworkResult`), with :func:`dry_parts`' warnings unless the
+    lumped model's equilibrium solved it; Naumov & Agievich's sphere problem, in dimensionless groups
+    with its own checks (``physical_warnings``), passes as it is."""
     if result.sphere is not None:
         return Verdict()
-    return check_steady(result.case, result.cables, bodies=result.bodies, attitudes=getattr(result, "attitudes", None))
+    verdict = check_steady(result.case, result.cables, bodies=result.bodies,
+                           attitudes=getattr(result, "attitudes", None))
+    if result.method == LUMPED_EQUILIBRIUM:
+        return verdict
+    return replace(verdict, warnings=verdict.warnings + dry_parts(result.case, result.cables))
+
+
+LUMPED_EQUILIBRIUM = "lumped equilibrium"
+"""The ``method`` of a network statics result the lumped model's equilibrium solved: its elements
+weigh a part above the water in air (their wetted share), so :func:`dry_parts` does not apply."""
+DRY_LENGTH_FLOOR = 1e-6
+"""A cable's length above the water [m] below which :func:`dry_parts` says nothing (round-off of a
+node on the surface)."""
+
+
+def dry_parts(case, cables: Mapping[str, CableNodes]) -> tuple[str, ...]:
+    """Warnings on the parts of cables above the mean water surface, for the statics solvers that take
+    a whole line as submerged (docs/statics.md, "Assumptions"): per such cable, the length above the
+    surface (:mod:`kanat.physics.immersion` eq. 3, unstretched) and the buoyancy it keeps there, its
+    weight in air less its weight in water (``m g - w``) per metre, which in the air it would not have,
+    against the cable's largest tension."""
+    env = case.environment
+    found = []
+    for cable in case.cables:
+        if cable.name not in cables:
+            continue
+        nodes = _Nodes(case, cable, cables[cable.name])
+        if len(nodes.s) < 2:
+            continue
+        share = dry_shares(nodes.position[:, 2]) * np.diff(nodes.s)
+        length = float(np.sum(share))
+        if length <= DRY_LENGTH_FLOOR:
+            continue
+        lift = np.array([line.mass * env.gravity - line.weight_in_water_value(env.water_density, env.gravity)
+                         for line in nodes.types])[nodes.element_type]
+        buoyancy = float(np.sum(lift * share))
+        largest = float(np.max(np.abs(nodes.tension)))
+        found.append(f"cable '{cable.name}': {length:.4g} m of it lies above the water surface, where this solver "
+                     f"takes it as submerged: it keeps {buoyancy:.4g} N of buoyancy there "
+                     f"({100.0 * buoyancy / max(largest, 1e-300):.2g} % of its largest tension) that it would not "
+                     "have in the air; the dynamic models (`kanat run`) weigh that part in air")
+    return tuple(found)
