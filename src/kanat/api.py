@@ -483,7 +483,7 @@ def _run_released(case: Case, scheme, output, progress, observers, start) -> Out
         summary = outcome.summary
         parts.append((phase, outcome.dataset))
         let_go = f" after releasing {', '.join(phase.released)} at t = {phase.start:g} s" if phase.released else ""
-        texts.append(f"phase from t = {phase.start:g} s{let_go}: {outcome.status}")
+        texts.append(f"phase from t = {phase.start:g} s{let_go}: {release.on_run_clock(outcome.status, phase.start)}")
         if not outcome.ok:
             break
     dataset = release.join(case, parts)
@@ -493,7 +493,7 @@ def _run_released(case: Case, scheme, output, progress, observers, start) -> Out
         from kanat.io.results import write_result
 
         write_result(dataset, output)
-    text = "\n".join([*texts, summary.summary()])
+    text = "\n".join([*texts, release.on_run_clock(summary.summary(), parts[-1][0].start)])
     return Outcome(status, text, dataset, None if output is None else Path(output), summary)
 
 

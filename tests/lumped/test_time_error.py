@@ -139,6 +139,8 @@ def test_a_step_through_snaps_warns_or_fails(fall, dt, verdict):
         assert status.startswith("failed: the time step does not resolve the motion")
         assert estimate > time_error.FAILURE and "rerun with dt <= " in status
         assert 5.0 < ds.time.values[-1] < 9.0                        # stopped after the release, outputs kept
+        said = float(status.split("displacement at t = ")[1].split(" s")[0])    # on the run's clock, not the
+        assert said == pytest.approx(ds.attrs["time_error_time"], abs=1e-5)      # released phase's (from 0)
     else:
         assert status == "ok"
         assert time_error.WARNING < estimate < time_error.FAILURE

@@ -12,6 +12,7 @@ node's, eq. (1) of :mod:`kanat.lumped.system`, with the end's half element's mas
 """
 from __future__ import annotations
 
+import re
 import warnings
 from dataclasses import dataclass
 
@@ -183,6 +184,9 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
     out = xr.merge([static, timed, event], join="outer", compat="override")
     out = _vessel_outputs(case, out)
     out.attrs = {**last.attrs, "case_sha256": case_sha256(case), "case_yaml": case_yaml(case)}   # the run's case
+    for key in ("status", "notes"):                # the last phase's sentences, on the run's clock
+        if isinstance(out.attrs.get(key), str):
+            out.attrs[key] = on_run_clock(out.attrs[key], parts[-1][0].start)
     for key in SUMMED_ATTRIBUTES:                  # counts and times of the whole run, not its last phase
         values = [ds.attrs.get(key) for _, ds in parts]
         if all(isinstance(v, (int, float, np.integer, np.floating)) for v in values):
@@ -199,6 +203,18 @@ def join(case, parts) -> "xarray.Dataset":  # noqa: F821
         if name in first.coords:
             out = out.assign_coords({name: first[name]})
     return out
+
+
+CLOCK_TIME = re.compile(r"\bt = (-?[0-9]+(?:\.[0-9]*)?(?:e[+-]?[0-9]+)?) s\b")
+"""A time in a model's sentence (``at t = 4 s``, as every run check writes one)."""
+
+
+def on_run_clock(text: str, start: float) -> str:
+    """A phase's sentence (its status, a note) with every ``t = X s`` moved to the run's clock: the
+    phase's own clock starts at 0 at ``start`` [s]."""
+    if not start:
+        return text
+    return CLOCK_TIME.sub(lambda found: f"t = {float(found.group(1)) + start:.6g} s", text)
 
 
 def _vessel_outputs(case, ds):
