@@ -430,7 +430,7 @@ class RowFacts:
         self.junctions = np.flatnonzero(rows[:, k.KIND] == k.JUNCTION)
         self.euler = euler_loads(rows)
         self.sections = []
-        for value in np.unique(rows[:, k.SECTION]):
+        for value in sorted(set(rows[:, k.SECTION].tolist())):     # np.unique would import numpy.ma
             which = np.flatnonzero(rows[:, k.SECTION] == value)
             self.sections.append((which, rows[which[0]]))
         self.penetration = None

@@ -183,7 +183,7 @@ def interval_stretch(tension, rows) -> tuple[np.ndarray, np.ndarray]:
     """``(1 + e)`` of both nodes of every interval, each with that interval's law: shapes (N,), (N,)."""
     left, right = np.empty(len(rows)), np.empty(len(rows))
     sections = rows[:, k.SECTION]
-    for value in np.unique(sections):
+    for value in sorted(set(sections.tolist())):                # np.unique would import numpy.ma
         which = np.flatnonzero(sections == value)
         p = rows[which[0]]
         left[which] = 1.0 + strain_of(tension[which], p)

@@ -273,7 +273,7 @@ def planar_position_jacobian(rows):
 def interval_compliance(tension, rows):
     """``de/dT`` of both nodes of every interval with that interval's law: (N,), (N,)."""
     left, right = np.empty(len(rows)), np.empty(len(rows))
-    for value in np.unique(rows[:, k.SECTION]):
+    for value in sorted(set(rows[:, k.SECTION].tolist())):     # np.unique would import numpy.ma
         which = np.flatnonzero(rows[:, k.SECTION] == value)
         p = rows[which[0]]
         n = int(p[k.LAW])
