@@ -88,11 +88,12 @@ def test_breaking_tow_converges_to_the_resolved_run():
     step (8.2 ms), which resolves the snaps.
 
     At the example's 0.25 s and at 0.125 s the default (implicit) scheme cannot follow the snaps:
-    the sphere's error after 300 s halves with the step (2.29 m, then 0.99 m, of the 325 m it
-    moved; 0.19 m at 0.0625 s), while the free end falls faster than in the resolved run
-    (1262 m and 1303 m deep against 1151 m at 400 s) and the runs say their snap peaks are not
-    converged. Below the axial period the implicit scheme is the resolved run: at 15.6 ms the
-    free end is within 0.01 % and the sphere 0.76 m of rk4's.
+    the free end falls faster than in the resolved run (1274 m and 1265 m deep against 1151 m at
+    400 s) and the runs say their snap peaks are not converged; the sphere's error after 300 s is
+    1.16 m and 0.21 m of the 325 m it moved (1.11 m at 0.0625 s: through the snaps it does not
+    converge with the step; an earlier tree measured 2.29 and 0.99 m, which read as first order and
+    was asserted so). Below the axial period the implicit scheme is the resolved
+    run: at 15.6 ms the free end is within 0.01 % and the sphere 0.14 m of rk4's.
 
     Before 2026-11-29 the Newton iteration accepted a step's first increment on a contraction
     rate carried from a slack phase (``kanat.lumped.fast_implicit.CARRIED_RATE_FLOOR``): the runs
@@ -108,9 +109,8 @@ def test_breaking_tow_converges_to_the_resolved_run():
     rov = {name: d.body_position.sel(body="rov").values for name, d in data.items()}
     moved = np.linalg.norm(rov["rk4"][-1] - rov["rk4"][20])                # since the release at t = 100 s
     error = {name: np.linalg.norm(rov[name][-1] - rov["rk4"][-1]) for name in steps}
-    assert error["0.25 s"] < 0.01 * moved                                   # 2.29 m of 325 m
-    assert error["0.125 s"] < 0.6 * error["0.25 s"]                         # 0.99 m: first order
-    assert error["resolved"] < 0.005 * moved                                # 0.76 m
+    assert error["0.25 s"] < 0.01 * moved and error["0.125 s"] < 0.01 * moved   # 1.16 and 0.21 m of 325 m
+    assert error["resolved"] < 0.002 * moved                                # 0.14 m
     top = {name: d.position.values[-1, 0, 2] for name, d in data.items()}    # the cable's free end
     assert top["resolved"] == pytest.approx(top["rk4"], rel=0.01)            # -1151.6 m against -1151.5 m
     assert top["rk4"] < -1100
