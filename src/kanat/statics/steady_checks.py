@@ -382,6 +382,14 @@ CHECKS = (_finite, _strain, _tension, _reach, _seabed, _grounded)
 """The checks in the order they are made; each named by its function's name without the ``_``."""
 
 
+LUMPED_EQUILIBRIUM = "lumped equilibrium"
+"""The ``method`` of a network statics result the lumped model's equilibrium solved: its elements
+weigh a part above the water in air (their wetted share), so :func:`dry_parts` does not apply."""
+DRY_LENGTH_FLOOR = 1e-6
+"""A cable's length above the water [m] below which :func:`dry_parts` says nothing (round-off of a
+node on the surface)."""
+
+
 def check_result(result) -> Verdict:
     """:func:`check_steady` on a statics result (:class:`kanat.statics.StaticsResult` or
     :class:`kanat.statics.network_result.NetworkResult`), with :func:`dry_parts`' warnings unless the
@@ -394,14 +402,6 @@ def check_result(result) -> Verdict:
     if result.method == LUMPED_EQUILIBRIUM:
         return verdict
     return replace(verdict, warnings=verdict.warnings + dry_parts(result.case, result.cables))
-
-
-LUMPED_EQUILIBRIUM = "lumped equilibrium"
-"""The ``method`` of a network statics result the lumped model's equilibrium solved: its elements
-weigh a part above the water in air (their wetted share), so :func:`dry_parts` does not apply."""
-DRY_LENGTH_FLOOR = 1e-6
-"""A cable's length above the water [m] below which :func:`dry_parts` says nothing (round-off of a
-node on the surface)."""
 
 
 def dry_parts(case, cables: Mapping[str, CableNodes]) -> tuple[str, ...]:
