@@ -34,6 +34,8 @@ def test_a_cable_hung_from_above_the_water_is_said_to_keep_its_buoyancy_there():
     assert len(warned) == 1 and warned[0] in text
     line, env = case.line_types["towcable"], case.environment
     top = result.cables["tow"].tension[0]
+    sinker = -case.bodies["sled"].net_buoyancy
+    assert top == pytest.approx(sinker + line.weight_in_water * 100.0, rel=1e-9)   # all of it taken as wet
     length = HEIGHT / (1.0 + top / line.axial_stiffness)
     lift = line.mass * env.gravity - line.weight_in_water_value(env.water_density, env.gravity)
     said_length = float(warned[0].split(": ")[1].split(" m ")[0])
