@@ -89,21 +89,28 @@ def line_lives(fatigue: pd.DataFrame) -> pd.Series:
     return fatigue.groupby("line")["life_years"].min()
 
 
+def kept_run(out: Path, loaded, sea_state, k: int):
+    """Seed ``k``'s run of ``sea_state`` under ``out``, analysed as the design analyses it (its
+    attributes, ``status`` among them, kept)."""
+    import kanat
+    from kanat.design_checks import records
+    from kanat.design_checks.conditions import sea_state_case, wave_seed
+
+    run = kanat.read_result(out / "runs" / "intact" / f"{sea_state.name}_seed{k}.nc").load()
+    return records.analysed(run, sea_state_case(loaded, sea_state, wave_seed(loaded, k)))
+
+
 def seed_lives(out: Path, case: Path, seeds: int) -> pd.DataFrame:
     """Each seed's lives per line, from the kept runs, as the design weights them."""
     import kanat
-    from kanat.design_checks import records
     from kanat.design_checks.check import annual_damage
-    from kanat.design_checks.conditions import sea_state_case, wave_seed
 
     loaded = kanat.load_case(case)
     found = {}
     for k in range(seeds):
         total: dict[str, float] = {}
         for sea_state in loaded.design.sea_state_rows:
-            run = kanat.read_result(out / "runs" / "intact" / f"{sea_state.name}_seed{k}.nc").load()
-            run = records.analysed(run, sea_state_case(loaded, sea_state, wave_seed(loaded, k)))
-            for line, damage in annual_damage(loaded, sea_state, [run]).items():
+            for line, damage in annual_damage(loaded, sea_state, [kept_run(out, loaded, sea_state, k)]).items():
                 total[line] = total.get(line, np.zeros_like(damage)) + damage
         found[f"seed {k}"] = {line: 1.0 / float(np.max(d)) for line, d in total.items()}
     return pd.DataFrame(found)
@@ -114,9 +121,7 @@ def cell_damage(args: argparse.Namespace, subset: list, dyn_case: Path, scratch:
     [1/year]: the frequency domain's from a one-cell ``kanat design`` of that cell (not timed), the
     time domain's from its kept runs over all seeds, weighted as the design weights them."""
     import kanat
-    from kanat.design_checks import records
     from kanat.design_checks.check import annual_damage
-    from kanat.design_checks.conditions import sea_state_case, wave_seed
 
     loaded = kanat.load_case(dyn_case)
     rows = []
@@ -124,13 +129,8 @@ def cell_damage(args: argparse.Namespace, subset: list, dyn_case: Path, scratch:
         folder = scratch / f"frequency_{sea_state.name}"
         frequency = run_design(write_case(folder, "frequency", [cell], STORM, 1, args.ramp), folder / "out")
         fd = frequency["fatigue"].groupby("line")["damage_per_year"].max()
-        paths = [scratch / "dynamic" / "out" / "runs" / "intact" / f"{sea_state.name}_seed{k}.nc"
-                 for k in range(args.seeds)]
-        runs = []
-        for k, path in enumerate(paths):
-            with kanat.read_result(path) as ds:
-                if ds.attrs["status"] == "ok":
-                    runs.append(records.analysed(ds.load(), sea_state_case(loaded, sea_state, wave_seed(loaded, k))))
+        runs = [kept_run(scratch / "dynamic" / "out", loaded, sea_state, k) for k in range(args.seeds)]
+        runs = [run for run in runs if run.attrs["status"] == "ok"]
         td = {line: float(np.max(d)) for line, d in annual_damage(loaded, sea_state, runs).items()} if runs else {}
         for line in fd.index:
             rows.append({"cell": f"{sea_state.name} Hs {cell.hs:.3g} m Tp {cell.tp:.4g} s {cell.heading_deg:g} deg",

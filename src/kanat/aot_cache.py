@@ -102,13 +102,19 @@ def restore(entry: Path, targets: Iterable[Path]) -> list[Path]:
 
 
 def _copy_whole(source: Path, target: Path) -> None:
-    """Copy ``source`` to ``target`` through a partial file in the same folder, then rename it: a
-    reader never sees half a file, and a process that has the old ``target`` loaded (a run going on
-    while an install restores its kernels) keeps its own copy instead of having it rewritten under it."""
+    """Copy ``source`` to ``target`` whole (:func:`_write_whole`)."""
+    _write_whole(target, lambda partial: shutil.copy2(source, partial))
+
+
+def _write_whole(target: Path, fill) -> None:
+    """Write ``target`` through a partial file in the same folder (``fill(path)`` writes it), then
+    rename it over the name: a reader never sees half a file, and a process that has the old
+    ``target`` loaded (a run going on while an install restores its kernels) keeps its own copy
+    instead of having it rewritten under it."""
     handle, partial = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.")
     os.close(handle)
     try:
-        shutil.copy2(source, partial)
+        fill(partial)
         os.replace(partial, target)
     finally:
         if os.path.exists(partial):
@@ -122,10 +128,8 @@ def store(entry: Path, built: Iterable[Path], described: dict) -> bool:
         entry.mkdir(parents=True, exist_ok=True)
         for path in built:
             _copy_whole(Path(path), entry / Path(path).name)
-        handle, partial = tempfile.mkstemp(dir=entry, prefix=f".{BUILT}.")
-        os.close(handle)
-        Path(partial).write_text(json.dumps(described, indent=1, sort_keys=True))
-        os.replace(partial, entry / BUILT)
+        text = json.dumps(described, indent=1, sort_keys=True)
+        _write_whole(entry / BUILT, lambda partial: Path(partial).write_text(text))
     except OSError as error:
         _warn(f"the compiled kernels were not cached in {entry} ({error}); the next install compiles them again")
         return False

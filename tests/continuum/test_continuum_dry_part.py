@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 import kanat
-from kanat.continuum.surface import DryLength, dry_length, heights
+from kanat.continuum.surface import DryLength
+from kanat.physics.immersion import dry_length, heights
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

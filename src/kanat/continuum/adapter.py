@@ -33,12 +33,13 @@ from kanat.continuum.model2d import strain_of
 from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
-from kanat.continuum.surface import DryLength, dry_buoyant_node, heights
+from kanat.continuum.surface import DryLength, dry_buoyant_node
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
+from kanat.physics.immersion import heights
 from kanat.schemes import get_scheme
 from kanat.step_control import Halving, Steps, StepsExhausted
 
@@ -440,6 +441,11 @@ class RowFacts:
             self.penetration = static, PENETRATION_FACTOR * static + 1e-3
 
 
+def euler_column(ds, diameter):
+    """The segment length an Euler load counts on: ``ds``, at least :data:`SLENDER_SEGMENT` diameters."""
+    return np.maximum(ds, SLENDER_SEGMENT * diameter)
+
+
 def rod_advice(row: np.ndarray, excess: float, length: float) -> str:
     """What to do about a compression beyond the Euler load of a segment of a line with bending stiffness.
 
@@ -458,7 +464,7 @@ def rod_advice(row: np.ndarray, excess: float, length: float) -> str:
         Unstretched length of the cable [m].
     """
     ds, ei, diameter = row[k.DS], row[k.EI], row[k.DIAM]
-    euler = np.pi**2 * ei / (2 * max(ds, SLENDER_SEGMENT * diameter)) ** 2      # as euler_loads
+    euler = np.pi**2 * ei / (2 * euler_column(ds, diameter)) ** 2
     finer = ds * np.sqrt(euler / excess)                           # the segment whose Euler load it is
     if ds / finer <= REFINEMENT_REACH and finer >= SLENDER_SEGMENT * diameter:
         return (f"beyond the Euler load of one segment ({euler:.4g} N): the grid no longer resolves the buckled "
@@ -495,7 +501,7 @@ def euler_loads(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     ds = rows[:, k.DS]
     if not np.any(rows[:, k.EI] > 0):
         return np.zeros(n), np.minimum(np.arange(n), n - 2)
-    column = np.maximum(ds, SLENDER_SEGMENT * rows[:, k.DIAM])    # Euler's load is a slender column's
+    column = euler_column(ds, rows[:, k.DIAM])
     load = np.where(ds > 0, np.pi**2 * rows[:, k.EI] / np.maximum(2 * column, 1e-300) ** 2, np.inf)
     after, before = np.append(load, np.inf), np.insert(load, 0, np.inf)
     interval = np.where(after <= before, np.arange(n), np.arange(n) - 1)

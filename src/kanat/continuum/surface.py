@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from kanat.continuum import kernels2d as k
-from kanat.physics.immersion import dry_length, heights  # noqa: F401  (eq. 1, kanat.physics.immersion eq. 3)
+from kanat.physics.immersion import dry_length                   # eq. (1): kanat.physics.immersion eq. (3)
 
 DRY_MARGIN = 1e-3
 """How far [m] beyond half a diameter above the surface a node counts as out of the water (round-off
@@ -70,7 +70,7 @@ def dry_buoyant_node(rows: np.ndarray, height: np.ndarray) -> tuple[int, float] 
     ----------
     rows : ndarray, shape (n - 1, P)
     height : ndarray, shape (n,)
-        Every node's height above the water surface [m] (:func:`heights`).
+        Every node's height above the water surface [m] (:func:`kanat.physics.immersion.heights`).
     """
     nodes, diameter = buoyant_nodes(rows)
     if not len(nodes):
@@ -89,7 +89,8 @@ class DryLength:
         self.length, self.time = 0.0, 0.0
 
     def observe(self, s: np.ndarray, height: np.ndarray, t: float) -> None:
-        """One output: the nodes' arclengths ``s`` and heights above the surface (:func:`heights`) at ``t``."""
+        """One output: the nodes' arclengths ``s`` and heights above the surface at ``t``
+        (:func:`kanat.physics.immersion.heights`)."""
         length = dry_length(s, height)
         if length > self.length:
             self.length, self.time = length, t
