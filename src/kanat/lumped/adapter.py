@@ -94,7 +94,7 @@ class LumpedModel:
         self.node_tension = NodeTension(self.net)
         self.max_strain = np.array([case.line_types[name].strain_limit() for name in self.net.el_type])
         self._T = np.zeros(self.net.n_elements)
-        self._seen = None                  # (t, free nodes' x, all nodes' x) of the last outputs()
+        self._seen = None                  # (t, free nodes' x, all nodes' x, strains) of the last outputs()
         self.penetration = allowed_penetration(self.net, case.environment)
         self._friction = case.environment.seabed.friction if case.environment.seabed is not None else 0.0
         self._mooring = MooringOutputs(self.net, anchors_on_seabed(self.net, case.environment), case)
@@ -229,27 +229,30 @@ class LumpedModel:
         entries.tensions(x, v, self.system.el_args, self._T)
         return self._T
 
-    def _positions(self, state: LumpedState) -> np.ndarray:
-        """All nodes' positions (n, 3) of ``state``: those :meth:`outputs` found for the same time
-        and free nodes' positions, else from :meth:`LumpedSystem.full`."""
+    def _positions(self, state: LumpedState) -> tuple[np.ndarray, np.ndarray]:
+        """All nodes' positions (n, 3) of ``state`` and the element strains there: those :meth:`outputs`
+        found for the same time and free nodes' positions (the strains of its force evaluation,
+        eq. (1)'s ``|d| / L0 - 1``), else worked out here."""
         scheme = state.scheme
         positions = state_positions(scheme)[0]
         seen = self._seen
         if seen is not None and seen[0] == scheme.t and np.array_equal(seen[1], positions):
-            return seen[2]
-        return self.system.full(scheme.t, *state_positions(scheme))[0]
+            return seen[2], seen[3]
+        net, x = self.net, self.system.full(scheme.t, *state_positions(scheme))[0]
+        d = x[net.el_j] - x[net.el_i]
+        return x, np.sqrt(np.add.reduce(d * d, axis=1)) / net.el_length - 1.0     # np.linalg.norm's own sum
 
     # 4. outputs ------------------------------------------------------------------------
     def outputs(self, state: LumpedState) -> dict:
         system, net = self.system, self.net
         t = state.scheme.t
         x, v, a, heading = system.full(t, *state_positions(state.scheme))
-        self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy())             # for check()
         T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
         accelerations = len(self._mooring.point_bodies) > 0      # eq. (O1) of mooring_outputs needs them
         F, M = system.loads(t, x, v, heading, masses=accelerations)
+        self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy(), system.strain.copy())   # for check()
         if accelerations:
             a = system.solve_mass(x, F, M, a)
         return {"position": x[idx], "velocity": v[idx], "tension": self.node_tension(T), "segment_tension": T,
@@ -263,9 +266,7 @@ class LumpedModel:
     # 5. status ---------------------------------------------------------------------------
     def check(self, state: LumpedState, values: dict) -> str | None:
         net, t = self.net, state.scheme.t
-        x = self._positions(state)
-        d = x[net.el_j] - x[net.el_i]
-        strain = np.sqrt(np.add.reduce(d * d, axis=1)) / net.el_length - 1.0     # np.linalg.norm's own sum
+        x, strain = self._positions(state)
         k = int(np.argmax(strain - self.max_strain))
         if strain[k] > self.max_strain[k]:
             return (f"element stretched by {100 * strain[k]:.3g} % (> {100 * self.max_strain[k]:g} %) at t = "

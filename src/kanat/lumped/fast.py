@@ -41,19 +41,26 @@ def ramp_at(t, duration):
 
 
 @inner
-def current_at(z, cz, cu, scale, u, p):
-    """Set ``u[p]`` to ``scale`` times the current at height ``z`` from a piecewise-linear profile
-    (``cz`` ascending, ``cu`` (k, 3)); constant beyond the ends (as ``np.interp``)."""
+def current_at(points, cz, cu, scale, u):
+    """Set ``u`` (k, 3) to ``scale`` times the current at the heights ``points[:, 2]`` from a
+    piecewise-linear profile (``cz`` ascending, ``cu`` (k, 3)); constant beyond the ends (as
+    ``np.interp``).
+
+    This and :func:`sea_add` loop over the points themselves: a compiled call that passes arrays,
+    made once per point, cost 70 times the interpolation (docs/performance.md, "Calls in the
+    element loops")."""
     n = cz.shape[0]
-    i, w = 0, 0.0
-    if n > 1 and z >= cz[n - 1]:
-        i = n - 1
-    elif n > 1 and z > cz[0]:
-        while cz[i + 1] < z:
-            i += 1
-        w = (z - cz[i]) / (cz[i + 1] - cz[i])
-    for r in range(3):
-        u[p, r] = scale * (cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0))
+    for p in range(points.shape[0]):
+        z = points[p, 2]
+        i, w = 0, 0.0
+        if n > 1 and z >= cz[n - 1]:
+            i = n - 1
+        elif n > 1 and z > cz[0]:
+            while cz[i + 1] < z:
+                i += 1
+            w = (z - cz[i]) / (cz[i + 1] - cz[i])
+        for r in range(3):
+            u[p, r] = scale * (cu[i, r] + (w * (cu[i + 1, r] - cu[i, r]) if w > 0.0 else 0.0))
 
 
 QUARTER_TURN = (1.5707963267341256, 6.077100506303966e-11, 2.0222662487959506e-21)
@@ -105,8 +112,8 @@ def stretched(z, eta, depth, wheeler):
 
 
 @inner
-def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
-    """Add the wave velocity and acceleration at ``(x, y, z)`` to ``u[p]``, ``a[p]`` (waves eqs. 3-5,
+def sea_add(points, t, sea, spare, reach, u, a):
+    """Add the wave velocity and acceleration at ``points`` (k, 3) to ``u``, ``a`` (k, 3) (waves eqs. 3-5,
     stretched by eq. 7 and ramped by eq. 8) of the linear ``sea`` (:class:`kanat.lumped.entries.Sea`).
 
     ``spare`` (4, n) holds the point-independent factors of the ``n`` components at ``t``
@@ -121,33 +128,35 @@ def sea_add(x, y, z, t, sea, spare, reach, u, a, p):
     phase, depth, inv = sea.phase, sea.depth, sea.depth_factor
     ramp, n = ramp_at(t, sea.ramp), amp.shape[0]
     deep, wt, ct, st = spare[0], spare[1], spare[2], spare[3]
-    eta = 0.0
-    if reach[0] * (abs(x) + abs(y)) + reach[1] <= SINCOS_REACH:
-        for j in range(n):
-            ct[j], st[j] = sincos(k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j])
-            eta += amp[j] * ct[j]
-    else:
-        for j in range(n):
-            theta = k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j]
-            ct[j], st[j] = math.cos(theta), math.sin(theta)
-            eta += amp[j] * ct[j]
-    if n > 0:
-        z = stretched(z, ramp * eta, depth, sea.wheeler)
-    zc = min(z, 0.0) if depth <= 0.0 else min(max(z, -depth), 0.0)
-    for j in range(n):
-        e = math.exp(k[j] * zc)
-        if depth <= 0.0:
-            c, s = e, e
+    for p in range(points.shape[0]):
+        x, y, z = points[p, 0], points[p, 1], points[p, 2]
+        eta = 0.0
+        if reach[0] * (abs(x) + abs(y)) + reach[1] <= SINCOS_REACH:
+            for j in range(n):
+                ct[j], st[j] = sincos(k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j])
+                eta += amp[j] * ct[j]
         else:
-            low = deep[j] / e if e > 0.0 else 0.0           # e^{-k (z + 2 h)}
-            c, s = (e + low) * inv[j], (e - low) * inv[j]
-        aw, aw2 = ramp * amp[j] * omega[j], ramp * amp[j] * omega[j] * omega[j]
-        u[p, 0] += c * ct[j] * aw * cosd[j]
-        u[p, 1] += c * ct[j] * aw * sind[j]
-        u[p, 2] += s * st[j] * aw
-        a[p, 0] += c * st[j] * aw2 * cosd[j]
-        a[p, 1] += c * st[j] * aw2 * sind[j]
-        a[p, 2] -= s * ct[j] * aw2
+            for j in range(n):
+                theta = k[j] * (x * cosd[j] + y * sind[j]) - wt[j] + phase[j]
+                ct[j], st[j] = math.cos(theta), math.sin(theta)
+                eta += amp[j] * ct[j]
+        if n > 0:
+            z = stretched(z, ramp * eta, depth, sea.wheeler)
+        zc = min(z, 0.0) if depth <= 0.0 else min(max(z, -depth), 0.0)
+        for j in range(n):
+            e = math.exp(k[j] * zc)
+            if depth <= 0.0:
+                c, s = e, e
+            else:
+                low = deep[j] / e if e > 0.0 else 0.0           # e^{-k (z + 2 h)}
+                c, s = (e + low) * inv[j], (e - low) * inv[j]
+            aw, aw2 = ramp * amp[j] * omega[j], ramp * amp[j] * omega[j] * omega[j]
+            u[p, 0] += c * ct[j] * aw * cosd[j]
+            u[p, 1] += c * ct[j] * aw * sind[j]
+            u[p, 2] += s * st[j] * aw
+            a[p, 0] += c * st[j] * aw2 * cosd[j]
+            a[p, 1] += c * st[j] * aw2 * sind[j]
+            a[p, 2] -= s * ct[j] * aw2
 
 
 @inner
@@ -179,14 +188,12 @@ def sea_elevation(x, y, t, sea):
 def water(points, t, cz, cu, current_ramp, sea, u, a):
     """Water velocity ``u`` and acceleration ``a`` (k, 3) at ``points`` (k, 3): current (ramped over
     ``current_ramp`` seconds) + waves."""
-    scale = ramp_at(t, current_ramp)
-    spare, reach = np.empty((4, sea.amplitude.shape[0])), np.empty(2)
-    sea_factors(t, sea, spare, reach)
-    for p in range(points.shape[0]):
-        current_at(points[p, 2], cz, cu, scale, u, p)
-        for r in range(3):
-            a[p, r] = 0.0
-        sea_add(points[p, 0], points[p, 1], points[p, 2], t, sea, spare, reach, u, a, p)
+    current_at(points, cz, cu, ramp_at(t, current_ramp), u)
+    a[:, :] = 0.0
+    if sea.amplitude.shape[0] > 0:
+        spare, reach = np.empty((4, sea.amplitude.shape[0])), np.empty(2)
+        sea_factors(t, sea, spare, reach)
+        sea_add(points, t, sea, spare, reach, u, a)
 
 
 # --- vessel ----------------------------------------------------------------------------------

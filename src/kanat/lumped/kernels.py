@@ -91,21 +91,22 @@ def wetted_fraction(z_i, z_j, d, eta):
 
 
 @kernel
-def axial_force(kinds, ns, xs, ys, row, compression, damping, e, edot):
-    """The element's axial force ``T`` at strain ``e`` and rate ``edot``, eqs. (2) and (2a).
+def axial_force(f, compression, damping, e, edot):
+    """The element's axial force ``T`` at strain ``e`` and rate ``edot``, eqs. (2) and (2a), from its
+    elastic tension ``f = f(e)`` (:func:`elastic_row`; any value where ``e <= 0``, which is not read).
 
     A rope (``compression == 0``) is tension-only: ``T = max(0, f(e) + C_E2 e_dot)`` for ``e > 0``
     and 0 otherwise (the caller passes only ``e > 0``). A bar (``compression > 0``, a line type
     with bending stiffness and a ``compression_stiffness``) also pushes:
     ``T = f~(e) + C_E2 e_dot`` with ``f~(e) = f(e)`` for ``e > 0`` and ``compression * e`` for
     ``e <= 0``, continuous at ``e = 0`` and without the clamp at zero.
+
+    Scalars only, the law looked up by the caller: a compiled call that passes arrays costs more
+    than the whole law here (the element loops ran 7x slower with the arrays passed down;
+    docs/performance.md, "Calls in the element loops").
     """
     if compression > 0.0:
-        f = compression * e
-        if e > 0.0:
-            f, _ = elastic_row(kinds, ns, xs, ys, row, e)
-        return f + damping * edot
-    f, _ = elastic_row(kinds, ns, xs, ys, row, e)
+        return (f if e > 0.0 else compression * e) + damping * edot
     return max(0.0, f + damping * edot)
 
 
@@ -154,7 +155,8 @@ def element_forces(x, v, uw, aw, wet, node_force, node_mass, el, F, M, T, strain
         tension = 0.0
         if e > 0.0 or compression[k] > 0.0:
             edot = (t0 * (v[j, 0] - v[i, 0]) + t1 * (v[j, 1] - v[i, 1]) + t2 * (v[j, 2] - v[i, 2])) / L0[k]
-            tension = axial_force(law_kind, law_n, law_x, law_y, law[k], compression[k], c[k], e, edot)
+            f = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)[0] if e > 0.0 else 0.0
+            tension = axial_force(f, compression[k], c[k], e, edot)
         T[k] = tension
         strain[k] = e
         phi = wet[k]
@@ -375,8 +377,9 @@ def tangent_blocks(x, v, uw, el, K, C, D):
 @kernel
 def tensions(x, v, el, T):
     """Element tensions only, eqs. (1)-(2a) (for outputs and snap detection); ``el`` an
-    :class:`~kanat.lumped.entries.Elements`."""
-    el_i, el_j, L0, compression = el.first_node, el.second_node, el.length, el.compression_stiffness
+    :class:`~kanat.lumped.entries.Elements` (its fields read once, outside the loop)."""
+    el_i, el_j, L0, compression, c = el.first_node, el.second_node, el.length, el.compression_stiffness, el.damping
+    law, law_kind, law_n, law_x, law_y = el.law, el.law_kind, el.law_size, el.law_strains, el.law_values
     for k in range(el_i.shape[0]):
         i, j = el_i[k], el_j[k]
         d0, d1, d2 = x[j, 0] - x[i, 0], x[j, 1] - x[i, 1], x[j, 2] - x[i, 2]
@@ -385,8 +388,8 @@ def tensions(x, v, el, T):
         T[k] = 0.0
         if e > 0.0 or compression[k] > 0.0:
             edot = (d0 * (v[j, 0] - v[i, 0]) + d1 * (v[j, 1] - v[i, 1]) + d2 * (v[j, 2] - v[i, 2])) / (length * L0[k])
-            T[k] = axial_force(el.law_kind, el.law_size, el.law_strains, el.law_values, el.law[k], compression[k],
-                               el.damping[k], e, edot)
+            f = elastic_row(law_kind, law_n, law_x, law_y, law[k], e)[0] if e > 0.0 else 0.0
+            T[k] = axial_force(f, compression[k], c[k], e, edot)
 
 
 def body_loads(x, v, uw, aw, body_node, drag_area, spreading, fluid_inertia, rho, heading, F):

@@ -159,14 +159,25 @@ def contact_forces(x, v, el_i, el_j, area, bed, law, laid, tangent, F, normal_fo
         F[a, 0] += N * nx
         F[a, 2] += N * nz
         if friction and N > 0.0:
-            add_friction(a, x, v, N, nx, nz, law, laid, tangent, F)
+            t0, t1, t2 = plane_tangent(tangent[a, 0], tangent[a, 1], tangent[a, 2], nx, nz)
+            if law.equilibrium:
+                f0, f1, f2 = laid_friction(x[a, 0] - laid.origin[a, 0], x[a, 1] - laid.origin[a, 1],
+                                           x[a, 2] - laid.origin[a, 2], laid.direction[a, 0], laid.direction[a, 1],
+                                           laid.direction[a, 2], laid.distance[a], mu_a * N, law.slip_displacement)
+            else:
+                f0, f1, f2 = slip_friction(v[a, 0], v[a, 1], v[a, 2], N, nx, nz, t0, t1, t2, mu_a, mu_l, vs)
+            F[a, 0] -= f0
+            F[a, 1] -= f1
+            F[a, 2] -= f2
 
 
 @inner
-def plane_tangent(a, nx, nz, tangent):
-    """The line's direction at node ``a`` (``tangent[a]``, a sum of unit vectors) projected on the seabed
-    plane of normal ``(nx, 0, nz)`` and normalized (zero where it is normal to the plane): eq. (3)'s ``a``."""
-    t0, t1, t2 = tangent[a, 0], tangent[a, 1], tangent[a, 2]
+def plane_tangent(t0, t1, t2, nx, nz):
+    """The line's direction at a node ``(t0, t1, t2)`` (a sum of unit vectors) projected on the seabed
+    plane of normal ``(nx, 0, nz)`` and normalized (zero where it is normal to the plane): eq. (3)'s ``a``.
+
+    The friction helpers take and return scalars: a compiled call that passes arrays, once per node in
+    contact, cost more than the friction itself (docs/performance.md, "Calls in the element loops")."""
     tn = t0 * nx + t2 * nz
     t0, t2 = t0 - tn * nx, t2 - tn * nz
     size = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
@@ -176,32 +187,27 @@ def plane_tangent(a, nx, nz, tangent):
 
 
 @inner
-def add_friction(a, x, v, N, nx, nz, law, laid, tangent, F):
-    """Friction of node ``a`` (eqs. 3-4, or the equilibrium's displacement form) under the
-    :data:`ContactLaw` ``law``."""
-    t0, t1, t2 = plane_tangent(a, nx, nz, tangent)
-    mu_a, mu_l, vs = law.friction_axial, law.friction_lateral, law.slip_velocity
-    if law.equilibrium:
-        ref, direction, s = laid.origin, laid.direction, laid.distance
-        d0, d1, d2 = direction[a, 0], direction[a, 1], direction[a, 2]
-        if d0 == 0.0 and d1 == 0.0 and d2 == 0.0:
-            return
-        u = (x[a, 0] - ref[a, 0]) * d0 + (x[a, 1] - ref[a, 1]) * d1 + (x[a, 2] - ref[a, 2]) * d2 - s[a]
-        f = mu_a * N * math.tanh(u / law.slip_displacement)
-        F[a, 0] -= f * d0
-        F[a, 1] -= f * d1
-        F[a, 2] -= f * d2
-        return
-    vn = v[a, 0] * nx + v[a, 2] * nz
-    s0, s1, s2 = v[a, 0] - vn * nx, v[a, 1], v[a, 2] - vn * nz
+def slip_friction(v0, v1, v2, N, nx, nz, t0, t1, t2, mu_a, mu_l, vs):
+    """Eqs. (3)-(4): the friction ``-(F_a + F_l)`` of a node moving at ``v`` under the normal force ``N``,
+    ``a = (t0, t1, t2)`` (:func:`plane_tangent`); the caller subtracts it."""
+    vn = v0 * nx + v2 * nz
+    s0, s1, s2 = v0 - vn * nx, v1, v2 - vn * nz
     va = s0 * t0 + s1 * t1 + s2 * t2
     l0, l1, l2 = s0 - va * t0, s1 - va * t1, s2 - va * t2
     fa = mu_a * N * math.tanh(va / vs)
     speed = math.sqrt(l0 * l0 + l1 * l1 + l2 * l2)
     fl = mu_l * N * math.tanh(speed / vs) / speed if speed > 0.0 else 0.0
-    F[a, 0] -= fa * t0 + fl * l0
-    F[a, 1] -= fa * t1 + fl * l1
-    F[a, 2] -= fa * t2 + fl * l2
+    return fa * t0 + fl * l0, fa * t1 + fl * l1, fa * t2 + fl * l2
+
+
+@inner
+def laid_friction(r0, r1, r2, d0, d1, d2, s, limit, slip_displacement):
+    """The equilibrium's friction (module docstring) of a node ``r`` from where its line was laid, along the
+    laid direction ``d`` at distance ``s``, ``limit = mu_a N``; none where ``d`` is zero. The caller subtracts it."""
+    if d0 == 0.0 and d1 == 0.0 and d2 == 0.0:
+        return 0.0, 0.0, 0.0
+    f = limit * math.tanh((r0 * d0 + r1 * d1 + r2 * d2 - s) / slip_displacement)
+    return f * d0, f * d1, f * d2
 
 
 @kernel
@@ -246,7 +252,7 @@ def contact_tangent(x, v, area, bed, law, normal_force, line_tangent, K, C):
 @inner
 def add_friction_tangent(a, v, N, nx, nz, mu_a, mu_l, vs, line_tangent, C):
     """Add eqs. (5)-(6) of node ``a`` to ``C`` (``-dF/dv``)."""
-    t0, t1, t2 = plane_tangent(a, nx, nz, line_tangent)
+    t0, t1, t2 = plane_tangent(line_tangent[a, 0], line_tangent[a, 1], line_tangent[a, 2], nx, nz)
     vn = v[a, 0] * nx + v[a, 2] * nz
     s0, s1, s2 = v[a, 0] - vn * nx, v[a, 1], v[a, 2] - vn * nz
     va = s0 * t0 + s1 * t1 + s2 * t2
