@@ -32,6 +32,11 @@ implementation of it once more (30–60 ms each). Every kernel's machine code in
 callees again (numba links and re-optimizes them into each caller's module), so a deep call
 tree pays for its leaves at every level: ``benchmarks/profile_compile.py`` shows where a
 family's seconds go, function by function.
+
+A rule that keeps them fast: inside a loop over elements, nodes or points, no call to another
+kernel that passes arrays or records of arrays (pass their entries as scalars, or loop inside
+the callee), and a record's fields read into locals before the loop. Such a call cost 50-300 ns
+each, several times the arithmetic it served (docs/performance.md, "Calls in the element loops").
 """
 from __future__ import annotations
 

@@ -63,14 +63,6 @@ def band_order(net, free_index) -> tuple[np.ndarray, int]:
 
 
 @inner
-def band_add_packed(A, bw, p, packed, scale):
-    """Add ``scale`` times a packed symmetric block (fast.PACKED order) on the diagonal block ``p``."""
-    for r in range(3):
-        for q in range(3):
-            A[p, bw, r, q] += scale * packed[fast.PACKED[r][q]]
-
-
-@inner
 def band_add(A, bw, pi, pj, block, scale):
     """Add ``scale * block`` (3 x 3) at block row ``pi``, block column ``pj``."""
     d = pj - pi + bw
@@ -156,8 +148,13 @@ def seabed_tangent(A, bw, position, free_index, contact, work, Kc, Cc, c_damp, c
         for f in range(free_index.shape[0]):
             node = free_index[f]
             if normal_force[node] > 0.0:
-                band_add(A, bw, position[node], position[node], Kc[node], c_stiff)
-                band_add(A, bw, position[node], position[node], Cc[node], c_damp)
+                p = position[node]
+                for r in range(3):
+                    for q in range(3):
+                        A[p, bw, r, q] += c_stiff * Kc[node, r, q]
+                for r in range(3):
+                    for q in range(3):
+                        A[p, bw, r, q] += c_damp * Cc[node, r, q]
 
 
 @inner
@@ -192,18 +189,24 @@ def assemble(band, nodes, el, bodies, env, work, c_mass, c_damp, c_stiff):
     A[:, :, :, :] = 0.0
     kernels.tangent_blocks(x, v, uw, el, K, C, D)
     el_i, el_j = el.first_node, el.second_node
-    for k in range(el_i.shape[0]):
+    for k in range(el_i.shape[0]):       # band_add written out: a call per block passing arrays costs more
         pi, pj = position[el_i[k]], position[el_j[k]]
         for a, b, sign in ((pi, pi, 1.0), (pi, pj, -1.0), (pj, pi, -1.0), (pj, pj, 1.0)):
             if a >= 0 and b >= 0:
-                band_add(A, bw, a, b, K[k], sign * c_stiff)
-                band_add(A, bw, a, b, C[k], sign * c_damp)
-                if a == b:                                    # each end's drag on its own velocity
-                    band_add(A, bw, a, b, D[k], c_damp)
+                d, stiff, damp = b - a + bw, sign * c_stiff, sign * c_damp
+                for r in range(3):
+                    for q in range(3):
+                        A[a, d, r, q] += stiff * K[k, r, q]
+                        A[a, d, r, q] += damp * C[k, r, q]
+                        if a == b:                            # each end's drag on its own velocity
+                            A[a, d, r, q] += c_damp * D[k, r, q]
     bending_tangent(A, bw, position, x, el, c_stiff)
     free_index = nodes.free
     for f in range(free_index.shape[0]):
-        band_add_packed(A, bw, position[free_index[f]], M[free_index[f]], c_mass)
+        p, node = position[free_index[f]], free_index[f]
+        for r in range(3):
+            for q in range(3):
+                A[p, bw, r, q] += c_mass * M[node, fast.PACKED[r][q]]
     seabed_tangent(A, bw, position, free_index, bodies.contact, work, Kc, Cc, c_damp, c_stiff)
     body_node, drag_area, rho = bodies.load_node, bodies.drag_area, env.rho
     block = np.empty((3, 3))

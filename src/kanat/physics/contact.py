@@ -231,8 +231,10 @@ def contact_tangent(x, v, area, bed, law, normal_force, line_tangent, K, C):
     mu_a, mu_l = law.friction_axial, law.friction_lateral
     friction = mu_a > 0.0 or mu_l > 0.0
     for a in range(x.shape[0]):
-        K[a, :, :] = 0.0
-        C[a, :, :] = 0.0
+        for r in range(3):
+            for q in range(3):
+                K[a, r, q] = 0.0
+                C[a, r, q] = 0.0
         if normal_force[a] <= 0.0:
             continue
         delta, nx, nz = penetration_at(x[a, 0], x[a, 1], x[a, 2], bed)
@@ -246,29 +248,30 @@ def contact_tangent(x, v, area, bed, law, normal_force, line_tangent, K, C):
                 K[a, r, q] = stiff * area[a] * nrm[r] * nrm[q]
                 C[a, r, q] = cb * ramp * area[a] * nrm[r] * nrm[q]
         if friction:
-            add_friction_tangent(a, v, normal_force[a], nx, nz, mu_a, mu_l, vs, line_tangent, C)
+            t0, t1, t2 = plane_tangent(line_tangent[a, 0], line_tangent[a, 1], line_tangent[a, 2], nx, nz)
+            along, slip, turn, e0, e1, e2 = friction_slopes(v[a, 0], v[a, 1], v[a, 2], normal_force[a], nx, nz,
+                                                            t0, t1, t2, mu_a, mu_l, vs)
+            nrm, tan, lat = (nx, 0.0, nz), (t0, t1, t2), (e0, e1, e2)
+            for r in range(3):
+                for q in range(3):
+                    plane = (1.0 if r == q else 0.0) - nrm[r] * nrm[q] - tan[r] * tan[q]
+                    C[a, r, q] += (along * tan[r] * tan[q] + slip * lat[r] * lat[q]
+                                   + turn * (plane - lat[r] * lat[q]))
 
 
 @inner
-def add_friction_tangent(a, v, N, nx, nz, mu_a, mu_l, vs, line_tangent, C):
-    """Add eqs. (5)-(6) of node ``a`` to ``C`` (``-dF/dv``)."""
-    t0, t1, t2 = plane_tangent(line_tangent[a, 0], line_tangent[a, 1], line_tangent[a, 2], nx, nz)
-    vn = v[a, 0] * nx + v[a, 2] * nz
-    s0, s1, s2 = v[a, 0] - vn * nx, v[a, 1], v[a, 2] - vn * nz
+def friction_slopes(v0, v1, v2, N, nx, nz, t0, t1, t2, mu_a, mu_l, vs):
+    """The coefficients of eqs. (5)-(6) of a node moving at ``v`` along ``a = (t0, t1, t2)``
+    (:func:`plane_tangent`): ``mu_a N sech^2(v_a / v_s) / v_s``, ``mu_l N sech^2(|v_l| / v_s) / v_s``,
+    ``mu_l N tanh(|v_l| / v_s) / |v_l|`` and ``e`` (zero, and both lateral ones ``mu_l N / v_s``, at rest
+    across the line)."""
+    vn = v0 * nx + v2 * nz
+    s0, s1, s2 = v0 - vn * nx, v1, v2 - vn * nz
     va = s0 * t0 + s1 * t1 + s2 * t2
     l0, l1, l2 = s0 - va * t0, s1 - va * t1, s2 - va * t2
     speed = math.sqrt(l0 * l0 + l1 * l1 + l2 * l2)
     along = mu_a * N / vs / math.cosh(va / vs) ** 2
     if speed > 1e-9 * vs:
-        e0, e1, e2 = l0 / speed, l1 / speed, l2 / speed
-        slip = mu_l * N / vs / math.cosh(speed / vs) ** 2
-        turn = mu_l * N * math.tanh(speed / vs) / speed
-    else:
-        e0, e1, e2 = 0.0, 0.0, 0.0
-        slip = turn = mu_l * N / vs
-    nrm, tan, lat = (nx, 0.0, nz), (t0, t1, t2), (e0, e1, e2)
-    for r in range(3):
-        for q in range(3):
-            plane = (1.0 if r == q else 0.0) - nrm[r] * nrm[q] - tan[r] * tan[q]
-            C[a, r, q] += (along * tan[r] * tan[q] + slip * lat[r] * lat[q]
-                           + turn * (plane - lat[r] * lat[q]))
+        return (along, mu_l * N / vs / math.cosh(speed / vs) ** 2, mu_l * N * math.tanh(speed / vs) / speed,
+                l0 / speed, l1 / speed, l2 / speed)
+    return along, mu_l * N / vs, mu_l * N / vs, 0.0, 0.0, 0.0
