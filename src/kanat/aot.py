@@ -51,8 +51,8 @@ SOURCES = ("jit.py", "aot.py", "aot_build.py", "physics/seabed.py", "physics/con
            "continuum/layout2d.py", "continuum/loads2d.py", "continuum/rows2d.py", "continuum/kernels2d.py",
            "continuum/layout3d.py", "continuum/loads3d.py", "continuum/rows3d.py", "continuum/bending3d.py",
            "continuum/kernels3d.py", "lumped/kernels.py", "lumped/rigid.py", "lumped/fast.py", "lumped/fast_implicit.py",
-           "lumped/bending.py", "lumped/entries.py", "continuum/factorized/dense.py", "continuum/factorized/sweeps_compiled.py",
-           "continuum/factorized/waves_compiled.py")
+           "lumped/bending.py", "lumped/output_loads.py", "lumped/entries.py", "continuum/factorized/dense.py",
+           "continuum/factorized/sweeps_compiled.py", "continuum/factorized/waves_compiled.py")
 """The files whose code the extension holds (paths below the ``kanat`` package): every module
 the compiled kernels read a function or a constant from, and those declaring the entries."""
 

@@ -31,11 +31,11 @@ def family(name: str) -> Family:
     """The :class:`kanat.jit.Family` ``name`` of :data:`FAMILIES`, importing only its own kernel
     modules (a continuum run asking whether it will compile does not load the lumped model)."""
     if name.startswith("lumped"):
-        from kanat.lumped import fast, fast_implicit, kernels
+        from kanat.lumped import fast, fast_implicit, kernels, output_loads
 
         step = {"lumped-rk4": fast.rk4_steps, "lumped-abm4": fast.abm4_steps, "lumped-implicit": fast_implicit.steps}
         entries = ((kernels.element_forces, None), (kernels.add_body_loads, None), (kernels.tensions, None),
-                   (step[name], None))
+                   (output_loads.output_loads, None), (step[name], None))
         return Family(name, entries, FAMILIES[name])
     from kanat.continuum import rows2d, rows3d
 

@@ -247,11 +247,11 @@ class LumpedModel:
         system, net = self.system, self.net
         t = state.scheme.t
         x, v, a, heading = system.full(t, *state_positions(state.scheme))
-        T = self._element_tensions(x, v).copy()
         pitch = system.track.pitch(t)[0] if system.track is not None and system.track.pitch is not None else 0.0
         idx = net.node_index
         accelerations = len(self._mooring.point_bodies) > 0      # eq. (O1) of mooring_outputs needs them
-        F, M = system.loads(t, x, v, heading, masses=accelerations)
+        F, M, T = system.output_loads(t, x, v, heading, masses=accelerations)
+        T = T.copy()
         self._seen = (t, state_positions(state.scheme)[0].copy(), x.copy(), system.strain.copy())   # for check()
         if accelerations:
             a = system.solve_mass(x, F, M, a)

@@ -217,3 +217,24 @@ register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, Bed, Co
  add_body_loads, place_fairleads, rigid_accelerations, contact_forces) = map(aot.EntryPoint, (
     "track_states", "rk4_steps", "abm4_steps", "implicit_steps", "elastic_row", "element_forces", "lumped_solve",
     "tensions", "add_body_loads", "place_fairleads", "rigid_accelerations", "contact_forces"))
+
+
+# An output's loads in one compiled call (kanat.lumped.output_loads) ---------------------------
+OutputLoads = aot.record(
+    "OutputLoads", "kanat.lumped.entries",
+    calm=BOOL,                              # no waves: the wetted fractions worked out in the call
+    node_force=F2, node_mass=F1,            # constant nodal loads [N] (n, 3), nodal body masses [kg] (n,)
+    water_velocity=F2, water_acceleration=F2,   # at the element midpoints [m/s], [m/s^2] (m, 3)
+    wet=F1,                                 # wetted fraction of each element (m,): an input with waves
+    force=F2,                               # nodal forces [N] (n, 3)
+    mass=F2,                                # packed nodal mass blocks xx, yy, zz, xy, xz, yz [kg] (n, 6)
+    tension=F1, strain=F1,                  # element_forces' element tensions [N] and strains (m,)
+    line_tension=F1,                        # kernels.tensions' element tensions [N] (m,): the outputs'
+    tangent=F2,                             # the seabed friction's work array (n, 3)
+    normal_force=F1,                        # the seabed's normal force on each node [N] (n,)
+)
+"""What :func:`kanat.lumped.output_loads.output_loads` reads and writes, built once per run by
+:meth:`kanat.lumped.system.LumpedSystem.output_loads` over the system's own arrays."""
+register("output_loads", "kanat.lumped.output_loads", *((F2, F2, Elements, seabed, OutputLoads) for seabed in (None, Contact)),
+         twin="kanat.lumped.oracle_numpy.output_loads_numpy")
+output_loads = aot.EntryPoint("output_loads")

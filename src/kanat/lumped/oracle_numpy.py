@@ -125,3 +125,36 @@ def consistent_solve_numpy(net, x, node_mass, F, free, a):
     rhs = F.ravel()[dof] - M[dof][:, ~dof] @ a[~dof]
     a[dof] = spla.spsolve(M[dof][:, dof].tocsc(), rhs)
     return a.reshape(-1, 3)
+
+
+def tensions_numpy(el, x, v):
+    """Twin of :func:`kernels.tensions`: the element tensions (m,), kernels eqs. (1)-(2a)."""
+    return forces_numpy(el, x, v, np.zeros((len(el.first_node), 3)), np.zeros((len(el.first_node), 3)),
+                        np.zeros_like(x), np.zeros(len(x)))[2]
+
+
+def calm_wetted_numpy(el, x):
+    """Twin of :func:`kanat.lumped.output_loads.calm_wetted`: the wetted fraction (m,) of each element
+    under the still surface ``z = 0``."""
+    zi, zj, half = x[el.first_node, 2], x[el.second_node, 2], 0.5 * el.diameter
+    top, low = np.maximum(zi, zj) + half, np.minimum(zi, zj) - half
+    return np.where(top < 0.0, 1.0, np.clip(-low / np.maximum(top - low, 1e-300), 0.0, 1.0))
+
+
+def output_loads_numpy(x, v, el, contact, out):
+    """Twin of :func:`kanat.lumped.output_loads.output_loads`, with its arguments: its steps 1-5 from
+    this module's twins (:func:`tensions_numpy`, :func:`calm_wetted_numpy`, :func:`forces_numpy`)
+    and the bending and seabed contact kernels as the lookup runs them (plain Python with
+    ``KANAT_KERNELS=python``; they are tested against their own oracles)."""
+    from kanat.lumped.bending import bending_forces
+    from kanat.physics.contact import contact_forces
+
+    out.line_tension[:] = tensions_numpy(el, x, v)
+    if out.calm:
+        out.wet[:] = calm_wetted_numpy(el, x)
+    element_forces_numpy(x, v, out.water_velocity, out.water_acceleration, out.wet, out.node_force, out.node_mass,
+                         el, out.force, out.mass, out.tension, out.strain)
+    bending_forces(x, el.bend_before, el.bend_node, el.bend_after, el.bend_stiffness, out.force)
+    if contact is not None:
+        contact_forces(x, v, el.first_node, el.second_node, contact.area, contact.seabed, contact.law,
+                       contact.laid, out.tangent, out.force, out.normal_force)

@@ -103,6 +103,7 @@ class LumpedSystem:
         self._steady_points: dict = {}
         self._steady_vessel = None
         self._last_motion: tuple | None = None      # (t, q, q_dot) of the last single-time sample
+        self._outputs = None                        # entries.OutputLoads, made on the first output
 
     def _contact(self, case, net) -> entries.Contact | None:
         """The seabed contact :func:`kanat.physics.contact.contact_forces` takes
@@ -298,13 +299,42 @@ class LumpedSystem:
         if seabed is not None:
             entries.contact_forces(x, v, net.el_i, net.el_j, seabed.area, seabed.seabed, seabed.law, seabed.laid,
                                    self._tangent, self._F, self.normal_force)
+        self._other_loads(t, x, v, heading)
+        return self._F, self._M
+
+    def output_loads(self, t: float, x: np.ndarray, v: np.ndarray, heading: float, masses: bool = False):
+        """:meth:`loads` for an output, with the element tensions of :func:`kanat.lumped.kernels.tensions`:
+        ``F`` (n, 3), ``M`` (n, 3, 3) (left as they were unless ``masses``) and the tensions (m,), the
+        same numbers as ``loads`` and ``tensions`` to the last bit in one compiled call
+        (:func:`kanat.lumped.output_loads.output_loads`; the bodies' loads after it, as in ``loads``)."""
+        net, out = self.net, self._outputs
+        if out is None:
+            out = self._outputs = entries.OutputLoads(
+                calm=self.sea is None, node_force=net.node_force, node_mass=self.node_mass,
+                water_velocity=self._u_uniform if self._uniform else np.zeros((net.n_elements, 3)),
+                water_acceleration=self._zero_m3 if self._uniform else np.zeros((net.n_elements, 3)),
+                wet=self.wet, force=self._F, mass=self._packed, tension=self.tension, strain=self.strain,
+                line_tension=np.zeros(net.n_elements), tangent=self._tangent, normal_force=self.normal_force)
+        if not self._uniform:
+            out.water_velocity[:], out.water_acceleration[:] = self.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))
+        if not out.calm:
+            self.wetted(t, x)
+        entries.output_loads(x, v, self.el_args, self.contact, out)
+        if masses or net.rigid.count:                      # 6-DOF bodies read the blocks (_rigid)
+            self._M[:] = self._packed[:, UNPACKED]
+        self.evaluations += 1
+        self._other_loads(t, x, v, heading)
+        return self._F, self._M, out.line_tension
+
+    def _other_loads(self, t, x, v, heading):
+        """The loads of bodies, floats and 6-DOF bodies added to ``F`` (eq. 2; :mod:`kanat.lumped.rigid`)."""
+        net = self.net
         if len(net.load_node):
             self._body_loads(t, x, v, heading)
         if len(net.float_body):
             self._float_loads(t, x)
         if net.rigid.count:
             self._rigid(t, x, v)
-        return self._F, self._M
 
     def _body_loads(self, t, x, v, heading):
         net, F = self.net, self._F
