@@ -18,6 +18,7 @@ estimate of its local time-integration error (:mod:`kanat.lumped.time_error`, ke
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import replace
 
 import numpy as np
@@ -139,9 +140,16 @@ def track_samples(system, times: np.ndarray) -> entries.Track:
 def implicit_scheme(scheme) -> entries.ImplicitScheme:
     """A :class:`kanat.lumped.integrators.GeneralizedAlphaLumped` as the fused implicit steps read
     it: the :class:`kanat.lumped.entries.ImplicitScheme` record's one builder."""
-    alpha_m, alpha_f, gamma, beta = (float(value) for value in scheme.coefficients)
+    return _implicit_record(tuple(float(value) for value in scheme.coefficients), int(scheme.max_iterations),
+                            float(scheme.tolerance))
+
+
+@functools.lru_cache(maxsize=16)
+def _implicit_record(coefficients: tuple, max_iterations: int, tolerance: float) -> entries.ImplicitScheme:
+    """One record per set of values: the compiled call's check passes a record it has seen at once."""
+    alpha_m, alpha_f, gamma, beta = coefficients
     return entries.ImplicitScheme(alpha_m=alpha_m, alpha_f=alpha_f, gamma=gamma, beta=beta,
-                                  max_iterations=int(scheme.max_iterations), tolerance=float(scheme.tolerance))
+                                  max_iterations=max_iterations, tolerance=tolerance)
 
 
 def time_error_estimate(system) -> np.ndarray:

@@ -32,6 +32,7 @@ class SnapTracker:
 
     def __init__(self, t0: float, tension: np.ndarray, state: dict | None = None):
         self._pending, self._pending_rows = [], 0
+        self._kernel: Snap | None = None       # the record of kernel_arrays, while its arrays stay the same
         if state is not None:
             self._arrays = {k: np.array(v) for k, v in state.items()}
             self._arrays["prev_time"] = self._arrays["prev_time"].reshape(1)
@@ -81,8 +82,12 @@ class SnapTracker:
         """The live per-element arrays as the record :func:`kanat.lumped.fast.snap_update` updates
         in place (:class:`kanat.lumped.entries.Snap`)."""
         a = self._arrays
-        return Snap(taut=a["taut"], active=a["active"], start=a["start"], peak=a["peak"], rate=a["rate"],
-                    previous_tension=a["prev_tension"], previous_time=a["prev_time"])
+        arrays = (a["taut"], a["active"], a["start"], a["peak"], a["rate"], a["prev_tension"], a["prev_time"])
+        kept = self._kernel                    # the same record while the same arrays: the compiled call's
+        if kept is None or any(old is not new for old, new in zip(kept, arrays)):    # check passes it at once
+            kept = self._kernel = Snap(taut=arrays[0], active=arrays[1], start=arrays[2], peak=arrays[3],
+                                       rate=arrays[4], previous_tension=arrays[5], previous_time=arrays[6])
+        return kept
 
     def absorb(self, events: np.ndarray) -> None:
         """Record events closed by the compiled update: rows (time, element, peak, rate)."""
