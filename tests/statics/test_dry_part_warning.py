@@ -50,3 +50,31 @@ def test_a_cable_hung_from_the_surface_gets_no_such_warning():
     table, text, _ = _statics(hanging(0.0))
     assert table.attrs["status"] == "ok"
     assert "above the water surface" not in table.attrs.get("warnings", "") + text
+
+
+@pytest.mark.filterwarnings("ignore:.*no track")
+def test_a_buoyant_cable_above_the_water_is_no_steady_state():
+    """The same plumb line made buoyant (weight in water -5 N/m): the solver holds its
+    top ``h / (1 + T / EA)`` up by ``-w`` a metre, which in the air it would not have; the result fails
+    and says that length and that buoyancy."""
+    case = hanging(HEIGHT).replace({"line_types.towcable.weight_in_water": -5.0})
+    line, env = case.line_types["towcable"], case.environment
+    w = line.weight_in_water_value(env.water_density, env.gravity)
+    assert w < 0.0
+    table, text, result = _statics(case)
+    status = table.attrs["status"]
+    assert status.startswith("failed: buoyant_above_water: cable 'tow'")
+    top = result.cables["tow"].tension[0]
+    assert top == pytest.approx(-case.bodies["sled"].net_buoyancy + w * 100.0, rel=1e-9)    # all of it wet
+    length = HEIGHT / (1.0 + top / line.axial_stiffness)
+    said_length = float(status.split(": ")[3].split(" m ")[0])
+    said_lift = float(status.split("held up there by ")[1].split(" N ")[0])
+    assert said_length == pytest.approx(length, rel=1e-3)
+    assert said_lift == pytest.approx(-w * length, rel=1e-3)
+
+
+@pytest.mark.filterwarnings("ignore:.*no track")
+def test_a_buoyant_cable_from_the_surface_is_a_steady_state():
+    case = hanging(0.0).replace({"line_types.towcable.weight_in_water": -5.0})
+    table, _, _ = _statics(case)
+    assert table.attrs["status"] == "ok"
