@@ -159,12 +159,12 @@ def contact_forces(x, v, el_i, el_j, area, bed, law, laid, tangent, F, normal_fo
         F[a, 0] += N * nx
         F[a, 2] += N * nz
         if friction and N > 0.0:
-            t0, t1, t2 = plane_tangent(tangent[a, 0], tangent[a, 1], tangent[a, 2], nx, nz)
             if law.equilibrium:
                 f0, f1, f2 = laid_friction(x[a, 0] - laid.origin[a, 0], x[a, 1] - laid.origin[a, 1],
                                            x[a, 2] - laid.origin[a, 2], laid.direction[a, 0], laid.direction[a, 1],
                                            laid.direction[a, 2], laid.distance[a], mu_a * N, law.slip_displacement)
             else:
+                t0, t1, t2 = plane_tangent(tangent[a, 0], tangent[a, 1], tangent[a, 2], nx, nz)
                 f0, f1, f2 = slip_friction(v[a, 0], v[a, 1], v[a, 2], N, nx, nz, t0, t1, t2, mu_a, mu_l, vs)
             F[a, 0] -= f0
             F[a, 1] -= f1
