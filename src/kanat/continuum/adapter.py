@@ -34,12 +34,13 @@ from kanat.continuum.schemes import SCHEMES, ContinuumScheme, FamilyScheme
 from kanat.continuum.slack import PULL_FRACTION, SlackLog, pulled_start
 from kanat.continuum.stepper import MAX_CUTS, NewtonFailure
 from kanat.continuum.surface import DryLength, dry_buoyant_node
+from kanat.continuum.wetted import ROUND_OFF
 from kanat.continuum.winch import material_stations
 from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
-from kanat.physics.immersion import heights
+from kanat.physics.immersion import dry_length, heights
 from kanat.schemes import get_scheme
 from kanat.step_control import Halving, Steps, StepsExhausted
 
@@ -141,6 +142,9 @@ class ContinuumModel:
             used.append(("winch", "a winch"))
         if any(case.bodies[e.name].surface_buoy is not None for e in case.cables[0].ends if e.kind == "body"):
             used.append(("bodies", "a surface buoy"))
+        if case.cables[0].from_.kind == "vessel" and case.vessel.tow_point[2] > ROUND_OFF:
+            used.append(("vessel.tow_point", f"a tow point above the water surface ({case.vessel.tow_point[2]:g} m): "
+                         "they take the whole cable as submerged"))
         if used:
             raise CaseError([Problem(key, f"{what}: scheme '{self.scheme.name}' (Kaliukh & Vusatiuk's factorized schemes) "
                                      "steps a uniform flexible cable only; use scheme: generalized-alpha")
@@ -307,10 +311,19 @@ class ContinuumModel:
         return slack or self._strain(state, values) or self._seabed(state, values) or self._dry(state, values)
 
     def _dry(self, state, values) -> str | None:
-        """A buoyant node out of the water (:mod:`kanat.continuum.surface`), or None."""
+        """A buoyant node out of the water (:mod:`kanat.continuum.surface`), or, for Kaliukh &
+        Vusatiuk's factorized schemes, which take the whole cable as submerged, any part above it;
+        else None."""
         cable = self.cable_model.cable
         height = heights(values["position"], cable.sea, state.t)       # one elevation per output, for both
         self.dry.observe(self._s(state), height, state.t)
+        if not isinstance(self.scheme, FamilyScheme):
+            length = dry_length(self._s(state), height)
+            if length > ROUND_OFF:
+                return (f"{length:.4g} m of cable '{cable.name}' is above the water surface at t = {state.t:.6g} s: "
+                        f"scheme '{self.scheme.name}' (Kaliukh & Vusatiuk's factorized schemes) takes the whole cable "
+                        "as submerged, with its weight in water, drag and added mass there too; use scheme: "
+                        "generalized-alpha, which weighs that part in air")
         dry = dry_buoyant_node(self._facts(state).rows, height)
         if dry is None:
             return None
