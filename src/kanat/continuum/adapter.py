@@ -40,7 +40,7 @@ from kanat.dynamics import StepFailure
 from kanat.errors import CaseError, Problem, SolverError
 from kanat.io.provenance import provenance
 from kanat.io.schema import Layout
-from kanat.physics.immersion import dry_length, heights
+from kanat.physics.immersion import heights
 from kanat.schemes import get_scheme
 from kanat.step_control import Halving, Steps, StepsExhausted
 
@@ -316,14 +316,12 @@ class ContinuumModel:
         else None."""
         cable = self.cable_model.cable
         height = heights(values["position"], cable.sea, state.t)       # one elevation per output, for both
-        self.dry.observe(self._s(state), height, state.t)
-        if not isinstance(self.scheme, FamilyScheme):
-            length = dry_length(self._s(state), height)
-            if length > ROUND_OFF:
-                return (f"{length:.4g} m of cable '{cable.name}' is above the water surface at t = {state.t:.6g} s: "
-                        f"scheme '{self.scheme.name}' (Kaliukh & Vusatiuk's factorized schemes) takes the whole cable "
-                        "as submerged, with its weight in water, drag and added mass there too; use scheme: "
-                        "generalized-alpha, which weighs that part in air")
+        length = self.dry.observe(self._s(state), height, state.t)
+        if not isinstance(self.scheme, FamilyScheme) and length > ROUND_OFF:
+            return (f"{length:.4g} m of cable '{cable.name}' is above the water surface at t = {state.t:.6g} s: "
+                    f"scheme '{self.scheme.name}' (Kaliukh & Vusatiuk's factorized schemes) takes the whole cable "
+                    "as submerged, with its weight in water, drag and added mass there too; use scheme: "
+                    "generalized-alpha, which weighs that part in air")
         dry = dry_buoyant_node(self._facts(state).rows, height)
         if dry is None:
             return None

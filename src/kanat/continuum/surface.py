@@ -88,12 +88,13 @@ class DryLength:
     def __init__(self):
         self.length, self.time = 0.0, 0.0
 
-    def observe(self, s: np.ndarray, height: np.ndarray, t: float) -> None:
+    def observe(self, s: np.ndarray, height: np.ndarray, t: float) -> float:
         """One output: the nodes' arclengths ``s`` and heights above the surface at ``t``
-        (:func:`kanat.physics.immersion.heights`)."""
+        (:func:`kanat.physics.immersion.heights`); returns its eq. (1)."""
         length = dry_length(s, height)
         if length > self.length:
             self.length, self.time = length, t
+        return length
 
     def note(self, cable: str) -> str | None:
         """The run's note, or None when no part of the cable was ever above the surface."""

@@ -283,11 +283,7 @@ class LumpedSystem:
         :func:`kanat.lumped.kernels.forces`'s kernel called directly: its water kinematics and
         wetted fractions as C-ordered writable arrays, the packed blocks unpacked only when asked."""
         net = self.net
-        if self._uniform:
-            uw, aw = self._u_uniform, self._zero_m3          # set up C-ordered and writable
-        else:
-            uw, aw = (np.require(part, np.float64, ("C", "W")) for part in
-                      self.water(t, 0.5 * (x[net.el_i] + x[net.el_j])))
+        uw, aw = self._midpoint_water(t, x)
         entries.element_forces(x, v, uw, aw, self.wetted(t, x), net.node_force, self.node_mass, self.el_args,
                                self._F, self._packed, self.tension, self.strain)
         if masses or net.rigid.count:                      # 6-DOF bodies read the blocks (_rigid)
@@ -316,7 +312,7 @@ class LumpedSystem:
                 wet=self.wet, force=self._F, mass=self._packed, tension=self.tension, strain=self.strain,
                 line_tension=np.zeros(net.n_elements), tangent=self._tangent, normal_force=self.normal_force)
         if not self._uniform:
-            out.water_velocity[:], out.water_acceleration[:] = self.water(t, 0.5 * (x[net.el_i] + x[net.el_j]))
+            out.water_velocity[:], out.water_acceleration[:] = self._midpoint_water(t, x)
         if not out.calm:
             self.wetted(t, x)
         entries.output_loads(x, v, self.el_args, self.contact, out)
@@ -325,6 +321,15 @@ class LumpedSystem:
         self.evaluations += 1
         self._other_loads(t, x, v, heading)
         return self._F, self._M, out.line_tension
+
+    def _midpoint_water(self, t: float, x: np.ndarray):
+        """Water velocity and acceleration (m, 3) at the element midpoints, C-ordered and writable (those
+        of a uniform current set up once)."""
+        if self._uniform:
+            return self._u_uniform, self._zero_m3
+        net = self.net
+        return tuple(np.require(part, np.float64, ("C", "W")) for part in
+                     self.water(t, 0.5 * (x[net.el_i] + x[net.el_j])))
 
     def _other_loads(self, t, x, v, heading):
         """The loads of bodies, floats and 6-DOF bodies added to ``F`` (eq. 2; :mod:`kanat.lumped.rigid`)."""

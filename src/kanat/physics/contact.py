@@ -187,13 +187,20 @@ def plane_tangent(t0, t1, t2, nx, nz):
 
 
 @inner
-def slip_friction(v0, v1, v2, N, nx, nz, t0, t1, t2, mu_a, mu_l, vs):
-    """Eqs. (3)-(4): the friction ``-(F_a + F_l)`` of a node moving at ``v`` under the normal force ``N``,
-    ``a = (t0, t1, t2)`` (:func:`plane_tangent`); the caller subtracts it."""
+def slip(v0, v1, v2, nx, nz, t0, t1, t2):
+    """A node's velocity ``v`` in the seabed plane of normal ``(nx, 0, nz)``, split along the line's
+    direction ``a = (t0, t1, t2)`` and across it: ``v_a`` and ``v_l`` of eqs. (3)-(4)."""
     vn = v0 * nx + v2 * nz
     s0, s1, s2 = v0 - vn * nx, v1, v2 - vn * nz
     va = s0 * t0 + s1 * t1 + s2 * t2
-    l0, l1, l2 = s0 - va * t0, s1 - va * t1, s2 - va * t2
+    return va, s0 - va * t0, s1 - va * t1, s2 - va * t2
+
+
+@inner
+def slip_friction(v0, v1, v2, N, nx, nz, t0, t1, t2, mu_a, mu_l, vs):
+    """Eqs. (3)-(4): the friction ``-(F_a + F_l)`` of a node moving at ``v`` under the normal force ``N``,
+    ``a = (t0, t1, t2)`` (:func:`plane_tangent`); the caller subtracts it."""
+    va, l0, l1, l2 = slip(v0, v1, v2, nx, nz, t0, t1, t2)
     fa = mu_a * N * math.tanh(va / vs)
     speed = math.sqrt(l0 * l0 + l1 * l1 + l2 * l2)
     fl = mu_l * N * math.tanh(speed / vs) / speed if speed > 0.0 else 0.0
@@ -265,10 +272,7 @@ def friction_slopes(v0, v1, v2, N, nx, nz, t0, t1, t2, mu_a, mu_l, vs):
     (:func:`plane_tangent`): ``mu_a N sech^2(v_a / v_s) / v_s``, ``mu_l N sech^2(|v_l| / v_s) / v_s``,
     ``mu_l N tanh(|v_l| / v_s) / |v_l|`` and ``e`` (zero, and both lateral ones ``mu_l N / v_s``, at rest
     across the line)."""
-    vn = v0 * nx + v2 * nz
-    s0, s1, s2 = v0 - vn * nx, v1, v2 - vn * nz
-    va = s0 * t0 + s1 * t1 + s2 * t2
-    l0, l1, l2 = s0 - va * t0, s1 - va * t1, s2 - va * t2
+    va, l0, l1, l2 = slip(v0, v1, v2, nx, nz, t0, t1, t2)
     speed = math.sqrt(l0 * l0 + l1 * l1 + l2 * l2)
     along = mu_a * N / vs / math.cosh(va / vs) ** 2
     if speed > 1e-9 * vs:

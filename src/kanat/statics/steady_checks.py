@@ -30,7 +30,7 @@ reported, as ``<check>: ...``):
 A statics result from a solver that takes every cable as submerged (the single-cable and network
 statics, not the lumped model's equilibrium) also gets a warning for each cable with a part above the
 water surface (:func:`dry_parts`; :func:`check_result`), and fails where that part is of a buoyant
-line type, held up in the air by buoyancy it does not have there (:func:`buoyant_above_water`).
+line type, held up in the air by buoyancy it does not have there (``buoyant_above_water``).
 
 A node that holds a body (a cable end at a body, an attachment) is named with it in the messages
 (``body 'sled' at cable 'tow' node 100 (s = 1000 m)``).
@@ -43,7 +43,7 @@ contact models).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Mapping, Protocol
 
 import numpy as np
@@ -394,24 +394,30 @@ node on the surface)."""
 def check_result(result) -> Verdict:
     """:func:`check_steady` on a statics result (:class:`kanat.statics.StaticsResult` or
     :class:`kanat.statics.network_result.NetworkResult`), with :func:`dry_parts`' warnings and
-    :func:`buoyant_above_water`'s failure unless the lumped model's equilibrium solved it; Naumov &
-    Agievich's sphere problem, in dimensionless groups with its own checks (``physical_warnings``),
-    passes as it is."""
+    failure unless the lumped model's equilibrium solved it; Naumov & Agievich's sphere problem, in
+    dimensionless groups with its own checks (``physical_warnings``), passes as it is."""
     if result.sphere is not None:
         return Verdict()
     verdict = check_steady(result.case, result.cables, bodies=result.bodies,
                            attitudes=getattr(result, "attitudes", None))
     if result.method == LUMPED_EQUILIBRIUM:
         return verdict
-    warnings = verdict.warnings + dry_parts(result.case, result.cables)
-    lifted = None if verdict.failure else buoyant_above_water(result.case, result.cables)
-    return Verdict(verdict.failure or (lifted and f"buoyant_above_water: {lifted}"), warnings)
+    warnings, lifted = dry_parts(result.case, result.cables)
+    failure = verdict.failure or (f"buoyant_above_water: {lifted}" if lifted is not None else None)
+    return Verdict(failure, verdict.warnings + warnings)
 
 
-def _above_water(case, cables: Mapping[str, CableNodes]):
-    """Each cable with a part above the mean water surface longer than :data:`DRY_LENGTH_FLOOR`:
-    ``(cable, nodes, share, line_types)``, with ``share`` the unstretched length of each element above
-    the surface (:mod:`kanat.physics.immersion` eq. 3) and ``line_types`` each element's line type."""
+def dry_parts(case, cables: Mapping[str, CableNodes]) -> tuple[tuple[str, ...], str | None]:
+    """The parts of cables above the mean water surface, for the statics solvers that take a whole line
+    as submerged (docs/statics.md, "Assumptions"): a warning per such cable, with the length above the
+    surface (:mod:`kanat.physics.immersion` eq. 3, unstretched) and the buoyancy it keeps there, its
+    weight in air less its weight in water (``m g - w``) per metre, which in the air it would not have,
+    against the cable's largest tension; and the failure (``buoyant_above_water``, None when there is
+    none) of the first cable with a part of a buoyant line type (``w < 0``) above the surface: the
+    solver holds that part up in the air by ``-w`` a metre, where it weighs ``m g``, a shape no line
+    takes."""
+    env = case.environment
+    warnings, failure = [], None
     for cable in case.cables:
         if cable.name not in cables:
             continue
@@ -419,45 +425,23 @@ def _above_water(case, cables: Mapping[str, CableNodes]):
         if len(nodes.s) < 2:
             continue
         share = dry_shares(nodes.position[:, 2]) * np.diff(nodes.s)
-        if float(np.sum(share)) > DRY_LENGTH_FLOOR:
-            yield cable, nodes, share, [nodes.types[k] for k in nodes.element_type]
-
-
-def dry_parts(case, cables: Mapping[str, CableNodes]) -> tuple[str, ...]:
-    """Warnings on the parts of cables above the mean water surface, for the statics solvers that take
-    a whole line as submerged (docs/statics.md, "Assumptions"): per such cable, the length above the
-    surface (:mod:`kanat.physics.immersion` eq. 3, unstretched) and the buoyancy it keeps there, its
-    weight in air less its weight in water (``m g - w``) per metre, which in the air it would not have,
-    against the cable's largest tension."""
-    env = case.environment
-    found = []
-    for cable, nodes, share, types in _above_water(case, cables):
-        lift = np.array([line.mass * env.gravity - line.weight_in_water_value(env.water_density, env.gravity)
-                         for line in types])
-        buoyancy = float(np.sum(lift * share))
+        length = float(np.sum(share))
+        if length <= DRY_LENGTH_FLOOR:
+            continue
+        w = np.array([line.weight_in_water_value(env.water_density, env.gravity)
+                      for line in nodes.types])[nodes.element_type]
+        air = np.array([line.mass * env.gravity for line in nodes.types])[nodes.element_type]
+        buoyancy = float(np.sum((air - w) * share))
         largest = float(np.max(np.abs(nodes.tension)))
-        found.append(f"cable '{cable.name}': {float(np.sum(share)):.4g} m of it lies above the water surface, where "
-                     f"this solver takes it as submerged: it keeps {buoyancy:.4g} N of buoyancy there "
-                     f"({100.0 * buoyancy / max(largest, 1e-300):.2g} % of its largest tension) that it would not "
-                     "have in the air; the dynamic models (`kanat run`) weigh that part in air")
-    return tuple(found)
-
-
-def buoyant_above_water(case, cables: Mapping[str, CableNodes]) -> str | None:
-    """Why a statics result that takes a whole line as submerged is no steady state, if a buoyant part
-    of a line (weight in water ``w < 0``) lies above the mean water surface: the solver holds it up
-    there by ``-w`` a metre, where in the air it weighs ``m g``; the shape it gives such a part is
-    none the line could take (a heavy part above the water only carries the buoyancy it keeps,
-    :func:`dry_parts`' warning). None when no buoyant part is above the water."""
-    env = case.environment
-    for cable, _, share, types in _above_water(case, cables):
-        w = np.array([line.weight_in_water_value(env.water_density, env.gravity) for line in types])
+        warnings.append(f"cable '{cable.name}': {length:.4g} m of it lies above the water surface, where this solver "
+                        f"takes it as submerged: it keeps {buoyancy:.4g} N of buoyancy there "
+                        f"({100.0 * buoyancy / max(largest, 1e-300):.2g} % of its largest tension) that it would not "
+                        "have in the air; the dynamic models (`kanat run`) weigh that part in air")
         lifted = share * (w < 0.0)
-        length = float(np.sum(lifted))
-        if length > DRY_LENGTH_FLOOR:
-            return (f"cable '{cable.name}': {length:.4g} m of a buoyant line type lies above the water surface, "
-                    f"held up there by {-float(np.sum(w * lifted)):.4g} N of buoyancy it would not have in the "
-                    "air (this solver takes a whole line as submerged): no steady state of this model; the "
-                    "lumped model (`kanat run` with model: lumped) weighs that part in air, or keep the buoyant "
-                    "line under water")
-    return None
+        if failure is None and float(np.sum(lifted)) > DRY_LENGTH_FLOOR:
+            failure = (f"cable '{cable.name}': {float(np.sum(lifted)):.4g} m of a buoyant line type lies above the "
+                       f"water surface, held up there by {-float(np.sum(w * lifted)):.4g} N of buoyancy it would not "
+                       "have in the air (this solver takes a whole line as submerged): no steady state of this "
+                       "model; the lumped model (`kanat run` with model: lumped) weighs that part in air, or keep "
+                       "the buoyant line under water")
+    return tuple(warnings), failure
