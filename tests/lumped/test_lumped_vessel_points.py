@@ -2,8 +2,9 @@
 path of :meth:`kanat.lumped.system.LumpedSystem.vessel_points`):
 
 * harmonics of surge, sway and heave: the points sit at ``r + (surge, sway, heave)`` and move
-  at its derivative (written out here), bit for bit what the general rigid-body sampler
-  (:func:`kanat.physics.motion_samples.point_series`, rotations included) gives;
+  at its derivative (written out here), what the general rigid-body sampler
+  (:func:`kanat.physics.motion_samples.point_series`, rotations included) gives, ramped or not
+  (the compiled :func:`kanat.lumped.fast.harmonic_points` against NumPy's);
 * a table without angles: as its scalar twin (:func:`kanat.physics.motion.motion_at`);
 * the steady frame of the equilibrium: the points at ``t = 0``, at rest;
 * a motion with a rotation takes the general path (:func:`kanat.lumped.system.translational`).
@@ -60,6 +61,29 @@ def test_translational_harmonics_move_every_point_with_the_vessel_origin():
     disp, dvel = point_series(arms, q, v)
     np.testing.assert_array_equal(pos, arms + disp)
     np.testing.assert_array_equal(vel, dvel)
+
+
+def test_a_ramped_motion_is_the_general_samplers_in_its_ramp_and_after():
+    """The ramp (``r q``, ``r q_dot + r' q``) in the compiled sampler against NumPy's, before the start,
+    through the ramp's 6 s and after; a rotation's harmonic of no amplitude left out."""
+    motion = dict(harmonics=MOTION + [{"dof": "roll", "amplitude": 0.0, "period": 5.0}], ramp=6.0)
+    case = two_legs(motion)
+    system = LumpedSystem(build_network(case), case)
+    assert system._harmonics is not None and len(system._harmonics[0]) == 3
+    times = np.linspace(-1.0, 9.0, 41)
+    arms = np.array([[0.0, 0.0, 0.0], [3.0, -2.0, -8.0]])
+    pos, vel, _ = system.vessel_points(times, arms)
+    q, v = motion_series(system.motion, times)
+    disp, dvel = point_series(arms, q, v)
+    np.testing.assert_allclose(pos, arms + disp, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(vel, dvel, rtol=0, atol=1e-14)
+    assert np.all(pos[times <= 0.0] == arms) and np.all(vel[times <= 0.0] == 0.0)
+    ramped = np.abs(vel[:, 0, 0] - analytic_rate(times)) > 1e-9
+    assert np.any(ramped) and np.all(times[ramped] < 6.0)         # the ramp is felt, and only in its 6 s
+
+
+def analytic_rate(times):
+    return np.array([analytic(t)[1][0] for t in times])
 
 
 def test_a_table_without_angles_follows_its_scalar_twin():

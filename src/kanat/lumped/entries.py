@@ -191,6 +191,7 @@ BODIES = tuple(Bodies.narrowed(rig=rig, contact=seabed) for rig in (None, Rig) f
 """The ``bodies`` argument with and without 6-DOF bodies and seabed contact."""
 
 register("track_states", "kanat.lumped.fast", (F1, F2, F1, F2, F2, F1))
+register("harmonic_points", "kanat.lumped.fast", (F1, I1, F1, F1, F1, FLOAT, F2, F3, F3))
 register("rk4_steps", "kanat.lumped.fast",
          *((FLOAT, FLOAT, INT, F1, Track, Nodes, Elements, bodies, Environment, Work, Snap, F2) for bodies in BODIES),
          returns=(INT, INT), module="_lumped_explicit")
@@ -213,10 +214,10 @@ register("contact_forces", "kanat.physics.contact", (F2, F2, I1, I1, F1, Bed, Co
 
 
 # the entry points Python code calls (``entries.element_forces(...)``; kanat.aot.EntryPoint)
-(track_states, rk4_steps, abm4_steps, implicit_steps, elastic_row, element_forces, lumped_solve, tensions,
- add_body_loads, place_fairleads, rigid_accelerations, contact_forces) = map(aot.EntryPoint, (
-    "track_states", "rk4_steps", "abm4_steps", "implicit_steps", "elastic_row", "element_forces", "lumped_solve",
-    "tensions", "add_body_loads", "place_fairleads", "rigid_accelerations", "contact_forces"))
+(track_states, harmonic_points, rk4_steps, abm4_steps, implicit_steps, elastic_row, element_forces, lumped_solve,
+ tensions, add_body_loads, place_fairleads, rigid_accelerations, contact_forces) = map(aot.EntryPoint, (
+    "track_states", "harmonic_points", "rk4_steps", "abm4_steps", "implicit_steps", "elastic_row", "element_forces",
+    "lumped_solve", "tensions", "add_body_loads", "place_fairleads", "rigid_accelerations", "contact_forces"))
 
 
 # An output's loads in one compiled call (kanat.lumped.output_loads) ---------------------------

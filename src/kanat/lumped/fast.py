@@ -234,6 +234,40 @@ def track_states(times, phases, arm, position, velocity, heading):
         heading[q] = psi
 
 
+
+@kernel
+def harmonic_points(times, dof, amplitude, omega, phase, ramp, arms, position, velocity):
+    """Points ``arms`` (p, 3) of a vessel that moves by translational harmonics alone (no track, no
+    rotation): positions and velocities (k, p, 3) at ``times`` (k,). The twin of
+    :func:`kanat.physics.motion_samples.motion_series` with :func:`kanat.physics.motion_samples.point_series`
+    at ``R = I``, ``w = 0``: ``q_d = sum_h a_h sin(omega_h t + phi_h)`` over the harmonics of degree of
+    freedom ``d`` (``dof``: 0-2 surge, sway, heave), ramped by ``r q`` and ``r q_dot + r' q``
+    (:mod:`kanat.physics.ramp` eqs. 1-2); a point at ``r + ((q + r) - r)`` moving at ``q_dot``."""
+    for k in range(times.shape[0]):
+        t = times[k]
+        q0 = q1 = q2 = v0 = v1 = v2 = 0.0
+        for h in range(dof.shape[0]):
+            arg = t * omega[h] + phase[h]
+            a = amplitude[h]
+            d, rate = a * math.sin(arg), a * omega[h] * math.cos(arg)
+            if dof[h] == 0:
+                q0, v0 = q0 + d, v0 + rate
+            elif dof[h] == 1:
+                q1, v1 = q1 + d, v1 + rate
+            else:
+                q2, v2 = q2 + d, v2 + rate
+        if ramp > 0.0:
+            r, dr = ramp_at(t, ramp), 0.0
+            if 0.0 < t < ramp:
+                dr = 0.5 * math.pi / ramp * math.sin(math.pi * t / ramp)
+            v0, v1, v2 = r * v0 + dr * q0, r * v1 + dr * q1, r * v2 + dr * q2
+            q0, q1, q2 = r * q0, r * q1, r * q2
+        for j in range(arms.shape[0]):
+            x, y, z = arms[j, 0], arms[j, 1], arms[j, 2]
+            position[k, j, 0], position[k, j, 1], position[k, j, 2] = x + ((q0 + x) - x), y + ((q1 + y) - y), \
+                z + ((q2 + z) - z)
+            velocity[k, j, 0], velocity[k, j, 1], velocity[k, j, 2] = v0, v1, v2
+
 # --- right-hand side ------------------------------------------------------------------------
 @inner
 def place(y, vpos, vvel, nodes, x, v):

@@ -79,6 +79,13 @@ class LumpedSystem:
         self.track = VesselTrack.from_model(case.vessel) if case.vessel.track else None
         self.motion = compile_motion(case.vessel.motion, env)
         self._translational = translational(self.motion)
+        self._harmonics = None      # a translational harmonic motion as entries.harmonic_points takes it
+        if self._translational and isinstance(self.motion, Harmonics):
+            m = self.motion
+            on = np.asarray(m.dof) < 3                                  # rotations' harmonics have no amplitude
+            self._harmonics = (np.ascontiguousarray(np.asarray(m.dof)[on], np.int64),
+                               *(np.ascontiguousarray(np.asarray(value, float)[on]) for value in
+                                 (m.amplitude, m.omega, m.phase)), float(m.ramp))
         self.consistent = mass_matrix == "consistent"
         self.steady_velocity = None if steady_velocity is None else np.asarray(steady_velocity, float)
         self.steady_time, self.friction = float(steady_time), friction
@@ -165,6 +172,10 @@ class LumpedSystem:
         heading 0): the same numbers, points at ``arms + (q + r - r)`` moving at ``q_dot``, in a
         few array operations (the run samples it thousands of times)."""
         k, p = len(times), len(arms)
+        if self._harmonics is not None and self.steady_velocity is None and p:
+            pos, vel = np.empty((k, p, 3)), np.empty((k, p, 3))
+            entries.harmonic_points(times, *self._harmonics, np.ascontiguousarray(arms, float), pos, vel)
+            return pos, vel, np.zeros(k)
         pos, vel = np.empty((k, p, 3)), np.zeros((k, p, 3))
         pos[:] = arms
         if self.motion is not None and p:
