@@ -220,6 +220,13 @@ def main() -> None:
         print(f"| {code} | {scheme} | {step} | {whole:.2f} | {cpu:.2f} | {stepping:.2f} | "
               f"{median(best, 0) / whole:.2f}x; {median(best, 1) / cpu:.2f}x{off} | "
               f"{100 * diff[:, 0].max():.2f} % | {100 * diff[:, 1].max():.2f} % |")
+    for config in configs:
+        if config[0] == "kanat" and not isinstance(results[config], str):
+            ratios = np.array([[a[k] / b[k] for k in (0, 1)] for a, b in zip(times[best], times[config])])
+            print(f"\n{' '.join(map(str, config))} against {' '.join(map(str, best))} repeat by repeat (the runs "
+                  "interleaved, so the ratio is taken at one machine speed): "
+                  + ", ".join(f"{name} {np.median(r):.2f}x ({r.min():.2f}-{r.max():.2f})"
+                              for name, r in zip(("whole", "CPU"), ratios.T)))
     print(f"\nreference (MoorDyn RK2 1 ms) fairlead tension mean {reference[:, 0].round(0).tolist()} N, "
           f"range {reference[:, 1].round(0).tolist()} N over {WINDOW[0]:g}-{WINDOW[1]:g} s")
 

@@ -234,3 +234,25 @@ def test_generalized_alpha_damps_the_highest_frequency_by_lambda_inf(lam):
     columns = [step(z_eq, size, 0.0)[1:], step(z_eq, 0.0, size)[1:]]
     growth = np.array(columns).T / size                                     # d(v', u') / d(v, u)
     assert np.linalg.eigvals(growth) == pytest.approx([lam, lam], abs=2e-3)
+
+
+def test_a_network_with_nothing_free_has_no_axial_period(tmp_path):
+    """A single element from an anchor to the vessel: no node moves of itself, so there is no axial
+    period (eq. 3 of kanat.lumped.stepping: infinite, not a huge number standing for it), the result
+    says so, and the run steps at its output interval."""
+    from kanat import api
+
+    case = Case.model_validate(dict(
+        model="lumped", environment={"depth": 100.0}, line_types={"c": vacuum_line()},
+        vessel={"motion": [{"dof": "heave", "amplitude": 1.0, "period": 9.0}]},
+        cables=[dict(name="leg", line_type="c", length=100.0, segments=1, **{"from": "anchor:[0, 0, -99]"},
+                     to={"vessel": [0, 0, 0]})],
+        simulation={"duration": 2.0, "output_dt": 0.5}))
+    net = build_network(case)
+    assert step_info(net, net.x_guess).axial_period == math.inf
+    out = api.run(case, output=tmp_path / "fixed.nc")
+    assert out.status == "ok" and out.summary.dt == 0.5
+    import xarray as xr
+
+    with xr.open_dataset(tmp_path / "fixed.nc") as ds:
+        assert ds.attrs["axial_period"] == math.inf

@@ -86,7 +86,7 @@ class StepInfo:
     Attributes
     ----------
     axial_period : float
-        Shortest axial nodal period, eq. (3) [s].
+        Shortest axial nodal period, eq. (3) [s]; infinite when no element has a moving end.
     omega_max : float
         ``max |lambda_k|``, eq. (4) [1/s].
     element : int
@@ -150,7 +150,8 @@ def step_info(net, x, consistent: bool = False, seabed=None) -> StepInfo:
         contact = (spectral_radius(np.sqrt(seabed.stiffness * area * inv), seabed.damping * area * inv)
                    + max(seabed.friction, seabed.lateral_friction) * net.node_weight / SLIP_VELOCITY * inv)
         top = max(top, float(np.max(contact, initial=0.0)))
-    return StepInfo(2.0 * math.pi / max(float(np.max(omega, initial=0.0)), 1e-300), top, k)
+    highest = float(np.max(omega, initial=0.0))
+    return StepInfo(2.0 * math.pi / highest if highest > 0.0 else math.inf, top, k)
 
 
 def fit_step(h_max: float, output_dt: float) -> float:
