@@ -41,7 +41,8 @@ ATTRIBUTES = {
     "step_cuts": "steps halved after a failed Newton solve (implicit schemes)",
     "newton_iterations_mean": "mean Newton iterations per step (implicit schemes)",
     "setup_time_s, solver_time_s, compile_time_s": "wall time spent setting up, stepping and compiling kernels [s]",
-    "notes": "what the run chose or adjusted (a step bounded by stability, ...)",
+    "notes": "what the run chose or adjusted (a step bounded by stability, ...); network statics: what its "
+             "conventions did to the answer (seabed friction taken off an anchor's pull)",
     "scheme_*": "the scheme's parameters (`scheme_lambda_inf`, ...)",
     "method_CABLE, grounded_length_CABLE_m": "statics: the method that solved each cable and its length on the seabed",
     "snap_events": "number of slack-to-taut events (lumped model)",

@@ -255,6 +255,29 @@ def test_the_example_buoy_balances_and_its_anchors_feel_the_friction_drop():
         assert 0.0 < anchor < 0.5 * H
 
 
+def test_an_anchor_relieved_by_friction_says_what_it_could_feel_without(tmp_path):
+    """The friction drop above is a convention (friction fully mobilized towards the anchor): each
+    anchor's note gives the drop ``CB w L_B`` and the touchdown's ``H``, which a line laid otherwise
+    puts on its anchor (MoorDyn's dynamic start on its WD0200 chain: 1408 kN against statics' 906 kN);
+    written in the result's ``notes``. Without friction, no note."""
+    case = load(ROOT / "examples" / "mooring_3leg.yaml")
+    result = solve_statics(case)
+    w = (115.0 - 1025 * math.pi / 4 * 0.137**2) * 9.81
+    assert len(result.notes) == len(result.cables) == 3
+    for (name, cable), note in zip(result.cables.items(), result.notes):
+        H = cable.tension[-1] * math.cos(cable.angle[-1])
+        assert note.startswith(f"anchor {name}.from: seabed friction (coefficient 0.2) on the "
+                               f"{cable.grounded_length:.4g} m of '{name}'")
+        assert f"takes {0.2 * w * cable.grounded_length / 1e3:.4g} kN off the {H / 1e3:.4g} kN" in note
+        assert note.endswith(f"pulls its anchor with up to {H / 1e3:.4g} kN")
+    out = CliRunner().invoke(app, ["statics", str(ROOT / "examples" / "mooring_3leg.yaml"), "-o",
+                                   str(tmp_path / "s.nc")])
+    assert out.exit_code == 0 and out.output.count("note: anchor") == 3
+    assert read_result(tmp_path / "s.nc").attrs["notes"] == "; ".join(result.notes)
+    frictionless = solve_statics(case.replace({"environment.seabed.friction": 0.0}))
+    assert frictionless.notes == ()
+
+
 def test_lines_on_a_sloped_seabed_lie_on_it_and_hold_the_platform():
     """A 6-DOF platform on four chains over a seabed rising 2 deg towards +x: every grounded node
     lies on the sloped plane, the suspended ones above it; the platform's forces and moments

@@ -51,6 +51,8 @@ def statics_table(result, wall_time_s: float = 0.0, status: str = "ok", warnings
     attrs = provenance(result.case, model="statics", scheme=result.method, wall_time_s=wall_time_s, status=status)
     if warnings:
         attrs["warnings"] = "\n".join(warnings)
+    if getattr(result, "notes", ()):                           # network statics: friction on anchors, ...
+        attrs["notes"] = "; ".join(result.notes)
     if result.sphere is not None:
         return _sphere_table(result.sphere, attrs)
     names, s, position, tension, angle = [], [], [], [], []

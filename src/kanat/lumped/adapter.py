@@ -31,7 +31,7 @@ from kanat.io.schema import Layout
 from kanat.lumped import entries, stepping, time_error
 from kanat.lumped.advance import HALVING, advance, time_error_estimate
 from kanat.lumped.equilibrium import relaxation_note, starting_state, starting_state_info
-from kanat.lumped.network import build_network
+from kanat.lumped.network import build_network, given_positions
 from kanat.lumped.output import NodeTension
 from kanat.lumped.snap import SnapTracker, significant
 from kanat.model.run_cost import check_node_steps
@@ -187,7 +187,7 @@ class LumpedModel:
                                   "from the given geometry with simulation.initial_state: as_given") from None
             velocity = v[free]
         else:
-            x = self.net.x_guess.copy()
+            x = given_positions(self.net, self.case)
             velocity = np.broadcast_to(system.frame_velocity(), (len(free), 3)).copy()
         velocity[np.searchsorted(free, self.net.rigid.rot_node)] = 0.0         # Euler angle rates
         state = self.scheme.start(system, 0.0, x[free], velocity, self.dt)

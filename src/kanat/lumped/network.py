@@ -391,25 +391,31 @@ def _guess_positions(builder: _Builder, ends: list[tuple[int, int, float]], clam
                                            "an anchor: give its bodies or points a 'position'")])
 
 
-def sagged_line(p0, p1, length: float, segments: int, s=None) -> np.ndarray:
+def sagged_line(p0, p1, length: float, segments: int, s=None, stretch: float = GUESS_STRETCH) -> np.ndarray:
     """Nodes of a cable between ``p0`` and ``p1``: straight when the chord is as long as the
-    cable, else a parabola sagging downward whose length is ``GUESS_STRETCH`` times the cable's
-    (elements taut, so the equilibrium's tangent is regular from the start), the nodes spaced
-    evenly along it in arclength. ``s`` (segments + 1,) places the nodes at those fractions of
-    the length (default even)."""
+    cable, else a parabola sagging downward whose length is ``stretch`` times the cable's, the
+    nodes spaced evenly along it in arclength. ``s`` (segments + 1,) places the nodes at those
+    fractions of the length (default even). The equilibrium's first guess takes
+    :data:`GUESS_STRETCH` (elements taut, so its tangent is regular from the start); a start as given
+    (``stretch`` 1) lays the cable unstretched, at no tension. A vertical chord bows sideways (in +x),
+    but for a start as given whose chord is at least half the cable's length: it lies straight, its
+    elements slack (MoorDyn's pendulum test file: 100.5 m over 100 m), where a bow would push it
+    metres sideways; a shorter chord would bunch its elements up, and hangs in the bow's U."""
     fraction = np.linspace(0.0, 1.0, segments + 1) if s is None else np.asarray(s) / length
     chord = p1 - p0
-    if np.linalg.norm(chord) >= GUESS_STRETCH * length or np.linalg.norm(chord) >= length * (1.0 - 1e-12):
+    if np.linalg.norm(chord) >= stretch * length or np.linalg.norm(chord) >= length * (1.0 - 1e-12):
         return p0 + chord * fraction[:, None]          # taut, or laid out straight as given
     down = np.array([0.0, 0.0, -1.0]) - chord * (-chord[2]) / max(chord @ chord, 1e-300)
-    if np.linalg.norm(down) < 1e-9:                  # vertical chord: bow sideways
+    if np.linalg.norm(down) < 1e-9:                  # vertical chord
+        if stretch <= 1.0 and np.linalg.norm(chord) >= 0.5 * length:
+            return p0 + chord * fraction[:, None]
         down = np.array([1.0, 0.0, 0.0])
     down /= np.linalg.norm(down)
     xi = np.linspace(0.0, 1.0, 20 * segments + 201)[:, None]
     shape = 4.0 * xi * (1.0 - xi) * down
     curve = lambda sag: p0 + chord * xi + sag * shape  # noqa: E731
     polyline = lambda sag: np.sum(np.linalg.norm(np.diff(curve(sag), axis=0), axis=1))  # noqa: E731
-    target = GUESS_STRETCH * length
+    target = stretch * length
     low, high = 0.0, target
     for _ in range(100):
         mid = 0.5 * (low + high)
@@ -418,6 +424,25 @@ def sagged_line(p0, p1, length: float, segments: int, s=None) -> np.ndarray:
     arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))])
     wanted = fraction * arc[-1]
     return np.stack([np.interp(wanted, arc, points[:, r]) for r in range(3)], -1)
+
+
+def given_positions(net: Network, case) -> np.ndarray:
+    """All nodes' positions (n, 3) of a start as given (``simulation.initial_state: as_given``): those of
+    ``net.x_guess`` with each cable laid unstretched between its ends (:func:`sagged_line` with ``stretch``
+    1, at no tension; the guess's cables are stretched by :data:`GUESS_STRETCH`, which at rest is a
+    tension of ``EA 1e-4``) and, as in the guess, on the seabed where its sag would dip below it."""
+    x = net.x_guess.copy()
+    loose = np.zeros(net.n_nodes, dtype=bool)
+    for cable in case.cables:
+        on = net.node_cable == cable.name
+        nodes, s = net.node_index[on], net.node_s[on]
+        x[nodes] = sagged_line(x[nodes[0]], x[nodes[-1]], cable.length, len(nodes) - 1, s, stretch=1.0)
+        loose[nodes] = True
+    seabed = seabed_of(case.environment)
+    if seabed is not None:
+        loose &= ~np.isin(net.kinds, PRESCRIBED)
+        x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
+    return x
 
 
 def build_network(case) -> Network:

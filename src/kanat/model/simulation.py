@@ -47,7 +47,11 @@ class Simulation(KanatModel):
         Lumped model: element mass ``mL/2`` at each node or consistent ``mL/6 [[2,1],[1,2]]``.
     initial_state : {"equilibrium", "as_given"}
         Lumped model: start from the network's equilibrium at the initial tow speed
-        (theory/moorings.md §1), or from straight cables between the given end positions at rest.
+        (theory/moorings.md §1), or at rest from the given positions of ends, bodies and points with
+        each cable laid unstretched between its ends (no tension): straight when its ends are as far
+        apart as it is long, or one above the other at least half its length apart; else sagging in a
+        parabola of its length (downward, or sideways in x between ends one above the other), lying on
+        the seabed where the sag would dip below it.
     slack : {"continue", "stop"}
         Continuum model: what a run does when the cable goes slack (compression beyond what
         its bending stiffness carries): ``continue`` carries the small compression the box

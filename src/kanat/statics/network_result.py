@@ -370,6 +370,8 @@ def _result(case, method: str, solution: NetworkSolution) -> NetworkResult:
                               "where its buoyancy is lost: its lines cannot hold it under water. Statics "
                               "takes submerged points and point bodies; give it more weight or shorter "
                               "lines, or make it a dof: 6 body with a waterplane")
+    notes += friction_notes(case, cables, anchors, {line.name: float(state.solution.horizontal_tension)
+                                                    for line, state in zip(problem.lines, solution.lines)})
     body_forces = {k: v for k, v in forces.items() if k in bodies}
     body_moments = {k: v for k, v in moments.items() if k in bodies}
     stiffness = condensed_stiffness(solution)
@@ -469,9 +471,40 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
     zeros = {name: np.zeros(3) for name in bodies}
     turned = {name: np.asarray((attitudes or {}).get(name, np.zeros(3)), float) for name in bodies}
     anchors = anchors if anchor_forces is None else {k: np.asarray(v, float) for k, v in anchor_forces.items()}
+    notes = (*notes, *friction_notes(case, out, anchors))
     return NetworkResult(case, method, out, {k: np.asarray(v, float) for k, v in bodies.items()}, turned,
                          {k: np.asarray(v, float) for k, v in points.items()}, forces, dict(zeros), anchors, {},
-                         iterations, 0, 0.0, tuple(notes))
+                         iterations, 0, 0.0, notes)
+
+
+def friction_notes(case, cables: dict, anchors: dict, touchdown: dict | None = None) -> list[str]:
+    """A note for each anchor whose pull the seabed's friction lowers: statics takes it fully mobilized
+    towards the anchor (MoorPy's convention, docs/statics.md), so the anchor gets the touchdown's
+    horizontal tension less ``mu w`` times the length on the seabed, down to zero. A line laid
+    otherwise, or moved since, pulls its anchor with up to the touchdown's tension: the note gives both
+    (MoorDyn's WD0200 chain: 905.8 kN at the anchor, 1408.5 kN at the touchdown, which MoorDyn's
+    dynamic start, without friction at rest, puts on its anchor). ``touchdown`` gives a cable's tension
+    at its touchdown (a catenary line's horizontal tension) [N]; else it is read off the cable's nodes."""
+    bed = case.environment.seabed
+    if bed is None or bed.friction <= 0.0:
+        return []
+    notes = []
+    for name, force in anchors.items():
+        cable_name, end = name.rsplit(".", 1)
+        cable = cables.get(cable_name)
+        if cable is None or cable.grounded_length <= 0.0:
+            continue
+        s = cable.grounded_length if end == "from" else float(cable.s[-1]) - cable.grounded_length
+        at = (touchdown or {}).get(cable_name, float(np.interp(s, cable.s, cable.tension)))
+        pull = math.hypot(force[0], force[1])
+        if at - pull > 1e-3 * at:
+            notes.append(
+                f"anchor {name}: seabed friction (coefficient {bed.friction:g}) on the {cable.grounded_length:.4g} m "
+                f"of '{cable_name}' on the seabed takes {(at - pull) / 1e3:.4g} kN off the "
+                f"{at / 1e3:.4g} kN at the touchdown, taken fully mobilized towards the anchor (MoorPy's "
+                "convention: the line laid from its anchor, then pulled taut); a line laid otherwise, or moved "
+                f"since, pulls its anchor with up to {at / 1e3:.4g} kN")
+    return notes
 
 
 def _elements(case, cable, r, ship):
