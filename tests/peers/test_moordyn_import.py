@@ -257,6 +257,7 @@ def test_options_and_simulation():
         RK4       tScheme
         7         mystery
         0         WaveKin
+        0.001     TmaxIC
         """))
     case, result = case_of(text)
     env, seabed = case.environment, case.environment.seabed
@@ -268,6 +269,8 @@ def test_options_and_simulation():
     assert "MoorDyn's step for its own scheme (0.001 s) is not imported" in messages["OPTIONS.dtM"]
     assert "solver setting" in messages["OPTIONS.tScheme"]
     assert "unknown MoorDyn option 'mystery'" in messages["OPTIONS.mystery"]
+    assert "simulation.initial_state: as_given" in messages["OPTIONS.TmaxIC"]      # no settling in MoorDyn
+    assert case.simulation.initial_state == "equilibrium"
     assert all(p.severity == "warning" for p in result.problems)
 
 
@@ -291,6 +294,9 @@ def test_v1_point_forces_and_connect_points():
     ("3   Coupled", "3   Turbine1", "POINTS 3.Attachment", "'Turbine1' points cannot be imported"),
     ("110       11", "110       x", "LINES 2.NumSegs", "'x' is not a whole number"),
     ("80        WtrDpth", "bathy.txt WtrDpth", "OPTIONS.WtrDpth", "a bathymetry file cannot be imported"),
+    ("9.8       g\n", "9.8       g\nsea.txt   SeafloorFile\n", "OPTIONS.SeafloorFile",
+     "a bathymetry file cannot be imported; kanat's seabed is a plane: give environment.depth and "
+     "environment.seabed.slope_deg"),
     ("9.8       g\n", "9.8       g\n1         WaveKin\n", "OPTIONS.WaveKin", "ExternalWaveKinSet"),
     ("1   Fixed       -300   10    -80    0     0       0    0",
      "1   Fixed       -300   10    -80    0     0       0", "POINTS", "8 values on this row"),

@@ -30,10 +30,11 @@ SETTINGS = frozenset({
     "fricdamp", "statdynfricscale", "cv", "mc", "inertialf", "inertialf_rampt", "outswitch",
     "unifycurrentgrid", "wavekin_rampt", "numturbines"})
 """MoorDyn solver settings without a kanat counterpart: imported as warnings."""
-REFUSED = {"waterkin": "MoorDyn-F's water kinematics input file",
-           "seafloorfile": "a bathymetry file"}
-"""MoorDyn options kanat cannot express when they are switched on (``WaveKin`` and ``Currents``:
-:mod:`kanat.io.moordyn_waves`)."""
+REFUSED = {"waterkin": ("MoorDyn-F's water kinematics input file", "give waves and current in the kanat case instead"),
+           "seafloorfile": ("a bathymetry file", "kanat's seabed is a plane: give environment.depth and "
+                            "environment.seabed.slope_deg (rising towards +x) in the kanat case instead")}
+"""MoorDyn options kanat cannot express when they are switched on, and what to give instead (``WaveKin``
+and ``Currents``: :mod:`kanat.io.moordyn_waves`)."""
 LINE_TYPE_COLUMNS = {1: ("Diam", "MassDen", "EA", "BA", "Can", "Cat", "Cdn", "Cdt"),
                      2: ("Diam", "MassDen", "EA", "BA", "EI", "Cd", "Ca", "CdAx", "CaAx")}
 
@@ -183,8 +184,12 @@ def read_options(reader: Reader) -> None:
             reader.option_lines[mapped] = row.line
         elif low in REFUSED:
             if value.strip("\"'").lower() not in ("", "0", "0.0", "none"):
-                reader.error(row.line, where, f"{key} = {value}: {REFUSED[low]} cannot be "
-                             "imported; give waves and current in the kanat case instead")
+                what, instead = REFUSED[low]
+                reader.error(row.line, where, f"{key} = {value}: {what} cannot be imported; {instead}")
+        elif low == "tmaxic" and _is_number(value) and float(value) < 1.0:
+            reader.warn(row.line, where, f"{key} = {value}: MoorDyn starts from the file's layout, all but "
+                        "unsettled; kanat starts from the equilibrium unless the case says "
+                        "simulation.initial_state: as_given (the layout at rest); not imported")
         elif low in SETTINGS:
             reader.warn(row.line, where, f"{key} = {value} is a MoorDyn solver setting without "
                         "a kanat counterpart; not imported")
