@@ -59,8 +59,10 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
   file takes kanat's default scheme and step (an explicit-scale step given as ``simulation.dt``
   made the default scheme RK4 at 1 ms: 4 force evaluations a millisecond).
   Solver settings without a kanat counterpart (``dtIC``, ``TmaxIC``, ``tScheme``, ...) are
-  reported as warnings, never dropped silently; features kanat cannot express (rods,
-  bathymetry files, failures) are errors.
+  reported as warnings, never dropped silently (a ``TmaxIC`` under 1 s, which leaves MoorDyn's
+  start unsettled, with the key that starts kanat likewise: ``simulation.initial_state: as_given``);
+  features kanat cannot express (rods, bathymetry files, failures) are errors, a ``SeafloorFile``
+  with what a plane seabed takes instead (``depth``, ``seabed.slope_deg``).
 * Water kinematics: ``WaveKin`` 2, 3 and 7 read MoorDyn's wave files beside the input file
   into ``environment.waves`` (``type: components``), ``Currents 1`` its current profile into
   ``environment.current.profile``; ``WaveKin 1`` (waves set through MoorDyn's API) and the

@@ -170,11 +170,13 @@ class LumpedSystem:
     def _translated_points(self, times, arms):
         """:meth:`_vessel_points` without a track and without rotations (``R = I``, ``w = 0``,
         heading 0): the same numbers, points at ``arms + (q + r - r)`` moving at ``q_dot``, in a
-        few array operations (the run samples it thousands of times)."""
+        few array operations, or for harmonics one compiled call (:func:`kanat.lumped.fast.harmonic_points`:
+        a driven run samples the vessel thousands of times)."""
         k, p = len(times), len(arms)
         if self._harmonics is not None and self.steady_velocity is None and p:
             pos, vel = np.empty((k, p, 3)), np.empty((k, p, 3))
-            entries.harmonic_points(times, *self._harmonics, np.ascontiguousarray(arms, float), pos, vel)
+            entries.harmonic_points(np.ascontiguousarray(times, float), *self._harmonics,
+                                    np.ascontiguousarray(arms, float), pos, vel)
             return pos, vel, np.zeros(k)
         pos, vel = np.empty((k, p, 3)), np.zeros((k, p, 3))
         pos[:] = arms
