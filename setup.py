@@ -99,7 +99,7 @@ class BuildKernels(build_ext):
 def _compile_bytecode() -> None:
     """Write the package's bytecode beside its sources in an editable install, as pip does for a
     wheel's: where ``PYTHONDONTWRITEBYTECODE`` is set (container images often set it) Python would
-    otherwise compile kanat's 200-odd modules on every run, 0.16 s of a 2.3 s run on a 2-core VM
+    otherwise compile kanat's 200-odd modules on every run, 0.2-0.3 s of a 2.3 s run on a 2-core VM
     (docs/performance.md). Python recompiles a module whose source changed since, in memory."""
     try:
         compileall.compile_dir(str(Path(__file__).parent / "src" / "kanat"), quiet=1)

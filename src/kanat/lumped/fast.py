@@ -234,7 +234,6 @@ def track_states(times, phases, arm, position, velocity, heading):
         heading[q] = psi
 
 
-
 @kernel
 def harmonic_points(times, dof, amplitude, omega, phase, ramp, arms, position, velocity):
     """Points ``arms`` (p, 3) of a vessel that moves by translational harmonics alone (no track, no
@@ -267,6 +266,7 @@ def harmonic_points(times, dof, amplitude, omega, phase, ramp, arms, position, v
             position[k, j, 0], position[k, j, 1], position[k, j, 2] = x + ((q0 + x) - x), y + ((q1 + y) - y), \
                 z + ((q2 + z) - z)
             velocity[k, j, 0], velocity[k, j, 1], velocity[k, j, 2] = v0, v1, v2
+
 
 # --- right-hand side ------------------------------------------------------------------------
 @inner
