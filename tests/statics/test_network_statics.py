@@ -471,3 +471,47 @@ def test_a_line_touching_down_between_suspended_ends_is_refused():
 def test_a_network_takes_no_single_cable_method():
     with pytest.raises(SolverError, match="use auto or catenary"):
         solve_statics(load(ROOT / "examples" / "mooring_3leg.yaml"), "shooting")
+
+
+SLACK_LINE = """MoorDyn Input File
+a chain longer than the way down and across: it lies slack on the seabed
+----------------------- LINE TYPES ------------------------------------------
+Name  Diam  MassDen  EA       BA/-zeta   EI    Cd    Ca   CdAx   CaAx
+(-)   (m)   (kg/m)   (N)      (N-s/-)   (-)   (-)   (-)   (-)   (-)
+main  0.2  500.00  2.0E+09  -1        0     1    0.27  1      0.20
+---------------------- POINTS --------------------------------
+Node Type      X     Y      Z     M    V   CdA   CA
+(-)  (-)      (m)   (m)    (m)   (kg) (m^3)  (m^2) (-)
+1   Fixed  -400.0   0.0  -300.0    0    0    0    0
+2   Coupled   0.0   0.0     0.0    0    0    0    0
+---------------------- LINES --------------------------------------
+Line  LineType NodeAnch  NodeFair UnstrLen  NumSegs    Flags/Outputs
+(-)   (-)      (-)       (-)      (m)       (-)        (-)
+1     main      1         2       890.00    40          -
+---------------------- SOLVER OPTIONS ---------------------------------------
+300      WtrDpth
+3.0e6    kbot
+3.0e5    cbot
+------------------------- need this line --------------------------------------
+"""
+
+
+def test_a_line_slack_on_the_seabed_ends_at_its_fairlead(tmp_path):
+    """MoorPy's case5 (890 m of chain from an anchor 400 m away and 300 m down): it hangs straight down
+    from the fairlead and lies on the seabed, the 190 m it has more than the way along the seabed piled
+    under the fairlead, as MoorPy lays it. The profile ran 190 m past the fairlead (laid out straight
+    along the seabed), status ok; its tensions were right."""
+    path = tmp_path / "slack.dat"
+    path.write_text(SLACK_LINE)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = solve_statics(load(path))
+    cable = result.cables["line1"]
+    np.testing.assert_allclose(cable.position[0], [-400.0, 0.0, -300.0], atol=1e-9)
+    np.testing.assert_allclose(cable.position[-1], [0.0, 0.0, 0.0], atol=1e-9)
+    assert np.all((cable.x >= -400.0 - 1e-9) & (cable.x <= 1e-9))
+    grounded = cable.s <= cable.grounded_length
+    np.testing.assert_allclose(cable.z[grounded], -300.0, atol=1e-9)
+    np.testing.assert_allclose(cable.x[~grounded], 0.0, atol=1e-9)        # hanging plumb under the fairlead
+    w = (500.0 - 1025.0 * math.pi / 4 * 0.2**2) * 9.80665
+    assert cable.tension[-1] == pytest.approx(w * 300.0, rel=1e-3)          # the plumb 300 m (stretch 7e-4)

@@ -95,6 +95,9 @@ class LineState:
         Force of the line on its ``from`` and ``to`` ends [N].
     blocks : ndarray, shape (2, 2, 3, 3)
         ``blocks[i, j] = d forces[i] / d r_j`` (ends ``from``, ``to``) [N/m].
+    span : float
+        Horizontal distance from end A to end B [m] (a line slack on the seabed lays out longer:
+        its ``solution.evaluation.x``).
     """
 
     solution: LineSolution
@@ -104,6 +107,7 @@ class LineState:
     ground: Ground | None
     forces: np.ndarray
     blocks: np.ndarray
+    span: float
 
 
 def _spread(K, force_h, e_h, span, transverse) -> np.ndarray:
@@ -141,7 +145,7 @@ def evaluate_line(line, r_from, r_to, seabed, friction, start=None) -> LineState
     forces = np.array([f_A, f_B])
     if reverse:
         forces, blocks = forces[::-1], blocks[::-1, ::-1]
-    return LineState(sol, reverse, r_A, e_h, ground, forces, blocks)
+    return LineState(sol, reverse, r_A, e_h, ground, forces, blocks, span)
 
 
 @dataclass(frozen=True, eq=False)

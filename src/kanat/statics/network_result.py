@@ -279,10 +279,9 @@ def _cable(problem: NetworkProblem, line, state) -> NetworkCable:
     L = line.pieces.total_length
     s_A = L - line.stations if state.reversed else line.stations
     x, z, tension, vertical = sample(s_A, sol.horizontal_tension, sol.vertical_tension, pieces, state.ground)
-    if sol.slack:                                     # lying slack: bunched up to the touchdown point
-        span = sol.evaluation.x
-        grounded = s_A <= sol.evaluation.touchdown
-        x = np.minimum(x, span)
+    if sol.slack:                                     # lying slack: bunched up under end B, where it hangs
+        grounded = s_A <= sol.evaluation.touchdown    # (laid out straight it would reach evaluation.x)
+        x = np.minimum(x, state.span)
         slope = state.ground.slope if state.ground is not None else 0.0
         z = np.where(grounded, x * slope, z)
     position = state.origin + np.outer(x, state.direction) + np.outer(z, [0.0, 0.0, 1.0])
