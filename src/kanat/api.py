@@ -126,7 +126,9 @@ def _lumped_statics(case: Case, reason: str):
     anchors = anchor_forces(net, info["loads"], info["normal_force"], on_seabed,
                             0.0 if seabed is None else seabed.friction)
     return result_from_positions(case, cables, bodies, points, LUMPED_EQUILIBRIUM, info["iterations"],
-                                 [f"solved by the lumped model's equilibrium: {reason}",
+                                 [f"solved by the lumped model's equilibrium: {reason}; with the segments the "
+                                  "case gives, whose tensions converge as the segments are refined (rerun with "
+                                  "more to check)",
                                   *([relaxation_note(info)] if "fallback" in info else [])],
                                  grounded=dict(zip(net.cable_names, grounded)),
                                  anchor_forces=dict(zip(net.anchor_names, anchors)),

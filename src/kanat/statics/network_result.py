@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kanat.errors import SolverError
+from kanat.physics.seabed import seabed_of
 from kanat.statics.coupled import VESSEL, coupled_body_stiffness, coupled_stiffness
 from kanat.statics.network import NetworkSolution, cross, solve_network
 from kanat.statics.network_setup import NeedsLumped, NetworkProblem, network_problem
@@ -40,6 +41,7 @@ SHORTEN_SWEEPS = 1000                        # at most this many passes over the
 SHORTEN_TOLERANCE = 1e-3                     # of a line's length: a chord this close to the limit is kept
 CLEARANCE = 0.02                             # of the depth: guesses stay this far off seabed and surface
 SEABED_TOLERANCE = 1e-6                      # of the depth: deeper nodes are below the seabed
+ON_SEABED = 0.01                             # m: a cable's end at most this far above the seabed rests on it
 
 
 @dataclass(frozen=True, eq=False)
@@ -149,9 +151,10 @@ class NetworkResult:
         for name, r in {**self.bodies, **self.points}.items():
             lines.append(f"{'body' if name in self.bodies else 'point'} {name}: x = {r[0]:.3f}, y = {r[1]:.3f}, "
                          f"z = {r[2]:.3f} m")
-        for name in self.coupled_bodies:
+        for name, about in self.coupled_bodies.items():
             K, F = np.diag(self.stiffness[name]), self.body_forces[name]
-            lines.append(f"coupled body {name}: line force ({', '.join(f'{f / 1e3:.3f}' for f in F)}) kN; "
+            lines.append(f"coupled body {name} (moments and stiffness about ({', '.join(f'{r:.6g}' for r in about)}) m): "
+                         f"line force ({', '.join(f'{f / 1e3:.3f}' for f in F)}) kN; "
                          f"stiffness surge, sway, heave {', '.join(f'{k / 1e3:.4g}' for k in K[:3])} kN/m, "
                          f"roll, pitch, yaw {', '.join(f'{k / 1e3:.4g}' for k in K[3:])} kN m/rad")
         lines += [f"note: {note}" for note in self.notes]
@@ -419,7 +422,12 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
     the lumped model's equilibrium and hands its node positions here. Each element of
     ``L_e = section length / segments`` between nodes ``k``, ``k + 1`` has the linear tension
     ``T_e = EA (|r_k+1 - r_k| / L_e - 1)`` (clipped at 0; statics takes linear lines only);
-    node tensions are the mean of the adjacent elements' (the end element's at an end). A
+    node tensions are the mean of the adjacent elements', linearly extrapolated at an end that
+    hangs, as the lumped model's outputs (:class:`kanat.lumped.output.NodeTension`; the end element's
+    tension, half an element in, read ``w L_e / 2`` low there: 5.7 % at the anchor of MoorPy's
+    W-shaped case6 at 20 segments, where the anchor force was right), the end element's at an end on
+    the seabed (within :data:`ON_SEABED`), where the tension is level and the touchdown may be in the
+    end elements. A
     fixed end carries its end element's pull ``T_e u_e`` and half the element's weight and
     drag, as a lumped node does; a body carries what balances its own loads (net buoyancy,
     constant force, drag in the relative flow). The stiffness is not computed (left empty).
@@ -451,17 +459,21 @@ def result_from_positions(case, cables: dict, bodies: dict, points: dict, method
 
     env = case.environment
     ship = np.array([case.vessel.initial_speed, 0.0, 0.0])         # every node moves with the vessel
+    bed = seabed_of(env)
     out, anchors = {}, {}
     for cable in case.cables:
         r = np.asarray(cables[cable.name], dtype=float)
         s, T, unit, ends = _elements(case, cable, r, ship)
         node_T = np.concatenate([[T[0]], 0.5 * (T[:-1] + T[1:]), [T[-1]]])
-        angle = np.arctan2(unit[:, 2], np.hypot(unit[:, 0], unit[:, 1]))
-        node_angle = np.concatenate([[angle[0]], 0.5 * (angle[:-1] + angle[1:]), [angle[-1]]])
-        out[cable.name] = NetworkCable(s, r, node_T, node_angle, (grounded or {}).get(cable.name, 0.0), method)
+        for end, (first, second) in ((0, (0, 1)), (-1, (-1, -2))):
+            if len(T) > 1 and not (bed is not None and r[end, 2] <= bed.height(r[end, 0], r[end, 1]) + ON_SEABED):
+                node_T[end] = max(1.5 * T[first] - 0.5 * T[second], 0.0)   # a hanging end: extrapolated
         for label, end, pull in zip(("from", "to"), cable.ends, ends):
             if end.kind == "anchor":
                 anchors[f"{cable.name}.{label}"] = pull
+        angle = np.arctan2(unit[:, 2], np.hypot(unit[:, 0], unit[:, 1]))
+        node_angle = np.concatenate([[angle[0]], 0.5 * (angle[:-1] + angle[1:]), [angle[-1]]])
+        out[cable.name] = NetworkCable(s, r, node_T, node_angle, (grounded or {}).get(cable.name, 0.0), method)
     forces = {}
     for name, r in bodies.items():
         body = case.bodies[name]
