@@ -318,6 +318,30 @@ def test_unsupported_sections_are_errors():
     assert problem.key == "RODS" and "rods cannot be imported" in problem.message
 
 
+def test_a_file_of_rods_and_bodies_alone_is_moordyns_and_says_what_it_lacks():
+    """MoorDyn's tests/Mooring/body_tests/floatingBodies.txt (bodies and rods, no lines) read as
+    "neither a YAML case nor a MoorDyn input file"; it is MoorDyn's, refused for its rods."""
+    text = textwrap.dedent("""\
+        --------------------- MoorDyn Input File ---------------------
+        floating rods
+        ---------------------- ROD TYPES -----------------------------
+        TypeName  Diam  Mass/m  Cd  Ca  CdEnd  CaEnd
+        (name)    (m)   (kg/m)  (-) (-) (-)    (-)
+        can       2.0   4000    0.6 1.0 0.6    1.0
+        ---------------------- RODS ----------------------------------
+        ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
+        (#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
+        1  can     Free  0 0 -5 0 0 5 4 -
+        ---------------------- SOLVER OPTIONS ------------------------
+        100       WtrDpth
+        --------------------------- need this line -------------------
+        """)
+    assert looks_like_moordyn(text)
+    found = errors_of(text)
+    assert [p.key for p in found] == ["RODS", "ROD_TYPES", "LINE TYPES", "LINES"], [str(p) for p in found]
+    assert "rods cannot be imported" in found[0].message and found[0].line == 10      # its first rod
+
+
 def test_validation_problems_point_at_the_moordyn_row(tmp_path):
     path = tmp_path / "bad.dat"
     path.write_text(V2.replace("wire      0.05   12.0", "wire      0.05   0.0"))

@@ -143,18 +143,18 @@ BA_RTOL = 1e-12
 def map_moordyn(reader: Reader, name: str) -> dict | None:
     """Case data of a MoorDyn file (module docstring), or None when it has no lines."""
     sections = reader.text.sections
+    for key, what in UNSUPPORTED_SECTIONS.items():     # first: a file of rods alone says so
+        if sections.get(key):
+            reader.error(sections[key][0].line, key.upper(), f"{what} cannot be imported (kanat "
+                         "has no counterpart); remove the rows or model them otherwise")
     for needed, header in (("line_types", "LINE TYPES"), ("lines", "LINES")):
         if needed not in sections:
             reader.error(None, header, f"no '--- {header} ---' section: not a complete MoorDyn "
                          "input file")
-    if reader.problems:
+    if any(problem.severity == "error" for problem in reader.problems):
         return None
     reader.version = file_version(reader)
     read_options(reader)
-    for key, what in UNSUPPORTED_SECTIONS.items():
-        if sections.get(key):
-            reader.error(sections[key][0].line, key.upper(), f"{what} cannot be imported (kanat "
-                         "has no counterpart); remove the rows or model them otherwise")
     if sections.get("outputs"):
         reader.warn(reader.text.headers["outputs"], "OUTPUTS", f"{len(sections['outputs'])} output "
                     "channel(s) not imported: kanat writes every node's position and tension")

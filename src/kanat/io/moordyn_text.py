@@ -79,9 +79,12 @@ def is_header(line: str) -> bool:
 
 
 def looks_like_moordyn(text: str) -> bool:
-    """True when ``text`` has the headers of a MoorDyn input file (line types and lines)."""
+    """True when ``text`` has the headers of a MoorDyn input file: line types and lines, or options
+    and another of its sections (a file of rods or bodies alone, which the reader then refuses by name,
+    is MoorDyn's too)."""
     found = {section_of(line) for line in text.splitlines()[:5000] if is_header(line)}
-    return "line_types" in found and "lines" in found
+    return ("line_types" in found and "lines" in found) or (
+        "options" in found and bool(found & {"rod_types", "rods", "bodies", "points", "lines"}))
 
 
 def split(text: str) -> MoorDynText:
