@@ -318,6 +318,22 @@ def test_unsupported_sections_are_errors():
     assert problem.key == "RODS" and "rods cannot be imported" in problem.message
 
 
+def test_statics_takes_the_static_part_of_a_viscoelastic_line_and_a_run_refuses_it():
+    """MoorPy's MoordynSemiTautUpd.dat gives its polyester ``EA`` and ``BA`` as ``static|dynamic``:
+    statics takes the static parts, as MoorPy's statics does (its coupled stiffness then agrees with
+    MoorPy's to 1e-6), and says what it left out; a dynamic run (``TMax``) refuses them."""
+    text = V2.replace("2.0e8   1.5e5", "1.424e8|1.586e8 4e9|11e6")
+    case, result = case_of(text)
+    assert case.line_types["wire"].axial_stiffness == 1.424e8
+    assert case.line_types["wire"].axial_damping == 4e9
+    messages = {p.key: p.message for p in result.problems}
+    assert "takes the static part 1.424e8" in messages["LINE TYPES wire.EA"]
+    assert "leaves out the dynamic 11e6" in messages["LINE TYPES wire.BA"]
+    found = errors_of(text.replace("9.8       g\n", "9.8       g\n300       TMax\n"))
+    assert [p.key for p in found] == ["LINE TYPES wire.EA", "LINE TYPES wire.BA"]
+    assert "not a table file or a '|' list" in found[0].message
+
+
 def test_a_file_of_rods_and_bodies_alone_is_moordyns_and_says_what_it_lacks():
     """MoorDyn's tests/Mooring/body_tests/floatingBodies.txt (bodies and rods, no lines) read as
     "neither a YAML case nor a MoorDyn input file"; it is MoorDyn's, refused for its rods."""

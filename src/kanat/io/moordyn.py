@@ -62,7 +62,9 @@ Conventions mapped (MoorDyn-C v2's Line, Point and Body; units SI):
   reported as warnings, never dropped silently (a ``TmaxIC`` under 1 s, which leaves MoorDyn's
   start unsettled, with the key that starts kanat likewise: ``simulation.initial_state: as_given``);
   features kanat cannot express (rods, bathymetry files, failures) are errors, a ``SeafloorFile``
-  with what a plane seabed takes instead (``depth``, ``seabed.slope_deg``).
+  with what a plane seabed takes instead (``depth``, ``seabed.slope_deg``). A viscoelastic line type's
+  ``EA`` and ``BA`` (``static|dynamic``) give a statics case their static parts, as MoorPy's statics
+  takes them, with a warning; a dynamic run refuses them (kanat's line is linear elastic).
 * Water kinematics: ``WaveKin`` 2, 3 and 7 read MoorDyn's wave files beside the input file
   into ``environment.waves`` (``type: components``), ``Currents 1`` its current profile into
   ``environment.current.profile``; ``WaveKin 1`` (waves set through MoorDyn's API) and the

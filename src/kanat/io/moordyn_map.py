@@ -212,6 +212,7 @@ def read_line_types(reader: Reader) -> dict[str, tuple[dict, float | None, int]]
     rho, out = reader.rho, {}
     for row in reader.rows("line_types", "LINE TYPES", widths):
         name, where = row.values[0], f"LINE TYPES {row.values[0]}"
+        row = _static_parts(reader, row, columns, where)
         v = {c: reader.number(row, i + 1, where, c) for i, c in enumerate(columns)}
         if reader.version == 1:
             v.update(Cd=v.pop("Cdn"), Ca=v.pop("Can"), CdAx=v.pop("Cdt"), CaAx=v.pop("Cat"), EI=0.0)
@@ -232,6 +233,25 @@ def read_line_types(reader: Reader) -> dict[str, tuple[dict, float | None, int]]
             data["bending_stiffness"] = v["EI"]
         out[name] = (data, -v["BA"] if v["BA"] < 0 else None, row.line)
     return out
+
+
+def _static_parts(reader: Reader, row: Row, columns: tuple, where: str) -> Row:
+    """``row`` with the static part of MoorDyn's viscoelastic ``EA`` and ``BA`` (``static|dynamic``) in a
+    statics case (no ``TMax``), as MoorPy's statics takes it, and a warning of what it left out; a
+    dynamic run, whose lines would want the dynamic stiffness kanat's linear line has not, keeps them
+    and refuses them (:meth:`Reader.number`)."""
+    if "duration" in reader.options:
+        return row
+    values = list(row.values)
+    for index, column in enumerate(columns, 1):
+        text = values[index] if index < len(values) else ""
+        if column in ("EA", "BA") and text.count("|") == 1:
+            static, dynamic = text.split("|")
+            values[index] = static
+            reader.warn(row.line, f"{where}.{column}", f"'{text}': MoorDyn's viscoelastic {column}; statics "
+                        f"takes the static part {static} (as MoorPy does) and leaves out the dynamic {dynamic}, "
+                        "which a dynamic run would need and kanat's linear line has not")
+    return Row(row.line, tuple(values))
 
 
 def _expand(values: list[float], sizes: dict[int, object], reader: Reader, row: Row,
