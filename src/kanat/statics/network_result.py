@@ -153,8 +153,9 @@ class NetworkResult:
                          f"z = {r[2]:.3f} m")
         for name, about in self.coupled_bodies.items():
             K, F = np.diag(self.stiffness[name]), self.body_forces[name]
-            lines.append(f"coupled body {name} (moments and stiffness about ({', '.join(f'{r:.6g}' for r in about)}) m): "
-                         f"line force ({', '.join(f'{f / 1e3:.3f}' for f in F)}) kN; "
+            point = ", ".join(f"{r:.6g}" for r in about)
+            force = ", ".join(f"{f / 1e3:.3f}" for f in F)
+            lines.append(f"coupled body {name} (moments and stiffness about ({point}) m): line force ({force}) kN; "
                          f"stiffness surge, sway, heave {', '.join(f'{k / 1e3:.4g}' for k in K[:3])} kN/m, "
                          f"roll, pitch, yaw {', '.join(f'{k / 1e3:.4g}' for k in K[3:])} kN m/rad")
         lines += [f"note: {note}" for note in self.notes]
