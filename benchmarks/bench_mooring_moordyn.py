@@ -44,6 +44,7 @@ from pathlib import Path
 import numpy as np
 
 from bench_wd0050_moordyn import timed
+from pairs import paired
 
 ROOT = Path(__file__).resolve().parents[1]
 FILE = ROOT / "examples" / "moordyn" / "three_leg_chain_50.dat"
@@ -222,11 +223,10 @@ def main() -> None:
               f"{100 * diff[:, 0].max():.2f} % | {100 * diff[:, 1].max():.2f} % |")
     for config in configs:
         if config[0] == "kanat" and not isinstance(results[config], str):
-            ratios = np.array([[a[k] / b[k] for k in (0, 1)] for a, b in zip(times[best], times[config])])
             print(f"\n{' '.join(map(str, config))} against {' '.join(map(str, best))} repeat by repeat (the runs "
                   "interleaved, so the ratio is taken at one machine speed): "
-                  + ", ".join(f"{name} {np.median(r):.2f}x ({r.min():.2f}-{r.max():.2f})"
-                              for name, r in zip(("whole", "CPU"), ratios.T)))
+                  + ", ".join(f"{name} {paired(*([t[k] for t in times[c]] for c in (best, config)))}"
+                              for name, k in (("whole", 0), ("CPU", 1))))
     print(f"\nreference (MoorDyn RK2 1 ms) fairlead tension mean {reference[:, 0].round(0).tolist()} N, "
           f"range {reference[:, 1].round(0).tolist()} N over {WINDOW[0]:g}-{WINDOW[1]:g} s")
 

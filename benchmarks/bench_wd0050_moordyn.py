@@ -41,6 +41,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from pairs import paired
 
 ROOT = Path(__file__).resolve().parents[1]
 FILE = ROOT / "tests" / "data" / "moordyn" / "wd0050_chain.dat"
@@ -152,12 +153,6 @@ def statistics(series: np.ndarray, duration: float) -> np.ndarray:
     return np.array([values.mean(), np.ptp(values), values.max()])
 
 
-def paired(peer: list, ours: list, part: str) -> str:
-    """The median (min-max) over the repeats of ``peer``'s time over ``ours`` in the same repeat."""
-    ratios = [a[part] / b[part] for a, b in zip(peer, ours)]
-    return f"{np.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f})"
-
-
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeats", type=int, default=3)
@@ -209,8 +204,9 @@ def main() -> None:
     for config in configs:
         if config[0] == "kanat" and not isinstance(results[config], str):
             print(f"\n{config[0]} {config[1]} against {best[0]} {best[1]} {best[2]} repeat by repeat (the runs "
-                  f"interleaved, so the ratio is taken at one machine speed): whole "
-                  f"{paired(times[best], times[config], 'wall')}, CPU {paired(times[best], times[config], 'cpu')}")
+                  "interleaved, so the ratio is taken at one machine speed): "
+                  + ", ".join(f"{name} {paired(*([t[part] for t in times[c]] for c in (best, config)))}"
+                              for name, part in (("whole", "wall"), ("CPU", "cpu"))))
     print(f"\nreference (MoorDyn RK2 1 ms): fairlead tension mean {reference[0]:.0f} N, range {reference[1]:.0f} N, "
           f"maximum {reference[2]:.0f} N over {args.duration / 2:g}-{args.duration:g} s")
 

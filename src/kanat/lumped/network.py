@@ -432,17 +432,21 @@ def given_positions(net: Network, case) -> np.ndarray:
     1, at no tension; the guess's cables are stretched by :data:`GUESS_STRETCH`, which at rest is a
     tension of ``EA 1e-4``) and, as in the guess, on the seabed where its sag would dip below it."""
     x = net.x_guess.copy()
-    loose = np.zeros(net.n_nodes, dtype=bool)
+    laid = np.zeros(net.n_nodes, dtype=bool)
     for cable in case.cables:
         on = net.node_cable == cable.name
         nodes, s = net.node_index[on], net.node_s[on]
         x[nodes] = sagged_line(x[nodes[0]], x[nodes[-1]], cable.length, len(nodes) - 1, s, stretch=1.0)
-        loose[nodes] = True
-    seabed = seabed_of(case.environment)
-    if seabed is not None:
-        loose &= ~np.isin(net.kinds, PRESCRIBED)
-        x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
+        laid[nodes] = True
+    _onto_seabed(x, laid & net.free, case.environment)
     return x
+
+
+def _onto_seabed(x: np.ndarray, loose: np.ndarray, environment) -> None:
+    """Lift the ``loose`` nodes (mask) of ``x`` whose sag would dip below the seabed onto it, in place."""
+    seabed = seabed_of(environment)
+    if seabed is not None:
+        x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
 
 
 def build_network(case) -> Network:
@@ -474,10 +478,7 @@ def build_network(case) -> Network:
     for nodes, cable, grid in rows:
         x[nodes] = sagged_line(b.positions[nodes[0]], b.positions[nodes[-1]], cable.length, len(grid.s) - 1,
                                grid.s)
-    seabed = seabed_of(case.environment)
-    if seabed is not None:                       # a sag that would dip below the seabed lies on it
-        loose = ~np.isin(np.array(b.kinds), PRESCRIBED)
-        x[loose, 2] = np.maximum(x[loose, 2], seabed.height(x[loose, 0], x[loose, 1]))
+    _onto_seabed(x, ~np.isin(np.array(b.kinds), PRESCRIBED), env)    # a sag that would dip below it lies on it
     x, guides, clamp_triples = place_guides(b, x, clamped_ends(case, rows))
     rigid = rigid_bodies(case, b)
     x = np.vstack([x, rigid.guess]) if rigid.count else x
